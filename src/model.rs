@@ -1,0 +1,196 @@
+//! The surface friction model: direct integration at a separation h* or an
+//! external force F* (MODEL.md §4–5).
+
+use crate::params::{ParamError, Params};
+use crate::surface::Surface;
+
+/// The state of the contact at one separation (all quantities dimensionless,
+/// MODEL.md §1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    /// Separation of the mean surface heights h*.
+    pub h_star: f64,
+    /// Separation of the mean asperity heights d* = h* − y_s*.
+    pub d_star: f64,
+    /// Contact load P*.
+    pub p_star: f64,
+    /// Adhesion force Fs*.
+    pub fs_star: f64,
+    /// Static friction force Q*.
+    pub q_star: f64,
+    /// External force F* = P* − Fs*.
+    pub f_star: f64,
+    /// Static friction coefficient μ = Q*/F*; `None` where F* ≤ 0, where it
+    /// is undefined.
+    pub mu: Option<f64>,
+}
+
+/// An evaluation that cannot be done.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EvalError {
+    /// h* is NaN, infinite or beyond the supported range.
+    #[error("h_star = {0} is out of range: must be finite, within ±{H_LIMIT:e}")]
+    HStar(f64),
+    /// F* is NaN, infinite, zero or negative.
+    #[error("f_star = {0} is out of range: must be > 0 and finite")]
+    FStar(f64),
+    /// No separation in the supported range gives this F*.
+    #[error("f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}")]
+    FStarTooLarge {
+        /// The requested F*.
+        f_star: f64,
+        /// F* at the lower end of the h* range.
+        f_max: f64,
+    },
+    /// The root search did not converge (a bug: please report it with the
+    /// parameters).
+    #[error("no convergence solving F*(h*) = {f_star} after {iterations} iterations (last h* = {h_star})")]
+    NoConvergence {
+        /// The requested F*.
+        f_star: f64,
+        /// The last iterate.
+        h_star: f64,
+        /// Iterations done.
+        iterations: usize,
+    },
+}
+
+/// |h*| beyond this is rejected: far outside any physical contact, and the
+/// integrals would lose all precision to cancellation in `z* − d*`.
+pub const H_LIMIT: f64 = 1e6;
+
+/// A validated model, ready to evaluate ("plan once, evaluate many").
+///
+/// ```
+/// use ke_friction::{Model, Params};
+/// let model = Model::new(Params::new(1.0, 0.001))?;
+/// let c = model.at_f_star(0.01)?;
+/// assert!((c.h_star - 1.4692414618).abs() < 1e-9); // MODEL.md §7
+/// assert!((c.mu.unwrap() - 0.52521087083).abs() < 1e-9);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Model {
+    params: Params,
+    surface: Surface,
+}
+
+impl Model {
+    /// Checks `params` (MODEL.md §1) and plans the integrals.
+    pub fn new(params: Params) -> Result<Model, ParamError> {
+        params.validate()?;
+        Ok(Model {
+            surface: Surface::new(&params),
+            params,
+        })
+    }
+
+    /// The parameters this model was built from.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// y_s* = h* − d*, the offset between the two reference planes.
+    pub fn y_s(&self) -> f64 {
+        self.surface.ys
+    }
+
+    /// The contact at separation `h_star` (MODEL.md §4).
+    pub fn at_h_star(&self, h_star: f64) -> Result<Contact, EvalError> {
+        if !(h_star.is_finite() && h_star.abs() <= H_LIMIT) {
+            return Err(EvalError::HStar(h_star));
+        }
+        let d = h_star - self.surface.ys;
+        let s = self.surface.evaluate(d, true);
+        let f = s.p - s.fs;
+        Ok(Contact {
+            h_star,
+            d_star: d,
+            p_star: s.p,
+            fs_star: s.fs,
+            q_star: s.q,
+            f_star: f,
+            mu: (f > 0.0).then(|| s.q / f),
+        })
+    }
+
+    /// F* and dF*/dh* at `h_star` (no friction integrals).
+    pub fn force(&self, h_star: f64) -> (f64, f64) {
+        let s = self.surface.evaluate(h_star - self.surface.ys, false);
+        (s.p - s.fs, s.dp - s.dfs)
+    }
+
+    /// The contact where the external force is `f_star`: solves
+    /// F*(h*) = f_star on the branch where F* > 0 and decreases
+    /// (MODEL.md §5), to full double precision.
+    pub fn at_f_star(&self, f_star: f64) -> Result<Contact, EvalError> {
+        let h = self.solve_h(f_star, 1.0)?;
+        self.at_h_star(h)
+    }
+
+    /// Like [`at_f_star`](Self::at_f_star) but returns only h*, starting the
+    /// search at `guess` (a nearby solution makes it faster).
+    pub fn solve_h(&self, f_star: f64, guess: f64) -> Result<f64, EvalError> {
+        if !(f_star.is_finite() && f_star > 0.0) {
+            return Err(EvalError::FStar(f_star));
+        }
+        let target = f_star.ln();
+        // Newton on g(h) = ln F*(h) − ln f, safeguarded by a bracket
+        // [lo, hi] with g(lo) > 0 > g(hi); F* ≤ 0 lies beyond the root.
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        let mut h = if guess.is_finite() { guess.clamp(-H_LIMIT, H_LIMIT) } else { 1.0 };
+        let mut max_step = 1.0;
+        const ITERATIONS: usize = 200;
+        for _ in 0..ITERATIONS {
+            let (f, df) = self.force(h);
+            let mut next;
+            if f > 0.0 && f.is_finite() {
+                let g = f.ln() - target;
+                if g == 0.0 {
+                    return Ok(h);
+                }
+                if g > 0.0 {
+                    lo = h;
+                } else {
+                    hi = h;
+                }
+                let slope = df / f;
+                next = if slope < 0.0 { h - g / slope } else { f64::NAN };
+            } else {
+                hi = h;
+                next = f64::NAN;
+            }
+            let bracketed = lo.is_finite() && hi.is_finite();
+            if !(next > lo && next < hi) {
+                next = if bracketed {
+                    0.5 * (lo + hi)
+                } else if lo.is_finite() {
+                    lo + max_step
+                } else {
+                    hi - max_step
+                };
+            }
+            if !bracketed && (next - h).abs() > max_step {
+                next = h + max_step.copysign(next - h);
+                max_step *= 2.0;
+            }
+            if next < -H_LIMIT {
+                if h <= -H_LIMIT {
+                    let f_max = self.force(-H_LIMIT).0;
+                    return Err(EvalError::FStarTooLarge { f_star, f_max });
+                }
+                next = -H_LIMIT;
+            }
+            let tol = 2.0 * f64::EPSILON * h.abs().max(1.0);
+            if (next - h).abs() <= tol || (bracketed && hi - lo <= tol) {
+                return Ok(next);
+            }
+            h = next;
+        }
+        Err(EvalError::NoConvergence {
+            f_star,
+            h_star: h,
+            iterations: ITERATIONS,
+        })
+    }
+}

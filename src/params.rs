@@ -1,0 +1,284 @@
+//! Model parameters: dimensionless (MODEL.md §1) or from physical quantities.
+
+/// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub enum Fit {
+    /// The self-consistent model of MODEL.md §4: the 1st elastic-plastic
+    /// friction row is `1.03·x^1.425·μ_ep(x)`, clipped at the root
+    /// `x₀ = 4.2946…` of `μ_ep`. This is the default and what the tables hold.
+    #[default]
+    Consistent,
+    /// The literal printed Eq. 18 of the paper: the factor 0.52 in front of
+    /// both rows, and the polynomial integrated unclipped up to `x = 6`.
+    /// Offered only to reproduce the printed equation: it gives a negative
+    /// Q* (and μ) for ψ ≳ 2.
+    AsPrinted,
+}
+
+/// Which surface friction model to evaluate.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+pub enum Kind {
+    /// Kogut & Etsion (2004), MODEL.md §4.
+    #[default]
+    KogutEtsion,
+    /// The CEB-type comparison model, an approximate reconstruction of
+    /// Chang, Etsion & Bogy (1988) in the same statistical framework
+    /// (MODEL.md §8). Its adhesion term is the Kogut–Etsion one; the
+    /// [`Fit`] setting does not apply to it.
+    CebType,
+}
+
+/// Dimensionless model inputs (MODEL.md §1).
+///
+/// Built with [`Params::new`] and the builder-style setters; checked once,
+/// by [`Model::new`](crate::Model::new).
+///
+/// ```
+/// use ke_friction::{Fit, Params};
+/// let p = Params::new(1.0, 0.003).beta(0.05).nu(0.3).eps_star(0.004).fit(Fit::Consistent);
+/// assert_eq!(p.psi, 1.0);
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Params {
+    /// Plasticity index ψ, > 0 (the paper covers 0.5–8).
+    pub psi: f64,
+    /// Adhesion parameter θ = Δγ/(σH), ≥ 0 (the paper covers 1e-4–0.01).
+    pub theta: f64,
+    /// Roughness parameter β = ηRσ, > 0.01928 (default 0.04).
+    pub beta: f64,
+    /// Poisson's ratio of the softer material, in [0, 0.5) (default 0.3).
+    pub nu: f64,
+    /// Intermolecular distance ε* = ε/σ, > 0 (default 0.004).
+    pub eps_star: f64,
+    /// Which friction row to use (default [`Fit::Consistent`]).
+    pub fit: Fit,
+    /// Which model to evaluate (default [`Kind::KogutEtsion`]).
+    pub kind: Kind,
+}
+
+/// Default roughness parameter β (Greenwood & Williamson, as in the paper).
+pub const DEFAULT_BETA: f64 = 0.04;
+/// Default Poisson's ratio ν.
+pub const DEFAULT_NU: f64 = 0.3;
+/// Default intermolecular distance ε* (MODEL.md §6, item 3).
+pub const DEFAULT_EPS_STAR: f64 = 0.004;
+/// β must exceed this for σ_s/σ = (1 − 3.717e-4/β²)^½ to be real.
+pub const BETA_MIN: f64 = 0.019_279_523_8;
+
+impl Params {
+    /// Parameters with the defaults β = 0.04, ν = 0.3, ε* = 0.004,
+    /// [`Fit::Consistent`] and [`Kind::KogutEtsion`].
+    pub fn new(psi: f64, theta: f64) -> Params {
+        Params {
+            psi,
+            theta,
+            beta: DEFAULT_BETA,
+            nu: DEFAULT_NU,
+            eps_star: DEFAULT_EPS_STAR,
+            fit: Fit::Consistent,
+            kind: Kind::KogutEtsion,
+        }
+    }
+
+    /// Sets the roughness parameter β.
+    pub fn beta(mut self, beta: f64) -> Params {
+        self.beta = beta;
+        self
+    }
+
+    /// Sets Poisson's ratio ν of the softer material.
+    pub fn nu(mut self, nu: f64) -> Params {
+        self.nu = nu;
+        self
+    }
+
+    /// Sets the intermolecular distance ε*.
+    pub fn eps_star(mut self, eps_star: f64) -> Params {
+        self.eps_star = eps_star;
+        self
+    }
+
+    /// Sets the friction row ([`Fit`]).
+    pub fn fit(mut self, fit: Fit) -> Params {
+        self.fit = fit;
+        self
+    }
+
+    /// Sets the model ([`Kind`]).
+    pub fn kind(mut self, kind: Kind) -> Params {
+        self.kind = kind;
+        self
+    }
+
+    /// Checks every field against MODEL.md §1. The one place parameters are
+    /// validated; [`Model::new`](crate::Model::new) calls it.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check("psi", self.psi, "> 0", |v| v > 0.0)?;
+        check("theta", self.theta, ">= 0", |v| v >= 0.0)?;
+        check("beta", self.beta, "> 0.01928", |v| {
+            v > 0.0 && 1.0 - 3.717e-4 / (v * v) > 0.0
+        })?;
+        check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
+        check("eps_star", self.eps_star, "> 0", |v| v > 0.0)?;
+        Ok(())
+    }
+
+    /// Dimensionless parameters from physical (SI) quantities, with the
+    /// formulas of MODEL.md §1–2. Material 1 is the softer one: `hardness`
+    /// is its hardness and `nu1` sets the hardness coefficient K.
+    ///
+    /// ```
+    /// use ke_friction::{Params, Physical};
+    /// // Aluminium on steel, σ = 100 nm, R = 10 µm, β = 0.04.
+    /// let phys = Physical {
+    ///     e1: 70e9, nu1: 0.33, e2: 210e9, nu2: 0.3, hardness: 1.0e9,
+    ///     sigma: 100e-9, radius: 10e-6, density: 0.04 / (10e-6 * 100e-9),
+    ///     delta_gamma: 0.3, epsilon: 0.4e-9,
+    /// };
+    /// let p = Params::from_physical(&phys).unwrap();
+    /// assert!((p.beta - 0.04).abs() < 1e-12);
+    /// assert!((p.eps_star - 0.004).abs() < 1e-12);
+    /// ```
+    pub fn from_physical(phys: &Physical) -> Result<Params, ParamError> {
+        let positive = |v: f64| v > 0.0;
+        check("e1", phys.e1, "> 0 Pa", positive)?;
+        check("e2", phys.e2, "> 0 Pa", positive)?;
+        check("nu1", phys.nu1, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
+        check("nu2", phys.nu2, "in [-1, 0.5]", |v| (-1.0..=0.5).contains(&v))?;
+        check("hardness", phys.hardness, "> 0 Pa", positive)?;
+        check("sigma", phys.sigma, "> 0 m", positive)?;
+        check("radius", phys.radius, "> 0 m", positive)?;
+        check("density", phys.density, "> 0 per m²", positive)?;
+        check("delta_gamma", phys.delta_gamma, ">= 0 J/m²", |v| v >= 0.0)?;
+        check("epsilon", phys.epsilon, "> 0 m", positive)?;
+        let beta = phys.density * phys.radius * phys.sigma;
+        check("beta (= density·radius·sigma)", beta, "> 0.01928", |v| {
+            1.0 - 3.717e-4 / (v * v) > 0.0
+        })?;
+        let inv_e = (1.0 - phys.nu1 * phys.nu1) / phys.e1 + (1.0 - phys.nu2 * phys.nu2) / phys.e2;
+        let e = 1.0 / inv_e;
+        let k = hardness_coefficient(phys.nu1);
+        let sigma_s = phys.sigma * sigma_s_ratio(beta);
+        let psi = 2.0 * e / (core::f64::consts::PI * k * phys.hardness) * (sigma_s / phys.radius).sqrt();
+        let params = Params::new(psi, phys.delta_gamma / (phys.sigma * phys.hardness))
+            .beta(beta)
+            .nu(phys.nu1)
+            .eps_star(phys.epsilon / phys.sigma);
+        params.validate()?;
+        Ok(params)
+    }
+}
+
+/// Physical (SI) inputs of the model, for [`Params::from_physical`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Physical {
+    /// Young's modulus of material 1 (the softer one), Pa.
+    pub e1: f64,
+    /// Poisson's ratio of material 1 (the softer one); sets K.
+    pub nu1: f64,
+    /// Young's modulus of material 2, Pa.
+    pub e2: f64,
+    /// Poisson's ratio of material 2.
+    pub nu2: f64,
+    /// Hardness H of the softer material, Pa.
+    pub hardness: f64,
+    /// Standard deviation σ of the surface heights, m.
+    pub sigma: f64,
+    /// Asperity radius of curvature R, m.
+    pub radius: f64,
+    /// Areal density of asperities η, 1/m².
+    pub density: f64,
+    /// Energy of adhesion Δγ, J/m².
+    pub delta_gamma: f64,
+    /// Intermolecular distance ε, m.
+    pub epsilon: f64,
+}
+
+/// An input outside its valid range. The message names the input, its
+/// value and the range, e.g. `theta = -0.2 is out of range: must be >= 0`.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{name} = {value} is out of range: must be {range}")]
+pub struct ParamError {
+    /// The input's name, as in [`Params`] / [`Physical`].
+    pub name: &'static str,
+    /// The rejected value.
+    pub value: f64,
+    /// The valid range, in words.
+    pub range: &'static str,
+}
+
+/// Rejects NaN, infinities and values failing `ok`.
+pub(crate) fn check(
+    name: &'static str,
+    value: f64,
+    range: &'static str,
+    ok: impl Fn(f64) -> bool,
+) -> Result<(), ParamError> {
+    if value.is_finite() && ok(value) {
+        Ok(())
+    } else {
+        Err(ParamError { name, value, range })
+    }
+}
+
+/// Hardness coefficient `K = 0.454 + 0.41ν` (MODEL.md §2).
+pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
+    0.454 + 0.41 * nu
+}
+
+/// `σ_s/σ = (1 − 3.717e-4/β²)^½` (McCool; MODEL.md §2).
+pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
+    (1.0 - 3.717e-4 / (beta * beta)).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn validation_names_the_field_and_range() {
+        let err = Params::new(1.0, -0.2).validate().unwrap_err();
+        assert_eq!(err.name, "theta");
+        assert_eq!(err.to_string(), "theta = -0.2 is out of range: must be >= 0");
+        assert_eq!(Params::new(f64::NAN, 0.0).validate().unwrap_err().name, "psi");
+        assert_eq!(Params::new(1.0, f64::INFINITY).validate().unwrap_err().name, "theta");
+        assert_eq!(Params::new(1.0, 0.0).beta(0.019).validate().unwrap_err().name, "beta");
+        assert_eq!(Params::new(1.0, 0.0).nu(0.5).validate().unwrap_err().name, "nu");
+        assert_eq!(Params::new(1.0, 0.0).eps_star(0.0).validate().unwrap_err().name, "eps_star");
+        assert!(Params::new(1.0, 0.0).beta(0.0193).validate().is_ok());
+    }
+
+    #[test]
+    fn derived_constants_match_model_md() {
+        // MODEL.md §2: K = 0.577 and σ_s/σ = 0.87618 at the defaults.
+        assert!((hardness_coefficient(0.3) - 0.577).abs() < 1e-12);
+        assert!((sigma_s_ratio(0.04) - 0.87618).abs() < 5e-6);
+    }
+
+    #[test]
+    fn physical_inputs_map_to_the_dimensionless_ones() {
+        // Equal materials, E = 100 GPa, ν = 0.3: 1/E' = 2(1 − ν²)/E.
+        let phys = Physical {
+            e1: 100e9,
+            nu1: 0.3,
+            e2: 100e9,
+            nu2: 0.3,
+            hardness: 2e9,
+            sigma: 50e-9,
+            radius: 20e-6,
+            density: 0.05 / (20e-6 * 50e-9),
+            delta_gamma: 0.5,
+            epsilon: 0.3e-9,
+        };
+        let p = Params::from_physical(&phys).unwrap();
+        let e = 100e9 / (2.0 * (1.0 - 0.09));
+        let s = sigma_s_ratio(0.05);
+        let psi = 2.0 * e / (core::f64::consts::PI * 0.577 * 2e9) * (s * 50e-9 / 20e-6f64).sqrt();
+        assert!((p.psi / psi - 1.0).abs() < 1e-12);
+        assert!((p.theta - 0.5 / (50e-9 * 2e9)).abs() < 1e-15);
+        assert!((p.beta - 0.05).abs() < 1e-12);
+        assert!((p.eps_star - 0.006).abs() < 1e-12);
+        let bad = Physical { hardness: -1.0, ..phys };
+        assert_eq!(Params::from_physical(&bad).unwrap_err().name, "hardness");
+    }
+}

@@ -1,0 +1,448 @@
+//! The rough surface: Gaussian asperity heights and the integrals of
+//! MODEL.md §4 (Kogut–Etsion) and §8 (CEB-type).
+//!
+//! Every integral is taken in `x = (z* − d*)/ω_c*`, split at the regime
+//! boundaries (the single-asperity laws jump there) and then into panels on
+//! which the Gaussian changes by a bounded factor. Each panel gets a
+//! [`NODES`](crate::quadrature::NODES)-point Gauss rule; the panel that
+//! starts at the contact point `x = 0` gets a Gauss–Jacobi rule with the
+//! exact weight `x^b`, and the panels of the non-contact adhesion integral
+//! grow geometrically away from `z* = d*`, where its integrand varies on
+//! the scale ε*. Tails below `e^−TAIL` of the integrand's largest Gaussian
+//! factor are cut. No allocation, no recursion: a fixed amount of
+//! arithmetic per panel.
+
+use crate::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
+use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
+use crate::quadrature::{Rule, NODES};
+
+/// Gaussian tails are cut where the density has fallen by `e^−TAIL`
+/// relative to its value at the start of the integral (below 1e-17, far
+/// under the 1e-12 target even after the polynomial weights `x^b`).
+const TAIL: f64 = 40.0;
+/// Largest panel, in units of σ_s.
+const MAX_STEP: f64 = 2.0;
+/// Far from the mean the panel is `STEP_DECAY·σ_s²/|z|`, so that the
+/// Gaussian changes by about `e^STEP_DECAY` across it.
+const STEP_DECAY: f64 = 8.0;
+
+/// Everything the integrals need that depends only on the parameters
+/// (the "plan"; MODEL.md §2).
+#[derive(Debug, Clone)]
+pub(crate) struct Surface {
+    kind: Kind,
+    /// σ_s/σ.
+    s: f64,
+    inv_s2: f64,
+    /// 1/(s√(2π)).
+    norm: f64,
+    /// ω_c* = s/ψ².
+    omega: f64,
+    /// y_s* = h* − d*.
+    pub ys: f64,
+    eps: f64,
+    /// (2/3)πβKω_c*, in front of P* and Q*.
+    load_pref: f64,
+    /// 2πβθ, in front of Fs*.
+    adh_pref: f64,
+    /// 3/K, the fully plastic load.
+    plastic: f64,
+    /// `a·r^c` of the three contact adhesion rows.
+    adh_coef: [f64; 3],
+    /// Coefficient of the elastic friction row.
+    q_el: f64,
+    /// Coefficient of `x^1.425·μ_ep(x)` in the 1st elastic-plastic friction row.
+    q_ep: f64,
+    /// Whether the friction row goes on past x₀ (the printed form).
+    q_unclipped: bool,
+    gl: Rule,
+    /// Gauss–Jacobi rules for `x^1.5`, `x^0.298`, `x^0.982` (first panels).
+    gj_load: Rule,
+    gj_adh: Rule,
+    gj_fric: Rule,
+    /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1).
+    gj_half: Rule,
+    ceb: CebCapacity,
+}
+
+/// The integrals at one separation, already multiplied by their prefactors.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(crate) struct Sums {
+    /// P*.
+    pub p: f64,
+    /// ∂P*/∂d*.
+    pub dp: f64,
+    /// Fs*.
+    pub fs: f64,
+    /// ∂Fs*/∂d*.
+    pub dfs: f64,
+    /// Q* (0 unless asked for).
+    pub q: f64,
+}
+
+/// Raw integrals of one regime: load, adhesion, friction, and the
+/// derivatives of the first two with respect to d*.
+#[derive(Debug, Clone, Copy, Default)]
+struct Acc {
+    p: f64,
+    dp: f64,
+    fs: f64,
+    dfs: f64,
+    q: f64,
+}
+
+/// The window of z* that matters for integrals starting at `d`.
+#[derive(Debug, Clone, Copy)]
+struct Window {
+    lo: f64,
+    hi: f64,
+}
+
+impl Surface {
+    /// Plans the integrals for valid parameters.
+    pub fn new(p: &Params) -> Surface {
+        let pi = core::f64::consts::PI;
+        let s = sigma_s_ratio(p.beta);
+        let k = hardness_coefficient(p.nu);
+        let omega = s / (p.psi * p.psi);
+        let r = p.eps_star / omega;
+        let (q_el, q_ep, q_unclipped) = match p.fit {
+            Fit::Consistent => (FRICTION_ELASTIC.0, load::EP1.0, false),
+            Fit::AsPrinted => (FRICTION_ELASTIC.0, FRICTION_ELASTIC.0, true),
+        };
+        Surface {
+            kind: p.kind,
+            s,
+            inv_s2: 1.0 / (s * s),
+            norm: 1.0 / (s * (2.0 * pi).sqrt()),
+            omega,
+            ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.beta),
+            eps: p.eps_star,
+            load_pref: (2.0 / 3.0) * pi * p.beta * k * omega,
+            adh_pref: 2.0 * pi * p.beta * p.theta,
+            plastic: 3.0 / k,
+            adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2].map(|(a, _, c)| a * r.powf(c)),
+            q_el,
+            q_ep,
+            q_unclipped,
+            gl: Rule::legendre(),
+            gj_load: Rule::jacobi(load::ELASTIC.1),
+            gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
+            gj_fric: Rule::jacobi(FRICTION_ELASTIC.1),
+            gj_half: Rule::jacobi(0.5),
+            ceb: CebCapacity::new(p.nu),
+        }
+    }
+
+    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
+    pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
+        let cut = (2.0 * TAIL).sqrt() * self.s;
+        let win = Window {
+            lo: -cut,
+            hi: d.max(0.0).hypot(cut),
+        };
+        let (load_sum, fric_sum, mut adh) = match self.kind {
+            Kind::KogutEtsion => self.contact_ke(d, win, want_q),
+            Kind::CebType => self.contact_ceb(d, win, want_q),
+        };
+        if self.adh_pref != 0.0 {
+            let (j, dj) = self.noncontact(d);
+            adh.0 += j;
+            adh.1 += dj;
+        }
+        Sums {
+            p: self.load_pref * load_sum.0,
+            dp: self.load_pref * load_sum.1,
+            fs: self.adh_pref * adh.0,
+            dfs: self.adh_pref * adh.1,
+            q: self.load_pref * fric_sum,
+        }
+    }
+
+    /// Contact integrals of MODEL.md §4: returns (load, d load), friction,
+    /// (adhesion, d adhesion), each without its prefactor.
+    fn contact_ke(&self, d: f64, win: Window, want_q: bool) -> ((f64, f64), f64, (f64, f64)) {
+        let adh = self.adh_pref != 0.0;
+        let el = self.elastic(d, win, adh, want_q);
+        let pow = |b: f64| move |_: f64, lx: f64| (b * lx).exp();
+        let ep1a = self.smooth(d, win, X_ELASTIC, X0, pow(load::EP1.1), adh.then_some(adhesion::EP1.1), want_q);
+        let want_q2 = want_q && self.q_unclipped;
+        let ep1b = self.smooth(d, win, X0, X_EP1, pow(load::EP1.1), adh.then_some(adhesion::EP1.1), want_q2);
+        let ep2 = self.smooth(d, win, X_EP1, X_PLASTIC, pow(load::EP2.1), adh.then_some(adhesion::EP2.1), false);
+        let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, |x, _| x, None, false);
+        let (a1, a2, a3) = (load::EP1.0, load::EP2.0, self.plastic);
+        let p = el.p + a1 * (ep1a.p + ep1b.p) + a2 * ep2.p + a3 * pl.p;
+        let dp = el.dp + a1 * (ep1a.dp + ep1b.dp) + a2 * ep2.dp + a3 * pl.dp;
+        let [c0, c1, c2] = self.adh_coef;
+        let fs = c0 * el.fs + c1 * (ep1a.fs + ep1b.fs) + c2 * ep2.fs;
+        let dfs = c0 * el.dfs + c1 * (ep1a.dfs + ep1b.dfs) + c2 * ep2.dfs;
+        let q = self.q_el * el.q + self.q_ep * (ep1a.q + ep1b.q);
+        ((p, dp), q, (fs, dfs))
+    }
+
+    /// Contact integrals of the CEB-type model (MODEL.md §8): Hertz load
+    /// and `μ_CEB` below x = 1, the volume-conserving load `1.5(2x − 1)`
+    /// above, and the Kogut–Etsion adhesion throughout.
+    fn contact_ceb(&self, d: f64, win: Window, want_q: bool) -> ((f64, f64), f64, (f64, f64)) {
+        let adh = self.adh_pref != 0.0;
+        let el = self.elastic_ceb(d, win, adh, want_q);
+        let law = |x: f64, _: f64| 1.5 * (2.0 * x - 1.0);
+        let ep1 = self.smooth(d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
+        let ep2 = self.smooth(d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
+        let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, law, None, false);
+        let p = el.p + ep1.p + ep2.p + pl.p;
+        let dp = el.dp + ep1.dp + ep2.dp + pl.dp;
+        let [c0, c1, c2] = self.adh_coef;
+        let fs = c0 * el.fs + c1 * ep1.fs + c2 * ep2.fs;
+        let dfs = c0 * el.dfs + c1 * ep1.dfs + c2 * ep2.dfs;
+        ((p, dp), el.q, (fs, dfs))
+    }
+
+    /// The elastic regime of the CEB-type model: `Q̄ = μ_CEB·P̄`, with the
+    /// branch `μ2` below the crossing `xc` and `μ1` (which vanishes like
+    /// `(1 − x)^½` at x = 1) above it.
+    fn elastic_ceb(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Acc {
+        let xc = self.ceb.x_cross;
+        let ceb = &self.ceb;
+        let mut acc = Acc::default();
+        let m15 = ceb.mu2_split(0.0).0;
+        self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
+            if first {
+                self.jacobi_panel(d, &self.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+                    acc.p += w;
+                    acc.dp += dw;
+                    acc.q += m15 * w;
+                });
+                if adh {
+                    self.jacobi_panel(d, &self.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
+                        acc.fs += w;
+                        acc.dfs += dw;
+                    });
+                }
+                if want_q {
+                    self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_split(x).1 * w);
+                }
+            } else {
+                self.legendre_panel(d, x0, x1, |x, w, dw| {
+                    let p = x * x.sqrt();
+                    acc.p += p * w;
+                    acc.dp += p * dw;
+                    if adh {
+                        let f = x.powf(adhesion::ELASTIC.1);
+                        acc.fs += f * w;
+                        acc.dfs += f * dw;
+                    }
+                    if want_q {
+                        acc.q += (m15 * p + x * ceb.mu2_split(x).1) * w;
+                    }
+                });
+            }
+        });
+        self.panels(d, win, xc, X_ELASTIC, |x0, x1, _, last| {
+            self.legendre_panel(d, x0, x1, |x, w, dw| {
+                let p = x * x.sqrt();
+                acc.p += p * w;
+                acc.dp += p * dw;
+                if adh {
+                    let f = x.powf(adhesion::ELASTIC.1);
+                    acc.fs += f * w;
+                    acc.dfs += f * dw;
+                }
+                if want_q && !last {
+                    acc.q += ceb.mu1_factor(x) * (1.0 - x).sqrt() * w;
+                }
+            });
+            if want_q && last {
+                // (1 − x)^½ at x = 1: the mirrored Gauss–Jacobi rule.
+                let width = X_ELASTIC - x0;
+                let scale = self.omega * width.powf(1.5);
+                for (t, wt) in self.gj_half.t.iter().zip(&self.gj_half.w) {
+                    let x = X_ELASTIC - width * t;
+                    acc.q += scale * wt * self.phi(d + self.omega * x) * ceb.mu1_factor(x);
+                }
+            }
+        });
+        if !want_q {
+            acc.q = 0.0;
+        }
+        acc
+    }
+
+    /// The fully elastic regime `0 ≤ x < 1` of the Kogut–Etsion model.
+    fn elastic(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Acc {
+        let mut acc = Acc::default();
+        let (b_adh, b_fric) = (adhesion::ELASTIC.1, FRICTION_ELASTIC.1);
+        self.panels(d, win, 0.0, X_ELASTIC, |x0, x1, first, _| {
+            if first {
+                self.jacobi_panel(d, &self.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+                    acc.p += w;
+                    acc.dp += dw;
+                });
+                if adh {
+                    self.jacobi_panel(d, &self.gj_adh, b_adh, x1, |_, w, dw| {
+                        acc.fs += w;
+                        acc.dfs += dw;
+                    });
+                }
+                if want_q {
+                    self.jacobi_panel(d, &self.gj_fric, b_fric, x1, |_, w, _| acc.q += w);
+                }
+            } else {
+                self.legendre_panel(d, x0, x1, |x, w, dw| {
+                    let p = x * x.sqrt();
+                    acc.p += p * w;
+                    acc.dp += p * dw;
+                    let lx = x.ln();
+                    if adh {
+                        let f = (b_adh * lx).exp();
+                        acc.fs += f * w;
+                        acc.dfs += f * dw;
+                    }
+                    if want_q {
+                        acc.q += (b_fric * lx).exp() * w;
+                    }
+                });
+            }
+        });
+        acc
+    }
+
+    /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
+    /// load `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
+    /// friction factor `x^1.425·μ_ep(x)`.
+    #[allow(clippy::too_many_arguments)]
+    fn smooth(
+        &self,
+        d: f64,
+        win: Window,
+        xa: f64,
+        xc: f64,
+        load: impl Fn(f64, f64) -> f64,
+        b_adh: Option<f64>,
+        want_q: bool,
+    ) -> Acc {
+        let mut acc = Acc::default();
+        self.panels(d, win, xa, xc, |x0, x1, _, _| {
+            self.legendre_panel(d, x0, x1, |x, w, dw| {
+                let lx = x.ln();
+                let p = load(x, lx);
+                acc.p += p * w;
+                acc.dp += p * dw;
+                if let Some(b) = b_adh {
+                    let f = (b * lx).exp();
+                    acc.fs += f * w;
+                    acc.dfs += f * dw;
+                }
+                if want_q {
+                    acc.q += p * asperity::mu_ep(x) * w;
+                }
+            })
+        });
+        acc
+    }
+
+    /// The non-contact adhesion integral `J_nc` (MODEL.md §4) and its
+    /// d*-derivative, in the gap `g = d* − z* ≥ 0`.
+    fn noncontact(&self, d: f64) -> (f64, f64) {
+        let cut = (2.0 * TAIL).sqrt() * self.s;
+        let z_lo = -(d.min(0.0).hypot(cut));
+        let g_max = d - z_lo;
+        let (mut j, mut dj) = (0.0, 0.0);
+        let mut g0 = 0.0;
+        // Panels [ε(2^k − 1), ε(2^(k+1) − 1)]: each is at least a third of its
+        // distance from the pole of u^−2 at g = −ε away, so the rule converges fast.
+        let mut width = self.eps;
+        while g0 < g_max {
+            let step = self.step(d - g0);
+            let w = if width < step { width } else { step };
+            let g1 = if g0 + 1.5 * w >= g_max { g_max } else { g0 + w };
+            let h = g1 - g0;
+            for (t, wt) in self.gl.t.iter().zip(&self.gl.w) {
+                let g = g0 + h * t;
+                let z = d - g;
+                let wp = h * wt * self.phi(z);
+                let a = asperity::adhesion_noncontact(1.0 + g / self.eps);
+                j += a * wp;
+                dj -= a * wp * z * self.inv_s2;
+            }
+            g0 = g1;
+            width *= 2.0;
+        }
+        (j, dj)
+    }
+
+    /// Calls `f(x0, x1, first, last)` for the panels covering `[xa, xc]`
+    /// within the window; `first` marks a panel starting at `xa`, `last` one
+    /// ending at `xc` (not cut by the window).
+    #[inline(always)]
+    fn panels(&self, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(f64, f64, bool, bool)) {
+        let (om, inv_om) = (self.omega, 1.0 / self.omega);
+        let x_lo = (win.lo - d) * inv_om;
+        let x_hi = (win.hi - d) * inv_om;
+        let start = xa.max(x_lo);
+        let end = xc.min(x_hi);
+        if !(start < end) {
+            return;
+        }
+        let last_is_end = end == xc;
+        let mut x = start;
+        let mut first = start == xa;
+        loop {
+            // A panel no longer than its distance from x = 0 keeps the
+            // branch point of x^b far enough away for geometric convergence.
+            let dx = self.step(d + om * x) * inv_om;
+            let dx = if x > 0.0 && x < dx { x } else { dx };
+            let (x1, last) = if x + 1.5 * dx >= end { (end, true) } else { (x + dx, false) };
+            f(x, x1, first, last && last_is_end);
+            if last {
+                break;
+            }
+            first = false;
+            x = x1;
+        }
+    }
+
+    /// Panel length in z* at height `z`.
+    #[inline(always)]
+    fn step(&self, z: f64) -> f64 {
+        let s = self.s;
+        let far = STEP_DECAY * s * s / (z.abs() + s);
+        if far < MAX_STEP * s {
+            far
+        } else {
+            MAX_STEP * s
+        }
+    }
+
+    /// Gaussian density of asperity heights φ*(z*) (MODEL.md §2).
+    #[inline(always)]
+    fn phi(&self, z: f64) -> f64 {
+        self.norm * (-0.5 * z * z * self.inv_s2).exp()
+    }
+
+    /// Gauss–Legendre on `[x0, x1]`: calls `f(x, w·φ, w·φ')` with the
+    /// weights for `dz* = ω dx`.
+    #[inline(always)]
+    fn legendre_panel(&self, d: f64, x0: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
+        let h = self.omega * (x1 - x0);
+        for (t, wt) in self.gl.t.iter().zip(&self.gl.w) {
+            let x = x0 + (x1 - x0) * t;
+            let z = d + self.omega * x;
+            let w = h * wt * self.phi(z);
+            f(x, w, -w * z * self.inv_s2);
+        }
+    }
+
+    /// Gauss–Jacobi for `∫₀^x1 x^b (…) dz*`: calls `f(x, w·φ, w·φ')` with
+    /// weights that already include `x^b`.
+    #[inline(always)]
+    fn jacobi_panel(&self, d: f64, rule: &Rule, b: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
+        let scale = self.omega * x1.powf(b + 1.0);
+        for i in 0..NODES {
+            let x = x1 * rule.t[i];
+            let z = d + self.omega * x;
+            let w = scale * rule.w[i] * self.phi(z);
+            f(x, w, -w * z * self.inv_s2);
+        }
+    }
+}
