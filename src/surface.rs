@@ -55,6 +55,13 @@ pub(crate) struct Surface {
     q_ep: f64,
     /// Whether the friction row goes on past x₀ (the printed form).
     q_unclipped: bool,
+    rules: &'static Rules,
+    ceb: CebCapacity,
+}
+
+/// The Gauss rules, the same for every model: computed once per process.
+#[derive(Debug)]
+struct Rules {
     gl: Rule,
     /// Gauss–Jacobi rules for `x^1.5`, `x^0.298`, `x^0.982` (first panels).
     gj_load: Rule,
@@ -62,7 +69,19 @@ pub(crate) struct Surface {
     gj_fric: Rule,
     /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1).
     gj_half: Rule,
-    ceb: CebCapacity,
+}
+
+impl Rules {
+    fn get() -> &'static Rules {
+        static RULES: std::sync::OnceLock<Rules> = std::sync::OnceLock::new();
+        RULES.get_or_init(|| Rules {
+            gl: Rule::legendre(),
+            gj_load: Rule::jacobi(load::ELASTIC.1),
+            gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
+            gj_fric: Rule::jacobi(FRICTION_ELASTIC.1),
+            gj_half: Rule::jacobi(0.5),
+        })
+    }
 }
 
 /// The integrals at one separation, already multiplied by their prefactors.
@@ -125,11 +144,7 @@ impl Surface {
             q_el,
             q_ep,
             q_unclipped,
-            gl: Rule::legendre(),
-            gj_load: Rule::jacobi(load::ELASTIC.1),
-            gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
-            gj_fric: Rule::jacobi(FRICTION_ELASTIC.1),
-            gj_half: Rule::jacobi(0.5),
+            rules: Rules::get(),
             ceb: CebCapacity::new(p.nu),
         }
     }
@@ -208,13 +223,13 @@ impl Surface {
         let m15 = ceb.mu2_split(0.0).0;
         self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
             if first {
-                self.jacobi_panel(d, &self.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+                self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
                     acc.p += w;
                     acc.dp += dw;
                     acc.q += m15 * w;
                 });
                 if adh {
-                    self.jacobi_panel(d, &self.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
+                    self.jacobi_panel(d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
                         acc.fs += w;
                         acc.dfs += dw;
                     });
@@ -256,7 +271,7 @@ impl Surface {
                 // (1 − x)^½ at x = 1: the mirrored Gauss–Jacobi rule.
                 let width = X_ELASTIC - x0;
                 let scale = self.omega * width.powf(1.5);
-                for (t, wt) in self.gj_half.t.iter().zip(&self.gj_half.w) {
+                for (t, wt) in self.rules.gj_half.t.iter().zip(&self.rules.gj_half.w) {
                     let x = X_ELASTIC - width * t;
                     acc.q += scale * wt * self.phi(d + self.omega * x) * ceb.mu1_factor(x);
                 }
@@ -274,18 +289,18 @@ impl Surface {
         let (b_adh, b_fric) = (adhesion::ELASTIC.1, FRICTION_ELASTIC.1);
         self.panels(d, win, 0.0, X_ELASTIC, |x0, x1, first, _| {
             if first {
-                self.jacobi_panel(d, &self.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+                self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
                     acc.p += w;
                     acc.dp += dw;
                 });
                 if adh {
-                    self.jacobi_panel(d, &self.gj_adh, b_adh, x1, |_, w, dw| {
+                    self.jacobi_panel(d, &self.rules.gj_adh, b_adh, x1, |_, w, dw| {
                         acc.fs += w;
                         acc.dfs += dw;
                     });
                 }
                 if want_q {
-                    self.jacobi_panel(d, &self.gj_fric, b_fric, x1, |_, w, _| acc.q += w);
+                    self.jacobi_panel(d, &self.rules.gj_fric, b_fric, x1, |_, w, _| acc.q += w);
                 }
             } else {
                 self.legendre_panel(d, x0, x1, |x, w, dw| {
@@ -357,7 +372,7 @@ impl Surface {
             let w = if width < step { width } else { step };
             let g1 = if g0 + 1.5 * w >= g_max { g_max } else { g0 + w };
             let h = g1 - g0;
-            for (t, wt) in self.gl.t.iter().zip(&self.gl.w) {
+            for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
                 let g = g0 + h * t;
                 let z = d - g;
                 let wp = h * wt * self.phi(z);
@@ -425,7 +440,7 @@ impl Surface {
     #[inline(always)]
     fn legendre_panel(&self, d: f64, x0: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
         let h = self.omega * (x1 - x0);
-        for (t, wt) in self.gl.t.iter().zip(&self.gl.w) {
+        for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
             let x = x0 + (x1 - x0) * t;
             let z = d + self.omega * x;
             let w = h * wt * self.phi(z);
@@ -444,5 +459,64 @@ impl Surface {
             let w = scale * rule.w[i] * self.phi(z);
             f(x, w, -w * z * self.inv_s2);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::Value;
+
+    impl Surface {
+        /// `I^b[xa, xc]` (MODEL.md §4) with the same panels and rules as the
+        /// model's own integrals.
+        fn moment(&self, d: f64, b: f64, xa: f64, xc: f64) -> f64 {
+            let cut = (2.0 * TAIL).sqrt() * self.s;
+            let win = Window {
+                lo: -cut,
+                hi: d.max(0.0).hypot(cut),
+            };
+            let rule = Rule::jacobi(b);
+            let mut sum = 0.0;
+            self.panels(d, win, xa, xc, |x0, x1, first, _| {
+                if first && xa == 0.0 {
+                    self.jacobi_panel(d, &rule, b, x1, |_, w, _| sum += w);
+                } else {
+                    self.legendre_panel(d, x0, x1, |x, w, _| sum += x.powf(b) * w);
+                }
+            });
+            sum
+        }
+    }
+
+    /// MODEL.md §5: `I^b[0,∞)` in closed form through the parabolic cylinder
+    /// function (values from `tools/reference.py`, mpmath `pcfd`), and the
+    /// pieces `I^b[0,1]`, `I^b[1,∞)` from 30-digit quadrature.
+    #[test]
+    fn moments_match_the_closed_form_semi_infinite_integrals() {
+        let doc: Value = serde_json::from_str(include_str!("../tests/data/reference_points.json")).unwrap();
+        let mut n = 0;
+        for p in doc["points"].as_array().unwrap() {
+            if p["kind"] != "closed_form" {
+                continue;
+            }
+            let f = |k: &str| p[k].as_f64().unwrap();
+            let surface = Surface::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
+            let (b, d) = (f("b"), f("d_star"));
+            let lower = surface.moment(d, b, 0.0, 1.0);
+            let upper = surface.moment(d, b, 1.0, f64::INFINITY);
+            let whole = surface.moment(d, b, 0.0, f64::INFINITY);
+            for (what, got, want) in [
+                ("I[0,1]", lower, f("i_0_1")),
+                ("I[1,inf)", upper, f("i_1_inf")),
+                ("I[0,inf)", whole, f("i_0_inf")),
+                ("I[0,1]+I[1,inf)", lower + upper, f("i_0_inf")),
+            ] {
+                let rel = ((got - want) / want).abs();
+                assert!(rel < 1e-12, "b = {b}, d* = {d}: {what} = {got:e} vs {want:e} ({rel:e})");
+            }
+            n += 1;
+        }
+        assert!(n >= 6);
     }
 }
