@@ -35,7 +35,9 @@ pub enum EvalError {
     #[error("f_star = {0} is out of range: must be > 0 and finite")]
     FStar(f64),
     /// No separation in the supported range gives this F*.
-    #[error("f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}")]
+    #[error(
+        "f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}"
+    )]
     FStarTooLarge {
         /// The requested F*.
         f_star: f64,
@@ -138,7 +140,11 @@ impl Model {
         // Newton on g(h) = ln F*(h) − ln f, safeguarded by a bracket
         // [lo, hi] with g(lo) > 0 > g(hi); F* ≤ 0 lies beyond the root.
         let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
-        let mut h = if guess.is_finite() { guess.clamp(-H_LIMIT, H_LIMIT) } else { 1.0 };
+        let mut h = if guess.is_finite() {
+            guess.clamp(-H_LIMIT, H_LIMIT)
+        } else {
+            1.0
+        };
         let mut max_step = 1.0;
         const ITERATIONS: usize = 200;
         for _ in 0..ITERATIONS {

@@ -19,5 +19,8 @@ pub fn rel(a: f64, b: f64) -> f64 {
 #[track_caller]
 pub fn assert_rel(what: &str, got: f64, want: f64, tol: f64) {
     let r = rel(got, want);
-    assert!(r <= tol, "{what}: got {got:e}, want {want:e}, relative error {r:e} > {tol:e}");
+    assert!(
+        r <= tol,
+        "{what}: got {got:e}, want {want:e}, relative error {r:e} > {tol:e}"
+    );
 }

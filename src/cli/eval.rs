@@ -1,0 +1,199 @@
+//! `kefric eval`: direct integration at h* or F*, one row per point.
+
+use super::{flag_of, parse_f64, Failure};
+use ke_friction::{Contact, Fit, Kind, Model, Params, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
+
+/// Evaluate the model by direct integration at given h* or F*.
+///
+/// A point is one number, or a range START:STOP:COUNT (linear for h*,
+/// logarithmic for F*).
+#[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("at").required(true).args(["h_star", "f_star"])))]
+pub struct Args {
+    #[command(flatten)]
+    pub model: ModelArgs,
+    /// Separation h* (or START:STOP:COUNT, linear).
+    #[arg(long, value_name = "H|START:STOP:COUNT", allow_hyphen_values = true)]
+    pub h_star: Option<String>,
+    /// External force F* > 0 (or START:STOP:COUNT, logarithmic).
+    #[arg(long, value_name = "F|START:STOP:COUNT", allow_hyphen_values = true)]
+    pub f_star: Option<String>,
+    /// Print one JSON object per point, one per line.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The model's parameters, shared by the subcommands that evaluate it.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ModelArgs {
+    /// Plasticity index ψ > 0.
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub psi: f64,
+    /// Adhesion parameter θ ≥ 0.
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub theta: f64,
+    /// Roughness parameter β = ηRσ > 0.01928.
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_BETA, allow_hyphen_values = true)]
+    pub beta: f64,
+    /// Poisson's ratio ν of the softer material, in [0, 0.5).
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_NU, allow_hyphen_values = true)]
+    pub nu: f64,
+    /// Intermolecular distance ε* = ε/σ > 0.
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_EPS_STAR, allow_hyphen_values = true)]
+    pub eps_star: f64,
+    /// Friction row: the self-consistent model, or the literal printed Eq. 18.
+    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
+    pub fit: FitArg,
+    /// Kogut–Etsion, or the CEB-type comparison model (MODEL.md §8).
+    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
+    pub model: ModelKindArg,
+}
+
+/// `--fit` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum FitArg {
+    /// MODEL.md §4 (the default).
+    Consistent,
+    /// The literal printed Eq. 18 (negative μ for ψ ≳ 2).
+    AsPrinted,
+}
+
+/// `--model` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum ModelKindArg {
+    /// Kogut–Etsion (2004).
+    Ke,
+    /// CEB-type (approximate reconstruction).
+    Ceb,
+}
+
+impl ModelArgs {
+    /// The validated model, or a message naming the offending flag.
+    pub fn model(&self) -> Result<Model, Failure> {
+        let params = Params::new(self.psi, self.theta)
+            .beta(self.beta)
+            .nu(self.nu)
+            .eps_star(self.eps_star)
+            .fit(match self.fit {
+                FitArg::Consistent => Fit::Consistent,
+                FitArg::AsPrinted => Fit::AsPrinted,
+            })
+            .kind(match self.model {
+                ModelKindArg::Ke => Kind::KogutEtsion,
+                ModelKindArg::Ceb => Kind::CebType,
+            });
+        Model::new(params).map_err(|e| Failure::input(format!("{}: {e}", flag_of(e.name))))
+    }
+}
+
+/// Spacing of the points of a range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Spacing {
+    /// Equal steps.
+    Linear,
+    /// Equal ratios (all points > 0).
+    Log,
+}
+
+/// Parses `X` or `START:STOP:COUNT` into the points; `flag` names the input.
+pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Failure> {
+    let bad = |why: String| Failure::input(format!("{flag}: {why}"));
+    let parts: Vec<&str> = text.split(':').collect();
+    let num = |s: &str| parse_f64(s).map_err(&bad);
+    let positive = |v: f64| {
+        if spacing == Spacing::Log && v <= 0.0 {
+            Err(bad(format!("{v} is out of range: must be > 0")))
+        } else {
+            Ok(v)
+        }
+    };
+    match parts.as_slice() {
+        [one] => Ok(vec![positive(num(one)?)?]),
+        [a, b, n] => {
+            let (a, b) = (positive(num(a)?)?, positive(num(b)?)?);
+            let n: usize = n
+                .trim()
+                .parse()
+                .ok()
+                .filter(|&n| (1..=1_000_000).contains(&n))
+                .ok_or_else(|| {
+                    bad(format!(
+                        "COUNT '{n}' is out of range: must be a whole number from 1 to 1000000"
+                    ))
+                })?;
+            Ok((0..n)
+                .map(|i| {
+                    let t = if n == 1 {
+                        0.0
+                    } else {
+                        i as f64 / (n - 1) as f64
+                    };
+                    match spacing {
+                        Spacing::Linear => a + (b - a) * t,
+                        Spacing::Log => a * (b / a).powf(t),
+                    }
+                })
+                .collect())
+        }
+        _ => Err(bad(format!("'{text}' is not a number or START:STOP:COUNT"))),
+    }
+}
+
+/// Runs `kefric eval`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    let model = args.model.model()?;
+    let contacts: Vec<Result<Contact, ke_friction::EvalError>> = if let Some(h) = &args.h_star {
+        points("--h-star", h, Spacing::Linear)?
+            .into_iter()
+            .map(|h| model.at_h_star(h))
+            .collect()
+    } else {
+        let f = args.f_star.as_deref().unwrap_or_default();
+        points("--f-star", f, Spacing::Log)?
+            .into_iter()
+            .map(|f| model.at_f_star(f))
+            .collect()
+    };
+    let flag = if args.h_star.is_some() {
+        "--h-star"
+    } else {
+        "--f-star"
+    };
+    let contacts = contacts
+        .into_iter()
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| Failure::input(format!("{flag}: {e}")))?;
+    let p = model.params();
+    if args.json {
+        for c in &contacts {
+            println!(
+                "{{\"psi\":{},\"theta\":{},\"beta\":{},\"nu\":{},\"eps_star\":{},\"h_star\":{},\"d_star\":{},\"p_star\":{},\"fs_star\":{},\"q_star\":{},\"f_star\":{},\"mu\":{}}}",
+                full(p.psi), full(p.theta), full(p.beta), full(p.nu), full(p.eps_star),
+                full(c.h_star), full(c.d_star), full(c.p_star), full(c.fs_star), full(c.q_star), full(c.f_star),
+                c.mu.map_or("null".to_string(), full)
+            );
+        }
+    } else {
+        println!(
+            "# psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {:?}, model = {:?}",
+            p.psi, p.theta, p.beta, p.nu, p.eps_star, p.fit, p.kind
+        );
+        println!(
+            "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
+            "h*", "d*", "P*", "Fs*", "Q*", "F*", "mu"
+        );
+        for c in &contacts {
+            let mu = c.mu.map_or("undefined".to_string(), |m| format!("{m:.5e}"));
+            println!(
+                "{:>10.6} {:>10.6} {:>12.5e} {:>12.5e} {:>12.5e} {:>12.5e} {:>12}",
+                c.h_star, c.d_star, c.p_star, c.fs_star, c.q_star, c.f_star, mu
+            );
+        }
+    }
+    Ok(())
+}
+
+/// 17 significant digits: every double round-trips.
+pub fn full(x: f64) -> String {
+    format!("{x:.16e}")
+}
