@@ -18,12 +18,17 @@
 #![warn(missing_docs)]
 
 pub mod asperity;
+#[cfg(feature = "builder")]
+pub mod build;
 mod model;
 mod params;
 mod quadrature;
+pub mod spline;
 mod surface;
+pub mod table;
 
 pub use model::{Contact, EvalError, Model, H_LIMIT};
 pub use params::{
     Fit, Kind, ParamError, Params, Physical, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
 };
+pub use table::{Domain, LookupError, Table, TableError};

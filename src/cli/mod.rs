@@ -1,5 +1,6 @@
 //! Argument parsing and the subcommands of `kefric`.
 
+mod build;
 mod eval;
 
 use clap::{Parser, Subcommand};
@@ -17,6 +18,8 @@ struct Cli {
 enum Command {
     /// Evaluate the model by direct integration at given h* or F*.
     Eval(eval::Args),
+    /// Build a table by direct integration, verify it, write it atomically.
+    Build(build::Args),
 }
 
 /// A failure to report: the message, and whether it is the user's input
@@ -35,6 +38,14 @@ impl Failure {
             code: 2,
         }
     }
+
+    /// Anything else (e.g. a build that misses its tolerance): exit status 1.
+    pub fn other(message: impl Display) -> Failure {
+        Failure {
+            message: message.to_string(),
+            code: 1,
+        }
+    }
 }
 
 /// Parses the command line, runs the subcommand, returns the exit status.
@@ -45,6 +56,7 @@ pub fn run() -> i32 {
     };
     let result = match cli.command {
         Command::Eval(args) => eval::run(args),
+        Command::Build(args) => build::run(args),
     };
     match result {
         Ok(()) => 0,
@@ -99,4 +111,68 @@ pub fn parse_f64(s: &str) -> Result<f64, String> {
 /// The flag that sets a [`ke_friction::Params`] field, for messages.
 pub fn flag_of(field: &str) -> String {
     format!("--{}", field.replace('_', "-"))
+}
+
+/// Fails early (before long work) if `path` cannot be written: a directory,
+/// or a parent directory that does not exist.
+pub fn check_writable(path: &std::path::Path) -> Result<(), Failure> {
+    if path.is_dir() {
+        return Err(Failure::input(format!(
+            "--out: {} is a directory",
+            path.display()
+        )));
+    }
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => std::path::Path::new("."),
+    };
+    if !parent.is_dir() {
+        return Err(Failure::input(format!(
+            "--out: directory {} does not exist",
+            parent.display()
+        )));
+    }
+    Ok(())
+}
+
+/// A progress bar on stderr with rate and ETA; hidden when stderr is not a
+/// terminal or with `--quiet`.
+pub struct Bar(indicatif::ProgressBar);
+
+impl Bar {
+    /// A bar, hidden if `quiet` or stderr is not a terminal.
+    pub fn new(quiet: bool) -> Bar {
+        use std::io::IsTerminal;
+        let bar = if quiet || !std::io::stderr().is_terminal() {
+            indicatif::ProgressBar::hidden()
+        } else {
+            indicatif::ProgressBar::new(0)
+        };
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{msg:40} [{bar:30}] {pos}/{len} {per_sec} ETA {eta}",
+            )
+            .expect("valid template")
+            .progress_chars("=> "),
+        );
+        Bar(bar)
+    }
+
+    /// Clears the bar.
+    pub fn done(&self) {
+        self.0.finish_and_clear();
+    }
+}
+
+impl ke_friction::build::Progress for Bar {
+    fn stage(&self, name: &str, total: u64) {
+        self.0.set_message(name.to_string());
+        self.0.set_length(total);
+        self.0.set_position(0);
+        self.0.reset_eta();
+    }
+
+    fn advance(&self, n: u64) {
+        self.0.inc(n);
+    }
 }

@@ -1,0 +1,547 @@
+//! The offline table builder: integrate the model over a (ψ, θ, h*) grid
+//! in parallel, solve for the lookup grid's F* nodes, fit the splines, and
+//! measure the result against direct integration.
+//!
+//! Deterministic: every number depends only on the options (parallel work
+//! is collected in a fixed order, and the verification points come from a
+//! seeded generator), so the same options give a byte-identical file on
+//! any number of threads.
+
+use crate::model::{EvalError, Model};
+use crate::params::{check, Fit, Kind, ParamError, Params};
+use crate::spline::{fit_3d, Axis, Scale, Start};
+use crate::table::format::{
+    self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload, ScaleCode,
+};
+use crate::table::Table;
+use rayon::prelude::*;
+
+/// Stored precision of the table's coefficients.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Precision {
+    /// 4 bytes a coefficient; enough for tolerances down to ~1e-6.
+    F32,
+    /// 8 bytes a coefficient.
+    F64,
+}
+
+/// Everything that shapes a table. [`Default`] gives the default table.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuildOptions {
+    /// Range of ψ (> 0).
+    pub psi: (f64, f64),
+    /// Range of θ (≥ 0).
+    pub theta: (f64, f64),
+    /// Range of F* (> 0).
+    pub f_star: (f64, f64),
+    /// Nodes across the range of ψ, θ and F* (each ≥ 5).
+    pub nodes: [usize; 3],
+    /// Extra nodes beyond each end of the ψ and F* ranges, so that the
+    /// spline's end conditions act outside the domain.
+    pub ghosts: usize,
+    /// The integration grid's h* axis: from, to, points.
+    pub h_star: (f64, f64, usize),
+    /// Model constants.
+    pub beta: f64,
+    /// Poisson's ratio.
+    pub nu: f64,
+    /// Intermolecular distance.
+    pub eps_star: f64,
+    /// Friction row.
+    pub fit: Fit,
+    /// Model.
+    pub kind: Kind,
+    /// Stored precision.
+    pub precision: Precision,
+    /// The maximum relative error of μ the table must meet (else the build fails).
+    pub tolerance: f64,
+    /// Points checked against direct integration (half random, half cell centres).
+    pub samples: usize,
+    /// Seed of those points.
+    pub seed: u64,
+}
+
+impl Default for BuildOptions {
+    fn default() -> Self {
+        BuildOptions {
+            psi: (0.5, 8.0),
+            theta: (0.0, 0.01),
+            f_star: (1e-5, 0.1),
+            nodes: [33, 33, 33],
+            ghosts: 2,
+            h_star: (-1.0, 6.0, 141),
+            beta: crate::params::DEFAULT_BETA,
+            nu: crate::params::DEFAULT_NU,
+            eps_star: crate::params::DEFAULT_EPS_STAR,
+            fit: Fit::Consistent,
+            kind: Kind::KogutEtsion,
+            precision: Precision::F32,
+            tolerance: 1e-4,
+            samples: 10000,
+            seed: 2004,
+        }
+    }
+}
+
+/// Why a build failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum BuildError {
+    /// An option is out of range.
+    #[error(transparent)]
+    Option(#[from] ParamError),
+    /// The model could not be evaluated somewhere on the grid.
+    #[error("model evaluation failed at psi = {psi}, theta = {theta}: {error}")]
+    Eval {
+        /// ψ of the failing node.
+        psi: f64,
+        /// θ of the failing node.
+        theta: f64,
+        /// The model's error.
+        error: EvalError,
+    },
+    /// The finished table misses the tolerance.
+    #[error("the table misses its tolerance: max relative error {max_rel:e} > {tolerance:e} (worst at psi = {}, theta = {}, f_star = {}); use more nodes or f64 precision", worst[0], worst[1], worst[2])]
+    Tolerance {
+        /// Measured maximum.
+        max_rel: f64,
+        /// Requested tolerance.
+        tolerance: f64,
+        /// Where.
+        worst: [f64; 3],
+    },
+}
+
+/// Progress of long work, for a progress bar (all methods may be called
+/// from several threads).
+pub trait Progress: Sync {
+    /// A stage with `total` units of work begins.
+    fn stage(&self, name: &str, total: u64);
+    /// `n` units are done.
+    fn advance(&self, n: u64);
+}
+
+/// No progress reporting.
+impl Progress for () {
+    fn stage(&self, _: &str, _: u64) {}
+    fn advance(&self, _: u64) {}
+}
+
+/// The model evaluated on the integration grid (shape ψ × θ × h*, h* fastest).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    /// ψ nodes.
+    pub psi: Vec<f64>,
+    /// θ nodes.
+    pub theta: Vec<f64>,
+    /// h* nodes.
+    pub h_star: Vec<f64>,
+    /// P*.
+    pub p_star: Vec<f64>,
+    /// Fs*.
+    pub fs_star: Vec<f64>,
+    /// Q*.
+    pub q_star: Vec<f64>,
+    /// F*.
+    pub f_star: Vec<f64>,
+    /// μ, NaN where F* ≤ 0.
+    pub mu: Vec<f64>,
+}
+
+/// A finished build.
+#[derive(Debug, Clone)]
+pub struct Built {
+    /// The table file's bytes.
+    pub bytes: Vec<u8>,
+    /// The decoded table.
+    pub table: Table,
+    /// The integration grid.
+    pub grid: Grid,
+}
+
+fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
+    Params::new(psi, theta)
+        .beta(o.beta)
+        .nu(o.nu)
+        .eps_star(o.eps_star)
+        .fit(o.fit)
+        .kind(o.kind)
+}
+
+impl BuildOptions {
+    /// Checks every option, naming the first bad one.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let range = |name: &'static str,
+                     (lo, hi): (f64, f64),
+                     low_ok: fn(f64) -> bool,
+                     what: &'static str| {
+            check(name, lo, what, low_ok)?;
+            check(name, hi, "greater than the lower end", |v| v > lo)
+        };
+        range("psi", self.psi, |v| v > 0.0, "> 0")?;
+        range("theta", self.theta, |v| v >= 0.0, ">= 0")?;
+        range("f_star", self.f_star, |v| v > 0.0, "> 0")?;
+        let count = |name, n: usize, min: usize| {
+            check(name, n as f64, "a whole number from 5 to 4096", |v| {
+                v >= min as f64 && v <= 4096.0
+            })
+        };
+        count("psi_nodes", self.nodes[0], 5)?;
+        count("theta_nodes", self.nodes[1], 5)?;
+        count("f_nodes", self.nodes[2], 5)?;
+        check("ghosts", self.ghosts as f64, "from 0 to 8", |v| v <= 8.0)?;
+        let (h_lo, h_hi, h_n) = self.h_star;
+        check("h_star", h_lo, "finite", |_| true)?;
+        check("h_star", h_hi, "greater than the lower end", |v| v > h_lo)?;
+        check(
+            "h_nodes",
+            h_n as f64,
+            "a whole number from 2 to 100000",
+            |v| (2.0..=1e5).contains(&v),
+        )?;
+        check("tolerance", self.tolerance, "> 0", |v| v > 0.0)?;
+        check(
+            "samples",
+            self.samples as f64,
+            "a whole number from 2 to 10000000",
+            |v| (2.0..=1e7).contains(&v),
+        )?;
+        // Model constants (and the lowest ghost ψ) must be valid model inputs.
+        params_of(self, self.psi.0, self.theta.0).validate()
+    }
+
+    /// The lookup grid's axes (ψ, θ, F*), ghost nodes included.
+    pub fn axes(&self) -> [Axis; 3] {
+        let g = self.ghosts;
+        let log_axis = |(lo, hi): (f64, f64), n: usize| {
+            let step = (hi.ln() - lo.ln()) / (n - 1) as f64;
+            Axis {
+                scale: Scale::Log,
+                first: lo.ln() - g as f64 * step,
+                step,
+                nodes: n + 2 * g,
+            }
+        };
+        // θ enters as √θ: at small F* the friction coefficient turns from
+        // its adhesion-free value to the adhesion-dominated one over a θ of
+        // order F*, which a uniform grid in θ cannot resolve. μ is smooth in
+        // θ itself, so it is even in √θ about 0: the spline's slope there is
+        // exactly zero, and only the upper end needs ghost nodes.
+        let (t_lo, t_hi) = (self.theta.0.sqrt(), self.theta.1.sqrt());
+        let t_step = (t_hi - t_lo) / (self.nodes[1] - 1) as f64;
+        [
+            log_axis(self.psi, self.nodes[0]),
+            Axis {
+                scale: Scale::Sqrt,
+                first: t_lo,
+                step: t_step,
+                nodes: self.nodes[1] + g,
+            },
+            log_axis(self.f_star, self.nodes[2]),
+        ]
+    }
+
+    fn h_nodes(&self) -> Vec<f64> {
+        let (lo, hi, n) = self.h_star;
+        (0..n)
+            .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
+            .collect()
+    }
+}
+
+/// Integrates the model on the (ψ, θ, h*) grid of the options' axes.
+pub fn integrate_grid(o: &BuildOptions, progress: &dyn Progress) -> Result<Grid, BuildError> {
+    o.validate()?;
+    let [ax_p, ax_t, _] = o.axes();
+    let psi: Vec<f64> = (0..ax_p.nodes).map(|i| ax_p.value(i)).collect();
+    let theta: Vec<f64> = (0..ax_t.nodes).map(|j| ax_t.value(j)).collect();
+    let h = o.h_nodes();
+    progress.stage(
+        "integrating the (psi, theta, h*) grid",
+        (psi.len() * theta.len()) as u64,
+    );
+    let columns: Vec<Result<Vec<[f64; 5]>, BuildError>> = (0..psi.len() * theta.len())
+        .into_par_iter()
+        .map(|ij| {
+            let (p, t) = (psi[ij / theta.len()], theta[ij % theta.len()]);
+            let model = Model::new(params_of(o, p, t))?;
+            let col = h
+                .iter()
+                .map(|&h| {
+                    let c = model.at_h_star(h).map_err(|error| BuildError::Eval {
+                        psi: p,
+                        theta: t,
+                        error,
+                    })?;
+                    Ok([
+                        c.p_star,
+                        c.fs_star,
+                        c.q_star,
+                        c.f_star,
+                        c.mu.unwrap_or(f64::NAN),
+                    ])
+                })
+                .collect();
+            progress.advance(1);
+            col
+        })
+        .collect();
+    let mut grid = Grid {
+        psi,
+        theta,
+        h_star: h,
+        p_star: vec![],
+        fs_star: vec![],
+        q_star: vec![],
+        f_star: vec![],
+        mu: vec![],
+    };
+    for col in columns {
+        for [p, fs, q, f, mu] in col? {
+            grid.p_star.push(p);
+            grid.fs_star.push(fs);
+            grid.q_star.push(q);
+            grid.f_star.push(f);
+            grid.mu.push(mu);
+        }
+    }
+    Ok(grid)
+}
+
+/// Builds a table: integrates, solves, fits, measures, encodes.
+pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildError> {
+    let grid = integrate_grid(o, progress)?;
+    let axes = o.axes();
+    let f_nodes: Vec<f64> = (0..axes[2].nodes).map(|k| axes[2].value(k)).collect();
+    let (np, nt, nf) = (axes[0].nodes, axes[1].nodes, axes[2].nodes);
+    let nh = grid.h_star.len();
+    progress.stage("solving F*(h*) at the table's nodes", (np * nt) as u64);
+    let columns: Vec<Result<Vec<(f64, f64)>, BuildError>> = (0..np * nt)
+        .into_par_iter()
+        .map(|ij| {
+            let (p, t) = (grid.psi[ij / nt], grid.theta[ij % nt]);
+            let model = Model::new(params_of(o, p, t))?;
+            let f_col = &grid.f_star[ij * nh..(ij + 1) * nh];
+            let col = f_nodes
+                .iter()
+                .map(|&f| {
+                    let err = |error| BuildError::Eval {
+                        psi: p,
+                        theta: t,
+                        error,
+                    };
+                    let h = model
+                        .solve_h(f, guess(&grid.h_star, f_col, f))
+                        .map_err(err)?;
+                    let c = model.at_h_star(h).map_err(err)?;
+                    let mu =
+                        c.mu.filter(|m| *m > 0.0)
+                            .ok_or(err(EvalError::FStar(c.f_star)))?;
+                    Ok((mu.ln(), h))
+                })
+                .collect();
+            progress.advance(1);
+            col
+        })
+        .collect();
+    let mut ln_mu = Vec::with_capacity(np * nt * nf);
+    let mut h_star = Vec::with_capacity(np * nt * nf);
+    for col in columns {
+        for (m, h) in col? {
+            ln_mu.push(m);
+            h_star.push(h);
+        }
+    }
+    let theta_start = if o.theta.0 == 0.0 {
+        Start::Even
+    } else {
+        Start::Estimated
+    };
+    let starts = [Start::Estimated, theta_start, Start::Estimated];
+    let store = |v: Vec<f64>| match o.precision {
+        Precision::F32 => Coefs::F32(v.iter().map(|&x| x as f32).collect()),
+        Precision::F64 => Coefs::F64(v),
+    };
+    let spec = |axis: &Axis, (lo, hi): (f64, f64)| AxisSpec {
+        scale: match axis.scale {
+            Scale::Log => ScaleCode::Log,
+            Scale::Sqrt => ScaleCode::Sqrt,
+            Scale::Linear => ScaleCode::Linear,
+        },
+        first: axis.first,
+        step: axis.step,
+        nodes: axis.nodes as u32,
+        lo,
+        hi,
+    };
+    let mut payload = Payload {
+        model: ModelSpec {
+            beta: o.beta,
+            nu: o.nu,
+            eps_star: o.eps_star,
+            fit: match o.fit {
+                Fit::Consistent => 0,
+                Fit::AsPrinted => 1,
+            },
+            kind: match o.kind {
+                Kind::KogutEtsion => 0,
+                Kind::CebType => 1,
+            },
+        },
+        axes: [
+            spec(&axes[0], o.psi),
+            spec(&axes[1], o.theta),
+            spec(&axes[2], o.f_star),
+        ],
+        ln_mu: store(fit_3d(&ln_mu, [np, nt, nf], starts)),
+        h_star: store(fit_3d(&h_star, [np, nt, nf], starts)),
+        build: BuildSpec {
+            nodes: o.nodes.map(|n| n as u32),
+            ghosts: o.ghosts as u32,
+            h_lo: o.h_star.0,
+            h_hi: o.h_star.1,
+            h_nodes: o.h_star.2 as u32,
+            samples: o.samples as u32,
+            seed: o.seed,
+            generator: concat!("ke-friction ", env!("CARGO_PKG_VERSION")).to_string(),
+        },
+        accuracy: Accuracy {
+            tolerance: o.tolerance,
+            max_rel: 0.0,
+            p99_rel: 0.0,
+            samples: 0,
+            worst: [0.0; 3],
+        },
+    };
+    let draft =
+        Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
+    let accuracy = measure(&draft, o.samples, o.seed, progress)?;
+    if accuracy.max_rel.is_nan() || accuracy.max_rel > o.tolerance {
+        return Err(BuildError::Tolerance {
+            max_rel: accuracy.max_rel,
+            tolerance: o.tolerance,
+            worst: accuracy.worst,
+        });
+    }
+    payload.accuracy = accuracy;
+    let bytes = format::encode(&payload);
+    let table = Table::from_bytes(&bytes).expect("a freshly encoded table decodes");
+    Ok(Built { bytes, table, grid })
+}
+
+/// An initial h* for F* = `f` from the integration grid's column (where F*
+/// is positive and decreasing), or 1 when the column does not bracket it.
+fn guess(h: &[f64], f_col: &[f64], f: f64) -> f64 {
+    for k in 1..h.len() {
+        let (a, b) = (f_col[k - 1], f_col[k]);
+        if a >= f && b < f && a > 0.0 && b > 0.0 {
+            let t = (a.ln() - f.ln()) / (a.ln() - b.ln());
+            return h[k - 1] + t * (h[k] - h[k - 1]);
+        }
+    }
+    1.0
+}
+
+/// Measures a table's μ against direct integration at `samples` points in
+/// its domain (seeded): half uniform in the grid's coordinates, half at the
+/// centres of random cells (the midpoint of the cell in every axis, where
+/// interpolation errs most). The accuracy record carries the table's own
+/// tolerance.
+pub fn measure(
+    table: &Table,
+    samples: usize,
+    seed: u64,
+    progress: &dyn Progress,
+) -> Result<Accuracy, BuildError> {
+    let points = sample_points(table, samples, seed);
+    let d = *table.domain();
+    progress.stage("checking against direct integration", points.len() as u64);
+    let errors: Vec<Result<f64, BuildError>> = points
+        .par_iter()
+        .map(|&[p, t, f]| {
+            let params = Params {
+                psi: p,
+                theta: t,
+                ..d.params
+            };
+            let model = Model::new(params)?;
+            let exact = model
+                .at_f_star(f)
+                .map_err(|error| BuildError::Eval {
+                    psi: p,
+                    theta: t,
+                    error,
+                })?
+                .mu
+                .unwrap_or(f64::NAN);
+            let got = table.mu(p, t, f).unwrap_or(f64::NAN);
+            progress.advance(1);
+            Ok(((got - exact) / exact).abs())
+        })
+        .collect();
+    let errors = errors.into_iter().collect::<Result<Vec<f64>, _>>()?;
+    let (mut worst, mut max_rel) = (0, 0.0f64);
+    for (i, &e) in errors.iter().enumerate() {
+        if e.is_nan() || e > max_rel {
+            worst = i;
+            max_rel = e;
+        }
+    }
+    let mut sorted = errors.clone();
+    sorted.sort_by(f64::total_cmp);
+    let p99 = sorted[((sorted.len() as f64 * 0.99).ceil() as usize).clamp(1, sorted.len()) - 1];
+    Ok(Accuracy {
+        tolerance: d.tolerance,
+        max_rel,
+        p99_rel: p99,
+        samples: errors.len() as u32,
+        worst: points[worst],
+    })
+}
+
+/// The verification points: in the domain, half uniform in the axes'
+/// coordinates, half at cell centres.
+pub fn sample_points(table: &Table, samples: usize, seed: u64) -> Vec<[f64; 3]> {
+    let d = table.domain();
+    let ranges = [d.psi, d.theta, d.f_star];
+    let axes = table.axes();
+    let mut rng = SplitMix64(seed);
+    (0..samples)
+        .map(|n| {
+            let mut q = [0.0; 3];
+            for k in 0..3 {
+                let (lo, hi) = ranges[k];
+                let (a, s) = (axes[k].scale, axes[k]);
+                let (c_lo, c_hi) = (a.forward(lo), a.forward(hi));
+                let c = if n % 2 == 0 {
+                    c_lo + (c_hi - c_lo) * rng.unit()
+                } else {
+                    // Centre of a random cell lying inside the domain.
+                    let first = ((c_lo - s.first) / s.step).round();
+                    let cells = ((c_hi - c_lo) / s.step).round().max(1.0);
+                    let i = (rng.unit() * cells).floor().min(cells - 1.0);
+                    s.first + (first + i + 0.5) * s.step
+                };
+                q[k] = a.inverse(c).clamp(lo, hi);
+            }
+            q
+        })
+        .collect()
+}
+
+/// A small, fast, seedable generator (Steele, Lea & Flood's SplitMix64).
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}

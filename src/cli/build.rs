@@ -1,0 +1,195 @@
+//! `kefric build`: integrate, tabulate, verify, write atomically.
+
+use super::eval::{FitArg, ModelKindArg};
+use super::{parse_f64, Bar, Failure};
+use ke_friction::build::{build, BuildOptions, Precision};
+use ke_friction::table::write_atomic;
+use ke_friction::{Fit, Kind};
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Build a table of μ(ψ, θ, F*) by direct integration and verify it.
+///
+/// The defaults build the default table (tables/default.kft).
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Output file (written to a temporary name, then renamed).
+    #[arg(long, default_value = "tables/default.kft")]
+    pub out: PathBuf,
+    /// Range of ψ, LO:HI.
+    #[arg(long, value_name = "LO:HI", default_value = "0.5:8")]
+    pub psi: String,
+    /// Range of θ, LO:HI.
+    #[arg(long, value_name = "LO:HI", default_value = "0:0.01")]
+    pub theta: String,
+    /// Range of F*, LO:HI.
+    #[arg(long, value_name = "LO:HI", default_value = "1e-5:0.1")]
+    pub f_star: String,
+    /// Nodes across the ψ, θ, F* ranges, NP,NT,NF.
+    #[arg(long, value_name = "NP,NT,NF")]
+    pub nodes: Option<String>,
+    /// Ghost nodes beyond each end of the ψ and F* ranges.
+    #[arg(long)]
+    pub ghosts: Option<usize>,
+    /// Integration grid in h*, LO:HI:COUNT.
+    #[arg(long, value_name = "LO:HI:COUNT", allow_hyphen_values = true)]
+    pub h_star: Option<String>,
+    /// Roughness parameter β.
+    #[arg(long, value_parser = parse_f64)]
+    pub beta: Option<f64>,
+    /// Poisson's ratio ν.
+    #[arg(long, value_parser = parse_f64)]
+    pub nu: Option<f64>,
+    /// Intermolecular distance ε*.
+    #[arg(long, value_parser = parse_f64)]
+    pub eps_star: Option<f64>,
+    /// Friction row.
+    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
+    pub fit: FitArg,
+    /// Model.
+    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
+    pub model: ModelKindArg,
+    /// Stored precision of the coefficients.
+    #[arg(long, value_enum, default_value_t = PrecisionArg::F32)]
+    pub precision: PrecisionArg,
+    /// Maximum relative error of μ the table must meet.
+    #[arg(long, value_parser = parse_f64)]
+    pub tolerance: Option<f64>,
+    /// Points checked against direct integration.
+    #[arg(long)]
+    pub samples: Option<usize>,
+    /// Seed of those points.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// `--precision` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum PrecisionArg {
+    /// 4 bytes a coefficient.
+    F32,
+    /// 8 bytes a coefficient.
+    F64,
+}
+
+/// Parses `LO:HI`.
+fn pair(flag: &str, text: &str) -> Result<(f64, f64), Failure> {
+    match text.split(':').collect::<Vec<_>>().as_slice() {
+        [a, b] => {
+            let a = parse_f64(a).map_err(|e| Failure::input(format!("{flag}: {e}")))?;
+            let b = parse_f64(b).map_err(|e| Failure::input(format!("{flag}: {e}")))?;
+            Ok((a, b))
+        }
+        _ => Err(Failure::input(format!("{flag}: '{text}' is not LO:HI"))),
+    }
+}
+
+impl Args {
+    /// The build options these flags ask for.
+    pub fn options(&self) -> Result<BuildOptions, Failure> {
+        let mut o = BuildOptions {
+            psi: pair("--psi", &self.psi)?,
+            theta: pair("--theta", &self.theta)?,
+            f_star: pair("--f-star", &self.f_star)?,
+            ..BuildOptions::default()
+        };
+        if let Some(nodes) = &self.nodes {
+            let parsed: Vec<Option<usize>> =
+                nodes.split(',').map(|s| s.trim().parse().ok()).collect();
+            match parsed.as_slice() {
+                [Some(a), Some(b), Some(c)] => o.nodes = [*a, *b, *c],
+                _ => {
+                    return Err(Failure::input(format!(
+                        "--nodes: '{nodes}' is not NP,NT,NF (three whole numbers)"
+                    )))
+                }
+            }
+        }
+        if let Some(h) = &self.h_star {
+            let parts: Vec<&str> = h.split(':').collect();
+            let bad = || Failure::input(format!("--h-star: '{h}' is not LO:HI:COUNT"));
+            let [lo, hi, n] = parts.as_slice() else {
+                return Err(bad());
+            };
+            let lo = parse_f64(lo).map_err(|e| Failure::input(format!("--h-star: {e}")))?;
+            let hi = parse_f64(hi).map_err(|e| Failure::input(format!("--h-star: {e}")))?;
+            let n: usize = n.trim().parse().map_err(|_| bad())?;
+            o.h_star = (lo, hi, n);
+        }
+        o.ghosts = self.ghosts.unwrap_or(o.ghosts);
+        o.beta = self.beta.unwrap_or(o.beta);
+        o.nu = self.nu.unwrap_or(o.nu);
+        o.eps_star = self.eps_star.unwrap_or(o.eps_star);
+        o.fit = match self.fit {
+            FitArg::Consistent => Fit::Consistent,
+            FitArg::AsPrinted => Fit::AsPrinted,
+        };
+        o.kind = match self.model {
+            ModelKindArg::Ke => Kind::KogutEtsion,
+            ModelKindArg::Ceb => Kind::CebType,
+        };
+        o.precision = match self.precision {
+            PrecisionArg::F32 => Precision::F32,
+            PrecisionArg::F64 => Precision::F64,
+        };
+        o.tolerance = self.tolerance.unwrap_or(o.tolerance);
+        o.samples = self.samples.unwrap_or(o.samples);
+        o.seed = self.seed.unwrap_or(o.seed);
+        o.validate()
+            .map_err(|e| Failure::input(format!("{}: {e}", option_flag(e.name))))?;
+        Ok(o)
+    }
+}
+
+/// The flag behind a build option's name.
+fn option_flag(name: &str) -> String {
+    match name {
+        "psi_nodes" | "theta_nodes" | "f_nodes" => "--nodes".into(),
+        "h_nodes" => "--h-star".into(),
+        other => super::flag_of(other),
+    }
+}
+
+/// Runs `kefric build`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    let options = args.options()?;
+    super::check_writable(&args.out)?;
+    let started = Instant::now();
+    let bar = Bar::new(args.quiet);
+    let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;
+    bar.done();
+    write_atomic(&args.out, &built.bytes)
+        .map_err(|e| Failure::input(format!("--out: cannot write {}: {e}", args.out.display())))?;
+    let secs = started.elapsed().as_secs_f64();
+    let t = &built.table;
+    let acc = t.accuracy();
+    let axes = t.axes();
+    println!("wrote {} ({} bytes)", args.out.display(), built.bytes.len());
+    println!(
+        "integration grid: {} psi x {} theta x {} h* = {} evaluations",
+        built.grid.psi.len(),
+        built.grid.theta.len(),
+        built.grid.h_star.len(),
+        built.grid.psi.len() * built.grid.theta.len() * built.grid.h_star.len()
+    );
+    println!(
+        "lookup grid: {} psi x {} theta x {} F* nodes ({} ghost nodes per end on psi and F*), {:?} coefficients",
+        axes[0].nodes, axes[1].nodes, axes[2].nodes, options.ghosts, options.precision
+    );
+    println!(
+        "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {:.1e}), 99th percentile {:.3e}",
+        acc.samples, acc.max_rel, acc.tolerance, acc.p99_rel
+    );
+    println!(
+        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
+        acc.worst[0], acc.worst[1], acc.worst[2]
+    );
+    println!(
+        "build time: {secs:.1} s on {} threads",
+        rayon::current_num_threads()
+    );
+    Ok(())
+}

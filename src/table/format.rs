@@ -1,0 +1,258 @@
+//! The table file format, version 1.
+//!
+//! ```text
+//! offset  size  content
+//! 0       8     magic  b"KEFRICTB"
+//! 8       4     format version, u32 little-endian (1)
+//! 12      8     payload length N, u64 little-endian
+//! 20      N     payload: a `Payload`, postcard-encoded
+//! 20+N    4     CRC-32 (IEEE) of bytes 0 .. 20+N, u32 little-endian
+//! ```
+//!
+//! Nothing may follow the checksum. postcard's wire format is stable and
+//! specified (floats little-endian IEEE 754, lengths as varints); bincode is
+//! not used because it is unmaintained. Decoding checks, in order: the
+//! magic, the version, the length, the checksum, the payload's structure,
+//! and then every value (finite coefficients, sane axes, valid model
+//! constants); any failure is a [`TableError`], never a panic.
+
+use serde::{Deserialize, Serialize};
+
+/// The first eight bytes of every table file.
+pub const MAGIC: [u8; 8] = *b"KEFRICTB";
+/// The format version this crate writes and reads.
+pub const VERSION: u32 = 1;
+const HEADER: usize = 20;
+
+/// Why a table file was rejected.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum TableError {
+    /// Fewer bytes than a header and a checksum.
+    #[error("not a ke-friction table: {len} bytes is too short (at least 24)")]
+    TooShort {
+        /// The length found.
+        len: usize,
+    },
+    /// The file does not start with `KEFRICTB`.
+    #[error("not a ke-friction table: wrong magic bytes")]
+    WrongMagic,
+    /// A format version this crate cannot read.
+    #[error("unsupported table format version {found} (this build reads version {VERSION})")]
+    UnsupportedVersion {
+        /// The version in the file.
+        found: u32,
+    },
+    /// The length field disagrees with the file's size.
+    #[error(
+        "table is truncated or has trailing bytes: header says {expected} bytes, file has {found}"
+    )]
+    Length {
+        /// Size implied by the header.
+        expected: u64,
+        /// Actual size.
+        found: u64,
+    },
+    /// The stored checksum does not match the contents.
+    #[error("table checksum mismatch (stored {stored:#010x}, computed {computed:#010x}): the file is corrupted")]
+    Checksum {
+        /// Checksum in the file.
+        stored: u32,
+        /// Checksum of the contents.
+        computed: u32,
+    },
+    /// The payload does not decode.
+    #[error("table payload does not decode: {0}")]
+    Payload(String),
+    /// The payload decodes but its contents are inconsistent.
+    #[error("table is inconsistent: {0}")]
+    Inconsistent(String),
+    /// The file could not be read.
+    #[error("cannot read table {path}: {message}")]
+    Io {
+        /// The path.
+        path: String,
+        /// The system's message.
+        message: String,
+    },
+}
+
+/// Coordinate map of an axis, as stored.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub enum ScaleCode {
+    /// ln(value).
+    Log,
+    /// √value.
+    Sqrt,
+    /// value.
+    Linear,
+}
+
+/// One axis of the lookup grid, as stored.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct AxisSpec {
+    /// Coordinate map.
+    pub scale: ScaleCode,
+    /// Coordinate of the first node (a ghost node, if any, lies below the domain).
+    pub first: f64,
+    /// Coordinate spacing.
+    pub step: f64,
+    /// Number of nodes, ghost nodes included.
+    pub nodes: u32,
+    /// The domain on this axis, in physical units: lookups outside are errors.
+    pub lo: f64,
+    /// Upper end of the domain.
+    pub hi: f64,
+}
+
+/// Stored precision of the coefficients.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum Coefs {
+    /// Single precision (relative rounding 6e-8).
+    F32(Vec<f32>),
+    /// Double precision.
+    F64(Vec<f64>),
+}
+
+impl Coefs {
+    /// Number of coefficients.
+    pub fn len(&self) -> usize {
+        match self {
+            Coefs::F32(v) => v.len(),
+            Coefs::F64(v) => v.len(),
+        }
+    }
+
+    /// Whether empty.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// As doubles.
+    pub fn to_f64(&self) -> Vec<f64> {
+        match self {
+            Coefs::F32(v) => v.iter().map(|&x| x as f64).collect(),
+            Coefs::F64(v) => v.clone(),
+        }
+    }
+}
+
+/// Model constants the table was built with.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct ModelSpec {
+    /// β.
+    pub beta: f64,
+    /// ν.
+    pub nu: f64,
+    /// ε*.
+    pub eps_star: f64,
+    /// 0 = consistent, 1 = as printed.
+    pub fit: u8,
+    /// 0 = Kogut–Etsion, 1 = CEB-type.
+    pub kind: u8,
+}
+
+/// The build options that shaped the table (for provenance and rebuilds).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BuildSpec {
+    /// Nodes across the domain on the ψ, θ, F* axes (ghost nodes excluded).
+    pub nodes: [u32; 3],
+    /// Ghost nodes beyond each end of the ψ and F* axes.
+    pub ghosts: u32,
+    /// The (ψ, θ, h*) integration grid: h* from `h_lo` to `h_hi` in `h_nodes` points.
+    pub h_lo: f64,
+    /// Upper end of h*.
+    pub h_hi: f64,
+    /// Number of h* points.
+    pub h_nodes: u32,
+    /// Random points checked against direct integration.
+    pub samples: u32,
+    /// Seed of those points.
+    pub seed: u64,
+    /// The producing crate and version.
+    pub generator: String,
+}
+
+/// Accuracy of μ measured against direct integration at build time.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Accuracy {
+    /// The tolerance the table promises (max relative error of μ).
+    pub tolerance: f64,
+    /// Measured maximum relative error of μ.
+    pub max_rel: f64,
+    /// Measured 99th percentile.
+    pub p99_rel: f64,
+    /// Points measured.
+    pub samples: u32,
+    /// Where the maximum occurred: (ψ, θ, F*).
+    pub worst: [f64; 3],
+}
+
+/// Everything in a table file between the header and the checksum.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Payload {
+    /// Model constants.
+    pub model: ModelSpec,
+    /// ψ, θ, F* axes.
+    pub axes: [AxisSpec; 3],
+    /// Spline coefficients of ln μ, shape (ψ+2, θ+2, F*+2), F* fastest.
+    pub ln_mu: Coefs,
+    /// Spline coefficients of h*, same shape.
+    pub h_star: Coefs,
+    /// Build options.
+    pub build: BuildSpec,
+    /// Measured accuracy.
+    pub accuracy: Accuracy,
+}
+
+/// Serialises a payload into a complete table file.
+pub fn encode(payload: &Payload) -> Vec<u8> {
+    let body = postcard::to_allocvec(payload).expect("postcard serialises plain data");
+    let mut out = Vec::with_capacity(HEADER + body.len() + 4);
+    out.extend_from_slice(&MAGIC);
+    out.extend_from_slice(&VERSION.to_le_bytes());
+    out.extend_from_slice(&(body.len() as u64).to_le_bytes());
+    out.extend_from_slice(&body);
+    let crc = crc32fast::hash(&out);
+    out.extend_from_slice(&crc.to_le_bytes());
+    out
+}
+
+/// Checks the framing and decodes the payload (values are checked by the caller).
+pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
+    if bytes.len() < HEADER + 4 {
+        if bytes.len() >= 8 && bytes[..8] != MAGIC {
+            return Err(TableError::WrongMagic);
+        }
+        return Err(TableError::TooShort { len: bytes.len() });
+    }
+    if bytes[..8] != MAGIC {
+        return Err(TableError::WrongMagic);
+    }
+    let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
+    if version != VERSION {
+        return Err(TableError::UnsupportedVersion { found: version });
+    }
+    let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes"));
+    let expected = (HEADER as u64 + 4).saturating_add(len);
+    if expected != bytes.len() as u64 {
+        return Err(TableError::Length {
+            expected,
+            found: bytes.len() as u64,
+        });
+    }
+    let end = bytes.len() - 4;
+    let stored = u32::from_le_bytes(bytes[end..].try_into().expect("4 bytes"));
+    let computed = crc32fast::hash(&bytes[..end]);
+    if stored != computed {
+        return Err(TableError::Checksum { stored, computed });
+    }
+    let (payload, rest) = postcard::take_from_bytes::<Payload>(&bytes[HEADER..end])
+        .map_err(|e| TableError::Payload(e.to_string()))?;
+    if !rest.is_empty() {
+        return Err(TableError::Payload(format!(
+            "{} unread bytes after the payload",
+            rest.len()
+        )));
+    }
+    Ok(payload)
+}

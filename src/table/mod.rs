@@ -1,0 +1,456 @@
+//! Precomputed tables of μ(ψ, θ, F*) and nanosecond lookups.
+//!
+//! A [`Table`] holds tensor cubic B-spline coefficients of ln μ and of h*
+//! over (ln ψ, √θ, ln F*) (see [`crate::spline`]). A lookup blends 4×4×4
+//! coefficients: no allocation, no lock, no branch on the data. The
+//! interpolant is C², so μ and ∂μ/∂F* are continuous everywhere.
+
+pub mod format;
+
+use crate::params::{Fit, Kind, Params};
+use crate::spline::{weight_slopes, weights, Axis, Scale};
+pub use format::TableError;
+use format::{Accuracy, AxisSpec, BuildSpec, Payload, ScaleCode};
+
+/// A lookup argument outside the table's domain, or not a number.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum LookupError {
+    /// The argument is NaN or outside `[lo, hi]`.
+    #[error("{name} = {value} is outside the table's range [{lo:e}, {hi:e}]")]
+    OutOfDomain {
+        /// `"psi"`, `"theta"` or `"f_star"`.
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// Lower end of the table's range.
+        lo: f64,
+        /// Upper end.
+        hi: f64,
+    },
+    /// Batch slices of different lengths.
+    #[error("batch slices differ in length: psi {psi}, theta {theta}, f_star {f_star}, out {out}")]
+    LengthMismatch {
+        /// Length of `psi`.
+        psi: usize,
+        /// Length of `theta`.
+        theta: usize,
+        /// Length of `f_star`.
+        f_star: usize,
+        /// Length of `out`.
+        out: usize,
+    },
+    /// A batch element was NaN or out of the domain; `index` says which.
+    #[error(
+        "batch element {index}: {name} = {value} is outside the table's range [{lo:e}, {hi:e}]"
+    )]
+    BatchElement {
+        /// Position in the slices.
+        index: usize,
+        /// `"psi"`, `"theta"` or `"f_star"`.
+        name: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// Lower end of the table's range.
+        lo: f64,
+        /// Upper end.
+        hi: f64,
+    },
+}
+
+/// What a table covers: its domain and the model it was built from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Domain {
+    /// Range of ψ.
+    pub psi: (f64, f64),
+    /// Range of θ.
+    pub theta: (f64, f64),
+    /// Range of F*.
+    pub f_star: (f64, f64),
+    /// The model constants and fit (ψ and θ of this `Params` are the lower
+    /// ends of their ranges).
+    pub params: Params,
+    /// The maximum relative error of μ the table promises (checked at build time).
+    pub tolerance: f64,
+}
+
+/// A loaded table: immutable, `Send + Sync`, shareable across threads.
+#[derive(Debug, Clone)]
+pub struct Table {
+    axes: [Axis; 3],
+    domain: Domain,
+    /// Strides of the coefficient arrays along ψ and θ.
+    strides: [usize; 2],
+    ln_mu: Vec<f64>,
+    h_star: Vec<f64>,
+    payload: Payload,
+}
+
+/// The default table, committed in `tables/` and compiled in.
+static DEFAULT_TABLE: &[u8] = include_bytes!("../../tables/default.kft");
+
+impl Table {
+    /// The default table compiled into the library (decoded on first use).
+    ///
+    /// ```
+    /// let table = ke_friction::Table::embedded();
+    /// let mu = table.mu(1.0, 0.001, 0.01).unwrap();
+    /// assert!((mu / 0.52521087083 - 1.0).abs() < 1e-4); // MODEL.md §7
+    /// ```
+    pub fn embedded() -> &'static Table {
+        static TABLE: std::sync::OnceLock<Table> = std::sync::OnceLock::new();
+        TABLE.get_or_init(|| {
+            Table::from_bytes(DEFAULT_TABLE)
+                .expect("the embedded default table is valid (checked by the test suite)")
+        })
+    }
+
+    /// The bytes of the embedded default table.
+    pub fn embedded_bytes() -> &'static [u8] {
+        DEFAULT_TABLE
+    }
+
+    /// Decodes and checks a table file's contents.
+    pub fn from_bytes(bytes: &[u8]) -> Result<Table, TableError> {
+        Table::from_payload(format::decode(bytes)?)
+    }
+
+    /// Reads and checks a table file.
+    pub fn load(path: impl AsRef<std::path::Path>) -> Result<Table, TableError> {
+        let path = path.as_ref();
+        let bytes = std::fs::read(path).map_err(|e| TableError::Io {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        Table::from_bytes(&bytes)
+    }
+
+    /// Builds the lookup structure from a payload, checking every value.
+    pub(crate) fn from_payload(payload: Payload) -> Result<Table, TableError> {
+        let bad = |m: String| Err(TableError::Inconsistent(m));
+        let m = &payload.model;
+        let fit = match m.fit {
+            0 => Fit::Consistent,
+            1 => Fit::AsPrinted,
+            f => return bad(format!("unknown fit code {f}")),
+        };
+        let kind = match m.kind {
+            0 => Kind::KogutEtsion,
+            1 => Kind::CebType,
+            k => return bad(format!("unknown model code {k}")),
+        };
+        let names = ["psi", "theta", "f_star"];
+        let mut axes = [Axis {
+            scale: Scale::Linear,
+            first: 0.0,
+            step: 1.0,
+            nodes: 5,
+        }; 3];
+        for (k, spec) in payload.axes.iter().enumerate() {
+            axes[k] = check_axis(names[k], spec).map_err(TableError::Inconsistent)?;
+        }
+        let [a, b, c] = payload.axes;
+        let params = Params::new(a.lo, b.lo)
+            .beta(m.beta)
+            .nu(m.nu)
+            .eps_star(m.eps_star)
+            .fit(fit)
+            .kind(kind);
+        params
+            .validate()
+            .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;
+        if b.lo < 0.0 || a.lo <= 0.0 || c.lo <= 0.0 {
+            return bad("domain starts below the model's valid range".into());
+        }
+        let count = axes
+            .iter()
+            .map(|x| x.nodes + 2)
+            .try_fold(1usize, |acc, n| acc.checked_mul(n));
+        let Some(count) = count.filter(|&n| n <= 1 << 28) else {
+            return bad("grid is too large".into());
+        };
+        for (name, coefs) in [("ln_mu", &payload.ln_mu), ("h_star", &payload.h_star)] {
+            if coefs.len() != count {
+                return bad(format!(
+                    "{name} has {} coefficients, the axes need {count}",
+                    coefs.len()
+                ));
+            }
+        }
+        let ln_mu = payload.ln_mu.to_f64();
+        let h_star = payload.h_star.to_f64();
+        if ln_mu.iter().chain(&h_star).any(|v| !v.is_finite()) {
+            return bad("non-finite coefficient".into());
+        }
+        let acc = &payload.accuracy;
+        if !(acc.tolerance.is_finite()
+            && acc.tolerance > 0.0
+            && acc.max_rel.is_finite()
+            && acc.p99_rel.is_finite())
+        {
+            return bad("accuracy record is not finite and positive".into());
+        }
+        let strides = [(axes[1].nodes + 2) * (axes[2].nodes + 2), axes[2].nodes + 2];
+        Ok(Table {
+            axes,
+            domain: Domain {
+                psi: (a.lo, a.hi),
+                theta: (b.lo, b.hi),
+                f_star: (c.lo, c.hi),
+                params,
+                tolerance: acc.tolerance,
+            },
+            strides,
+            ln_mu,
+            h_star,
+            payload,
+        })
+    }
+
+    /// The ranges of ψ, θ, F* this table covers, and its model constants.
+    pub fn domain(&self) -> &Domain {
+        &self.domain
+    }
+
+    /// The accuracy measured when the table was built.
+    pub fn accuracy(&self) -> &Accuracy {
+        &self.payload.accuracy
+    }
+
+    /// The build options recorded in the table.
+    pub fn build_spec(&self) -> &BuildSpec {
+        &self.payload.build
+    }
+
+    /// The lookup grid's axes (ψ, θ, F*), ghost nodes included.
+    pub fn axes(&self) -> &[Axis; 3] {
+        &self.axes
+    }
+
+    /// The decoded file contents.
+    pub fn payload(&self) -> &Payload {
+        &self.payload
+    }
+
+    /// The static friction coefficient μ(ψ, θ, F*).
+    ///
+    /// Arguments outside [`domain`](Self::domain) (or NaN) are errors:
+    /// nothing is clamped or extrapolated.
+    #[inline]
+    pub fn mu(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
+        let cell = self.cell(psi, theta, f_star)?;
+        Ok(self.blend(&self.ln_mu, &cell, &cell.wf).exp())
+    }
+
+    /// μ and its slope ∂μ/∂F* (for implicit solvers).
+    #[inline]
+    pub fn mu_with_slope(
+        &self,
+        psi: f64,
+        theta: f64,
+        f_star: f64,
+    ) -> Result<(f64, f64), LookupError> {
+        let cell = self.cell(psi, theta, f_star)?;
+        let (ln_mu, d_ln_mu) = self.blend2(&self.ln_mu, &cell);
+        let mu = ln_mu.exp();
+        // ln μ is splined in v = ln F*: dμ/dF* = μ · (d ln μ/dv) / F*.
+        Ok((mu, mu * d_ln_mu / (self.axes[2].step * f_star)))
+    }
+
+    /// The separation h*(ψ, θ, F*) at which the surfaces carry F*.
+    #[inline]
+    pub fn h_star(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
+        let cell = self.cell(psi, theta, f_star)?;
+        Ok(self.blend(&self.h_star, &cell, &cell.wf))
+    }
+
+    /// μ for many queries at once, written into `out` (no allocation).
+    /// All four slices must have the same length; on an out-of-domain
+    /// element the error names its index and `out` is left partly written.
+    pub fn mu_batch(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), LookupError> {
+        let n = out.len();
+        if psi.len() != n || theta.len() != n || f_star.len() != n {
+            return Err(LookupError::LengthMismatch {
+                psi: psi.len(),
+                theta: theta.len(),
+                f_star: f_star.len(),
+                out: n,
+            });
+        }
+        for i in 0..n {
+            out[i] = self.mu(psi[i], theta[i], f_star[i]).map_err(|e| match e {
+                LookupError::OutOfDomain {
+                    name,
+                    value,
+                    lo,
+                    hi,
+                } => LookupError::BatchElement {
+                    index: i,
+                    name,
+                    value,
+                    lo,
+                    hi,
+                },
+                other => other,
+            })?;
+        }
+        Ok(())
+    }
+
+    /// Locates a query: base offset and the ψ, θ, F* weights.
+    #[inline(always)]
+    fn cell(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
+        let d = &self.domain;
+        check_in("psi", psi, d.psi)?;
+        check_in("theta", theta, d.theta)?;
+        check_in("f_star", f_star, d.f_star)?;
+        let (i, fp) = self.axes[0].locate(self.axes[0].scale.forward(psi));
+        let (j, ft) = self.axes[1].locate(self.axes[1].scale.forward(theta));
+        let (k, ff) = self.axes[2].locate(self.axes[2].scale.forward(f_star));
+        Ok(Cell {
+            base: i * self.strides[0] + j * self.strides[1] + k,
+            wp: weights(fp),
+            wt: weights(ft),
+            wf: weights(ff),
+            df: weight_slopes(ff),
+        })
+    }
+
+    /// Σ wp·wt·wf·c over the 4×4×4 block.
+    #[inline(always)]
+    fn blend(&self, c: &[f64], cell: &Cell, wf: &[f64; 4]) -> f64 {
+        let mut sum = 0.0;
+        for a in 0..4 {
+            let mut plane = 0.0;
+            for b in 0..4 {
+                let o = cell.base + a * self.strides[0] + b * self.strides[1];
+                let row = &c[o..o + 4];
+                let r = row[0] * wf[0] + row[1] * wf[1] + row[2] * wf[2] + row[3] * wf[3];
+                plane += cell.wt[b] * r;
+            }
+            sum += cell.wp[a] * plane;
+        }
+        sum
+    }
+
+    /// The blend and its derivative along the F* coordinate, in one pass.
+    #[inline(always)]
+    fn blend2(&self, c: &[f64], cell: &Cell) -> (f64, f64) {
+        let (mut sum, mut dsum) = (0.0, 0.0);
+        for a in 0..4 {
+            let (mut plane, mut dplane) = (0.0, 0.0);
+            for b in 0..4 {
+                let o = cell.base + a * self.strides[0] + b * self.strides[1];
+                let row = &c[o..o + 4];
+                let r = row[0] * cell.wf[0]
+                    + row[1] * cell.wf[1]
+                    + row[2] * cell.wf[2]
+                    + row[3] * cell.wf[3];
+                let dr = row[0] * cell.df[0]
+                    + row[1] * cell.df[1]
+                    + row[2] * cell.df[2]
+                    + row[3] * cell.df[3];
+                plane += cell.wt[b] * r;
+                dplane += cell.wt[b] * dr;
+            }
+            sum += cell.wp[a] * plane;
+            dsum += cell.wp[a] * dplane;
+        }
+        (sum, dsum)
+    }
+}
+
+/// A located query.
+struct Cell {
+    base: usize,
+    wp: [f64; 4],
+    wt: [f64; 4],
+    wf: [f64; 4],
+    df: [f64; 4],
+}
+
+#[inline(always)]
+fn check_in(name: &'static str, value: f64, (lo, hi): (f64, f64)) -> Result<(), LookupError> {
+    if value >= lo && value <= hi {
+        Ok(())
+    } else {
+        Err(LookupError::OutOfDomain {
+            name,
+            value,
+            lo,
+            hi,
+        })
+    }
+}
+
+/// Validates a stored axis and converts it.
+fn check_axis(name: &str, s: &AxisSpec) -> Result<Axis, String> {
+    let scale = match s.scale {
+        ScaleCode::Log => Scale::Log,
+        ScaleCode::Sqrt => Scale::Sqrt,
+        ScaleCode::Linear => Scale::Linear,
+    };
+    let nodes = s.nodes as usize;
+    if !(s.first.is_finite()
+        && s.step.is_finite()
+        && s.step > 0.0
+        && (5..=1 << 20).contains(&nodes))
+    {
+        return Err(format!("{name} axis: bad node spacing or count"));
+    }
+    let axis = Axis {
+        scale,
+        first: s.first,
+        step: s.step,
+        nodes,
+    };
+    let (c_lo, c_hi) = (axis.coord(0), axis.coord(nodes - 1));
+    let ok = s.lo.is_finite()
+        && s.hi.is_finite()
+        && s.lo < s.hi
+        && (scale != Scale::Log || s.lo > 0.0)
+        && (scale != Scale::Sqrt || s.lo >= 0.0);
+    if !ok {
+        return Err(format!("{name} axis: bad domain [{}, {}]", s.lo, s.hi));
+    }
+    // The domain must lie within the nodes (tolerating rounding of the map).
+    let slack = 1e-9 * axis.step;
+    if scale.forward(s.lo) < c_lo - slack || scale.forward(s.hi) > c_hi + slack {
+        return Err(format!(
+            "{name} axis: domain [{}, {}] extends beyond the grid",
+            s.lo, s.hi
+        ));
+    }
+    Ok(axis)
+}
+
+/// Writes `bytes` to `path` atomically: to a temporary file in the same
+/// directory, flushed to disk, then renamed over `path`. An interrupted
+/// write leaves any previous file at `path` intact and no partial file
+/// under its name.
+pub fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write;
+    let name = path
+        .file_name()
+        .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::InvalidInput, "no file name"))?;
+    let tmp = path.with_file_name(format!(
+        ".{}.tmp-{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    let result = (|| {
+        let mut file = std::fs::File::create(&tmp)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        std::fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}

@@ -1,0 +1,253 @@
+//! The default table: accuracy against direct integration, smoothness,
+//! batch and threads, domain errors, and that it is exactly what the
+//! builder makes.
+mod common;
+use ke_friction::build::{build, BuildOptions};
+use ke_friction::{LookupError, Model, Params, Table};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+fn table() -> &'static Table {
+    Table::embedded()
+}
+
+/// A random in-domain query, uniform in (ln ψ, θ, ln F*).
+fn query(rng: &mut ChaCha8Rng) -> (f64, f64, f64) {
+    let d = table().domain();
+    let lerp_log = |(lo, hi): (f64, f64), u: f64| (lo.ln() + (hi.ln() - lo.ln()) * u).exp();
+    (
+        lerp_log(d.psi, rng.gen()),
+        d.theta.0 + (d.theta.1 - d.theta.0) * rng.gen::<f64>(),
+        lerp_log(d.f_star, rng.gen()),
+    )
+}
+
+#[test]
+fn the_committed_default_table_is_exactly_what_the_builder_writes() {
+    let built = build(&BuildOptions::default(), &()).expect("default build");
+    let committed =
+        std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft")).unwrap();
+    assert!(
+        built.bytes == committed,
+        "tables/default.kft is stale: run `cargo run --release -- build` and commit it"
+    );
+    assert_eq!(Table::embedded_bytes(), &committed[..]);
+}
+
+#[test]
+fn the_default_table_meets_its_tolerance_against_direct_integration() {
+    let t = table();
+    let tol = t.domain().tolerance;
+    assert!(tol <= 1e-4, "default tolerance {tol}");
+    assert!(t.accuracy().max_rel <= tol);
+    // Fresh points (not the builder's): random, plus the centres of cells.
+    let mut rng = ChaCha8Rng::seed_from_u64(99);
+    let mut points: Vec<(f64, f64, f64)> = (0..600).map(|_| query(&mut rng)).collect();
+    let axes = t.axes();
+    let d = t.domain();
+    for _ in 0..600 {
+        let centre = |k: usize, lo: f64, hi: f64, rng: &mut ChaCha8Rng| {
+            let a = axes[k];
+            let c_lo = a.scale.forward(lo);
+            let cells = ((a.scale.forward(hi) - c_lo) / a.step).round() as usize;
+            let i = rng.gen_range(0..cells);
+            a.scale.inverse(c_lo + (i as f64 + 0.5) * a.step)
+        };
+        points.push((
+            centre(0, d.psi.0, d.psi.1, &mut rng),
+            centre(1, d.theta.0, d.theta.1, &mut rng),
+            centre(2, d.f_star.0, d.f_star.1, &mut rng),
+        ));
+    }
+    let mut worst = 0.0f64;
+    for (p, th, f) in points {
+        let exact = Model::new(Params::new(p, th))
+            .unwrap()
+            .at_f_star(f)
+            .unwrap()
+            .mu
+            .unwrap();
+        let got = t.mu(p, th, f).unwrap();
+        worst = worst.max(((got - exact) / exact).abs());
+    }
+    assert!(
+        worst <= tol,
+        "worst relative error {worst:e} > tolerance {tol:e}"
+    );
+}
+
+#[test]
+fn the_slope_matches_a_finite_difference_of_direct_integration() {
+    let t = table();
+    let mut rng = ChaCha8Rng::seed_from_u64(5);
+    for _ in 0..100 {
+        let (p, th, f) = query(&mut rng);
+        let f = f.clamp(2e-5, 0.05);
+        let m = Model::new(Params::new(p, th)).unwrap();
+        let h = 1e-4 * f;
+        let fd = (m.at_f_star(f + h).unwrap().mu.unwrap()
+            - m.at_f_star(f - h).unwrap().mu.unwrap())
+            / (2.0 * h);
+        let (mu, slope) = t.mu_with_slope(p, th, f).unwrap();
+        // ln μ is good to ~1e-4; its derivative in ln F* loses one order: compare
+        // on the scale μ/F*, the natural size of ∂μ/∂F*.
+        assert!(
+            (slope - fd).abs() <= 2e-3 * mu / f,
+            "ψ={p} θ={th} F*={f}: slope {slope:e} vs {fd:e}"
+        );
+    }
+}
+
+#[test]
+fn mu_and_its_slope_are_continuous_across_cell_boundaries() {
+    let t = table();
+    let axes = t.axes();
+    let d = t.domain();
+    let mut rng = ChaCha8Rng::seed_from_u64(11);
+    for _ in 0..300 {
+        let (p, th, f) = query(&mut rng);
+        // A node on each axis inside the domain; probe just below and above it.
+        for k in 0..3 {
+            let a = axes[k];
+            let (lo, hi) = [d.psi, d.theta, d.f_star][k];
+            let c_lo = a.scale.forward(lo);
+            let cells = ((a.scale.forward(hi) - c_lo) / a.step).round() as usize;
+            let node = c_lo + rng.gen_range(1..cells) as f64 * a.step;
+            let eps = 1e-9 * a.step;
+            let at = |c: f64| {
+                let v = a.scale.inverse(c);
+                let q = match k {
+                    0 => (v, th, f),
+                    1 => (p, v, f),
+                    _ => (p, th, v),
+                };
+                t.mu_with_slope(q.0, q.1, q.2).unwrap()
+            };
+            let (m0, s0) = at(node - eps);
+            let (m1, s1) = at(node + eps);
+            assert!(
+                ((m1 - m0) / m0).abs() < 1e-7,
+                "μ jumps across axis {k} node: {m0} vs {m1}"
+            );
+            let scale = s0.abs().max(m0 / f);
+            assert!(
+                (s1 - s0).abs() < 1e-6 * scale,
+                "slope jumps across axis {k} node: {s0} vs {s1}"
+            );
+        }
+    }
+}
+
+#[test]
+fn batch_lookups_equal_scalar_lookups() {
+    let t = table();
+    let mut rng = ChaCha8Rng::seed_from_u64(3);
+    let q: Vec<(f64, f64, f64)> = (0..1000).map(|_| query(&mut rng)).collect();
+    let psi: Vec<f64> = q.iter().map(|x| x.0).collect();
+    let theta: Vec<f64> = q.iter().map(|x| x.1).collect();
+    let f: Vec<f64> = q.iter().map(|x| x.2).collect();
+    let mut out = vec![0.0; q.len()];
+    t.mu_batch(&psi, &theta, &f, &mut out).unwrap();
+    for (i, &(p, th, ff)) in q.iter().enumerate() {
+        assert_eq!(out[i].to_bits(), t.mu(p, th, ff).unwrap().to_bits());
+    }
+    let err = t.mu_batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
+    assert!(matches!(
+        err,
+        LookupError::LengthMismatch { f_star: 10, .. }
+    ));
+    let mut bad = f.clone();
+    bad[7] = f64::NAN;
+    let err = t.mu_batch(&psi, &theta, &bad, &mut out).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            LookupError::BatchElement {
+                index: 7,
+                name: "f_star",
+                ..
+            }
+        ),
+        "{err}"
+    );
+}
+
+#[test]
+fn threads_sharing_one_table_get_the_single_threaded_results() {
+    fn assert_send_sync<T: Send + Sync>() {}
+    assert_send_sync::<Table>();
+    let t = table();
+    let mut rng = ChaCha8Rng::seed_from_u64(4);
+    let q: Vec<(f64, f64, f64)> = (0..2000).map(|_| query(&mut rng)).collect();
+    let expected: Vec<u64> = q
+        .iter()
+        .map(|&(p, th, f)| t.mu(p, th, f).unwrap().to_bits())
+        .collect();
+    std::thread::scope(|s| {
+        for _ in 0..8 {
+            s.spawn(|| {
+                for (i, &(p, th, f)) in q.iter().enumerate() {
+                    assert_eq!(t.mu(p, th, f).unwrap().to_bits(), expected[i]);
+                }
+            });
+        }
+    });
+}
+
+#[test]
+fn out_of_domain_and_nan_queries_are_errors_naming_the_argument() {
+    let t = table();
+    let cases = [
+        (0.49, 0.001, 0.01, "psi"),
+        (8.01, 0.001, 0.01, "psi"),
+        (f64::NAN, 0.001, 0.01, "psi"),
+        (1.0, -1e-9, 0.01, "theta"),
+        (1.0, 0.0101, 0.01, "theta"),
+        (1.0, f64::INFINITY, 0.01, "theta"),
+        (1.0, 0.001, 9e-6, "f_star"),
+        (1.0, 0.001, 0.11, "f_star"),
+        (1.0, 0.001, f64::NAN, "f_star"),
+        (1.0, 0.001, -1.0, "f_star"),
+    ];
+    for (p, th, f, name) in cases {
+        for err in [
+            t.mu(p, th, f).unwrap_err(),
+            t.mu_with_slope(p, th, f).unwrap_err(),
+            t.h_star(p, th, f).unwrap_err(),
+        ] {
+            match err {
+                LookupError::OutOfDomain { name: n, .. } => assert_eq!(n, name),
+                other => panic!("{other:?}"),
+            }
+            assert!(err.to_string().starts_with(name), "{err}");
+        }
+    }
+    // The corners themselves are in the domain.
+    let d = t.domain();
+    for p in [d.psi.0, d.psi.1] {
+        for th in [d.theta.0, d.theta.1] {
+            for f in [d.f_star.0, d.f_star.1] {
+                assert!(t.mu(p, th, f).unwrap() > 0.0);
+            }
+        }
+    }
+}
+
+#[test]
+fn h_star_lookup_matches_direct_integration() {
+    let t = table();
+    let mut rng = ChaCha8Rng::seed_from_u64(8);
+    for _ in 0..200 {
+        let (p, th, f) = query(&mut rng);
+        let exact = Model::new(Params::new(p, th))
+            .unwrap()
+            .at_f_star(f)
+            .unwrap()
+            .h_star;
+        let got = t.h_star(p, th, f).unwrap();
+        assert!(
+            (got - exact).abs() < 1e-4,
+            "ψ={p} θ={th} F*={f}: h* {got} vs {exact}"
+        );
+    }
+}
