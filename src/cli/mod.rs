@@ -2,6 +2,8 @@
 
 mod build;
 mod eval;
+mod lookup;
+mod verify;
 
 use clap::{Parser, Subcommand};
 use std::fmt::Display;
@@ -20,6 +22,10 @@ enum Command {
     Eval(eval::Args),
     /// Build a table by direct integration, verify it, write it atomically.
     Build(build::Args),
+    /// Check a table against direct integration.
+    Verify(verify::Args),
+    /// Look up μ and ∂μ/∂F* in a table.
+    Lookup(lookup::Args),
 }
 
 /// A failure to report: the message, and whether it is the user's input
@@ -57,6 +63,8 @@ pub fn run() -> i32 {
     let result = match cli.command {
         Command::Eval(args) => eval::run(args),
         Command::Build(args) => build::run(args),
+        Command::Verify(args) => verify::run(args),
+        Command::Lookup(args) => lookup::run(args),
     };
     match result {
         Ok(()) => 0,
@@ -175,4 +183,10 @@ impl ke_friction::build::Progress for Bar {
     fn advance(&self, n: u64) {
         self.0.inc(n);
     }
+}
+
+/// Loads a table file; any problem is bad input (exit 2) naming the file.
+pub fn load_table(path: &std::path::Path) -> Result<ke_friction::Table, Failure> {
+    ke_friction::Table::load(path)
+        .map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))
 }

@@ -1,0 +1,73 @@
+//! Table lookups against direct integration, on the same random in-domain queries.
+use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
+use ke_friction::{Model, Params, Table};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+const N: usize = 4096;
+
+fn queries() -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+    let d = Table::embedded().domain();
+    let mut rng = ChaCha8Rng::seed_from_u64(42);
+    let log = |(lo, hi): (f64, f64), u: f64| (lo.ln() + (hi.ln() - lo.ln()) * u).exp();
+    let mut p = vec![];
+    let mut t = vec![];
+    let mut f = vec![];
+    for _ in 0..N {
+        p.push(log(d.psi, rng.gen()));
+        t.push(d.theta.0 + (d.theta.1 - d.theta.0) * rng.gen::<f64>());
+        f.push(log(d.f_star, rng.gen()));
+    }
+    (p, t, f)
+}
+
+fn bench_lookup(c: &mut Criterion) {
+    let table = Table::embedded();
+    let (p, t, f) = queries();
+    let mut g = c.benchmark_group("lookup");
+    let mut i = 0;
+    g.bench_function("mu", |b| {
+        b.iter(|| {
+            i = (i + 1) & (N - 1);
+            black_box(
+                table
+                    .mu(black_box(p[i]), black_box(t[i]), black_box(f[i]))
+                    .unwrap(),
+            )
+        })
+    });
+    g.bench_function("mu_with_slope", |b| {
+        b.iter(|| {
+            i = (i + 1) & (N - 1);
+            black_box(
+                table
+                    .mu_with_slope(black_box(p[i]), black_box(t[i]), black_box(f[i]))
+                    .unwrap(),
+            )
+        })
+    });
+    let mut out = vec![0.0; N];
+    g.throughput(Throughput::Elements(N as u64));
+    g.bench_function("mu_batch", |b| {
+        b.iter(|| {
+            table
+                .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
+                .unwrap();
+            black_box(&out);
+        })
+    });
+    g.finish();
+    let mut g = c.benchmark_group("direct");
+    g.sample_size(20);
+    g.bench_function("at_f_star", |b| {
+        b.iter(|| {
+            i = (i + 1) & (N - 1);
+            let m = Model::new(Params::new(p[i], t[i])).unwrap();
+            black_box(m.at_f_star(black_box(f[i])).unwrap().mu)
+        })
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_lookup);
+criterion_main!(benches);

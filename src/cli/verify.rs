@@ -1,0 +1,70 @@
+//! `kefric verify`: re-measure a table against direct integration.
+
+use super::{Bar, Failure};
+use ke_friction::build::measure;
+use std::path::PathBuf;
+
+/// Check a table against direct integration; exit 1 if it misses its
+/// recorded tolerance.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Table file (default: the embedded default table).
+    #[arg(long)]
+    pub table: Option<PathBuf>,
+    /// Points to check (half random, half cell centres).
+    #[arg(long, default_value_t = 4000)]
+    pub samples: usize,
+    /// Seed of the points (default: a different one from the build's).
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Runs `kefric verify`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    if !(2..=10_000_000).contains(&args.samples) {
+        return Err(Failure::input(format!(
+            "--samples: {} is out of range: must be from 2 to 10000000",
+            args.samples
+        )));
+    }
+    let owned;
+    let table = match &args.table {
+        Some(path) => {
+            owned = super::load_table(path)?;
+            &owned
+        }
+        None => ke_friction::Table::embedded(),
+    };
+    let bar = Bar::new(args.quiet);
+    let acc =
+        measure(table, args.samples, args.seed, &bar).map_err(|e| Failure::other(e.to_string()))?;
+    bar.done();
+    let recorded = table.accuracy();
+    println!(
+        "recorded at build: max relative error {:.3e}, 99th percentile {:.3e} ({} points)",
+        recorded.max_rel, recorded.p99_rel, recorded.samples
+    );
+    println!(
+        "measured now:      max relative error {:.3e}, 99th percentile {:.3e} ({} points, seed {})",
+        acc.max_rel, acc.p99_rel, acc.samples, args.seed
+    );
+    println!(
+        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
+        acc.worst[0], acc.worst[1], acc.worst[2]
+    );
+    if acc.max_rel <= recorded.tolerance {
+        println!(
+            "ok: within the table's tolerance {:.1e}",
+            recorded.tolerance
+        );
+        Ok(())
+    } else {
+        Err(Failure::other(format!(
+            "the table misses its tolerance: max relative error {:.3e} > {:.1e}",
+            acc.max_rel, recorded.tolerance
+        )))
+    }
+}
