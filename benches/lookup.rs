@@ -29,11 +29,7 @@ fn bench_lookup(c: &mut Criterion) {
     g.bench_function("mu", |b| {
         b.iter(|| {
             i = (i + 1) & (N - 1);
-            black_box(
-                table
-                    .mu(black_box(p[i]), black_box(t[i]), black_box(f[i]))
-                    .unwrap(),
-            )
+            black_box(table.mu(black_box(p[i]), black_box(t[i]), black_box(f[i])).unwrap())
         })
     });
     g.bench_function("mu_with_slope", |b| {

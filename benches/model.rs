@@ -21,9 +21,7 @@ fn bench_model(c: &mut Criterion) {
     let ms = models(64);
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     let hs: Vec<f64> = (0..64).map(|_| 3.0 * rng.gen::<f64>()).collect();
-    let fs: Vec<f64> = (0..64)
-        .map(|_| 1e-5 * 1e4f64.powf(rng.gen::<f64>()))
-        .collect();
+    let fs: Vec<f64> = (0..64).map(|_| 1e-5 * 1e4f64.powf(rng.gen::<f64>())).collect();
     let mut group = c.benchmark_group("direct");
     let mut i = 0;
     group.bench_function("at_h_star", |b| {

@@ -78,8 +78,7 @@ impl CebCapacity {
     /// The capacity for Poisson's ratio `nu` (K = 0.454 + 0.41ν).
     pub fn new(nu: f64) -> CebCapacity {
         let k = crate::params::hardness_coefficient(nu);
-        let c1 =
-            -1.0 + 1.5 * ZETA * (1.0 / ZETA).atan() - ZETA * ZETA / (2.0 * (1.0 + ZETA * ZETA));
+        let c1 = -1.0 + 1.5 * ZETA * (1.0 / ZETA).atan() - ZETA * ZETA / (2.0 * (1.0 + ZETA * ZETA));
         let pi = core::f64::consts::PI;
         let mut cap = CebCapacity {
             a1: 0.2045 / (k * c1.abs()),
@@ -132,8 +131,7 @@ impl CebCapacity {
     /// Gauss–Jacobi rule must integrate, leaving an analytic remainder.
     pub fn mu2_split(&self, x: f64) -> (f64, f64) {
         let inv = 1.0 / (2.0 * self.c3);
-        let disc =
-            (self.c4 * self.c4 - 4.0 * self.c3 * self.c5_const) * x + 4.0 * self.c3 * self.c5_inv;
+        let disc = (self.c4 * self.c4 - 4.0 * self.c3 * self.c5_const) * x + 4.0 * self.c3 * self.c5_inv;
         (-self.c4 * inv, disc.sqrt() * inv)
     }
 

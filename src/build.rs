@@ -10,9 +10,7 @@
 use crate::model::{EvalError, Model};
 use crate::params::{check, Fit, Kind, ParamError, Params};
 use crate::spline::{fit_3d, Axis, Scale, Start};
-use crate::table::format::{
-    self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload, ScaleCode,
-};
+use crate::table::format::{self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload, ScaleCode};
 use crate::table::Table;
 use rayon::prelude::*;
 
@@ -170,10 +168,7 @@ fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
 impl BuildOptions {
     /// Checks every option, naming the first bad one.
     pub fn validate(&self) -> Result<(), ParamError> {
-        let range = |name: &'static str,
-                     (lo, hi): (f64, f64),
-                     low_ok: fn(f64) -> bool,
-                     what: &'static str| {
+        let range = |name: &'static str, (lo, hi): (f64, f64), low_ok: fn(f64) -> bool, what: &'static str| {
             check(name, lo, what, low_ok)?;
             check(name, hi, "greater than the lower end", |v| v > lo)
         };
@@ -192,12 +187,9 @@ impl BuildOptions {
         let (h_lo, h_hi, h_n) = self.h_star;
         check("h_star", h_lo, "finite", |_| true)?;
         check("h_star", h_hi, "greater than the lower end", |v| v > h_lo)?;
-        check(
-            "h_nodes",
-            h_n as f64,
-            "a whole number from 2 to 100000",
-            |v| (2.0..=1e5).contains(&v),
-        )?;
+        check("h_nodes", h_n as f64, "a whole number from 2 to 100000", |v| {
+            (2.0..=1e5).contains(&v)
+        })?;
         check("tolerance", self.tolerance, "> 0", |v| v > 0.0)?;
         check(
             "samples",
@@ -242,9 +234,7 @@ impl BuildOptions {
 
     fn h_nodes(&self) -> Vec<f64> {
         let (lo, hi, n) = self.h_star;
-        (0..n)
-            .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
-            .collect()
+        (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
     }
 }
 
@@ -272,13 +262,7 @@ pub fn integrate_grid(o: &BuildOptions, progress: &dyn Progress) -> Result<Grid,
                         theta: t,
                         error,
                     })?;
-                    Ok([
-                        c.p_star,
-                        c.fs_star,
-                        c.q_star,
-                        c.f_star,
-                        c.mu.unwrap_or(f64::NAN),
-                    ])
+                    Ok([c.p_star, c.fs_star, c.q_star, c.f_star, c.mu.unwrap_or(f64::NAN)])
                 })
                 .collect();
             progress.advance(1);
@@ -329,13 +313,9 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
                         theta: t,
                         error,
                     };
-                    let h = model
-                        .solve_h(f, guess(&grid.h_star, f_col, f))
-                        .map_err(err)?;
+                    let h = model.solve_h(f, guess(&grid.h_star, f_col, f)).map_err(err)?;
                     let c = model.at_h_star(h).map_err(err)?;
-                    let mu =
-                        c.mu.filter(|m| *m > 0.0)
-                            .ok_or(err(EvalError::FStar(c.f_star)))?;
+                    let mu = c.mu.filter(|m| *m > 0.0).ok_or(err(EvalError::FStar(c.f_star)))?;
                     Ok((mu.ln(), h))
                 })
                 .collect();
@@ -387,11 +367,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
                 Kind::CebType => 1,
             },
         },
-        axes: [
-            spec(&axes[0], o.psi),
-            spec(&axes[1], o.theta),
-            spec(&axes[2], o.f_star),
-        ],
+        axes: [spec(&axes[0], o.psi), spec(&axes[1], o.theta), spec(&axes[2], o.f_star)],
         ln_mu: store(fit_3d(&ln_mu, [np, nt, nf], starts)),
         h_star: store(fit_3d(&h_star, [np, nt, nf], starts)),
         build: BuildSpec {
@@ -412,8 +388,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             worst: [0.0; 3],
         },
     };
-    let draft =
-        Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
+    let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
     let accuracy = measure(&draft, o.samples, o.seed, progress)?;
     if accuracy.max_rel.is_nan() || accuracy.max_rel > o.tolerance {
         return Err(BuildError::Tolerance {
@@ -446,12 +421,7 @@ fn guess(h: &[f64], f_col: &[f64], f: f64) -> f64 {
 /// centres of random cells (the midpoint of the cell in every axis, where
 /// interpolation errs most). The accuracy record carries the table's own
 /// tolerance.
-pub fn measure(
-    table: &Table,
-    samples: usize,
-    seed: u64,
-    progress: &dyn Progress,
-) -> Result<Accuracy, BuildError> {
+pub fn measure(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<Accuracy, BuildError> {
     let points = sample_points(table, samples, seed);
     let d = *table.domain();
     progress.stage("checking against direct integration", points.len() as u64);
@@ -473,7 +443,7 @@ pub fn measure(
                 })?
                 .mu
                 .unwrap_or(f64::NAN);
-            let got = table.mu(p, t, f).unwrap_or(f64::NAN);
+            let got = table.mu_portable(p, t, f).unwrap_or(f64::NAN);
             progress.advance(1);
             Ok(((got - exact) / exact).abs())
         })
@@ -543,5 +513,38 @@ impl SplitMix64 {
     /// Uniform in [0, 1).
     fn unit(&mut self) -> f64 {
         (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+impl BuildOptions {
+    /// The options a table was built with, reconstructed from what the
+    /// file records: its domain and model constants, its tolerance, its
+    /// build spec (nodes, ghost nodes, the h* grid, samples, seed) and the
+    /// stored precision of its coefficients. [`integrate_grid`] with these
+    /// options recomputes the table's integration grid (which the file
+    /// does not store).
+    pub fn from_table(table: &Table) -> BuildOptions {
+        let d = table.domain();
+        let b = table.build_spec();
+        BuildOptions {
+            psi: d.psi,
+            theta: d.theta,
+            f_star: d.f_star,
+            nodes: b.nodes.map(|n| n as usize),
+            ghosts: b.ghosts as usize,
+            h_star: (b.h_lo, b.h_hi, b.h_nodes as usize),
+            beta: d.params.beta,
+            nu: d.params.nu,
+            eps_star: d.params.eps_star,
+            fit: d.params.fit,
+            kind: d.params.kind,
+            precision: match table.payload().ln_mu {
+                Coefs::F32(_) => Precision::F32,
+                Coefs::F64(_) => Precision::F64,
+            },
+            tolerance: table.accuracy().tolerance,
+            samples: b.samples as usize,
+            seed: b.seed,
+        }
     }
 }

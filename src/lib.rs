@@ -20,6 +20,8 @@
 pub mod asperity;
 #[cfg(feature = "builder")]
 pub mod build;
+#[cfg(feature = "builder")]
+pub mod export;
 mod model;
 mod params;
 mod quadrature;
@@ -28,7 +30,5 @@ mod surface;
 pub mod table;
 
 pub use model::{Contact, EvalError, Model, H_LIMIT};
-pub use params::{
-    Fit, Kind, ParamError, Params, Physical, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
-};
+pub use params::{Fit, Kind, ParamError, Params, Physical, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
 pub use table::{Domain, LookupError, Table, TableError};

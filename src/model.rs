@@ -35,9 +35,7 @@ pub enum EvalError {
     #[error("f_star = {0} is out of range: must be > 0 and finite")]
     FStar(f64),
     /// No separation in the supported range gives this F*.
-    #[error(
-        "f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}"
-    )]
+    #[error("f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}")]
     FStarTooLarge {
         /// The requested F*.
         f_star: f64,

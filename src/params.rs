@@ -144,9 +144,7 @@ impl Params {
         check("e1", phys.e1, "> 0 Pa", positive)?;
         check("e2", phys.e2, "> 0 Pa", positive)?;
         check("nu1", phys.nu1, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
-        check("nu2", phys.nu2, "in [-1, 0.5]", |v| {
-            (-1.0..=0.5).contains(&v)
-        })?;
+        check("nu2", phys.nu2, "in [-1, 0.5]", |v| (-1.0..=0.5).contains(&v))?;
         check("hardness", phys.hardness, "> 0 Pa", positive)?;
         check("sigma", phys.sigma, "> 0 m", positive)?;
         check("radius", phys.radius, "> 0 m", positive)?;
@@ -161,8 +159,7 @@ impl Params {
         let e = 1.0 / inv_e;
         let k = hardness_coefficient(phys.nu1);
         let sigma_s = phys.sigma * sigma_s_ratio(beta);
-        let psi =
-            2.0 * e / (core::f64::consts::PI * k * phys.hardness) * (sigma_s / phys.radius).sqrt();
+        let psi = 2.0 * e / (core::f64::consts::PI * k * phys.hardness) * (sigma_s / phys.radius).sqrt();
         let params = Params::new(psi, phys.delta_gamma / (phys.sigma * phys.hardness))
             .beta(beta)
             .nu(phys.nu1)
@@ -242,36 +239,13 @@ mod tests {
     fn validation_names_the_field_and_range() {
         let err = Params::new(1.0, -0.2).validate().unwrap_err();
         assert_eq!(err.name, "theta");
+        assert_eq!(err.to_string(), "theta = -0.2 is out of range: must be >= 0");
+        assert_eq!(Params::new(f64::NAN, 0.0).validate().unwrap_err().name, "psi");
+        assert_eq!(Params::new(1.0, f64::INFINITY).validate().unwrap_err().name, "theta");
+        assert_eq!(Params::new(1.0, 0.0).beta(0.019).validate().unwrap_err().name, "beta");
+        assert_eq!(Params::new(1.0, 0.0).nu(0.5).validate().unwrap_err().name, "nu");
         assert_eq!(
-            err.to_string(),
-            "theta = -0.2 is out of range: must be >= 0"
-        );
-        assert_eq!(
-            Params::new(f64::NAN, 0.0).validate().unwrap_err().name,
-            "psi"
-        );
-        assert_eq!(
-            Params::new(1.0, f64::INFINITY).validate().unwrap_err().name,
-            "theta"
-        );
-        assert_eq!(
-            Params::new(1.0, 0.0)
-                .beta(0.019)
-                .validate()
-                .unwrap_err()
-                .name,
-            "beta"
-        );
-        assert_eq!(
-            Params::new(1.0, 0.0).nu(0.5).validate().unwrap_err().name,
-            "nu"
-        );
-        assert_eq!(
-            Params::new(1.0, 0.0)
-                .eps_star(0.0)
-                .validate()
-                .unwrap_err()
-                .name,
+            Params::new(1.0, 0.0).eps_star(0.0).validate().unwrap_err().name,
             "eps_star"
         );
         assert!(Params::new(1.0, 0.0).beta(0.0193).validate().is_ok());
@@ -307,10 +281,7 @@ mod tests {
         assert!((p.theta - 0.5 / (50e-9 * 2e9)).abs() < 1e-15);
         assert!((p.beta - 0.05).abs() < 1e-12);
         assert!((p.eps_star - 0.006).abs() < 1e-12);
-        let bad = Physical {
-            hardness: -1.0,
-            ..phys
-        };
+        let bad = Physical { hardness: -1.0, ..phys };
         assert_eq!(Params::from_physical(&bad).unwrap_err().name, "hardness");
     }
 }

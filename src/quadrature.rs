@@ -40,11 +40,7 @@ impl Rule {
         for (k, dk) in diag.iter_mut().enumerate() {
             let kf = k as f64;
             let s = 2.0 * kf + b;
-            *dk = if k == 0 {
-                b / (b + 2.0)
-            } else {
-                b * b / (s * (s + 2.0))
-            };
+            *dk = if k == 0 { b / (b + 2.0) } else { b * b / (s * (s + 2.0)) };
         }
         for (k, ok) in off.iter_mut().enumerate().take(NODES - 1) {
             let kf = (k + 1) as f64;
@@ -140,10 +136,7 @@ mod tests {
             for k in 0..2 * NODES as i32 {
                 let q: f64 = rule.t.iter().zip(&rule.w).map(|(t, w)| w * t.powi(k)).sum();
                 let exact = 1.0 / (b + k as f64 + 1.0);
-                assert!(
-                    ((q - exact) / exact).abs() < 1e-13,
-                    "b = {b}, k = {k}: {q} vs {exact}"
-                );
+                assert!(((q - exact) / exact).abs() < 1e-13, "b = {b}, k = {k}: {q} vs {exact}");
             }
         }
     }

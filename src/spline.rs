@@ -80,9 +80,10 @@ impl Axis {
     #[inline(always)]
     pub fn locate(&self, c: f64) -> (usize, f64) {
         let s = (c - self.first) / self.step;
-        let last = (self.nodes - 2) as f64;
-        let i = s.floor().clamp(0.0, last);
-        (i as usize, s - i)
+        // `as usize` truncates (and saturates NaN and negatives to 0): no
+        // call to a software floor on targets without SSE4.1.
+        let i = (s as usize).min(self.nodes - 2);
+        (i, s - i as f64)
     }
 }
 
@@ -129,13 +130,9 @@ pub fn fit_line(y: &[f64], start: Start, out: &mut [f64]) {
     debug_assert!(n >= 5 && out.len() == n + 2);
     let d0 = match start {
         Start::Even => 0.0,
-        Start::Estimated => {
-            (-25.0 * y[0] + 48.0 * y[1] - 36.0 * y[2] + 16.0 * y[3] - 3.0 * y[4]) / 12.0
-        }
+        Start::Estimated => (-25.0 * y[0] + 48.0 * y[1] - 36.0 * y[2] + 16.0 * y[3] - 3.0 * y[4]) / 12.0,
     };
-    let d1 = (25.0 * y[n - 1] - 48.0 * y[n - 2] + 36.0 * y[n - 3] - 16.0 * y[n - 4]
-        + 3.0 * y[n - 5])
-        / 12.0;
+    let d1 = (25.0 * y[n - 1] - 48.0 * y[n - 2] + 36.0 * y[n - 3] - 16.0 * y[n - 4] + 3.0 * y[n - 5]) / 12.0;
     // Rows: c[i-1] + 4c[i] + c[i+1] = 6y[i]; with c[-1] = c[1] − 2d0 and
     // c[n] = c[n-2] + 2d1 eliminated, a tridiagonal system for c[0..n).
     let c = &mut out[1..=n];
@@ -170,11 +167,7 @@ pub fn fit_3d(y: &[f64], dims: [usize; 3], starts: [Start; 3]) -> Vec<f64> {
     let m2 = n2 + 2;
     let mut a = vec![0.0; n0 * n1 * m2];
     for r in 0..n0 * n1 {
-        fit_line(
-            &y[r * n2..(r + 1) * n2],
-            starts[2],
-            &mut a[r * m2..(r + 1) * m2],
-        );
+        fit_line(&y[r * n2..(r + 1) * n2], starts[2], &mut a[r * m2..(r + 1) * m2]);
     }
     // Along axis 1.
     let m1 = n1 + 2;

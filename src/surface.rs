@@ -12,9 +12,7 @@
 //! factor are cut. No allocation, no recursion: a fixed amount of
 //! arithmetic per panel.
 
-use crate::asperity::{
-    self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC,
-};
+use crate::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 use crate::quadrature::{Rule, NODES};
 
@@ -142,8 +140,7 @@ impl Surface {
             load_pref: (2.0 / 3.0) * pi * p.beta * k * omega,
             adh_pref: 2.0 * pi * p.beta * p.theta,
             plastic: 3.0 / k,
-            adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2]
-                .map(|(a, _, c)| a * r.powf(c)),
+            adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2].map(|(a, _, c)| a * r.powf(c)),
             q_el,
             q_ep,
             q_unclipped,
@@ -229,24 +226,8 @@ impl Surface {
         let adh = self.adh_pref != 0.0;
         let el = self.elastic_ceb(d, win, adh, want_q);
         let law = |x: f64, _: f64| 1.5 * (2.0 * x - 1.0);
-        let ep1 = self.smooth(
-            d,
-            win,
-            X_ELASTIC,
-            X_EP1,
-            law,
-            adh.then_some(adhesion::EP1.1),
-            false,
-        );
-        let ep2 = self.smooth(
-            d,
-            win,
-            X_EP1,
-            X_PLASTIC,
-            law,
-            adh.then_some(adhesion::EP2.1),
-            false,
-        );
+        let ep1 = self.smooth(d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
+        let ep2 = self.smooth(d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
         let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, law, None, false);
         let p = el.p + ep1.p + ep2.p + pl.p;
         let dp = el.dp + ep1.dp + ep2.dp + pl.dp;
@@ -272,16 +253,10 @@ impl Surface {
                     acc.q += m15 * w;
                 });
                 if adh {
-                    self.jacobi_panel(
-                        d,
-                        &self.rules.gj_adh,
-                        adhesion::ELASTIC.1,
-                        x1,
-                        |_, w, dw| {
-                            acc.fs += w;
-                            acc.dfs += dw;
-                        },
-                    );
+                    self.jacobi_panel(d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
+                        acc.fs += w;
+                        acc.dfs += dw;
+                    });
                 }
                 if want_q {
                     self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_split(x).1 * w);
@@ -439,14 +414,7 @@ impl Surface {
     /// within the window; `first` marks a panel starting at `xa`, `last` one
     /// ending at `xc` (not cut by the window).
     #[inline(always)]
-    fn panels(
-        &self,
-        d: f64,
-        win: Window,
-        xa: f64,
-        xc: f64,
-        mut f: impl FnMut(f64, f64, bool, bool),
-    ) {
+    fn panels(&self, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(f64, f64, bool, bool)) {
         let (om, inv_om) = (self.omega, 1.0 / self.omega);
         let x_lo = (win.lo - d) * inv_om;
         let x_hi = (win.hi - d) * inv_om;
@@ -554,8 +522,7 @@ mod tests {
     /// pieces `I^b[0,1]`, `I^b[1,∞)` from 30-digit quadrature.
     #[test]
     fn moments_match_the_closed_form_semi_infinite_integrals() {
-        let doc: Value =
-            serde_json::from_str(include_str!("../tests/data/reference_points.json")).unwrap();
+        let doc: Value = serde_json::from_str(include_str!("../tests/data/reference_points.json")).unwrap();
         let mut n = 0;
         for p in doc["points"].as_array().unwrap() {
             if p["kind"] != "closed_form" {
@@ -574,10 +541,7 @@ mod tests {
                 ("I[0,1]+I[1,inf)", lower + upper, f("i_0_inf")),
             ] {
                 let rel = ((got - want) / want).abs();
-                assert!(
-                    rel < 1e-12,
-                    "b = {b}, d* = {d}: {what} = {got:e} vs {want:e} ({rel:e})"
-                );
+                assert!(rel < 1e-12, "b = {b}, d* = {d}: {what} = {got:e} vs {want:e} ({rel:e})");
             }
             n += 1;
         }

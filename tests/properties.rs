@@ -53,19 +53,9 @@ fn p_star_and_f_star_decrease_with_h_star_while_f_star_is_positive() {
             for i in 1..=300 {
                 let c = model.at_h_star(f64::from(i) * 0.01).unwrap();
                 let tag = format!("ψ={psi} θ={theta} {kind:?} h*={}", c.h_star);
-                assert!(
-                    c.p_star < prev.p_star,
-                    "{tag}: P* {} ≥ {}",
-                    c.p_star,
-                    prev.p_star
-                );
+                assert!(c.p_star < prev.p_star, "{tag}: P* {} ≥ {}", c.p_star, prev.p_star);
                 if prev.f_star > 0.0 {
-                    assert!(
-                        c.f_star < prev.f_star,
-                        "{tag}: F* {} ≥ {}",
-                        c.f_star,
-                        prev.f_star
-                    );
+                    assert!(c.f_star < prev.f_star, "{tag}: F* {} ≥ {}", c.f_star, prev.f_star);
                     checked_f += 1;
                 }
                 prev = c;
@@ -127,10 +117,7 @@ fn adhesion_is_linear_in_theta_and_p_star_q_star_do_not_depend_on_it() {
             let c2 = model(psi, 2.0 * theta, kind).at_h_star(h).unwrap();
             let tag = format!("ψ={psi} θ={theta} h*={h} {kind:?}");
             assert!(c1.fs_star > 0.0, "{tag}");
-            assert!(
-                rel(c2.fs_star, 2.0 * c1.fs_star) <= 1e-14,
-                "{tag}: {c1:?} {c2:?}"
-            );
+            assert!(rel(c2.fs_star, 2.0 * c1.fs_star) <= 1e-14, "{tag}: {c1:?} {c2:?}");
             for c in [c1, c2] {
                 assert!(rel(c.p_star, c0.p_star) <= 1e-15, "{tag}: P* {c:?} {c0:?}");
                 assert!(rel(c.q_star, c0.q_star) <= 1e-15, "{tag}: Q* {c:?} {c0:?}");
@@ -154,11 +141,7 @@ fn at_f_star_inverts_at_h_star() {
         }
         let back = model.at_f_star(c.f_star).unwrap();
         let tag = format!("{tag} h*={h} F*={:e}", c.f_star);
-        assert!(
-            (back.h_star - h).abs() <= 1e-10,
-            "{tag}: got h* = {}",
-            back.h_star
-        );
+        assert!((back.h_star - h).abs() <= 1e-10, "{tag}: got h* = {}", back.h_star);
         assert!(rel(back.f_star, c.f_star) <= 1e-9, "{tag}: {back:?}");
         true
     };

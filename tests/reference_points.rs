@@ -13,9 +13,7 @@ fn points() -> Vec<Value> {
 }
 
 fn num(p: &Value, key: &str) -> f64 {
-    p[key]
-        .as_f64()
-        .unwrap_or_else(|| panic!("{key} missing in {p}"))
+    p[key].as_f64().unwrap_or_else(|| panic!("{key} missing in {p}"))
 }
 
 /// Absolute floor for quantities that are zero or nearly so relative to
@@ -51,11 +49,7 @@ fn model_agrees_with_mpmath_at_random_points() {
         let model = Model::new(params).unwrap();
         let c = if p["mode"] == "f" {
             let c = model.at_f_star(num(p, "f_star")).unwrap();
-            assert!(
-                (c.h_star - num(p, "h_star")).abs() < 1e-11,
-                "h* {} vs {p}",
-                c.h_star
-            );
+            assert!((c.h_star - num(p, "h_star")).abs() < 1e-11, "h* {} vs {p}", c.h_star);
             c
         } else {
             model.at_h_star(num(p, "h_star")).unwrap()
@@ -63,12 +57,7 @@ fn model_agrees_with_mpmath_at_random_points() {
         let tag = format!("{p}");
         let scale = num(p, "p_star").abs().max(num(p, "fs_star").abs());
         check(&format!("P* at {tag}"), c.p_star, num(p, "p_star"), scale);
-        check(
-            &format!("Fs* at {tag}"),
-            c.fs_star,
-            num(p, "fs_star"),
-            scale,
-        );
+        check(&format!("Fs* at {tag}"), c.fs_star, num(p, "fs_star"), scale);
         check(&format!("Q* at {tag}"), c.q_star, num(p, "q_star"), scale);
         check(&format!("F* at {tag}"), c.f_star, num(p, "f_star"), scale);
         match (c.mu, p["mu"].as_f64()) {

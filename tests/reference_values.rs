@@ -125,62 +125,23 @@ const PRINTED: f64 = 5e-11;
 #[test]
 fn kogut_etsion_at_h_star_matches_model_md_section_7() {
     for [psi, theta, h, d, p, fs, q, f, mu] in KE_AT_H {
-        let c = Model::new(Params::new(psi, theta))
-            .unwrap()
-            .at_h_star(h)
-            .unwrap();
+        let c = Model::new(Params::new(psi, theta)).unwrap().at_h_star(h).unwrap();
         let tag = format!("ψ={psi} θ={theta} h*={h}");
-        assert!(
-            (c.d_star - d).abs() < 1e-10,
-            "{tag}: d* {} vs {d}",
-            c.d_star
-        );
-        assert_rel(
-            &format!("{tag} P*"),
-            c.p_star,
-            p,
-            REFERENCE_REL.min(PRINTED),
-        );
-        assert_rel(
-            &format!("{tag} Fs*"),
-            c.fs_star,
-            fs,
-            REFERENCE_REL.min(PRINTED),
-        );
-        assert_rel(
-            &format!("{tag} Q*"),
-            c.q_star,
-            q,
-            REFERENCE_REL.min(PRINTED),
-        );
-        assert_rel(
-            &format!("{tag} F*"),
-            c.f_star,
-            f,
-            REFERENCE_REL.min(PRINTED),
-        );
-        assert_rel(
-            &format!("{tag} μ"),
-            c.mu.unwrap(),
-            mu,
-            REFERENCE_REL.min(PRINTED),
-        );
+        assert!((c.d_star - d).abs() < 1e-10, "{tag}: d* {} vs {d}", c.d_star);
+        assert_rel(&format!("{tag} P*"), c.p_star, p, REFERENCE_REL.min(PRINTED));
+        assert_rel(&format!("{tag} Fs*"), c.fs_star, fs, REFERENCE_REL.min(PRINTED));
+        assert_rel(&format!("{tag} Q*"), c.q_star, q, REFERENCE_REL.min(PRINTED));
+        assert_rel(&format!("{tag} F*"), c.f_star, f, REFERENCE_REL.min(PRINTED));
+        assert_rel(&format!("{tag} μ"), c.mu.unwrap(), mu, REFERENCE_REL.min(PRINTED));
     }
 }
 
 #[test]
 fn kogut_etsion_at_f_star_matches_model_md_section_7() {
     for [psi, theta, f, h, mu] in KE_AT_F {
-        let c = Model::new(Params::new(psi, theta))
-            .unwrap()
-            .at_f_star(f)
-            .unwrap();
+        let c = Model::new(Params::new(psi, theta)).unwrap().at_f_star(f).unwrap();
         let tag = format!("ψ={psi} θ={theta} F*={f}");
-        assert!(
-            (c.h_star - h).abs() < 1e-10,
-            "{tag}: h* {} vs {h}",
-            c.h_star
-        );
+        assert!((c.h_star - h).abs() < 1e-10, "{tag}: h* {} vs {h}", c.h_star);
         assert_rel(&format!("{tag} F*"), c.f_star, f, 1e-14);
         assert_rel(&format!("{tag} μ"), c.mu.unwrap(), mu, PRINTED);
     }
@@ -201,11 +162,7 @@ fn ceb_type_matches_model_md_section_8() {
         let model = Model::new(Params::new(psi, theta).kind(Kind::CebType)).unwrap();
         let c = model.at_f_star(f).unwrap();
         let tag = format!("CEB ψ={psi} θ={theta} F*={f}");
-        assert!(
-            (c.h_star - h).abs() < 1e-10,
-            "{tag}: h* {} vs {h}",
-            c.h_star
-        );
+        assert!((c.h_star - h).abs() < 1e-10, "{tag}: h* {} vs {h}", c.h_star);
         assert_rel(&format!("{tag} μ"), c.mu.unwrap(), mu, PRINTED);
     }
 }

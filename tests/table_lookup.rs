@@ -25,8 +25,7 @@ fn query(rng: &mut ChaCha8Rng) -> (f64, f64, f64) {
 #[test]
 fn the_committed_default_table_is_exactly_what_the_builder_writes() {
     let built = build(&BuildOptions::default(), &()).expect("default build");
-    let committed =
-        std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft")).unwrap();
+    let committed = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft")).unwrap();
     assert!(
         built.bytes == committed,
         "tables/default.kft is stale: run `cargo run --release -- build` and commit it"
@@ -70,10 +69,7 @@ fn the_default_table_meets_its_tolerance_against_direct_integration() {
         let got = t.mu(p, th, f).unwrap();
         worst = worst.max(((got - exact) / exact).abs());
     }
-    assert!(
-        worst <= tol,
-        "worst relative error {worst:e} > tolerance {tol:e}"
-    );
+    assert!(worst <= tol, "worst relative error {worst:e} > tolerance {tol:e}");
 }
 
 #[test]
@@ -85,9 +81,7 @@ fn the_slope_matches_a_finite_difference_of_direct_integration() {
         let f = f.clamp(2e-5, 0.05);
         let m = Model::new(Params::new(p, th)).unwrap();
         let h = 1e-4 * f;
-        let fd = (m.at_f_star(f + h).unwrap().mu.unwrap()
-            - m.at_f_star(f - h).unwrap().mu.unwrap())
-            / (2.0 * h);
+        let fd = (m.at_f_star(f + h).unwrap().mu.unwrap() - m.at_f_star(f - h).unwrap().mu.unwrap()) / (2.0 * h);
         let (mu, slope) = t.mu_with_slope(p, th, f).unwrap();
         // ln μ is good to ~1e-4; its derivative in ln F* loses one order: compare
         // on the scale μ/F*, the natural size of ∂μ/∂F*.
@@ -152,10 +146,7 @@ fn batch_lookups_equal_scalar_lookups() {
         assert_eq!(out[i].to_bits(), t.mu(p, th, ff).unwrap().to_bits());
     }
     let err = t.mu_batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
-    assert!(matches!(
-        err,
-        LookupError::LengthMismatch { f_star: 10, .. }
-    ));
+    assert!(matches!(err, LookupError::LengthMismatch { f_star: 10, .. }));
     let mut bad = f.clone();
     bad[7] = f64::NAN;
     let err = t.mu_batch(&psi, &theta, &bad, &mut out).unwrap_err();
@@ -179,10 +170,7 @@ fn threads_sharing_one_table_get_the_single_threaded_results() {
     let t = table();
     let mut rng = ChaCha8Rng::seed_from_u64(4);
     let q: Vec<(f64, f64, f64)> = (0..2000).map(|_| query(&mut rng)).collect();
-    let expected: Vec<u64> = q
-        .iter()
-        .map(|&(p, th, f)| t.mu(p, th, f).unwrap().to_bits())
-        .collect();
+    let expected: Vec<u64> = q.iter().map(|&(p, th, f)| t.mu(p, th, f).unwrap().to_bits()).collect();
     std::thread::scope(|s| {
         for _ in 0..8 {
             s.spawn(|| {
@@ -239,15 +227,8 @@ fn h_star_lookup_matches_direct_integration() {
     let mut rng = ChaCha8Rng::seed_from_u64(8);
     for _ in 0..200 {
         let (p, th, f) = query(&mut rng);
-        let exact = Model::new(Params::new(p, th))
-            .unwrap()
-            .at_f_star(f)
-            .unwrap()
-            .h_star;
+        let exact = Model::new(Params::new(p, th)).unwrap().at_f_star(f).unwrap().h_star;
         let got = t.h_star(p, th, f).unwrap();
-        assert!(
-            (got - exact).abs() < 1e-4,
-            "ψ={p} θ={th} F*={f}: h* {got} vs {exact}"
-        );
+        assert!((got - exact).abs() < 1e-4, "ψ={p} θ={th} F*={f}: h* {got} vs {exact}");
     }
 }

@@ -97,8 +97,7 @@ impl Args {
             ..BuildOptions::default()
         };
         if let Some(nodes) = &self.nodes {
-            let parsed: Vec<Option<usize>> =
-                nodes.split(',').map(|s| s.trim().parse().ok()).collect();
+            let parsed: Vec<Option<usize>> = nodes.split(',').map(|s| s.trim().parse().ok()).collect();
             match parsed.as_slice() {
                 [Some(a), Some(b), Some(c)] => o.nodes = [*a, *b, *c],
                 _ => {
@@ -187,9 +186,6 @@ pub fn run(args: Args) -> Result<(), Failure> {
         "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
         acc.worst[0], acc.worst[1], acc.worst[2]
     );
-    println!(
-        "build time: {secs:.1} s on {} threads",
-        rayon::current_num_threads()
-    );
+    println!("build time: {secs:.1} s on {} threads", rayon::current_num_threads());
     Ok(())
 }

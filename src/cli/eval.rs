@@ -123,11 +123,7 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
                 })?;
             Ok((0..n)
                 .map(|i| {
-                    let t = if n == 1 {
-                        0.0
-                    } else {
-                        i as f64 / (n - 1) as f64
-                    };
+                    let t = if n == 1 { 0.0 } else { i as f64 / (n - 1) as f64 };
                     match spacing {
                         Spacing::Linear => a + (b - a) * t,
                         Spacing::Log => a * (b / a).powf(t),
@@ -154,11 +150,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             .map(|f| model.at_f_star(f))
             .collect()
     };
-    let flag = if args.h_star.is_some() {
-        "--h-star"
-    } else {
-        "--f-star"
-    };
+    let flag = if args.h_star.is_some() { "--h-star" } else { "--f-star" };
     let contacts = contacts
         .into_iter()
         .collect::<Result<Vec<_>, _>>()

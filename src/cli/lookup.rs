@@ -35,15 +35,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
         None => Table::embedded(),
     };
-    let (mu, slope) = table
-        .mu_with_slope(args.psi, args.theta, args.f_star)
-        .map_err(|e| {
-            let flag = match e {
-                LookupError::OutOfDomain { name, .. } => super::flag_of(name),
-                _ => "lookup".into(),
-            };
-            Failure::input(format!("{flag}: {e}"))
-        })?;
+    let (mu, slope) = table.mu_with_slope(args.psi, args.theta, args.f_star).map_err(|e| {
+        let flag = match e {
+            LookupError::OutOfDomain { name, .. } => super::flag_of(name),
+            _ => "lookup".into(),
+        };
+        Failure::input(format!("{flag}: {e}"))
+    })?;
     if args.json {
         println!(
             "{{\"psi\":{},\"theta\":{},\"f_star\":{},\"mu\":{},\"dmu_df_star\":{}}}",

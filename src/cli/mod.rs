@@ -2,6 +2,7 @@
 
 mod build;
 mod eval;
+mod export;
 mod lookup;
 mod verify;
 
@@ -26,6 +27,8 @@ enum Command {
     Verify(verify::Args),
     /// Look up μ and ∂μ/∂F* in a table.
     Lookup(lookup::Args),
+    /// Export a table to NumPy .npz/.npy.
+    Export(export::Args),
 }
 
 /// A failure to report: the message, and whether it is the user's input
@@ -65,6 +68,7 @@ pub fn run() -> i32 {
         Command::Build(args) => build::run(args),
         Command::Verify(args) => verify::run(args),
         Command::Lookup(args) => lookup::run(args),
+        Command::Export(args) => export::run(args),
     };
     match result {
         Ok(()) => 0,
@@ -80,9 +84,7 @@ pub fn run() -> i32 {
 fn clap_exit(err: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match err.kind() {
-        ErrorKind::DisplayHelp
-        | ErrorKind::DisplayVersion
-        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
             let _ = err.print();
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
                 2
@@ -105,10 +107,7 @@ fn clap_exit(err: clap::Error) -> i32 {
 
 /// Parses a finite number, naming the flag on failure.
 pub fn parse_f64(s: &str) -> Result<f64, String> {
-    let v: f64 = s
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{s}' is not a number"))?;
+    let v: f64 = s.trim().parse().map_err(|_| format!("'{s}' is not a number"))?;
     if v.is_finite() {
         Ok(v)
     } else {
@@ -125,10 +124,7 @@ pub fn flag_of(field: &str) -> String {
 /// or a parent directory that does not exist.
 pub fn check_writable(path: &std::path::Path) -> Result<(), Failure> {
     if path.is_dir() {
-        return Err(Failure::input(format!(
-            "--out: {} is a directory",
-            path.display()
-        )));
+        return Err(Failure::input(format!("--out: {} is a directory", path.display())));
     }
     let parent = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
@@ -157,11 +153,9 @@ impl Bar {
             indicatif::ProgressBar::new(0)
         };
         bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{msg:40} [{bar:30}] {pos}/{len} {per_sec} ETA {eta}",
-            )
-            .expect("valid template")
-            .progress_chars("=> "),
+            indicatif::ProgressStyle::with_template("{msg:40} [{bar:30}] {pos}/{len} {per_sec} ETA {eta}")
+                .expect("valid template")
+                .progress_chars("=> "),
         );
         Bar(bar)
     }
@@ -187,6 +181,5 @@ impl ke_friction::build::Progress for Bar {
 
 /// Loads a table file; any problem is bad input (exit 2) naming the file.
 pub fn load_table(path: &std::path::Path) -> Result<ke_friction::Table, Failure> {
-    ke_friction::Table::load(path)
-        .map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))
+    ke_friction::Table::load(path).map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))
 }

@@ -39,8 +39,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         None => ke_friction::Table::embedded(),
     };
     let bar = Bar::new(args.quiet);
-    let acc =
-        measure(table, args.samples, args.seed, &bar).map_err(|e| Failure::other(e.to_string()))?;
+    let acc = measure(table, args.samples, args.seed, &bar).map_err(|e| Failure::other(e.to_string()))?;
     bar.done();
     let recorded = table.accuracy();
     println!(
@@ -56,10 +55,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         acc.worst[0], acc.worst[1], acc.worst[2]
     );
     if acc.max_rel <= recorded.tolerance {
-        println!(
-            "ok: within the table's tolerance {:.1e}",
-            recorded.tolerance
-        );
+        println!("ok: within the table's tolerance {:.1e}", recorded.tolerance);
         Ok(())
     } else {
         Err(Failure::other(format!(

@@ -43,9 +43,7 @@ pub enum TableError {
         found: u32,
     },
     /// The length field disagrees with the file's size.
-    #[error(
-        "table is truncated or has trailing bytes: header says {expected} bytes, file has {found}"
-    )]
+    #[error("table is truncated or has trailing bytes: header says {expected} bytes, file has {found}")]
     Length {
         /// Size implied by the header.
         expected: u64,
@@ -246,8 +244,8 @@ pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
     if stored != computed {
         return Err(TableError::Checksum { stored, computed });
     }
-    let (payload, rest) = postcard::take_from_bytes::<Payload>(&bytes[HEADER..end])
-        .map_err(|e| TableError::Payload(e.to_string()))?;
+    let (payload, rest) =
+        postcard::take_from_bytes::<Payload>(&bytes[HEADER..end]).map_err(|e| TableError::Payload(e.to_string()))?;
     if !rest.is_empty() {
         return Err(TableError::Payload(format!(
             "{} unread bytes after the payload",

@@ -1,0 +1,112 @@
+//! `kefric export`: a table's values and its integration grid as NumPy arrays.
+
+use super::{Bar, Failure};
+use ke_friction::build::BuildError;
+use ke_friction::export::{arrays, write_npy_dir, write_npz};
+use ke_friction::Table;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Export a table to NumPy: its nodes (`psi`, `theta`, `f_star`), `mu` and
+/// `h_star` there, the build's integration grid (`grid_*`, recomputed) and
+/// the model constants (`beta`, `nu`, `eps_star`).
+#[derive(Debug, clap::Args)]
+#[command(group(clap::ArgGroup::new("output").required(true).args(["npz", "npy"])))]
+pub struct Args {
+    /// Table file (default: the embedded default table).
+    #[arg(long)]
+    pub table: Option<PathBuf>,
+    /// Write one .npz file (uncompressed, like numpy.savez).
+    #[arg(long, value_name = "FILE")]
+    pub npz: Option<PathBuf>,
+    /// Write one NAME.npy per array into this directory (created if
+    /// missing; its parent must exist).
+    #[arg(long, value_name = "DIR")]
+    pub npy: Option<PathBuf>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// The parent directory of `path` ("." for a bare name).
+fn parent_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// Fails early (before the integration) if the output cannot be written.
+fn check_output(flag: &str, path: &Path, want_dir: bool) -> Result<(), Failure> {
+    if want_dir {
+        if path.exists() && !path.is_dir() {
+            return Err(Failure::input(format!(
+                "{flag}: {} exists and is not a directory",
+                path.display()
+            )));
+        }
+    } else if path.is_dir() {
+        return Err(Failure::input(format!("{flag}: {} is a directory", path.display())));
+    }
+    if path.file_name().is_none() {
+        return Err(Failure::input(format!("{flag}: {} has no file name", path.display())));
+    }
+    let parent = parent_of(path);
+    if !parent.is_dir() {
+        return Err(Failure::input(format!(
+            "{flag}: directory {} does not exist",
+            parent.display()
+        )));
+    }
+    Ok(())
+}
+
+/// Runs `kefric export`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    let (flag, path, want_dir) = match (&args.npz, &args.npy) {
+        (Some(p), None) => ("--npz", p, false),
+        (None, Some(p)) => ("--npy", p, true),
+        _ => unreachable!("clap requires exactly one of --npz and --npy"),
+    };
+    let owned;
+    let table = match &args.table {
+        Some(path) => {
+            owned = super::load_table(path)?;
+            &owned
+        }
+        None => Table::embedded(),
+    };
+    check_output(flag, path, want_dir)?;
+    let started = Instant::now();
+    let bar = Bar::new(args.quiet);
+    let named = arrays(table, &bar).map_err(|e| match (&e, &args.table) {
+        // The table records build options the builder rejects: a bad file.
+        (BuildError::Option(_), Some(t)) => {
+            Failure::input(format!("--table {}: recorded build options: {e}", t.display()))
+        }
+        _ => Failure::other(e.to_string()),
+    })?;
+    bar.done();
+    let written = if want_dir {
+        write_npy_dir(path, &named)
+    } else {
+        write_npz(path, &named)
+    };
+    written.map_err(|e| Failure::input(format!("{flag}: cannot write {}: {e}", path.display())))?;
+    let shape = |name: &str| {
+        named
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, a)| format!("{:?}", a.shape()))
+            .unwrap_or_default()
+    };
+    println!(
+        "wrote {} ({} arrays: mu {}, grid_mu {}) in {:.1} s",
+        path.display(),
+        named.len(),
+        shape("mu"),
+        shape("grid_mu"),
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
