@@ -1,12 +1,45 @@
 //! `ln` and `exp` for the lookup path: branch-free, inlinable (so that they
-//! compile with FMA inside the AVX2 kernel) and accurate to 1e-13 relative
-//! (ln: 1e-13 absolute) — far below the tables' 1e-4…1e-7 interpolation
-//! error, with the shortest polynomials that get there. The C library's
-//! versions are out-of-line calls that cost a third of a lookup.
+//! compile with FMA inside the AVX2 kernels, which also run them on four
+//! lanes) and accurate to about 1e-14 — far below the tables' 1e-4…1e-7
+//! interpolation error. The C library's versions are out-of-line calls
+//! that cost a third of a lookup.
 
 /// ln 2 split into a head with trailing zero bits and a tail (fdlibm's).
-const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
-const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
+pub const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
+/// The tail of ln 2.
+pub const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
+/// Subtracted from the bits of x so that the mantissa lands in [√½, √2).
+pub const LN_OFFSET: u64 = 0x3fe6_a09e_667f_3bcd;
+/// 2·atanh(s) = 2s(1 + z/3 + z²/5 + …), z = s² ≤ 0.0295: the coefficients
+/// of z·(…), from z^6 down; the first omitted term, 2|s|z^8/17, is below 2e-14.
+pub const LN_SERIES: [f64; 7] = [
+    1.0 / 15.0,
+    1.0 / 13.0,
+    1.0 / 11.0,
+    1.0 / 9.0,
+    1.0 / 7.0,
+    1.0 / 5.0,
+    1.0 / 3.0,
+];
+/// Adding and removing 1.5·2^52 rounds to the nearest integer without a
+/// call to a software `round` (no SSE4.1 on baseline x86-64).
+pub const EXP_SHIFT: f64 = 6_755_399_441_055_744.0;
+/// e^r = Σ r^k/k! for |r| ≤ ½ln 2, from r^11 down; the first omitted term,
+/// r^12/12!, is below 1e-14.
+pub const EXP_SERIES: [f64; 12] = [
+    1.0 / 39_916_800.0,
+    1.0 / 3_628_800.0,
+    1.0 / 362_880.0,
+    1.0 / 40_320.0,
+    1.0 / 5_040.0,
+    1.0 / 720.0,
+    1.0 / 120.0,
+    1.0 / 24.0,
+    1.0 / 6.0,
+    0.5,
+    1.0,
+    1.0,
+];
 
 /// `a·b + c`: one fused instruction in the FMA kernels (`F = true`), a
 /// plain multiply-add elsewhere (where `mul_add` would be a slow libcall).
@@ -19,65 +52,93 @@ pub fn madd<const F: bool>(a: f64, b: f64, c: f64) -> f64 {
     }
 }
 
+/// The arithmetic the polynomials need, so that one definition serves the
+/// scalar kernels and the four-lane one (which must agree bit for bit).
+pub trait Num: Copy {
+    /// A constant in every lane.
+    fn splat(c: f64) -> Self;
+    /// `self·b + c`.
+    fn madd(self, b: Self, c: Self) -> Self;
+    /// `self·b`.
+    fn mul(self, b: Self) -> Self;
+}
+
+/// A scalar; `F` selects fused multiply-adds.
+#[derive(Clone, Copy)]
+pub struct Scalar<const F: bool>(pub f64);
+
+impl<const F: bool> Num for Scalar<F> {
+    #[inline(always)]
+    fn splat(c: f64) -> Self {
+        Scalar(c)
+    }
+    #[inline(always)]
+    fn madd(self, b: Self, c: Self) -> Self {
+        Scalar(madd::<F>(self.0, b.0, c.0))
+    }
+    #[inline(always)]
+    fn mul(self, b: Self) -> Self {
+        Scalar(self.0 * b.0)
+    }
+}
+
+/// Σ LN_SERIES[6−k]·z^k by Estrin's scheme (short dependency chains).
+#[inline(always)]
+pub fn ln_poly<N: Num>(z: N) -> N {
+    let c = |i: usize| N::splat(LN_SERIES[6 - i]);
+    let z2 = z.mul(z);
+    let p01 = c(1).madd(z, c(0));
+    let p23 = c(3).madd(z, c(2));
+    let p45 = c(5).madd(z, c(4));
+    let p0123 = p23.madd(z2, p01);
+    let p456 = c(6).madd(z2, p45);
+    p456.madd(z2.mul(z2), p0123)
+}
+
+/// Σ EXP_SERIES[11−k]·r^k by Estrin's scheme.
+#[inline(always)]
+pub fn exp_poly<N: Num>(r: N) -> N {
+    let c = |i: usize| N::splat(EXP_SERIES[11 - i]);
+    let r2 = r.mul(r);
+    let r4 = r2.mul(r2);
+    let q0 = c(1).madd(r, c(0));
+    let q1 = c(3).madd(r, c(2));
+    let q2 = c(5).madd(r, c(4));
+    let q3 = c(7).madd(r, c(6));
+    let q4 = c(9).madd(r, c(8));
+    let q5 = c(11).madd(r, c(10));
+    let s0 = q1.madd(r2, q0);
+    let s1 = q3.madd(r2, q2);
+    let s2 = q5.madd(r2, q4);
+    let t0 = s1.madd(r4, s0);
+    s2.madd(r4.mul(r4), t0)
+}
+
 /// Natural logarithm of a positive, finite, normal `x`.
 #[inline(always)]
 pub fn ln<const F: bool>(x: f64) -> f64 {
     // x = 2^e · m with m in [√½, √2): ln x = e·ln 2 + 2·atanh(s), s = (m−1)/(m+1).
     let bits = x.to_bits();
-    // Shift the mantissa window so that m lands in [√½, √2).
-    let tmp = bits.wrapping_sub(0x3fe6_a09e_667f_3bcd);
+    let tmp = bits.wrapping_sub(LN_OFFSET);
     let e = (tmp as i64 >> 52) as f64;
     let m = f64::from_bits(bits.wrapping_sub(tmp & 0xfff0_0000_0000_0000));
     let s = (m - 1.0) / (m + 1.0);
     let z = s * s;
-    // 2·atanh(s) = 2s(1 + z/3 + z²/5 + …), |z| ≤ 0.0295: terms to z^8 reach 1e-17.
-    let mut p = 1.0 / 17.0;
-    for c in [
-        1.0 / 15.0,
-        1.0 / 13.0,
-        1.0 / 11.0,
-        1.0 / 9.0,
-        1.0 / 7.0,
-        1.0 / 5.0,
-        1.0 / 3.0,
-    ] {
-        p = madd::<F>(p, z, c);
-    }
-    let p = p * z;
-    let two_s = 2.0 * s;
+    let p = ln_poly(Scalar::<F>(z)).0 * z;
+    let two_s = s + s;
     madd::<F>(e, LN2_HI, two_s + madd::<F>(two_s, p, e * LN2_LO))
 }
 
 /// e^x for |x| < 700.
 #[inline(always)]
 pub fn exp<const F: bool>(x: f64) -> f64 {
-    // x = k·ln 2 + r, |r| ≤ ½ln 2; e^r by its Taylor series to r^11 (the
-    // first omitted term, r^12/12!, is below 1e-14).
-    // Adding and removing 1.5·2^52 rounds to the nearest integer without a
-    // call to a software `round` (no SSE4.1 on baseline x86-64).
-    const SHIFT: f64 = 6_755_399_441_055_744.0;
-    let shifted = madd::<F>(x, core::f64::consts::LOG2_E, SHIFT);
-    let k = shifted - SHIFT;
+    // x = k·ln 2 + r, |r| ≤ ½ln 2.
+    let shifted = madd::<F>(x, core::f64::consts::LOG2_E, EXP_SHIFT);
+    let k = shifted - EXP_SHIFT;
     // k, an integer, sits in the low mantissa bits of `shifted`.
-    let k_int = shifted.to_bits().wrapping_sub(SHIFT.to_bits());
+    let k_int = shifted.to_bits().wrapping_sub(EXP_SHIFT.to_bits());
     let r = madd::<F>(-k, LN2_LO, madd::<F>(-k, LN2_HI, x));
-    let mut p = 1.0 / 39_916_800.0; // 1/11!
-    for c in [
-        1.0 / 3_628_800.0,
-        1.0 / 362_880.0,
-        1.0 / 40_320.0,
-        1.0 / 5_040.0,
-        1.0 / 720.0,
-        1.0 / 120.0,
-        1.0 / 24.0,
-        1.0 / 6.0,
-        0.5,
-        1.0,
-        1.0,
-    ] {
-        p = madd::<F>(p, r, c);
-    }
-    p * f64::from_bits(k_int.wrapping_add(1023) << 52)
+    exp_poly(Scalar::<F>(r)).0 * f64::from_bits(k_int.wrapping_add(1023) << 52)
 }
 
 #[cfg(test)]

@@ -5,6 +5,8 @@
 //! coefficients: no allocation, no lock, no branch on the data. The
 //! interpolant is C², so μ and ∂μ/∂F* are continuous everywhere.
 
+#[cfg(target_arch = "x86_64")]
+mod avx2;
 mod fastmath;
 pub mod format;
 
@@ -79,8 +81,7 @@ pub struct Table {
     domain: Domain,
     /// Strides of the coefficient arrays along ψ and θ.
     strides: [usize; 2],
-    /// Per axis: coordinate of node 0, 1/spacing, index of the last cell.
-    first: [f64; 3],
+    /// Per axis: 1/spacing and index of the last cell.
     inv_step: [f64; 3],
     /// −first/spacing: the cell coordinate is `c·inv_step + offset`.
     offset: [f64; 3],
@@ -204,7 +205,6 @@ impl Table {
                 tolerance: acc.tolerance,
             },
             strides,
-            first: axes.map(|a| a.first),
             inv_step: axes.map(|a| 1.0 / a.step),
             offset: axes.map(|a| -a.first / a.step),
             stride3: [strides[0], strides[1], 1],
@@ -250,39 +250,53 @@ impl Table {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
             // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
-            return unsafe { self.mu_avx2(psi, theta, f_star) };
+            return unsafe { avx2::eval::<false>(self, psi, theta, f_star) }.map(|(mu, _)| mu);
         }
-        self.mu_kernel::<false>(psi, theta, f_star)
+        self.mu_portable(psi, theta, f_star)
     }
 
     /// μ by the portable kernel (no FMA), whatever the CPU: identical on
     /// every machine, so the accuracy a build records does not depend on
-    /// where it ran. Within a few ulp of [`mu`](Self::mu).
+    /// where it ran. Within ~1e-15 relative of [`mu`](Self::mu).
     pub fn mu_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
-        self.mu_kernel::<false>(psi, theta, f_star)
+        let cell = self.cell(psi, theta, f_star)?;
+        Ok(fastmath::exp::<false>(self.blend(&self.ln_mu, &cell, &cell.wf)))
     }
 
     /// μ and its slope ∂μ/∂F* (for implicit solvers).
     #[inline]
     pub fn mu_with_slope(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
         #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
+        let (mu, d_ln_mu) = if self.avx2 {
             // SAFETY: as in `mu`.
-            return unsafe { self.slope_avx2(psi, theta, f_star) };
-        }
-        self.slope_kernel::<false>(psi, theta, f_star)
+            unsafe { avx2::eval::<true>(self, psi, theta, f_star) }?
+        } else {
+            self.slope_portable(psi, theta, f_star)?
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let (mu, d_ln_mu) = self.slope_portable(psi, theta, f_star)?;
+        // ln μ is splined in v = ln F*: dμ/dF* = μ · (d ln μ/dv) / F*.
+        Ok((mu, mu * d_ln_mu * self.inv_step[2] / f_star))
+    }
+
+    /// μ and d ln μ/d(cell coordinate of F*), portably.
+    fn slope_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
+        let cell = self.cell(psi, theta, f_star)?;
+        let (ln_mu, d_ln_mu) = self.blend2(&self.ln_mu, &cell);
+        Ok((fastmath::exp::<false>(ln_mu), d_ln_mu))
     }
 
     /// The separation h*(ψ, θ, F*) at which the surfaces carry F*.
     #[inline]
     pub fn h_star(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
-        let cell = self.cell::<false>(psi, theta, f_star)?;
+        let cell = self.cell(psi, theta, f_star)?;
         Ok(self.blend(&self.h_star, &cell, &cell.wf))
     }
 
-    /// μ for many queries at once, written into `out` (no allocation).
-    /// All four slices must have the same length; on an out-of-domain
-    /// element the error names its index and `out` is left partly written.
+    /// μ for many queries at once, written into `out` (no allocation);
+    /// bit for bit what [`mu`](Self::mu) gives for each. All four slices
+    /// must have the same length; on an out-of-domain element the error
+    /// names its index and `out` is left partly written.
     pub fn mu_batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
         let n = out.len();
         if psi.len() != n || theta.len() != n || f_star.len() != n {
@@ -293,67 +307,34 @@ impl Table {
                 out: n,
             });
         }
-        let failed = {
-            #[cfg(target_arch = "x86_64")]
-            if self.avx2 {
-                // SAFETY: as in `mu`.
-                unsafe { self.batch_avx2(psi, theta, f_star, out) }
-            } else {
-                self.batch_kernel::<false>(psi, theta, f_star, out)
-            }
-            #[cfg(not(target_arch = "x86_64"))]
-            self.batch_kernel::<false>(psi, theta, f_star, out)
+        #[cfg(target_arch = "x86_64")]
+        let failed = if self.avx2 {
+            // SAFETY: as in `mu`; the lengths are checked above.
+            unsafe { avx2::batch(self, psi, theta, f_star, out) }
+        } else {
+            self.batch_portable(psi, theta, f_star, out)
         };
+        #[cfg(not(target_arch = "x86_64"))]
+        let failed = self.batch_portable(psi, theta, f_star, out);
         match failed {
             None => Ok(()),
-            Some(i) => match self.mu_kernel::<false>(psi[i], theta[i], f_star[i]) {
-                Err(LookupError::OutOfDomain { name, value, lo, hi }) => Err(LookupError::BatchElement {
+            Some(i) => match self.domain_error(psi[i], theta[i], f_star[i]) {
+                LookupError::OutOfDomain { name, value, lo, hi } => Err(LookupError::BatchElement {
                     index: i,
                     name,
                     value,
                     lo,
                     hi,
                 }),
-                other => other.map(|_| ()),
+                other => Err(other),
             },
         }
     }
 
-    /// μ; `F` selects the FMA/AVX2 code paths.
-    #[inline(always)]
-    fn mu_kernel<const F: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
-        if F {
-            return self.simd_eval::<false>(psi, theta, f_star).map(|(mu, _)| mu);
-        }
-        let cell = self.cell::<F>(psi, theta, f_star)?;
-        Ok(fastmath::exp::<F>(self.blend(&self.ln_mu, &cell, &cell.wf)))
-    }
-
-    /// μ and ∂μ/∂F*; `F` selects the FMA/AVX2 code paths.
-    #[inline(always)]
-    fn slope_kernel<const F: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
-        let (mu, d_ln_mu) = if F {
-            self.simd_eval::<true>(psi, theta, f_star)?
-        } else {
-            let cell = self.cell::<F>(psi, theta, f_star)?;
-            let (ln_mu, d_ln_mu) = self.blend2(&self.ln_mu, &cell);
-            (fastmath::exp::<F>(ln_mu), d_ln_mu)
-        };
-        // ln μ is splined in v = ln F*: dμ/dF* = μ · (d ln μ/dv) / F*.
-        Ok((mu, mu * d_ln_mu * self.inv_step[2] / f_star))
-    }
-
     /// Fills `out`; returns the index of the first out-of-domain query.
-    #[inline(always)]
-    fn batch_kernel<const F: bool>(
-        &self,
-        psi: &[f64],
-        theta: &[f64],
-        f_star: &[f64],
-        out: &mut [f64],
-    ) -> Option<usize> {
+    fn batch_portable(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
         for i in 0..out.len() {
-            match self.mu_kernel::<F>(psi[i], theta[i], f_star[i]) {
+            match self.mu_portable(psi[i], theta[i], f_star[i]) {
                 Ok(m) => out[i] = m,
                 Err(_) => return Some(i),
             }
@@ -361,51 +342,37 @@ impl Table {
         None
     }
 
-    /// The kernels compiled for AVX2 + FMA (chosen at load time).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn mu_avx2(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
-        self.mu_kernel::<true>(psi, theta, f_star)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn slope_avx2(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
-        self.slope_kernel::<true>(psi, theta, f_star)
-    }
-
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2,fma")]
-    unsafe fn batch_avx2(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
-        self.batch_kernel::<true>(psi, theta, f_star, out)
-    }
-
-    /// Locates a query: base offset and the ψ, θ, F* weights.
+    /// Whether a query lies in the domain (false for NaN).
     #[inline(always)]
-    fn cell<const F: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
+    fn inside(&self, psi: f64, theta: f64, f_star: f64) -> bool {
         let d = &self.domain;
-        let inside = psi >= d.psi.0
+        psi >= d.psi.0
             && psi <= d.psi.1
             && theta >= d.theta.0
             && theta <= d.theta.1
             && f_star >= d.f_star.0
-            && f_star <= d.f_star.1;
-        if !inside {
+            && f_star <= d.f_star.1
+    }
+
+    /// Locates a query: base offset and the ψ, θ, F* weights.
+    #[inline(always)]
+    fn cell(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
+        if !self.inside(psi, theta, f_star) {
             return Err(self.domain_error(psi, theta, f_star));
         }
-        let coords = [fastmath::ln::<F>(psi), theta.sqrt(), fastmath::ln::<F>(f_star)];
-        let mut idx = [0usize; 3];
+        let coords = [fastmath::ln::<false>(psi), theta.sqrt(), fastmath::ln::<false>(f_star)];
+        let mut base = 0;
         let mut frac = [0.0; 3];
         for k in 0..3 {
-            let s = fastmath::madd::<F>(coords[k], self.inv_step[k], -self.first[k] * self.inv_step[k]);
-            // `as usize` truncates (s ≥ 0 inside the domain): no call to a
-            // software floor on targets without SSE4.1.
-            let i = (s as usize).min(self.last_cell[k]);
-            idx[k] = i;
+            let s = coords[k] * self.inv_step[k] + self.offset[k];
+            // i64 conversions are single instructions (usize ones, and
+            // floor without SSE4.1, are not); s ≥ 0 inside the domain.
+            let i = (s as i64).min(self.last_cell[k] as i64);
+            base += i as usize * self.stride3[k];
             frac[k] = s - i as f64;
         }
         Ok(Cell {
-            base: idx[0] * self.strides[0] + idx[1] * self.strides[1] + idx[2],
+            base,
             wp: weights(frac[0]),
             wt: weights(frac[1]),
             wf: weights(frac[2]),
@@ -427,90 +394,6 @@ impl Table {
             }
         }
         unreachable!("domain_error is called only for a query outside the domain")
-    }
-
-    /// The whole lookup with AVX2 + FMA: μ and (if `SLOPE`) d ln μ/d(coordinate
-    /// of F*). The B-spline weights of an axis are one vector, by Horner's
-    /// rule in the cell offset; each row of four F* coefficients is one
-    /// vector load.
-    #[inline(always)]
-    fn simd_eval<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
-        #[cfg(target_arch = "x86_64")]
-        {
-            use core::arch::x86_64::*;
-            let d = &self.domain;
-            let inside = psi >= d.psi.0
-                && psi <= d.psi.1
-                && theta >= d.theta.0
-                && theta <= d.theta.1
-                && f_star >= d.f_star.0
-                && f_star <= d.f_star.1;
-            if !inside {
-                return Err(self.domain_error(psi, theta, f_star));
-            }
-            let coords = [fastmath::ln::<true>(psi), theta.sqrt(), fastmath::ln::<true>(f_star)];
-            let mut base = 0;
-            let mut frac = [0.0; 3];
-            for k in 0..3 {
-                let s = coords[k].mul_add(self.inv_step[k], self.offset[k]);
-                // i64 conversions are single instructions (usize ones are not);
-                // s ≥ 0 inside the domain.
-                let i = (s as i64).min(self.last_cell[k] as i64);
-                base += i as usize * self.stride3[k];
-                frac[k] = s - i as f64;
-            }
-            let [s0, s1] = self.strides;
-            let c = &self.ln_mu;
-            let _ = c[base + 3 * s0 + 3 * s1 + 3];
-            // SAFETY: every row read lies within the element checked above,
-            // and this is called only from the AVX2 + FMA kernels.
-            unsafe {
-                // Cubic B-spline weights: ((A·f + B)·f + C)·f + D.
-                let a = _mm256_setr_pd(-1.0 / 6.0, 0.5, -0.5, 1.0 / 6.0);
-                let b = _mm256_setr_pd(0.5, -1.0, 0.5, 0.0);
-                let cc = _mm256_setr_pd(-0.5, 0.0, 0.5, 0.0);
-                let dd = _mm256_setr_pd(1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0);
-                let weights = |f: f64| {
-                    let f = _mm256_set1_pd(f);
-                    _mm256_fmadd_pd(_mm256_fmadd_pd(_mm256_fmadd_pd(a, f, b), f, cc), f, dd)
-                };
-                let mut wp = [0.0; 4];
-                let mut wt = [0.0; 4];
-                _mm256_storeu_pd(wp.as_mut_ptr(), weights(frac[0]));
-                _mm256_storeu_pd(wt.as_mut_ptr(), weights(frac[1]));
-                let wf = weights(frac[2]);
-                let p = c.as_ptr().add(base);
-                let mut acc = _mm256_setzero_pd();
-                for (i, w) in wp.iter().enumerate() {
-                    let q = p.add(i * s0);
-                    let mut plane = _mm256_mul_pd(_mm256_set1_pd(wt[0]), _mm256_loadu_pd(q));
-                    plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[1]), _mm256_loadu_pd(q.add(s1)), plane);
-                    plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[2]), _mm256_loadu_pd(q.add(2 * s1)), plane);
-                    plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[3]), _mm256_loadu_pd(q.add(3 * s1)), plane);
-                    acc = _mm256_fmadd_pd(_mm256_set1_pd(*w), plane, acc);
-                }
-                let v = _mm256_mul_pd(acc, wf);
-                let dv = if SLOPE {
-                    // Derivative weights: (3A·f + 2B)·f + C.
-                    let f = _mm256_set1_pd(frac[2]);
-                    let a3 = _mm256_mul_pd(a, _mm256_set1_pd(3.0));
-                    let b2 = _mm256_add_pd(b, b);
-                    _mm256_mul_pd(acc, _mm256_fmadd_pd(_mm256_fmadd_pd(a3, f, b2), f, cc))
-                } else {
-                    _mm256_setzero_pd()
-                };
-                let h = _mm256_hadd_pd(v, dv); // [v0+v1, d0+d1, v2+v3, d2+d3]
-                let s = _mm_add_pd(_mm256_castpd256_pd128(h), _mm256_extractf128_pd(h, 1));
-                let ln_mu = _mm_cvtsd_f64(s);
-                Ok((fastmath::exp::<true>(ln_mu), _mm_cvtsd_f64(_mm_unpackhi_pd(s, s))))
-            }
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            let cell = self.cell::<false>(psi, theta, f_star)?;
-            let (ln_mu, d) = self.blend2(&self.ln_mu, &cell);
-            Ok((fastmath::exp::<false>(ln_mu), d))
-        }
     }
 
     /// Σ wp·wt·wf·c over the 4×4×4 block.
