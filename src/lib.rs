@@ -22,12 +22,15 @@ pub mod asperity;
 pub mod build;
 #[cfg(feature = "builder")]
 pub mod export;
+#[cfg(feature = "plot")]
+pub mod figures;
 mod model;
 mod params;
 mod quadrature;
 pub mod spline;
 mod surface;
 pub mod table;
+pub mod validate;
 
 pub use model::{Contact, EvalError, Model, H_LIMIT};
 pub use params::{Fit, Kind, ParamError, Params, Physical, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};

@@ -4,6 +4,8 @@ mod build;
 mod eval;
 mod export;
 mod lookup;
+mod plot;
+mod validate;
 mod verify;
 
 use clap::{Parser, Subcommand};
@@ -27,6 +29,10 @@ enum Command {
     Verify(verify::Args),
     /// Look up μ and ∂μ/∂F* in a table.
     Lookup(lookup::Args),
+    /// Draw the paper's figures, a curve, or a table's error map.
+    Plot(plot::Args),
+    /// Compare this model with the statements of the paper.
+    Validate(validate::Args),
     /// Export a table to NumPy .npz/.npy.
     Export(export::Args),
 }
@@ -68,6 +74,8 @@ pub fn run() -> i32 {
         Command::Build(args) => build::run(args),
         Command::Verify(args) => verify::run(args),
         Command::Lookup(args) => lookup::run(args),
+        Command::Plot(args) => plot::run(args),
+        Command::Validate(args) => validate::run(args),
         Command::Export(args) => export::run(args),
     };
     match result {

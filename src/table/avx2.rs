@@ -10,7 +10,7 @@
 //! returns for each of its queries.
 
 use super::fastmath::{self, Num};
-use super::{LookupError, Table};
+use super::Table;
 use core::arch::x86_64::*;
 
 /// Four lanes.
@@ -99,14 +99,16 @@ unsafe fn blend<const SLOPE: bool>(
     (_mm_cvtsd_f64(s), _mm_cvtsd_f64(_mm_unpackhi_pd(s, s)))
 }
 
-/// One lookup: μ and, if `SLOPE`, d ln μ/d(cell coordinate of F*).
+/// One lookup: μ and, if `SLOPE`, d ln μ/d(cell coordinate of F*); μ is
+/// NaN (never otherwise) for a query outside the domain. A pair of floats
+/// comes back in registers, where a `Result` would go through memory.
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA.
 #[target_feature(enable = "avx2,fma")]
-pub unsafe fn eval<const SLOPE: bool>(t: &Table, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
+pub unsafe fn eval<const SLOPE: bool>(t: &Table, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
     if !t.inside(psi, theta, f_star) {
-        return Err(t.domain_error(psi, theta, f_star));
+        return (f64::NAN, f64::NAN);
     }
     let coords = [fastmath::ln::<true>(psi), theta.sqrt(), fastmath::ln::<true>(f_star)];
     let mut base = 0;
@@ -128,7 +130,7 @@ pub unsafe fn eval<const SLOPE: bool>(t: &Table, psi: f64, theta: f64, f_star: f
     _mm256_storeu_pd(wp.as_mut_ptr(), weights(frac[0]));
     _mm256_storeu_pd(wt.as_mut_ptr(), weights(frac[1]));
     let (ln_mu, d) = blend::<SLOPE>(c.as_ptr().add(base), s0, s1, &wp, &wt, weights(frac[2]), frac[2]);
-    Ok((fastmath::exp::<true>(ln_mu), d))
+    (fastmath::exp::<true>(ln_mu), d)
 }
 
 /// μ for every query, four at a time; returns the index of the first
@@ -163,9 +165,9 @@ pub unsafe fn batch(t: &Table, psi: &[f64], theta: &[f64], f_star: &[f64], out: 
         if _mm256_movemask_pd(ok) != 0b1111 {
             // Some query is out: the single-query kernel finds which.
             for j in i..i + 4 {
-                match eval::<false>(t, psi[j], theta[j], f_star[j]) {
-                    Ok((mu, _)) => out[j] = mu,
-                    Err(_) => return Some(j),
+                out[j] = eval::<false>(t, psi[j], theta[j], f_star[j]).0;
+                if out[j].is_nan() {
+                    return Some(j);
                 }
             }
             i += 4;
@@ -196,9 +198,9 @@ pub unsafe fn batch(t: &Table, psi: &[f64], theta: &[f64], f_star: &[f64], out: 
         i += 4;
     }
     for j in i..n {
-        match eval::<false>(t, psi[j], theta[j], f_star[j]) {
-            Ok((mu, _)) => out[j] = mu,
-            Err(_) => return Some(j),
+        out[j] = eval::<false>(t, psi[j], theta[j], f_star[j]).0;
+        if out[j].is_nan() {
+            return Some(j);
         }
     }
     None

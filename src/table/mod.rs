@@ -250,7 +250,12 @@ impl Table {
         #[cfg(target_arch = "x86_64")]
         if self.avx2 {
             // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
-            return unsafe { avx2::eval::<false>(self, psi, theta, f_star) }.map(|(mu, _)| mu);
+            let (mu, _) = unsafe { avx2::eval::<false>(self, psi, theta, f_star) };
+            return if mu.is_nan() {
+                Err(self.domain_error(psi, theta, f_star))
+            } else {
+                Ok(mu)
+            };
         }
         self.mu_portable(psi, theta, f_star)
     }
@@ -269,7 +274,11 @@ impl Table {
         #[cfg(target_arch = "x86_64")]
         let (mu, d_ln_mu) = if self.avx2 {
             // SAFETY: as in `mu`.
-            unsafe { avx2::eval::<true>(self, psi, theta, f_star) }?
+            let (mu, d) = unsafe { avx2::eval::<true>(self, psi, theta, f_star) };
+            if mu.is_nan() {
+                return Err(self.domain_error(psi, theta, f_star));
+            }
+            (mu, d)
         } else {
             self.slope_portable(psi, theta, f_star)?
         };

@@ -1,0 +1,558 @@
+//! What the paper reports, computed live: the statements of MODEL.md §7
+//! ("What the paper reports, to check against") and the CEB-type comparison
+//! of MODEL.md §8, each set against the paper and against MODEL.md.
+//!
+//! [`statements`] gives one [`Statement`] per claim; `kefric validate`
+//! prints them as `docs/validation.md`, and `tests/paper_statements.rs`
+//! asserts MODEL.md's numbers with the fitting functions of this module.
+//!
+//! ## How the power-law exponents are fitted
+//!
+//! The paper's exponents m (Q* ≈ C·F*^m, its Eq. 22) and n (μ ∝ F*^−n, its
+//! Eq. 23) are least-squares slopes in log–log coordinates. The slope depends
+//! on how the points are sampled, so it is defined once, in
+//! [`loglog_slope_over_h`]:
+//!
+//! * [`SWEEP_POINTS`] = 301 points equally spaced in h* over 0 ≤ h* ≤ 3 (the
+//!   paper's range of separations, MODEL.md §1), i.e. h* = 0, 0.01, …, 3;
+//! * points with F* > [`F_STAR_MAX`] = 0.1 dropped (the paper's range of
+//!   loads, MODEL.md §1; this only matters at ψ = 2, where
+//!   F*(h* = 0) = 0.13);
+//! * ordinary least squares of ln y on ln F*, every point weighted equally.
+//!
+//! This definition reproduces every number MODEL.md §7 quotes: m = 0.841
+//! (ψ = 0.5), 0.856 (ψ = 0.5, ε* = 0.01), 0.619 (ψ = 2), n = 0.1122
+//! (ψ = 0.67) and 0.1276 (ψ = 1.01). Alternatives that do *not* reproduce
+//! the n values of MODEL.md §6 item 1: points equally spaced in ln F* over
+//! the same h* range give n = 0.106 / 0.118; over the F* range of the
+//! paper's figures, 1e-5 ≤ F* ≤ 0.1, n = 0.096 / 0.094; over
+//! 1e-4 ≤ F* ≤ 0.1, n = 0.116 / 0.118. At ψ = 2 keeping F* > 0.1 (h* near
+//! 0) gives m = 0.573 instead of 0.62.
+
+use crate::{Contact, EvalError, Kind, Model, ParamError, Params};
+
+/// Points of the h* sweep: h* = 0, 0.01, …, 3.
+pub const SWEEP_POINTS: usize = 301;
+/// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
+pub const H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
+/// The paper's largest load, F* ≤ 0.1 (MODEL.md §1).
+pub const F_STAR_MAX: f64 = 0.1;
+/// A log–log fit needs at least this many points with F* ≤ 0.1 (of the
+/// 301): fewer means the sweep left the paper's range of loads.
+pub const MIN_FIT_POINTS: usize = 251;
+/// The loads at which the CEB-type and Kogut–Etsion μ are compared.
+pub const CEB_LOADS: [f64; 7] = [1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 5e-2];
+
+/// A statement that cannot be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ValidateError {
+    /// The parameters are invalid.
+    #[error(transparent)]
+    Params(#[from] ParamError),
+    /// An evaluation failed.
+    #[error(transparent)]
+    Eval(#[from] EvalError),
+    /// A quantity that must be positive for a log–log fit is not.
+    #[error("{what} = {value:e} at h_star = {h_star} is not > 0; a log-log fit needs it positive")]
+    NotPositive {
+        /// `"F*"` or the fitted quantity.
+        what: &'static str,
+        /// The separation.
+        h_star: f64,
+        /// The offending value.
+        value: f64,
+    },
+    /// Too few points of the sweep lie in the paper's range of loads.
+    #[error("only {points} points of the h* sweep have F* <= 0.1; the fit needs {MIN_FIT_POINTS}")]
+    TooFewPoints {
+        /// Points with F* ≤ 0.1.
+        points: usize,
+    },
+    /// Fs*/P* does not cross the level inside the bracket.
+    #[error("Fs*/P* does not cross {level} for F* in [{lo:e}, {hi:e}]")]
+    NoCrossing {
+        /// The level.
+        level: f64,
+        /// Lower end of the F* bracket.
+        lo: f64,
+        /// Upper end.
+        hi: f64,
+    },
+}
+
+/// The contact at each of the [`SWEEP_POINTS`] separations
+/// h* = 0, 0.01, …, 3.
+pub fn sweep_h(model: &Model) -> Vec<Contact> {
+    let (a, b) = H_STAR_RANGE;
+    let last = (SWEEP_POINTS - 1) as f64;
+    (0..SWEEP_POINTS)
+        .map(|i| {
+            let h = a + (b - a) * i as f64 / last;
+            model.at_h_star(h).expect("h* in [0, 3] is always in range")
+        })
+        .collect()
+}
+
+/// Least-squares slope of `ys` on `xs`.
+fn slope(xs: &[f64], ys: &[f64]) -> f64 {
+    let n = xs.len() as f64;
+    let mx = xs.iter().sum::<f64>() / n;
+    let my = ys.iter().sum::<f64>() / n;
+    let sxy: f64 = xs.iter().zip(ys).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = xs.iter().map(|x| (x - mx) * (x - mx)).sum();
+    sxy / sxx
+}
+
+/// A power-law exponent fitted in log–log coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogLogFit {
+    /// The exponent (m, or n = −slope for μ ∝ F*^−n).
+    pub exponent: f64,
+    /// Points the fit used (those of the sweep with F* ≤ 0.1).
+    pub points: usize,
+}
+
+/// The slope of ln y against ln F* (module docs: h* = 0, 0.01, …, 3,
+/// F* ≤ 0.1, ordinary least squares). `what` names y in errors.
+pub fn loglog_slope_over_h(
+    model: &Model,
+    what: &'static str,
+    y: impl Fn(&Contact) -> f64,
+) -> Result<LogLogFit, ValidateError> {
+    let (mut ln_f, mut ln_y) = (Vec::new(), Vec::new());
+    for c in sweep_h(model) {
+        if c.f_star > F_STAR_MAX {
+            continue;
+        }
+        for (name, v) in [("F*", c.f_star), (what, y(&c))] {
+            if v.is_nan() || v <= 0.0 {
+                return Err(ValidateError::NotPositive {
+                    what: name,
+                    h_star: c.h_star,
+                    value: v,
+                });
+            }
+        }
+        ln_f.push(c.f_star.ln());
+        ln_y.push(y(&c).ln());
+    }
+    if ln_f.len() < MIN_FIT_POINTS {
+        return Err(ValidateError::TooFewPoints { points: ln_f.len() });
+    }
+    Ok(LogLogFit {
+        exponent: slope(&ln_f, &ln_y),
+        points: ln_f.len(),
+    })
+}
+
+/// m in Q* ≈ C·F*^m (the paper's Eq. 22).
+pub fn power_m(model: &Model) -> Result<LogLogFit, ValidateError> {
+    loglog_slope_over_h(model, "Q*", |c| c.q_star)
+}
+
+/// n in μ ∝ F*^−n (the paper's Eq. 23).
+pub fn exponent_n(model: &Model) -> Result<LogLogFit, ValidateError> {
+    let fit = loglog_slope_over_h(model, "mu", |c| c.q_star / c.f_star)?;
+    Ok(LogLogFit {
+        exponent: -fit.exponent,
+        ..fit
+    })
+}
+
+/// A value at a separation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AtH {
+    /// The separation h*.
+    pub h_star: f64,
+    /// F* there.
+    pub f_star: f64,
+    /// The value.
+    pub value: f64,
+}
+
+impl AtH {
+    fn of(c: &Contact, value: f64) -> AtH {
+        AtH {
+            h_star: c.h_star,
+            f_star: c.f_star,
+            value,
+        }
+    }
+}
+
+/// The smallest and largest of `y` over the h* sweep, among points with
+/// 0 < F* ≤ `f_max` (`f64::INFINITY`: every point with F* > 0). `None` if
+/// no point qualifies.
+pub fn extremes_over_h(model: &Model, f_max: f64, y: impl Fn(&Contact) -> f64) -> Option<(AtH, AtH)> {
+    let mut out: Option<(AtH, AtH)> = None;
+    for c in sweep_h(model) {
+        if !(c.f_star > 0.0 && c.f_star <= f_max) {
+            continue;
+        }
+        let p = AtH::of(&c, y(&c));
+        out = Some(match out {
+            None => (p, p),
+            Some((lo, hi)) => (
+                if p.value < lo.value { p } else { lo },
+                if p.value > hi.value { p } else { hi },
+            ),
+        });
+    }
+    out
+}
+
+/// The largest Fs*/P* over the h* sweep (every point, whatever F*).
+pub fn max_adhesion_ratio(model: &Model) -> AtH {
+    sweep_h(model).iter().map(|c| AtH::of(c, c.fs_star / c.p_star)).fold(
+        AtH {
+            h_star: f64::NAN,
+            f_star: f64::NAN,
+            value: 0.0,
+        },
+        |a, b| if b.value > a.value { b } else { a },
+    )
+}
+
+/// Fs*/P* at the load F*.
+pub fn adhesion_ratio_at(model: &Model, f_star: f64) -> Result<f64, ValidateError> {
+    let c = model.at_f_star(f_star)?;
+    Ok(c.fs_star / c.p_star)
+}
+
+/// An interval of F* that holds a crossing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Bracket {
+    /// Lower end: Fs*/P* is above the level here.
+    pub lo: f64,
+    /// Upper end: Fs*/P* is at or below the level here.
+    pub hi: f64,
+}
+
+/// Where Fs*/P* falls through `level` as F* grows from `lo` to `hi`: 60
+/// bisections in ln F*, which shrink the bracket to a relative width below
+/// 1e-9 for any starting bracket within the paper's range of loads.
+pub fn adhesion_ratio_crossing(model: &Model, level: f64, (lo, hi): (f64, f64)) -> Result<Bracket, ValidateError> {
+    let excess = |f: f64| adhesion_ratio_at(model, f).map(|r| r - level);
+    if !(excess(lo)? > 0.0 && excess(hi)? <= 0.0) {
+        return Err(ValidateError::NoCrossing { level, lo, hi });
+    }
+    let (mut lo, mut hi) = (lo, hi);
+    for _ in 0..60 {
+        let mid = (lo * hi).sqrt();
+        if excess(mid)? > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Ok(Bracket { lo, hi })
+}
+
+/// The maximum of Q*(h*) on `[a, b]`, by golden-section search (80 steps;
+/// Q* must have a single maximum there).
+pub fn friction_peak(model: &Model, (a, b): (f64, f64)) -> Result<Contact, ValidateError> {
+    let q = |h: f64| model.at_h_star(h).map(|c| c.q_star);
+    let g = (5.0_f64.sqrt() - 1.0) / 2.0;
+    let (mut a, mut b) = (a, b);
+    for _ in 0..80 {
+        let (x1, x2) = (b - g * (b - a), a + g * (b - a));
+        if q(x1)? < q(x2)? {
+            a = x1;
+        } else {
+            b = x2;
+        }
+    }
+    Ok(model.at_h_star(0.5 * (a + b))?)
+}
+
+/// μ_KE / μ_CEB at each load (default β, ν, ε*; MODEL.md §8).
+pub fn ke_over_ceb(psi: f64, theta: f64, loads: &[f64]) -> Result<Vec<f64>, ValidateError> {
+    let ke = Model::new(Params::new(psi, theta))?;
+    let ceb = Model::new(Params::new(psi, theta).kind(Kind::CebType))?;
+    loads
+        .iter()
+        .map(|&f| {
+            let a = ke.at_f_star(f)?;
+            let b = ceb.at_f_star(f)?;
+            Ok(a.q_star / a.f_star / (b.q_star / b.f_star))
+        })
+        .collect()
+}
+
+/// Whether this model bears out a statement of the paper.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    /// The model reproduces the statement (the criterion is in
+    /// [`Statement::criterion`]).
+    Agrees,
+    /// It does not.
+    Differs,
+}
+
+impl Verdict {
+    fn from(ok: bool) -> Verdict {
+        if ok {
+            Verdict::Agrees
+        } else {
+            Verdict::Differs
+        }
+    }
+}
+
+impl std::fmt::Display for Verdict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Verdict::Agrees => "agrees",
+            Verdict::Differs => "differs",
+        })
+    }
+}
+
+/// One statement of the paper, set against MODEL.md and this model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Statement {
+    /// What the paper says, and where.
+    pub paper: &'static str,
+    /// What MODEL.md (§7, §8) gives for this model.
+    pub model_md: &'static str,
+    /// This model's number(s), computed now (3–4 significant digits).
+    pub computed: String,
+    /// The headline number of `computed`, unrounded.
+    pub value: f64,
+    /// Whether the computed number bears out the paper's statement.
+    pub verdict: Verdict,
+    /// The rule the verdict applies, in words.
+    pub criterion: &'static str,
+    /// Why this model differs, where it does (empty otherwise).
+    pub note: &'static str,
+}
+
+/// `x` with `digits` significant digits: fixed notation for
+/// 1e-3 ≤ |x| < 1e4, scientific otherwise.
+pub fn sig(x: f64, digits: usize) -> String {
+    let digits = digits.max(1);
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let e = x.abs().log10().floor();
+    if (-3.0..4.0).contains(&e) {
+        // Round first: 0.99996 to 4 digits is 1.000, one decimal fewer.
+        let decimals = (digits as i32 - 1 - e as i32).max(0) as usize;
+        let s = format!("{x:.decimals$}");
+        let e2 = s
+            .trim_start_matches('-')
+            .parse::<f64>()
+            .map_or(e, |v| if v > 0.0 { v.log10().floor() } else { e });
+        if e2 > e {
+            let decimals = (digits as i32 - 1 - e2 as i32).max(0) as usize;
+            return format!("{x:.decimals$}");
+        }
+        s
+    } else {
+        format!("{x:.prec$e}", prec = digits - 1)
+    }
+}
+
+fn model(psi: f64, theta: f64) -> Result<Model, ValidateError> {
+    Ok(Model::new(Params::new(psi, theta))?)
+}
+
+/// Does `x` round to `printed` at the printed number of decimals?
+fn rounds_to(x: f64, printed: f64, decimals: i32) -> bool {
+    let scale = 10f64.powi(decimals);
+    (x * scale).round() == (printed * scale).round()
+}
+
+/// Every statement of MODEL.md §7 and the CEB-type comparison of §8,
+/// computed now with the default β = 0.04, ν = 0.3, ε* = 0.004 (except
+/// where a row says otherwise). Takes about a tenth of a second.
+pub fn statements() -> Result<Vec<Statement>, ValidateError> {
+    let mut rows = Vec::new();
+
+    // Fig. 4, Eq. 22: m at ψ = 0.5, θ = 0.003.
+    let m = power_m(&model(0.5, 0.003)?)?.exponent;
+    rows.push(Statement {
+        paper: "Q* ≈ C·F*^m with m = 0.86 at ψ = 0.5 (θ = 0.003; Fig. 4, Eq. 22)",
+        model_md: "0.84 (0.86 with ε* = 0.01)",
+        computed: format!("m = {}", sig(m, 4)),
+        value: m,
+        verdict: Verdict::from(rounds_to(m, 0.86, 2)),
+        criterion: "m rounds to the printed 0.86",
+        note: "ε* is not stated in the paper; ε* = 0.01 gives 0.86 (next row)",
+    });
+    let m = power_m(&Model::new(Params::new(0.5, 0.003).eps_star(0.01))?)?.exponent;
+    rows.push(Statement {
+        paper: "the same, with ε* = 0.01 (the paper does not state ε*; MODEL.md §6.3)",
+        model_md: "0.86",
+        computed: format!("m = {}", sig(m, 4)),
+        value: m,
+        verdict: Verdict::from(rounds_to(m, 0.86, 2)),
+        criterion: "m rounds to the printed 0.86",
+        note: "",
+    });
+
+    // Fig. 5, Eq. 23: n at θ = 0.001.
+    for (psi, exp, md) in [(0.67, 0.102, "0.112 at ψ = 0.67"), (1.01, 0.130, "0.127 at ψ = 1.01")] {
+        let n = exponent_n(&model(psi, 0.001)?)?.exponent;
+        rows.push(Statement {
+            paper: if exp < 0.11 {
+                "μ ∝ F*^−n with n between 0.09 and 0.13 for 0.5 ≤ ψ ≤ 2 (θ = 0.001; Fig. 5, Eq. 23); experiment: n = 0.102 at ψ = 0.67"
+            } else {
+                "the same; experiment: n = 0.130 at ψ = 1.01"
+            },
+            model_md: md,
+            computed: format!("n = {} at ψ = {psi}", sig(n, 4)),
+            value: n,
+            verdict: Verdict::from((0.09..=0.13).contains(&rounds2(n))),
+            criterion: "n, rounded to two decimals, lies in [0.09, 0.13]",
+            note: "",
+        });
+    }
+    // The ends of the paper's ψ range for n (not in MODEL.md).
+    let n05 = exponent_n(&model(0.5, 0.001)?)?.exponent;
+    let n2 = exponent_n(&model(2.0, 0.001)?)?.exponent;
+    rows.push(Statement {
+        paper: "the same, at the ends of the range: ψ = 0.5 and ψ = 2",
+        model_md: "— (implied by m = 0.62 at ψ = 2: n ≈ 1 − m)",
+        computed: format!("n = {} at ψ = 0.5, {} at ψ = 2", sig(n05, 4), sig(n2, 4)),
+        value: n2,
+        verdict: Verdict::from((0.09..=0.13).contains(&rounds2(n05)) && (0.09..=0.13).contains(&rounds2(n2))),
+        criterion: "Both n, rounded to two decimals, lie in [0.09, 0.13]",
+        note: "at ψ = 2 Q* levels off near F* ≈ 0.07 (row 9), so μ = Q*/F* falls steeply: n ≈ 1 − m",
+    });
+
+    // Fig. 3: Fs*/P* < 0.11 for ψ ≥ 2.
+    let (mut psi_w, mut w) = (2.0, max_adhesion_ratio(&model(2.0, 0.003)?));
+    for psi in [2.5, 3.0, 4.0, 5.0, 6.0, 8.0] {
+        let r = max_adhesion_ratio(&model(psi, 0.003)?);
+        if r.value > w.value {
+            (psi_w, w) = (psi, r);
+        }
+    }
+    rows.push(Statement {
+        paper: "Fs*/P* < 0.11 over the whole range for ψ ≥ 2 (θ = 0.003; Fig. 3)",
+        model_md: "max 0.104 at ψ = 2",
+        computed: format!(
+            "max {} at ψ = {psi_w} (h* = {}); ψ = 2, 2.5, 3, 4, 5, 6, 8 scanned over 0 ≤ h* ≤ 3",
+            sig(w.value, 4),
+            w.h_star
+        ),
+        value: w.value,
+        verdict: Verdict::from(w.value < 0.11),
+        criterion: "The largest Fs*/P* is below 0.11",
+        note: "",
+    });
+
+    // Fig. 3: ψ = 1 threshold.
+    let b = adhesion_ratio_crossing(&model(1.0, 0.003)?, 0.1, (1e-4, 0.05))?;
+    rows.push(Statement {
+        paper: "ψ = 1: Fs*/P* < 0.1 for F* above a threshold of 0.01 (θ = 0.003; Fig. 3)",
+        model_md: "crosses 0.1 at F* ≈ 0.009",
+        computed: format!("crosses 0.1 at F* = {}", sig(b.lo, 4)),
+        value: b.lo,
+        verdict: Verdict::from(b.hi <= 0.01 && b.lo >= 0.008),
+        criterion: "The crossing lies in [0.008, 0.01], so Fs*/P* < 0.1 for every F* > 0.01",
+        note: "",
+    });
+
+    // Fig. 4: ψ = 8.
+    let psi8 = model(8.0, 0.003)?;
+    let ratio = |c: &Contact| c.q_star / c.f_star;
+    let all = extremes_over_h(&psi8, f64::INFINITY, ratio).expect("F* > 0 at ψ = 8");
+    let paper = extremes_over_h(&psi8, F_STAR_MAX, ratio).expect("F* ≤ 0.1 at ψ = 8");
+    let orders = |x: f64| -x.log10();
+    rows.push(Statement {
+        paper: "ψ = 8: Q* three to four orders of magnitude below F* (θ = 0.003; Fig. 4)",
+        model_md: "Q*/F* ≈ 1.8e-5 … 1.2e-3",
+        computed: format!(
+            "Q*/F* = {:.3e} … {:.3e} over 0 ≤ h* ≤ 3; {:.3e} … {:.3e} where F* ≤ 0.1 ({:.1}–{:.1} orders)",
+            all.0.value,
+            all.1.value,
+            paper.0.value,
+            paper.1.value,
+            orders(paper.1.value),
+            orders(paper.0.value),
+        ),
+        value: paper.0.value,
+        verdict: Verdict::from(orders(paper.1.value).round() >= 3.0 && orders(paper.0.value).round() <= 4.0),
+        criterion: "−log10(Q*/F*) rounds to 3 or 4 everywhere in the paper's range F* ≤ 0.1",
+        note: "",
+    });
+
+    // Fig. 4: m at ψ = 2, the known difference.
+    let psi2 = model(2.0, 0.003)?;
+    let m2 = power_m(&psi2)?.exponent;
+    let peak = friction_peak(&psi2, (0.0, 1.5))?;
+    rows.push(Statement {
+        paper: "m = 0.82 at ψ = 2 (θ = 0.003; Fig. 4)",
+        model_md: "not reproduced: 0.62, and Q* peaks near F* ≈ 0.07",
+        computed: format!(
+            "m = {}; Q* peaks at F* = {} (h* = {})",
+            sig(m2, 4),
+            sig(peak.f_star, 3),
+            sig(peak.h_star, 3)
+        ),
+        value: m2,
+        verdict: Verdict::from(rounds_to(m2, 0.82, 2)),
+        criterion: "m rounds to the printed 0.82",
+        note: "known (MODEL.md §7): Q* peaks inside the paper's load range, so no single power law fits",
+    });
+
+    // Fig. 5 (dashed): the CEB-type model.
+    for (psi, md) in [
+        (0.5, "about 1.5× below"),
+        (1.0, "3–4× below"),
+        (2.0, "10× or more below"),
+    ] {
+        let r = ke_over_ceb(psi, 0.003, &CEB_LOADS)?;
+        let (lo, hi) = r
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(a, b), &x| (a.min(x), b.max(x)));
+        rows.push(Statement {
+            paper: if psi == 0.5 {
+                "the CEB model (Fig. 5, dashed) substantially underestimates μ, even at ψ = 0.5 (θ = 0.003)"
+            } else if psi == 1.0 {
+                "the same at ψ = 1"
+            } else {
+                "the same at ψ = 2, where CEB predicts unrealistically small μ"
+            },
+            model_md: md,
+            computed: format!(
+                "μ_KE/μ_CEB = {} … {} for 1e-4 ≤ F* ≤ 0.05 (growing with F*)",
+                sig(lo, 4),
+                sig(hi, 4)
+            ),
+            value: lo,
+            verdict: Verdict::from(lo > 1.0),
+            criterion: "The CEB-type μ is below Kogut–Etsion's at every load",
+            note: "",
+        });
+    }
+    Ok(rows)
+}
+
+fn rounds2(x: f64) -> f64 {
+    (x * 100.0).round() / 100.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sig_gives_fixed_or_scientific_notation() {
+        assert_eq!(sig(0.84103, 4), "0.8410");
+        assert_eq!(sig(0.0090921, 4), "0.009092");
+        assert_eq!(sig(1.8230e-5, 4), "1.823e-5");
+        assert_eq!(sig(18.104, 4), "18.10");
+        assert_eq!(sig(0.99996, 4), "1.000");
+        assert_eq!(sig(0.0654, 3), "0.0654");
+    }
+
+    #[test]
+    fn rounding_rules_follow_the_printed_digits() {
+        assert!(rounds_to(0.8564, 0.86, 2));
+        assert!(!rounds_to(0.841, 0.86, 2));
+        assert_eq!(rounds2(0.1276), 0.13);
+    }
+}

@@ -1,0 +1,218 @@
+//! `kefric plot`: the paper's figures as PNGs of the promised size, the
+//! curve and error-map subcommands on the embedded table, SVG output, and
+//! bad input (exit 2, one line naming the flag).
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Every image is 1000 × 750 pixels (`ke_friction::figures::SIZE`).
+const WIDTH: u32 = 1000;
+const HEIGHT: u32 = 750;
+const PNG_MAGIC: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
+
+fn kefric(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_kefric"))
+        .args(args)
+        .output()
+        .expect("kefric runs")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A fresh, empty directory for one test, removed on drop.
+struct TempDir(PathBuf);
+
+impl TempDir {
+    fn new(name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("kefric-figures-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+
+    fn join(&self, name: &str) -> PathBuf {
+        self.0.join(name)
+    }
+
+    fn arg(&self, name: &str) -> String {
+        self.join(name).to_str().unwrap().to_string()
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Asserts `path` is a PNG (signature, then an IHDR chunk) of WIDTH × HEIGHT.
+#[track_caller]
+fn assert_png(path: &Path) {
+    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    assert!(bytes.len() > 10_000, "{}: only {} bytes", path.display(), bytes.len());
+    assert_eq!(bytes[..8], PNG_MAGIC, "{}: not a PNG", path.display());
+    assert_eq!(&bytes[12..16], b"IHDR", "{}: no IHDR chunk", path.display());
+    let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
+    assert_eq!((be(16), be(20)), (WIDTH, HEIGHT), "{}: image size", path.display());
+}
+
+/// Exit status 2 and exactly one line on stderr that contains `needle`.
+#[track_caller]
+fn assert_bad_input(o: &Output, needle: &str) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err:?}");
+    assert!(err.contains(needle), "{needle:?} not in {err:?}");
+}
+
+#[test]
+fn plot_all_writes_four_pngs_of_1000_by_750() {
+    let dir = TempDir::new("all");
+    let t0 = std::time::Instant::now();
+    let o = kefric(&["plot", "all", "--out-dir", &dir.arg("")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    eprintln!("plot all: {:.2} s", t0.elapsed().as_secs_f64());
+    for name in ["fig3.png", "fig4.png", "fig5.png", "fig6.png"] {
+        assert_png(&dir.join(name));
+    }
+}
+
+#[test]
+fn single_figures_write_png_or_svg_by_extension() {
+    let dir = TempDir::new("single");
+    let o = kefric(&["plot", "fig4", "--out", &dir.arg("f4.PNG")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("f4.PNG"));
+    let o = kefric(&["plot", "fig5", "--out", &dir.arg("f5.svg")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(dir.join("f5.svg")).unwrap();
+    assert!(svg.starts_with("<svg"), "{}", &svg[..svg.len().min(80)]);
+    assert!(svg.contains(r#"width="1000" height="750""#));
+    // Fig. 5 names the comparison model in its legend.
+    assert!(svg.contains("CEB-type (approx.)"));
+}
+
+#[test]
+fn curve_overlays_the_embedded_table_and_a_table_file() {
+    let dir = TempDir::new("curve");
+    // `--table` alone: the embedded default table.
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "1",
+        "--theta",
+        "0.003",
+        "--table",
+        "--out",
+        &dir.arg("a.png"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("a.png"));
+    // The same table from its file.
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft");
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "0.7",
+        "--theta",
+        "0.001",
+        "--table",
+        file,
+        "--out",
+        &dir.arg("b.png"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("b.png"));
+    // Without a table, and for the CEB-type model.
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "2",
+        "--theta",
+        "0.003",
+        "--model",
+        "ceb",
+        "--out",
+        &dir.arg("c.png"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("c.png"));
+}
+
+#[test]
+fn table_error_maps_the_embedded_table() {
+    let dir = TempDir::new("table-error");
+    let o = kefric(&["plot", "table-error", "--out", &dir.arg("e.png")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("e.png"));
+    let o = kefric(&["plot", "table-error", "--theta", "0", "--out", &dir.arg("e0.png")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("e0.png"));
+}
+
+#[test]
+fn bad_input_exits_2_with_one_line_naming_the_flag() {
+    let dir = TempDir::new("bad");
+    let o = kefric(&["plot", "fig3", "--out", &dir.arg("fig3.jpg")]);
+    assert_bad_input(&o, "--out");
+    assert!(stderr(&o).contains(".png or .svg"), "{}", stderr(&o));
+    assert!(!dir.join("fig3.jpg").exists());
+    let o = kefric(&["plot", "fig3", "--out", &dir.arg("missing/fig3.png")]);
+    assert_bad_input(&o, "--out");
+    assert!(stderr(&o).contains("does not exist"), "{}", stderr(&o));
+    let o = kefric(&["plot", "all", "--out-dir", &dir.arg("missing")]);
+    assert_bad_input(&o, "--out-dir");
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "1",
+        "--theta",
+        "0.02",
+        "--table",
+        "--out",
+        &dir.arg("c.png"),
+    ]);
+    assert_bad_input(&o, "--theta");
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "1",
+        "--theta",
+        "0.003",
+        "--beta",
+        "0.05",
+        "--table",
+        "--out",
+        &dir.arg("c.png"),
+    ]);
+    assert_bad_input(&o, "--table");
+    let o = kefric(&[
+        "plot",
+        "curve",
+        "--psi",
+        "-1",
+        "--theta",
+        "0.003",
+        "--out",
+        &dir.arg("c.png"),
+    ]);
+    assert_bad_input(&o, "--psi");
+    let o = kefric(&["plot", "table-error", "--theta", "0.5", "--out", &dir.arg("e.png")]);
+    assert_bad_input(&o, "--theta");
+    let o = kefric(&[
+        "plot",
+        "table-error",
+        "--table",
+        &dir.arg("none.kft"),
+        "--out",
+        &dir.arg("e.png"),
+    ]);
+    assert_bad_input(&o, "--table");
+    assert_eq!(std::fs::read_dir(&dir.0).unwrap().count(), 0, "bad input wrote a file");
+}
