@@ -7,12 +7,16 @@
 //! seeded generator), so the same options give a byte-identical file on
 //! any number of threads.
 
-use crate::model::{EvalError, Model};
-use crate::params::{check, Fit, Kind, ParamError, Params};
+use crate::model::{EvalError, Model, H_LIMIT};
+use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
 use crate::table::format::{self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload, ScaleCode};
 use crate::table::Table;
 use rayon::prelude::*;
+
+/// The largest F* a table may cover (ghost nodes included): F* = F/(A_n·H)
+/// above 1 would already mean a mean pressure above the hardness.
+pub const F_STAR_MAX: f64 = 100.0;
 
 /// Stored precision of the table's coefficients.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -166,7 +170,9 @@ fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
 }
 
 impl BuildOptions {
-    /// Checks every option, naming the first bad one.
+    /// Checks every option, naming the first bad one. Everything that
+    /// would make the build fail or run out of memory for reasons known in
+    /// advance is caught here, before any work.
     pub fn validate(&self) -> Result<(), ParamError> {
         let range = |name: &'static str, (lo, hi): (f64, f64), low_ok: fn(f64) -> bool, what: &'static str| {
             check(name, lo, what, low_ok)?;
@@ -185,20 +191,55 @@ impl BuildOptions {
         count("f_nodes", self.nodes[2], 5)?;
         check("ghosts", self.ghosts as f64, "from 0 to 8", |v| v <= 8.0)?;
         let (h_lo, h_hi, h_n) = self.h_star;
-        check("h_star", h_lo, "finite", |_| true)?;
-        check("h_star", h_hi, "greater than the lower end", |v| v > h_lo)?;
+        check("h_star", h_lo, "within ±1e6", |v| v.abs() <= H_LIMIT)?;
+        check("h_star", h_hi, "greater than the lower end and within ±1e6", |v| {
+            v > h_lo && v <= H_LIMIT
+        })?;
         check("h_nodes", h_n as f64, "a whole number from 2 to 100000", |v| {
             (2.0..=1e5).contains(&v)
         })?;
-        check("tolerance", self.tolerance, "> 0", |v| v > 0.0)?;
+        check("tolerance", self.tolerance, "in (0, 1]", |v| v > 0.0 && v <= 1.0)?;
         check(
             "samples",
             self.samples as f64,
             "a whole number from 2 to 10000000",
             |v| (2.0..=1e7).contains(&v),
         )?;
-        // Model constants (and the lowest ghost ψ) must be valid model inputs.
-        params_of(self, self.psi.0, self.theta.0).validate()
+        // The model must be valid at every node, ghost nodes included: at
+        // both ends of the ψ axis and at the top of the θ axis.
+        let axes = self.axes();
+        let [ax_p, ax_t, ax_f] = axes;
+        let (psi_lo, psi_hi) = (ax_p.value(0), ax_p.value(ax_p.nodes - 1));
+        let theta_hi = ax_t.value(ax_t.nodes - 1);
+        params_of(self, self.psi.0, self.theta.0).validate()?;
+        params_of(self, self.psi.1, self.theta.1).validate()?;
+        let ghost_psi = "in [1e-3, 1e3], ghost nodes included";
+        check("psi", psi_lo, ghost_psi, |v| v >= PSI_MIN)?;
+        check("psi", psi_hi, ghost_psi, |v| v <= PSI_MAX)?;
+        check("theta", theta_hi, "<= 1e3, ghost nodes included", |v| v <= THETA_MAX)?;
+        check(
+            "f_star",
+            ax_f.value(ax_f.nodes - 1),
+            "<= 100, ghost nodes included",
+            |v| v <= F_STAR_MAX,
+        )?;
+        // Sizes: the table's coefficient arrays (the limit `Table` accepts)
+        // and the integration grid (five arrays of doubles, twice over).
+        let lookup = axes.iter().map(|a| (a.nodes + 2) as f64).product::<f64>();
+        check(
+            "grid_nodes",
+            lookup,
+            "at most 268435456 (NP+2·ghosts+2)·(NT+ghosts+2)·(NF+2·ghosts+2)",
+            |v| v <= (1u64 << 28) as f64,
+        )?;
+        let points = (ax_p.nodes * ax_t.nodes) as f64 * h_n as f64;
+        check(
+            "grid_points",
+            points,
+            "at most 67108864 (psi nodes × theta nodes × h* points, ghost nodes included)",
+            |v| v <= (1u64 << 26) as f64,
+        )?;
+        Ok(())
     }
 
     /// The lookup grid's axes (ψ, θ, F*), ghost nodes included.

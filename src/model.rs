@@ -173,6 +173,12 @@ impl Model {
                 } else {
                     hi - max_step
                 };
+                if !bracketed {
+                    // Searching for the root's side (e.g. where F* ≤ 0 down to
+                    // deep penetrations): grow the step, or ITERATIONS steps of
+                    // 1 would not get past h* = −200.
+                    max_step *= 2.0;
+                }
             }
             if !bracketed && (next - h).abs() > max_step {
                 next = h + max_step.copysign(next - h);

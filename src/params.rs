@@ -40,15 +40,15 @@ pub enum Kind {
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
-    /// Plasticity index ψ, > 0 (the paper covers 0.5–8).
+    /// Plasticity index ψ, in [1e-3, 1e3] (the paper covers 0.5–8).
     pub psi: f64,
-    /// Adhesion parameter θ = Δγ/(σH), ≥ 0 (the paper covers 1e-4–0.01).
+    /// Adhesion parameter θ = Δγ/(σH), in [0, 1e3] (the paper covers 1e-4–0.01).
     pub theta: f64,
-    /// Roughness parameter β = ηRσ, > 0.01928 (default 0.04).
+    /// Roughness parameter β = ηRσ, in (0.01928, 100] (default 0.04).
     pub beta: f64,
     /// Poisson's ratio of the softer material, in [0, 0.5) (default 0.3).
     pub nu: f64,
-    /// Intermolecular distance ε* = ε/σ, > 0 (default 0.004).
+    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100] (default 0.004).
     pub eps_star: f64,
     /// Which friction row to use (default [`Fit::Consistent`]).
     pub fit: Fit,
@@ -64,6 +64,24 @@ pub const DEFAULT_NU: f64 = 0.3;
 pub const DEFAULT_EPS_STAR: f64 = 0.004;
 /// β must exceed this for σ_s/σ = (1 − 3.717e-4/β²)^½ to be real.
 pub const BETA_MIN: f64 = 0.019_279_523_8;
+
+// Upper (and for ψ, ε* lower) limits. MODEL.md §1 only asks ψ, ε* > 0 and
+// θ ≥ 0, but far outside these bounds the model degenerates in double
+// precision (ω_c* = s/ψ² or r = ε*/ω_c* under- or overflows, Fs* or the load
+// prefactor ∝ β overflows) and returns NaN, infinities or roots that are not
+// roots. The bounds are decades beyond any physical surface.
+/// Smallest accepted ψ.
+pub const PSI_MIN: f64 = 1e-3;
+/// Largest accepted ψ.
+pub const PSI_MAX: f64 = 1e3;
+/// Largest accepted θ.
+pub const THETA_MAX: f64 = 1e3;
+/// Largest accepted β.
+pub const BETA_MAX: f64 = 100.0;
+/// Smallest accepted ε*.
+pub const EPS_STAR_MIN: f64 = 1e-9;
+/// Largest accepted ε*.
+pub const EPS_STAR_MAX: f64 = 100.0;
 
 impl Params {
     /// Parameters with the defaults β = 0.04, ν = 0.3, ε* = 0.004,
@@ -110,16 +128,20 @@ impl Params {
         self
     }
 
-    /// Checks every field against MODEL.md §1. The one place parameters are
-    /// validated; [`Model::new`](crate::Model::new) calls it.
+    /// Checks every field against MODEL.md §1 and the numerical limits
+    /// documented on the fields. The one place parameters are validated;
+    /// [`Model::new`](crate::Model::new) calls it.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("psi", self.psi, "> 0", |v| v > 0.0)?;
+        check("psi", self.psi, "in [1e-3, 1e3]", |v| (PSI_MIN..=PSI_MAX).contains(&v))?;
         check("theta", self.theta, ">= 0", |v| v >= 0.0)?;
-        check("beta", self.beta, "> 0.01928", |v| {
-            v > 0.0 && 1.0 - 3.717e-4 / (v * v) > 0.0
+        check("theta", self.theta, "<= 1e3", |v| v <= THETA_MAX)?;
+        check("beta", self.beta, "in (0.01928, 100]", |v| {
+            v > 0.0 && v <= BETA_MAX && 1.0 - 3.717e-4 / (v * v) > 0.0
         })?;
         check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
-        check("eps_star", self.eps_star, "> 0", |v| v > 0.0)?;
+        check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
+            (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
+        })?;
         Ok(())
     }
 

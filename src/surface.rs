@@ -386,11 +386,17 @@ impl Surface {
         let cut = (2.0 * TAIL).sqrt() * self.s;
         let z_lo = -(d.min(0.0).hypot(cut));
         let g_max = d - z_lo;
+        // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
+        // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
+        // Skipping them keeps the work bounded for large d* (the panels
+        // shrink like 1/|z*| far out).
+        let worst = 4.0 * self.norm * (d.max(0.0) + self.s + self.eps).powi(2) / self.eps;
+        let z_hi = self.s * (2.0 * (TAIL + worst.ln().max(0.0))).sqrt();
+        let mut g0 = (d - z_hi).max(0.0);
         let (mut j, mut dj) = (0.0, 0.0);
-        let mut g0 = 0.0;
         // Panels [ε(2^k − 1), ε(2^(k+1) − 1)]: each is at least a third of its
         // distance from the pole of u^−2 at g = −ε away, so the rule converges fast.
-        let mut width = self.eps;
+        let mut width = self.eps + g0;
         while g0 < g_max {
             let step = self.step(d - g0);
             let w = if width < step { width } else { step };

@@ -1,16 +1,6 @@
 //! `kefric eval`: output formats, ranges and bad input.
-use std::process::{Command, Output};
-
-fn kefric(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(args)
-        .output()
-        .expect("kefric runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+mod common;
+use common::{kefric, stderr};
 
 #[test]
 fn eval_json_at_f_star_matches_model_md() {

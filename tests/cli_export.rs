@@ -1,54 +1,13 @@
 //! `kefric export`: the arrays written to .npz and .npy, and bad input.
 #![cfg(feature = "cli")]
 
+mod common;
+use common::{kefric, stderr, TempDir};
 use ke_friction::Table;
 use ndarray::{Array0, Array1, Array3};
 use ndarray_npy::{read_npy, NpzReader};
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn kefric(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(args)
-        .output()
-        .expect("kefric runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// A fresh directory under the system's temporary directory, removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("kefric-export-test-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
-    }
-
-    fn join(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-
-    /// The names in the directory (to spot leftover temporary files).
-    fn names(&self, sub: &str) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(self.0.join(sub))
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
+use std::path::Path;
+use std::process::Output;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()

@@ -1,12 +1,6 @@
 //! `kefric lookup`, `kefric verify` and `kefric build` on small inputs.
-use std::process::{Command, Output};
-
-fn kefric(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(args)
-        .output()
-        .expect("kefric runs")
-}
+mod common;
+use common::kefric;
 
 #[test]
 fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {

@@ -1,50 +1,15 @@
 //! `kefric plot`: the paper's figures as PNGs of the promised size, the
 //! curve and error-map subcommands on the embedded table, SVG output, and
 //! bad input (exit 2, one line naming the flag).
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
+use common::{kefric, stderr, TempDir};
+use std::path::Path;
+use std::process::Output;
 
 /// Every image is 1000 × 750 pixels (`ke_friction::figures::SIZE`).
 const WIDTH: u32 = 1000;
 const HEIGHT: u32 = 750;
 const PNG_MAGIC: [u8; 8] = [0x89, b'P', b'N', b'G', b'\r', b'\n', 0x1a, b'\n'];
-
-fn kefric(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(args)
-        .output()
-        .expect("kefric runs")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// A fresh, empty directory for one test, removed on drop.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("kefric-figures-{}-{name}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        TempDir(dir)
-    }
-
-    fn join(&self, name: &str) -> PathBuf {
-        self.0.join(name)
-    }
-
-    fn arg(&self, name: &str) -> String {
-        self.join(name).to_str().unwrap().to_string()
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// Asserts `path` is a PNG (signature, then an IHDR chunk) of WIDTH × HEIGHT.
 #[track_caller]

@@ -17,31 +17,31 @@ pub struct Args {
     #[arg(long, default_value = "tables/default.kft")]
     pub out: PathBuf,
     /// Range of ψ, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "0.5:8")]
+    #[arg(long, value_name = "LO:HI", default_value = "0.5:8", allow_hyphen_values = true)]
     pub psi: String,
     /// Range of θ, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "0:0.01")]
+    #[arg(long, value_name = "LO:HI", default_value = "0:0.01", allow_hyphen_values = true)]
     pub theta: String,
     /// Range of F*, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "1e-5:0.1")]
+    #[arg(long, value_name = "LO:HI", default_value = "1e-5:0.1", allow_hyphen_values = true)]
     pub f_star: String,
     /// Nodes across the ψ, θ, F* ranges, NP,NT,NF.
-    #[arg(long, value_name = "NP,NT,NF")]
+    #[arg(long, value_name = "NP,NT,NF", allow_hyphen_values = true)]
     pub nodes: Option<String>,
     /// Ghost nodes beyond each end of the ψ and F* ranges.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub ghosts: Option<usize>,
     /// Integration grid in h*, LO:HI:COUNT.
     #[arg(long, value_name = "LO:HI:COUNT", allow_hyphen_values = true)]
     pub h_star: Option<String>,
     /// Roughness parameter β.
-    #[arg(long, value_parser = parse_f64)]
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub beta: Option<f64>,
     /// Poisson's ratio ν.
-    #[arg(long, value_parser = parse_f64)]
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub nu: Option<f64>,
     /// Intermolecular distance ε*.
-    #[arg(long, value_parser = parse_f64)]
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub eps_star: Option<f64>,
     /// Friction row.
     #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
@@ -53,13 +53,13 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = PrecisionArg::F32)]
     pub precision: PrecisionArg,
     /// Maximum relative error of μ the table must meet.
-    #[arg(long, value_parser = parse_f64)]
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// Points checked against direct integration.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub samples: Option<usize>,
     /// Seed of those points.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub seed: Option<u64>,
     /// No progress bar.
     #[arg(long)]
@@ -148,6 +148,7 @@ fn option_flag(name: &str) -> String {
     match name {
         "psi_nodes" | "theta_nodes" | "f_nodes" => "--nodes".into(),
         "h_nodes" => "--h-star".into(),
+        "grid_nodes" | "grid_points" => "--nodes".into(),
         other => super::flag_of(other),
     }
 }

@@ -3,7 +3,6 @@
 use super::{Bar, Failure};
 use ke_friction::build::BuildError;
 use ke_friction::export::{arrays, write_npy_dir, write_npz};
-use ke_friction::Table;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -68,14 +67,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         (None, Some(p)) => ("--npy", p, true),
         _ => unreachable!("clap requires exactly one of --npz and --npy"),
     };
-    let owned;
-    let table = match &args.table {
-        Some(path) => {
-            owned = super::load_table(path)?;
-            &owned
-        }
-        None => Table::embedded(),
-    };
+    let table = super::table(args.table.as_deref())?;
+    let table = &*table;
     check_output(flag, path, want_dir)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);

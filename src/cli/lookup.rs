@@ -2,7 +2,7 @@
 
 use super::eval::full;
 use super::{parse_f64, Failure};
-use ke_friction::{LookupError, Table};
+use ke_friction::LookupError;
 use std::path::PathBuf;
 
 /// Look up μ(ψ, θ, F*) and ∂μ/∂F* in a table (the embedded default without --table).
@@ -27,14 +27,8 @@ pub struct Args {
 
 /// Runs `kefric lookup`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    let owned;
-    let table = match &args.table {
-        Some(path) => {
-            owned = super::load_table(path)?;
-            &owned
-        }
-        None => Table::embedded(),
-    };
+    let table = super::table(args.table.as_deref())?;
+    let table = &*table;
     let (mu, slope) = table.mu_with_slope(args.psi, args.theta, args.f_star).map_err(|e| {
         let flag = match e {
             LookupError::OutOfDomain { name, .. } => super::flag_of(name),

@@ -187,7 +187,14 @@ impl ke_friction::build::Progress for Bar {
     }
 }
 
-/// Loads a table file; any problem is bad input (exit 2) naming the file.
-pub fn load_table(path: &std::path::Path) -> Result<ke_friction::Table, Failure> {
-    ke_friction::Table::load(path).map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))
+/// The table at `path`, or the embedded default table without one; any
+/// problem with the file is bad input (exit 2) naming it.
+pub fn table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'static, ke_friction::Table>, Failure> {
+    use std::borrow::Cow;
+    match path {
+        None => Ok(Cow::Borrowed(ke_friction::Table::embedded())),
+        Some(path) => ke_friction::Table::load(path)
+            .map(Cow::Owned)
+            .map_err(|e| Failure::input(format!("--table {}: {e}", path.display()))),
+    }
 }

@@ -4,7 +4,7 @@
 use super::eval::ModelArgs;
 use super::{check_writable, flag_of, parse_f64, Failure};
 use ke_friction::figures::{self, Figure, FigureError, Format};
-use ke_friction::{LookupError, Table};
+use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
 
 /// Draw the paper's figures, a curve, or a table's error map.
@@ -82,31 +82,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
         What::Curve(a) => {
             let out = output(&a.out.out)?;
             let params = *a.model.model()?.params();
-            let owned;
-            let table = match &a.table {
-                None => None,
-                Some(None) => Some(Table::embedded()),
-                Some(Some(path)) => {
-                    owned = super::load_table(path)?;
-                    Some(&owned)
-                }
-            };
-            let page = figures::curve(params, table).map_err(failure)?;
+            let table = a.table.as_ref().map(|path| super::table(path.as_deref())).transpose()?;
+            let page = figures::curve(params, table.as_deref()).map_err(failure)?;
             page.save(out).map_err(failure)?;
             wrote(out);
             Ok(())
         }
         What::TableError(a) => {
             let out = output(&a.out.out)?;
-            let owned;
-            let table = match &a.table {
-                None => Table::embedded(),
-                Some(path) => {
-                    owned = super::load_table(path)?;
-                    &owned
-                }
-            };
-            let map = figures::table_error(table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
+            let table = super::table(a.table.as_deref())?;
+            let map = figures::table_error(&table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
             map.save(out).map_err(failure)?;
             wrote(out);
             Ok(())

@@ -12,10 +12,10 @@ pub struct Args {
     #[arg(long)]
     pub table: Option<PathBuf>,
     /// Points to check (half random, half cell centres).
-    #[arg(long, default_value_t = 4000)]
+    #[arg(long, default_value_t = 4000, allow_hyphen_values = true)]
     pub samples: usize,
     /// Seed of the points (default: a different one from the build's).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
     pub seed: u64,
     /// No progress bar.
     #[arg(long)]
@@ -30,14 +30,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
             args.samples
         )));
     }
-    let owned;
-    let table = match &args.table {
-        Some(path) => {
-            owned = super::load_table(path)?;
-            &owned
-        }
-        None => ke_friction::Table::embedded(),
-    };
+    let table = super::table(args.table.as_deref())?;
+    let table = &*table;
     let bar = Bar::new(args.quiet);
     let acc = measure(table, args.samples, args.seed, &bar).map_err(|e| Failure::other(e.to_string()))?;
     bar.done();

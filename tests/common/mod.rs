@@ -24,3 +24,56 @@ pub fn assert_rel(what: &str, got: f64, want: f64, tol: f64) {
         "{what}: got {got:e}, want {want:e}, relative error {r:e} > {tol:e}"
     );
 }
+
+/// Runs the `kefric` binary built for the tests.
+pub fn kefric(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_kefric"))
+        .args(args)
+        .output()
+        .expect("kefric runs")
+}
+
+/// A process's stderr as text.
+pub fn stderr(o: &std::process::Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// A fresh, empty directory under the system's temporary directory,
+/// unique to this process and `name`, removed on drop.
+pub struct TempDir(pub std::path::PathBuf);
+
+impl TempDir {
+    /// Creates (or empties) the directory.
+    pub fn new(name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("kefric-test-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+
+    /// A path inside it.
+    pub fn join(&self, name: &str) -> std::path::PathBuf {
+        self.0.join(name)
+    }
+
+    /// A path inside it, as a string argument.
+    pub fn arg(&self, name: &str) -> String {
+        self.join(name).to_str().unwrap().to_string()
+    }
+
+    /// The sorted names in a subdirectory (to spot leftover temporary files).
+    pub fn names(&self, sub: &str) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(self.0.join(sub))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}

@@ -1,0 +1,413 @@
+//! Hardening: `Table::from_bytes` against truncated, corrupted, forged and
+//! random input (it must return an error, never panic, never hand back a
+//! table), and the CLI against corrupted table files.
+
+use ke_friction::table::format::{self, Coefs, Payload, ScaleCode};
+use ke_friction::{Table, TableError};
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Decodes `bytes`, turning a panic into a test failure that names `what`.
+fn decode(what: &str, bytes: &[u8]) -> Result<Table, TableError> {
+    match catch_unwind(AssertUnwindSafe(|| Table::from_bytes(bytes))) {
+        Ok(r) => r,
+        Err(_) => panic!("Table::from_bytes panicked on {what}"),
+    }
+}
+
+/// Asserts that `bytes` is rejected, and returns the error.
+#[track_caller]
+fn rejected(what: &str, bytes: &[u8]) -> TableError {
+    match decode(what, bytes) {
+        Ok(_) => panic!("{what}: accepted as a table"),
+        Err(e) => e,
+    }
+}
+
+fn good() -> &'static [u8] {
+    Table::embedded_bytes()
+}
+
+/// Rewrites the CRC of a table file after its header or payload was patched.
+fn recrc(bytes: &mut [u8]) {
+    let end = bytes.len() - 4;
+    let crc = crc32fast::hash(&bytes[..end]);
+    bytes[end..].copy_from_slice(&crc.to_le_bytes());
+}
+
+/// The default table's payload, for forging consistent-looking files.
+fn payload() -> Payload {
+    format::decode(good()).expect("the embedded table decodes")
+}
+
+#[test]
+fn the_embedded_table_round_trips() {
+    let t = decode("the embedded table", good()).expect("valid");
+    assert!(t.mu(1.0, 0.001, 0.01).is_ok());
+    // encode(decode(x)) == x: forged files below differ only where patched.
+    assert_eq!(format::encode(&payload()), good());
+}
+
+#[test]
+fn every_truncation_is_rejected() {
+    let bytes = good();
+    for n in 0..bytes.len() {
+        let e = rejected(&format!("the first {n} bytes"), &bytes[..n]);
+        assert!(
+            matches!(e, TableError::TooShort { .. } | TableError::Length { .. }),
+            "{n} bytes: {e:?}"
+        );
+    }
+    // And a header that claims exactly the truncated length (valid CRC):
+    // the payload itself is cut short.
+    for cut in [1, 2, 3, 7, 100, 4096, bytes.len() / 2, bytes.len() - 25] {
+        let body = &bytes[20..bytes.len() - 4 - cut];
+        let mut forged = bytes[..12].to_vec();
+        forged.extend_from_slice(&(body.len() as u64).to_le_bytes());
+        forged.extend_from_slice(body);
+        forged.extend_from_slice(&[0; 4]);
+        recrc(&mut forged);
+        let e = rejected(&format!("a payload cut by {cut} bytes, CRC valid"), &forged);
+        assert!(
+            matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
+            "cut {cut}: {e:?}"
+        );
+    }
+}
+
+#[test]
+fn random_corruptions_are_rejected() {
+    let bytes = good();
+    let mut rng = ChaCha8Rng::seed_from_u64(0x6b65_6672);
+    let mut copy = bytes.to_vec();
+    for trial in 0..3000 {
+        // 1 to 4 bytes flipped (bursts), or up to 64 scattered ones.
+        let mut touched = vec![];
+        let scattered = trial % 3 == 2;
+        let n = if scattered {
+            rng.gen_range(2..=64)
+        } else {
+            rng.gen_range(1..=4)
+        };
+        let start = rng.gen_range(0..bytes.len());
+        for k in 0..n {
+            let i = if scattered {
+                rng.gen_range(0..bytes.len())
+            } else {
+                (start + k) % bytes.len()
+            };
+            copy[i] ^= rng.gen_range(1..=255u8);
+            touched.push(i);
+        }
+        if copy != bytes {
+            rejected(&format!("trial {trial}: bytes {touched:?} corrupted"), &copy);
+        }
+        for &i in &touched {
+            copy[i] = bytes[i];
+        }
+    }
+    // Every single bit of the header and the checksum.
+    for i in (0..20).chain(bytes.len() - 4..bytes.len()) {
+        for bit in 0..8 {
+            copy[i] ^= 1 << bit;
+            rejected(&format!("bit {bit} of byte {i} flipped"), &copy);
+            copy[i] ^= 1 << bit;
+        }
+    }
+}
+
+#[test]
+fn wrong_magic_is_rejected_as_such() {
+    for i in 0..8 {
+        let mut b = good().to_vec();
+        b[i] ^= 0x20;
+        recrc(&mut b);
+        assert_eq!(rejected("wrong magic", &b), TableError::WrongMagic, "byte {i}");
+    }
+    let mut b = good().to_vec();
+    b[..8].copy_from_slice(b"KEFRICTA");
+    assert_eq!(rejected("wrong magic", &b), TableError::WrongMagic);
+}
+
+#[test]
+fn a_future_version_is_rejected_by_the_version_check() {
+    for v in [0u32, 2, 3, 255, 256, u32::MAX] {
+        let mut b = good().to_vec();
+        b[8..12].copy_from_slice(&v.to_le_bytes());
+        recrc(&mut b);
+        assert_eq!(
+            rejected(&format!("version {v}"), &b),
+            TableError::UnsupportedVersion { found: v }
+        );
+    }
+}
+
+#[test]
+fn wrong_lengths_are_rejected() {
+    let len = good().len() as u64 - 24;
+    for claimed in [0, 1, len - 1, len + 1, len * 2, u64::MAX / 2, u64::MAX - 23, u64::MAX] {
+        let mut b = good().to_vec();
+        b[12..20].copy_from_slice(&claimed.to_le_bytes());
+        recrc(&mut b);
+        let e = rejected(&format!("length field {claimed}"), &b);
+        assert!(matches!(e, TableError::Length { .. }), "{claimed}: {e:?}");
+    }
+    // Trailing bytes after the checksum.
+    let mut b = good().to_vec();
+    b.extend_from_slice(&[0; 16]);
+    assert!(matches!(rejected("trailing bytes", &b), TableError::Length { .. }));
+    // Trailing bytes inside the payload (header and CRC made to agree).
+    let mut b = good()[..good().len() - 4].to_vec();
+    b.extend_from_slice(&[0, 0, 0]);
+    b[12..20].copy_from_slice(&(len + 3).to_le_bytes());
+    b.extend_from_slice(&[0; 4]);
+    recrc(&mut b);
+    assert!(matches!(
+        rejected("bytes after the payload", &b),
+        TableError::Payload(_)
+    ));
+}
+
+/// Every way of making the payload inconsistent while keeping the file's
+/// framing and checksum valid.
+fn inconsistent_payloads() -> Vec<(&'static str, Payload)> {
+    let mut v: Vec<(&'static str, Payload)> = vec![];
+    let mut add = |what: &'static str, f: &dyn Fn(&mut Payload)| {
+        let mut p = payload();
+        f(&mut p);
+        v.push((what, p));
+    };
+    add("one more psi node", &|p| p.axes[0].nodes += 1);
+    add("one fewer theta node", &|p| p.axes[1].nodes -= 1);
+    add("one more F* node", &|p| p.axes[2].nodes += 1);
+    add("4 F* nodes", &|p| p.axes[2].nodes = 4);
+    add("0 psi nodes", &|p| p.axes[0].nodes = 0);
+    add("u32::MAX nodes on every axis", &|p| {
+        for a in &mut p.axes {
+            a.nodes = u32::MAX;
+        }
+    });
+    add("2^20 nodes on every axis", &|p| {
+        for a in &mut p.axes {
+            a.nodes = 1 << 20;
+        }
+    });
+    add("ln_mu one short", &|p| match &mut p.ln_mu {
+        Coefs::F32(c) => {
+            c.pop();
+        }
+        Coefs::F64(c) => {
+            c.pop();
+        }
+    });
+    add("ln_mu empty", &|p| p.ln_mu = Coefs::F32(vec![]));
+    add("h_star one too many", &|p| match &mut p.h_star {
+        Coefs::F32(c) => c.push(0.0),
+        Coefs::F64(c) => c.push(0.0),
+    });
+    add("h_star in f64, one short", &|p| {
+        let mut c = p.h_star.to_f64();
+        c.pop();
+        p.h_star = Coefs::F64(c);
+    });
+    for (what, bad) in [
+        ("NaN in ln_mu", f64::NAN),
+        ("+inf in ln_mu", f64::INFINITY),
+        ("-inf in ln_mu", f64::NEG_INFINITY),
+    ] {
+        add(what, &move |p| {
+            let mut c = p.ln_mu.to_f64();
+            let mid = c.len() / 2;
+            c[mid] = bad;
+            p.ln_mu = Coefs::F64(c);
+        });
+    }
+    add("NaN in h_star (f32)", &|p| match &mut p.h_star {
+        Coefs::F32(c) => c[0] = f32::NAN,
+        Coefs::F64(c) => c[0] = f64::NAN,
+    });
+    add("inf as the last ln_mu (f32)", &|p| match &mut p.ln_mu {
+        Coefs::F32(c) => *c.last_mut().unwrap() = f32::INFINITY,
+        Coefs::F64(c) => *c.last_mut().unwrap() = f64::INFINITY,
+    });
+    add("zero psi spacing", &|p| p.axes[0].step = 0.0);
+    add("negative F* spacing", &|p| p.axes[2].step = -p.axes[2].step);
+    add("NaN theta spacing", &|p| p.axes[1].step = f64::NAN);
+    add("infinite first psi node", &|p| p.axes[0].first = f64::INFINITY);
+    add("NaN first F* node", &|p| p.axes[2].first = f64::NAN);
+    add("reversed psi domain", &|p| {
+        let a = &mut p.axes[0];
+        std::mem::swap(&mut a.lo, &mut a.hi);
+    });
+    add("empty F* domain", &|p| p.axes[2].hi = p.axes[2].lo);
+    add("NaN theta domain end", &|p| p.axes[1].hi = f64::NAN);
+    add("psi domain beyond the grid", &|p| p.axes[0].hi *= 10.0);
+    add("F* domain below the grid", &|p| p.axes[2].lo /= 10.0);
+    add("zero psi on a log axis", &|p| p.axes[0].lo = 0.0);
+    add("negative theta", &|p| p.axes[1].lo = -1e-3);
+    add("theta axis made logarithmic", &|p| p.axes[1].scale = ScaleCode::Log);
+    add("invalid beta", &|p| p.model.beta = 0.01);
+    add("NaN nu", &|p| p.model.nu = f64::NAN);
+    add("nu = 0.5", &|p| p.model.nu = 0.5);
+    add("zero eps_star", &|p| p.model.eps_star = 0.0);
+    add("unknown fit code", &|p| p.model.fit = 2);
+    add("unknown model code", &|p| p.model.kind = 255);
+    add("NaN tolerance", &|p| p.accuracy.tolerance = f64::NAN);
+    add("zero tolerance", &|p| p.accuracy.tolerance = 0.0);
+    add("infinite max error", &|p| p.accuracy.max_rel = f64::INFINITY);
+    add("NaN 99th percentile", &|p| p.accuracy.p99_rel = f64::NAN);
+    v
+}
+
+#[test]
+fn inconsistent_payloads_with_valid_checksums_are_rejected() {
+    for (what, p) in inconsistent_payloads() {
+        let bytes = format::encode(&p);
+        // The framing is valid: only the contents are wrong.
+        assert!(format::decode(&bytes).is_ok(), "{what}: framing rejected");
+        let e = rejected(what, &bytes);
+        assert!(matches!(e, TableError::Inconsistent(_)), "{what}: {e:?}");
+    }
+}
+
+#[test]
+fn payloads_that_do_not_decode_are_rejected() {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let body_len = good().len() - 24;
+    for trial in 0..300 {
+        let len = match trial % 3 {
+            0 => rng.gen_range(0..64),
+            1 => rng.gen_range(0..4096),
+            _ => body_len,
+        };
+        let mut body = vec![0u8; len];
+        rng.fill(&mut body[..]);
+        if trial % 5 == 0 && len > 40 {
+            // Start like the real payload, then turn to noise.
+            let keep = rng.gen_range(1..40);
+            body[..keep].copy_from_slice(&good()[20..20 + keep]);
+        }
+        let mut b = good()[..12].to_vec();
+        b.extend_from_slice(&(len as u64).to_le_bytes());
+        b.extend_from_slice(&body);
+        b.extend_from_slice(&[0; 4]);
+        recrc(&mut b);
+        let e = rejected(&format!("random payload {trial} ({len} bytes)"), &b);
+        assert!(
+            matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
+            "trial {trial}: {e:?}"
+        );
+    }
+}
+
+#[test]
+fn random_byte_strings_are_rejected() {
+    let mut rng = ChaCha8Rng::seed_from_u64(42);
+    for trial in 0..3000 {
+        let len = match trial % 4 {
+            0 => rng.gen_range(0..32),
+            1 => rng.gen_range(0..1024),
+            2 => rng.gen_range(0..65536),
+            _ => good().len(),
+        };
+        let mut b = vec![0u8; len];
+        rng.fill(&mut b[..]);
+        if trial % 2 == 1 && len >= 12 {
+            // With the right magic and version, so that later checks run.
+            b[..8].copy_from_slice(&format::MAGIC);
+            b[8..12].copy_from_slice(&format::VERSION.to_le_bytes());
+        }
+        rejected(&format!("random bytes {trial} ({len} bytes)"), &b);
+    }
+}
+
+// --- The CLI with corrupted table files -----------------------------------
+
+struct Dir(PathBuf);
+
+impl Drop for Dir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// Corrupted table files, each with a short name.
+fn corrupted_files(dir: &Path) -> Vec<(String, PathBuf)> {
+    let mut files: Vec<(String, Vec<u8>)> = vec![];
+    let g = good();
+    let mut flipped = g.to_vec();
+    flipped[g.len() / 2] ^= 0x40;
+    files.push(("payload byte flipped".into(), flipped));
+    let mut crc = g.to_vec();
+    let n = crc.len();
+    crc[n - 1] ^= 1;
+    files.push(("checksum byte flipped".into(), crc));
+    files.push(("truncated".into(), g[..g.len() - 1].to_vec()));
+    files.push(("header only".into(), g[..20].to_vec()));
+    let mut magic = g.to_vec();
+    magic[0] = b'X';
+    files.push(("wrong magic".into(), magic));
+    let mut version = g.to_vec();
+    version[8..12].copy_from_slice(&2u32.to_le_bytes());
+    recrc(&mut version);
+    files.push(("version 2".into(), version));
+    let mut trailing = g.to_vec();
+    trailing.extend_from_slice(b"junk");
+    files.push(("trailing junk".into(), trailing));
+    for (what, p) in inconsistent_payloads().into_iter().step_by(4) {
+        files.push((format!("inconsistent: {what}"), format::encode(&p)));
+    }
+    files
+        .into_iter()
+        .enumerate()
+        .map(|(i, (what, bytes))| {
+            let path = dir.join(format!("corrupt-{i}.kft"));
+            std::fs::write(&path, bytes).unwrap();
+            (what, path)
+        })
+        .collect()
+}
+
+#[test]
+fn the_cli_rejects_corrupted_tables_with_status_2_and_one_line() {
+    let dir = Dir(Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hardening-table-{}", std::process::id())));
+    let _ = std::fs::remove_dir_all(&dir.0);
+    std::fs::create_dir_all(&dir.0).unwrap();
+    let npz = dir.0.join("out.npz");
+    let mut failures = vec![];
+    for (what, path) in corrupted_files(&dir.0) {
+        let table = path.display().to_string();
+        let npz = npz.display().to_string();
+        let runs: [&[&str]; 3] = [
+            &[
+                "lookup", "--psi", "1", "--theta", "0.001", "--f-star", "0.01", "--table", &table,
+            ],
+            &["verify", "--quiet", "--samples", "10", "--table", &table],
+            &["export", "--quiet", "--npz", &npz, "--table", &table],
+        ];
+        for args in runs {
+            let o = Command::new(env!("CARGO_BIN_EXE_kefric"))
+                .args(args)
+                .output()
+                .expect("kefric runs");
+            let err = String::from_utf8_lossy(&o.stderr);
+            let ok = o.status.code() == Some(2)
+                && err.lines().count() == 1
+                && err.contains("--table")
+                && !err.contains("panicked")
+                && o.stdout.is_empty();
+            if !ok {
+                failures.push(format!(
+                    "{} on {what}: status {:?}, stderr {err:?}",
+                    args[0],
+                    o.status.code()
+                ));
+            }
+        }
+    }
+    assert!(!npz.exists(), "export wrote output from a corrupted table");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
