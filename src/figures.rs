@@ -316,6 +316,23 @@ fn f_axis(series: &[Series]) -> Axis {
     }
 }
 
+/// A chart against F* (log) with a linear y axis from zero.
+fn linear_chart(title: &str, y_title: &str, series: Vec<Series>, legend: Corner) -> Chart {
+    let y = extent(&series).1;
+    Chart {
+        title: Some(title.into()),
+        x: f_axis(&series),
+        y: Axis {
+            title: y_title.into(),
+            log: false,
+            range: zero_to(y.1),
+            ticks: None,
+        },
+        series,
+        legend,
+    }
+}
+
 /// Fig. 3: Fs*/P* against F*, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
 fn fig3() -> Result<Chart, FigureError> {
     let mut series = Vec::new();
@@ -331,19 +348,12 @@ fn fig3() -> Result<Chart, FigureError> {
             dashed: false,
         });
     }
-    let y = extent(&series).1;
-    Ok(Chart {
-        title: Some("Fig. 3: adhesion force ratio Fₛ*/P*, θ = 0.003".into()),
-        x: f_axis(&series),
-        y: Axis {
-            title: "Fₛ*/P*".into(),
-            log: false,
-            range: zero_to(y.1),
-            ticks: None,
-        },
+    Ok(linear_chart(
+        "Fig. 3: adhesion force ratio Fₛ*/P*, θ = 0.003",
+        "Fₛ*/P*",
         series,
-        legend: Corner::UpperRight,
-    })
+        Corner::UpperRight,
+    ))
 }
 
 /// Fig. 4: Q* against F*, log–log, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
@@ -408,19 +418,12 @@ fn fig5() -> Result<Chart, FigureError> {
     }
     series.push(style_entry("Kogut–Etsion", false));
     series.push(style_entry("CEB-type (approx.)", true));
-    let y = extent(&series).1;
-    Ok(Chart {
-        title: Some("Fig. 5: static friction coefficient μ, θ = 0.003".into()),
-        x: f_axis(&series),
-        y: Axis {
-            title: "μ".into(),
-            log: false,
-            range: zero_to(y.1),
-            ticks: None,
-        },
+    Ok(linear_chart(
+        "Fig. 5: static friction coefficient μ, θ = 0.003",
+        "μ",
         series,
-        legend: Corner::UpperRight,
-    })
+        Corner::UpperRight,
+    ))
 }
 
 /// Fig. 6: μ against F*, ψ = 0.5 (solid) and 2 (dashed), θ = 1e-4, 1e-3,
@@ -440,19 +443,12 @@ fn fig6() -> Result<Chart, FigureError> {
     }
     series.push(style_entry("ψ = 0.5", false));
     series.push(style_entry("ψ = 2", true));
-    let y = extent(&series).1;
-    Ok(Chart {
-        title: Some("Fig. 6: effect of the adhesion parameter θ on μ".into()),
-        x: f_axis(&series),
-        y: Axis {
-            title: "μ".into(),
-            log: false,
-            range: zero_to(y.1),
-            ticks: None,
-        },
+    Ok(linear_chart(
+        "Fig. 6: effect of the adhesion parameter θ on μ",
+        "μ",
         series,
-        legend: Corner::UpperRight,
-    })
+        Corner::UpperRight,
+    ))
 }
 
 /// The model constants a table holds, or a curve asks for, in words.

@@ -183,10 +183,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {:.1e}), 99th percentile {:.3e}",
         acc.samples, acc.max_rel, acc.tolerance, acc.p99_rel
     );
-    println!(
-        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
-        acc.worst[0], acc.worst[1], acc.worst[2]
-    );
+    super::print_worst(acc);
     println!("build time: {secs:.1} s on {} threads", rayon::current_num_threads());
     Ok(())
 }

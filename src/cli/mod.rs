@@ -198,3 +198,11 @@ pub fn table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'static,
             .map_err(|e| Failure::input(format!("--table {}: {e}", path.display()))),
     }
 }
+
+/// Prints where a table's measured error of μ is largest.
+pub fn print_worst(acc: &ke_friction::table::format::Accuracy) {
+    println!(
+        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
+        acc.worst[0], acc.worst[1], acc.worst[2]
+    );
+}

@@ -44,10 +44,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         "measured now:      max relative error {:.3e}, 99th percentile {:.3e} ({} points, seed {})",
         acc.max_rel, acc.p99_rel, acc.samples, args.seed
     );
-    println!(
-        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
-        acc.worst[0], acc.worst[1], acc.worst[2]
-    );
+    super::print_worst(&acc);
     if acc.max_rel <= recorded.tolerance {
         println!("ok: within the table's tolerance {:.1e}", recorded.tolerance);
         Ok(())
