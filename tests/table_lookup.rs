@@ -232,3 +232,18 @@ fn h_star_lookup_matches_direct_integration() {
         assert!((got - exact).abs() < 1e-4, "ψ={p} θ={th} F*={f}: h* {got} vs {exact}");
     }
 }
+
+#[test]
+fn the_clamping_variant_takes_the_edge_value_and_still_rejects_nan() {
+    let t = table();
+    let d = t.domain();
+    // Outside on every axis: the value at the nearest corner.
+    let edge = t.mu(d.psi.1, d.theta.0, d.f_star.0).unwrap();
+    assert_eq!(t.mu_clamped(100.0, -1.0, 1e-9).unwrap(), edge);
+    // Inside: identical to `mu`.
+    assert_eq!(t.mu_clamped(1.0, 0.001, 0.01).unwrap(), t.mu(1.0, 0.001, 0.01).unwrap());
+    assert!(matches!(
+        t.mu_clamped(1.0, f64::NAN, 0.01),
+        Err(LookupError::OutOfDomain { name: "theta", .. })
+    ));
+}

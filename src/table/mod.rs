@@ -260,6 +260,17 @@ impl Table {
         self.mu_portable(psi, theta, f_star)
     }
 
+    /// μ with each argument first clamped into the table's range — an
+    /// explicit opt-in for callers that prefer the edge value to an error
+    /// (e.g. a solver's trial step just outside the domain). NaN is still
+    /// an error: it has no nearest value.
+    #[inline]
+    pub fn mu_clamped(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
+        let d = &self.domain;
+        let clamp = |v: f64, (lo, hi): (f64, f64)| if v.is_nan() { v } else { v.clamp(lo, hi) };
+        self.mu(clamp(psi, d.psi), clamp(theta, d.theta), clamp(f_star, d.f_star))
+    }
+
     /// μ by the portable kernel (no FMA), whatever the CPU: identical on
     /// every machine, so the accuracy a build records does not depend on
     /// where it ran. Within ~1e-15 relative of [`mu`](Self::mu).
