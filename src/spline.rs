@@ -161,47 +161,41 @@ pub fn fit_line(y: &[f64], start: Start, out: &mut [f64]) {
 /// Fits a 3-D tensor spline to node values `y` of shape `dims` (last index
 /// fastest); returns coefficients of shape `dims + 2` (last index fastest).
 pub fn fit_3d(y: &[f64], dims: [usize; 3], starts: [Start; 3]) -> Vec<f64> {
-    let [n0, n1, n2] = dims;
-    debug_assert_eq!(y.len(), n0 * n1 * n2);
-    // Along axis 2.
-    let m2 = n2 + 2;
-    let mut a = vec![0.0; n0 * n1 * m2];
-    for r in 0..n0 * n1 {
-        fit_line(&y[r * n2..(r + 1) * n2], starts[2], &mut a[r * m2..(r + 1) * m2]);
+    debug_assert_eq!(y.len(), dims.iter().product::<usize>());
+    // The tensor spline is separable: fit every line along axis 2, then
+    // every line of those coefficients along axis 1, then along axis 0.
+    let (mut data, mut dims) = (y.to_vec(), dims);
+    for axis in (0..3).rev() {
+        (data, dims) = fit_axis(&data, dims, axis, starts[axis]);
     }
-    // Along axis 1.
-    let m1 = n1 + 2;
-    let mut b = vec![0.0; n0 * m1 * m2];
-    let mut line = vec![0.0; n1];
-    let mut coef = vec![0.0; m1];
-    for i in 0..n0 {
-        for k in 0..m2 {
-            for j in 0..n1 {
-                line[j] = a[(i * n1 + j) * m2 + k];
+    data
+}
+
+/// Fits every line of `data` (shape `dims`, last index fastest) along
+/// `axis`; returns the coefficients and their shape (`dims[axis] + 2`).
+fn fit_axis(data: &[f64], dims: [usize; 3], axis: usize, start: Start) -> (Vec<f64>, [usize; 3]) {
+    let mut out_dims = dims;
+    out_dims[axis] += 2;
+    let stride = |d: [usize; 3]| d[axis + 1..].iter().product::<usize>();
+    let (s_in, s_out) = (stride(dims), stride(out_dims));
+    let outer: usize = dims[..axis].iter().product();
+    let mut out = vec![0.0; out_dims.iter().product()];
+    let mut line = vec![0.0; dims[axis]];
+    let mut coef = vec![0.0; out_dims[axis]];
+    for o in 0..outer {
+        for inner in 0..s_in {
+            let base_in = o * dims[axis] * s_in + inner;
+            for (j, v) in line.iter_mut().enumerate() {
+                *v = data[base_in + j * s_in];
             }
-            fit_line(&line, starts[1], &mut coef);
-            for j in 0..m1 {
-                b[(i * m1 + j) * m2 + k] = coef[j];
+            fit_line(&line, start, &mut coef);
+            let base_out = o * out_dims[axis] * s_out + inner;
+            for (j, c) in coef.iter().enumerate() {
+                out[base_out + j * s_out] = *c;
             }
         }
     }
-    // Along axis 0.
-    let m0 = n0 + 2;
-    let mut c = vec![0.0; m0 * m1 * m2];
-    let mut line = vec![0.0; n0];
-    let mut coef = vec![0.0; m0];
-    for j in 0..m1 {
-        for k in 0..m2 {
-            for i in 0..n0 {
-                line[i] = b[(i * m1 + j) * m2 + k];
-            }
-            fit_line(&line, starts[0], &mut coef);
-            for i in 0..m0 {
-                c[(i * m1 + j) * m2 + k] = coef[i];
-            }
-        }
-    }
-    c
+    (out, out_dims)
 }
 
 #[cfg(test)]
