@@ -10,7 +10,7 @@
 use crate::model::{EvalError, Model, H_LIMIT};
 use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
-use crate::table::format::{self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload, ScaleCode};
+use crate::table::format::{self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
 use crate::table::Table;
 use rayon::prelude::*;
 
@@ -383,11 +383,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         Precision::F64 => Coefs::F64(v),
     };
     let spec = |axis: &Axis, (lo, hi): (f64, f64)| AxisSpec {
-        scale: match axis.scale {
-            Scale::Log => ScaleCode::Log,
-            Scale::Sqrt => ScaleCode::Sqrt,
-            Scale::Linear => ScaleCode::Linear,
-        },
+        scale: axis.scale,
         first: axis.first,
         step: axis.step,
         nodes: axis.nodes as u32,
@@ -395,19 +391,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         hi,
     };
     let mut payload = Payload {
-        model: ModelSpec {
-            beta: o.beta,
-            nu: o.nu,
-            eps_star: o.eps_star,
-            fit: match o.fit {
-                Fit::Consistent => 0,
-                Fit::AsPrinted => 1,
-            },
-            kind: match o.kind {
-                Kind::KogutEtsion => 0,
-                Kind::CebType => 1,
-            },
-        },
+        model: ModelSpec::of(&params_of(o, o.psi.0, o.theta.0)),
         axes: [spec(&axes[0], o.psi), spec(&axes[1], o.theta), spec(&axes[2], o.f_star)],
         ln_mu: store(fit_3d(&ln_mu, [np, nt, nf], starts)),
         h_star: store(fit_3d(&h_star, [np, nt, nf], starts)),

@@ -7,8 +7,9 @@
 //! an axis on which the function is even about its first node). Fitting
 //! happens once, in the builder; a lookup only blends 4×4×4 coefficients.
 
-/// How a physical input maps to the uniform coordinate of an axis.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// How a physical input maps to the uniform coordinate of an axis (stored
+/// as is in table files: its variant index is the format's scale code).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Scale {
     /// Coordinate = ln(value); value > 0.
     Log,
@@ -73,17 +74,6 @@ impl Axis {
     /// Physical value of node `k`.
     pub fn value(&self, k: usize) -> f64 {
         self.scale.inverse(self.coord(k))
-    }
-
-    /// Cell index `i` (0 ≤ i ≤ nodes − 2) and offset `f ∈ [0, 1]` of
-    /// coordinate `c` (which the caller has checked lies on the axis).
-    #[inline(always)]
-    pub fn locate(&self, c: f64) -> (usize, f64) {
-        let s = (c - self.first) / self.step;
-        // `as usize` truncates (and saturates NaN and negatives to 0): no
-        // call to a software floor on targets without SSE4.1.
-        let i = (s as usize).min(self.nodes - 2);
-        (i, s - i as f64)
     }
 }
 

@@ -2,7 +2,8 @@
 //! random input (it must return an error, never panic, never hand back a
 //! table), and the CLI against corrupted table files.
 
-use ke_friction::table::format::{self, Coefs, Payload, ScaleCode};
+use ke_friction::spline::Scale;
+use ke_friction::table::format::{self, Coefs, Payload};
 use ke_friction::{Table, TableError};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -248,7 +249,7 @@ fn inconsistent_payloads() -> Vec<(&'static str, Payload)> {
     add("F* domain below the grid", &|p| p.axes[2].lo /= 10.0);
     add("zero psi on a log axis", &|p| p.axes[0].lo = 0.0);
     add("negative theta", &|p| p.axes[1].lo = -1e-3);
-    add("theta axis made logarithmic", &|p| p.axes[1].scale = ScaleCode::Log);
+    add("theta axis made logarithmic", &|p| p.axes[1].scale = Scale::Log);
     add("invalid beta", &|p| p.model.beta = 0.01);
     add("NaN nu", &|p| p.model.nu = f64::NAN);
     add("nu = 0.5", &|p| p.model.nu = 0.5);

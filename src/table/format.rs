@@ -16,6 +16,8 @@
 //! and then every value (finite coefficients, sane axes, valid model
 //! constants); any failure is a [`TableError`], never a panic.
 
+use crate::params::{Fit, Kind, Params};
+use crate::spline::Scale;
 use serde::{Deserialize, Serialize};
 
 /// The first eight bytes of every table file.
@@ -74,22 +76,11 @@ pub enum TableError {
     },
 }
 
-/// Coordinate map of an axis, as stored.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum ScaleCode {
-    /// ln(value).
-    Log,
-    /// √value.
-    Sqrt,
-    /// value.
-    Linear,
-}
-
 /// One axis of the lookup grid, as stored.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AxisSpec {
     /// Coordinate map.
-    pub scale: ScaleCode,
+    pub scale: Scale,
     /// Coordinate of the first node (a ghost node, if any, lies below the domain).
     pub first: f64,
     /// Coordinate spacing.
@@ -147,6 +138,46 @@ pub struct ModelSpec {
     pub fit: u8,
     /// 0 = Kogut–Etsion, 1 = CEB-type.
     pub kind: u8,
+}
+
+impl ModelSpec {
+    /// The stored form of a model's constants, fit and kind.
+    pub fn of(p: &Params) -> ModelSpec {
+        ModelSpec {
+            beta: p.beta,
+            nu: p.nu,
+            eps_star: p.eps_star,
+            fit: match p.fit {
+                Fit::Consistent => 0,
+                Fit::AsPrinted => 1,
+            },
+            kind: match p.kind {
+                Kind::KogutEtsion => 0,
+                Kind::CebType => 1,
+            },
+        }
+    }
+
+    /// The parameters these constants describe at (ψ, θ), or why the codes
+    /// are invalid (the values themselves are checked by `Params::validate`).
+    pub fn params(&self, psi: f64, theta: f64) -> Result<Params, String> {
+        let fit = match self.fit {
+            0 => Fit::Consistent,
+            1 => Fit::AsPrinted,
+            f => return Err(format!("unknown fit code {f}")),
+        };
+        let kind = match self.kind {
+            0 => Kind::KogutEtsion,
+            1 => Kind::CebType,
+            k => return Err(format!("unknown model code {k}")),
+        };
+        Ok(Params::new(psi, theta)
+            .beta(self.beta)
+            .nu(self.nu)
+            .eps_star(self.eps_star)
+            .fit(fit)
+            .kind(kind))
+    }
 }
 
 /// The build options that shaped the table (for provenance and rebuilds).

@@ -10,10 +10,10 @@ mod avx2;
 mod fastmath;
 pub mod format;
 
-use crate::params::{Fit, Kind, Params};
+use crate::params::Params;
 use crate::spline::{weight_slopes, weights, Axis, Scale};
 pub use format::TableError;
-use format::{Accuracy, AxisSpec, BuildSpec, Payload, ScaleCode};
+use format::{Accuracy, AxisSpec, BuildSpec, Payload};
 
 /// A lookup argument outside the table's domain, or not a number.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
@@ -136,34 +136,11 @@ impl Table {
     /// Builds the lookup structure from a payload, checking every value.
     pub(crate) fn from_payload(payload: Payload) -> Result<Table, TableError> {
         let bad = |m: String| Err(TableError::Inconsistent(m));
-        let m = &payload.model;
-        let fit = match m.fit {
-            0 => Fit::Consistent,
-            1 => Fit::AsPrinted,
-            f => return bad(format!("unknown fit code {f}")),
-        };
-        let kind = match m.kind {
-            0 => Kind::KogutEtsion,
-            1 => Kind::CebType,
-            k => return bad(format!("unknown model code {k}")),
-        };
-        let names = ["psi", "theta", "f_star"];
-        let mut axes = [Axis {
-            scale: Scale::Linear,
-            first: 0.0,
-            step: 1.0,
-            nodes: 5,
-        }; 3];
-        for (k, spec) in payload.axes.iter().enumerate() {
-            axes[k] = check_axis(names[k], spec).map_err(TableError::Inconsistent)?;
-        }
+        let axis =
+            |k: usize| check_axis(["psi", "theta", "f_star"][k], &payload.axes[k]).map_err(TableError::Inconsistent);
+        let axes = [axis(0)?, axis(1)?, axis(2)?];
         let [a, b, c] = payload.axes;
-        let params = Params::new(a.lo, b.lo)
-            .beta(m.beta)
-            .nu(m.nu)
-            .eps_star(m.eps_star)
-            .fit(fit)
-            .kind(kind);
+        let params = payload.model.params(a.lo, b.lo).map_err(TableError::Inconsistent)?;
         params
             .validate()
             .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;
@@ -482,11 +459,7 @@ fn cpu_has_avx2_fma() -> bool {
 
 /// Validates a stored axis and converts it.
 fn check_axis(name: &str, s: &AxisSpec) -> Result<Axis, String> {
-    let scale = match s.scale {
-        ScaleCode::Log => Scale::Log,
-        ScaleCode::Sqrt => Scale::Sqrt,
-        ScaleCode::Linear => Scale::Linear,
-    };
+    let scale = s.scale;
     let nodes = s.nodes as usize;
     if !(s.first.is_finite() && s.step.is_finite() && s.step > 0.0 && (5..=1 << 20).contains(&nodes)) {
         return Err(format!("{name} axis: bad node spacing or count"));
