@@ -77,30 +77,29 @@ impl Axis {
     }
 }
 
-/// Cubic B-spline basis weights at offset `f` and their derivatives.
+/// The uniform cubic B-spline basis as polynomials in the cell offset f:
+/// weight j is `((A[j]·f + B[j])·f + C[j])·f + D[j]` with
+/// `[A, B, C, D] = BASIS`. The portable and the AVX2 lookups both evaluate
+/// it from here, by Horner's rule.
+pub const BASIS: [[f64; 4]; 4] = [
+    [-1.0 / 6.0, 0.5, -0.5, 1.0 / 6.0],
+    [0.5, -1.0, 0.5, 0.0],
+    [-0.5, 0.0, 0.5, 0.0],
+    [1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0],
+];
+
+/// Cubic B-spline basis weights at offset `f ∈ [0, 1]`.
 #[inline(always)]
 pub fn weights(f: f64) -> [f64; 4] {
-    let g = 1.0 - f;
-    let f2 = f * f;
-    let f3 = f2 * f;
-    [
-        g * g * g * (1.0 / 6.0),
-        (3.0 * f3 - 6.0 * f2 + 4.0) * (1.0 / 6.0),
-        (-3.0 * f3 + 3.0 * f2 + 3.0 * f + 1.0) * (1.0 / 6.0),
-        f3 * (1.0 / 6.0),
-    ]
+    let [a, b, c, d] = BASIS;
+    core::array::from_fn(|j| ((a[j] * f + b[j]) * f + c[j]) * f + d[j])
 }
 
-/// Derivatives of [`weights`] with respect to `f`.
+/// Derivatives of [`weights`] with respect to `f`: `(3A·f + 2B)·f + C`.
 #[inline(always)]
 pub fn weight_slopes(f: f64) -> [f64; 4] {
-    let g = 1.0 - f;
-    [
-        -0.5 * g * g,
-        0.5 * (3.0 * f * f - 4.0 * f),
-        0.5 * (-3.0 * f * f + 2.0 * f + 1.0),
-        0.5 * f * f,
-    ]
+    let [a, b, c, _] = BASIS;
+    core::array::from_fn(|j| ((3.0 * a[j]) * f + (b[j] + b[j])) * f + c[j])
 }
 
 /// End condition of one axis for [`fit_line`].

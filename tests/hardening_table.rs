@@ -250,6 +250,10 @@ fn inconsistent_payloads() -> Vec<(&'static str, Payload)> {
     add("zero psi on a log axis", &|p| p.axes[0].lo = 0.0);
     add("negative theta", &|p| p.axes[1].lo = -1e-3);
     add("theta axis made logarithmic", &|p| p.axes[1].scale = Scale::Log);
+    add(
+        "theta axis made linear (valid on its own, but not the map the lookup applies)",
+        &|p| p.axes[1].scale = Scale::Linear,
+    );
     add("invalid beta", &|p| p.model.beta = 0.01);
     add("NaN nu", &|p| p.model.nu = f64::NAN);
     add("nu = 0.5", &|p| p.model.nu = 0.5);

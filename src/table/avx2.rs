@@ -11,6 +11,7 @@
 
 use super::fastmath::{self, Num};
 use super::Table;
+use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
 /// Four lanes.
@@ -35,22 +36,11 @@ impl Num for V {
     }
 }
 
-/// Cubic B-spline weights as ((A·f + B)·f + C)·f + D, per weight.
-const A: [f64; 4] = [-1.0 / 6.0, 0.5, -0.5, 1.0 / 6.0];
-const B: [f64; 4] = [0.5, -1.0, 0.5, 0.0];
-const C: [f64; 4] = [-0.5, 0.0, 0.5, 0.0];
-const D: [f64; 4] = [1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0, 0.0];
-
-/// The four weights at offset `f`.
+/// The four B-spline weights at offset `f` ([`BASIS`] by Horner's rule).
 #[inline(always)]
 unsafe fn weights(f: f64) -> __m256d {
     let f = _mm256_set1_pd(f);
-    let (a, b, c, d) = (
-        _mm256_loadu_pd(A.as_ptr()),
-        _mm256_loadu_pd(B.as_ptr()),
-        _mm256_loadu_pd(C.as_ptr()),
-        _mm256_loadu_pd(D.as_ptr()),
-    );
+    let [a, b, c, d] = BASIS.map(|v| _mm256_loadu_pd(v.as_ptr()));
     _mm256_fmadd_pd(_mm256_fmadd_pd(_mm256_fmadd_pd(a, f, b), f, c), f, d)
 }
 
@@ -58,13 +48,9 @@ unsafe fn weights(f: f64) -> __m256d {
 #[inline(always)]
 unsafe fn weight_slopes(f: f64) -> __m256d {
     let f = _mm256_set1_pd(f);
-    let a3 = _mm256_mul_pd(_mm256_loadu_pd(A.as_ptr()), _mm256_set1_pd(3.0));
-    let b = _mm256_loadu_pd(B.as_ptr());
-    _mm256_fmadd_pd(
-        _mm256_fmadd_pd(a3, f, _mm256_add_pd(b, b)),
-        f,
-        _mm256_loadu_pd(C.as_ptr()),
-    )
+    let [a, b, c, _] = BASIS.map(|v| _mm256_loadu_pd(v.as_ptr()));
+    let a3 = _mm256_mul_pd(a, _mm256_set1_pd(3.0));
+    _mm256_fmadd_pd(_mm256_fmadd_pd(a3, f, _mm256_add_pd(b, b)), f, c)
 }
 
 /// Σ wp[a]·wt[b]·(row_ab · wf) over the block at `p`, and the same with
@@ -107,20 +93,9 @@ unsafe fn blend<const SLOPE: bool>(
 /// The CPU must support AVX2 and FMA.
 #[target_feature(enable = "avx2,fma")]
 pub unsafe fn eval<const SLOPE: bool>(t: &Table, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
-    if !t.inside(psi, theta, f_star) {
+    let Some((base, frac)) = t.locate::<true>(psi, theta, f_star) else {
         return (f64::NAN, f64::NAN);
-    }
-    let coords = [fastmath::ln::<true>(psi), theta.sqrt(), fastmath::ln::<true>(f_star)];
-    let mut base = 0;
-    let mut frac = [0.0; 3];
-    for k in 0..3 {
-        let s = coords[k].mul_add(t.inv_step[k], t.offset[k]);
-        // i64 conversions are single instructions (usize ones are not);
-        // s ≥ 0 inside the domain.
-        let i = (s as i64).min(t.last_cell[k] as i64);
-        base += i as usize * t.stride3[k];
-        frac[k] = s - i as f64;
-    }
+    };
     let [s0, s1] = t.strides;
     let c = &t.ln_mu;
     // One bounds check for the whole block (its last element).

@@ -139,6 +139,11 @@ impl Table {
         let axis =
             |k: usize| check_axis(["psi", "theta", "f_star"][k], &payload.axes[k]).map_err(TableError::Inconsistent);
         let axes = [axis(0)?, axis(1)?, axis(2)?];
+        // The lookup kernels map ψ, θ, F* through ln, √, ln: a file with
+        // other maps would be misread, not just read slowly.
+        if axes.map(|a| a.scale) != [Scale::Log, Scale::Sqrt, Scale::Log] {
+            return bad("the axes must map psi, theta, f_star by ln, sqrt, ln".into());
+        }
         let [a, b, c] = payload.axes;
         let params = payload.model.params(a.lo, b.lo).map_err(TableError::Inconsistent)?;
         params
@@ -354,20 +359,9 @@ impl Table {
     /// Locates a query: base offset and the ψ, θ, F* weights.
     #[inline(always)]
     fn cell(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
-        if !self.inside(psi, theta, f_star) {
-            return Err(self.domain_error(psi, theta, f_star));
-        }
-        let coords = [fastmath::ln::<false>(psi), theta.sqrt(), fastmath::ln::<false>(f_star)];
-        let mut base = 0;
-        let mut frac = [0.0; 3];
-        for k in 0..3 {
-            let s = coords[k] * self.inv_step[k] + self.offset[k];
-            // i64 conversions are single instructions (usize ones, and
-            // floor without SSE4.1, are not); s ≥ 0 inside the domain.
-            let i = (s as i64).min(self.last_cell[k] as i64);
-            base += i as usize * self.stride3[k];
-            frac[k] = s - i as f64;
-        }
+        let (base, frac) = self
+            .locate::<false>(psi, theta, f_star)
+            .ok_or_else(|| self.domain_error(psi, theta, f_star))?;
         Ok(Cell {
             base,
             wp: weights(frac[0]),
@@ -375,6 +369,28 @@ impl Table {
             wf: weights(frac[2]),
             df: weight_slopes(frac[2]),
         })
+    }
+
+    /// The offset of a query's 4×4×4 block and its cell offsets on the
+    /// three axes; `None` outside the domain. `F` selects fused
+    /// multiply-adds (the AVX2 kernels).
+    #[inline(always)]
+    fn locate<const F: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Option<(usize, [f64; 3])> {
+        if !self.inside(psi, theta, f_star) {
+            return None;
+        }
+        let coords = [fastmath::ln::<F>(psi), theta.sqrt(), fastmath::ln::<F>(f_star)];
+        let mut base = 0;
+        let mut frac = [0.0; 3];
+        for k in 0..3 {
+            let s = fastmath::madd::<F>(coords[k], self.inv_step[k], self.offset[k]);
+            // i64 conversions are single instructions (usize ones, and
+            // floor without SSE4.1, are not); s ≥ 0 inside the domain.
+            let i = (s as i64).min(self.last_cell[k] as i64);
+            base += i as usize * self.stride3[k];
+            frac[k] = s - i as f64;
+        }
+        Some((base, frac))
     }
 
     /// The error for a query outside the domain (the first bad argument).
