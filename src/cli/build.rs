@@ -1,10 +1,9 @@
 //! `kefric build`: integrate, tabulate, verify, write atomically.
 
 use super::eval::{FitArg, ModelKindArg};
-use super::{parse_f64, Bar, Failure};
+use super::{fields, number, parse_f64, whole, Bar, Failure};
 use ke_friction::build::{build, BuildOptions, Precision};
 use ke_friction::table::write_atomic;
-use ke_friction::{Fit, Kind};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -77,14 +76,8 @@ pub enum PrecisionArg {
 
 /// Parses `LO:HI`.
 fn pair(flag: &str, text: &str) -> Result<(f64, f64), Failure> {
-    match text.split(':').collect::<Vec<_>>().as_slice() {
-        [a, b] => {
-            let a = parse_f64(a).map_err(|e| Failure::input(format!("{flag}: {e}")))?;
-            let b = parse_f64(b).map_err(|e| Failure::input(format!("{flag}: {e}")))?;
-            Ok((a, b))
-        }
-        _ => Err(Failure::input(format!("{flag}: '{text}' is not LO:HI"))),
-    }
+    let [lo, hi] = fields(flag, text, ':', "LO:HI")?;
+    Ok((number(flag, lo)?, number(flag, hi)?))
 }
 
 impl Args {
@@ -97,39 +90,19 @@ impl Args {
             ..BuildOptions::default()
         };
         if let Some(nodes) = &self.nodes {
-            let parsed: Vec<Option<usize>> = nodes.split(',').map(|s| s.trim().parse().ok()).collect();
-            match parsed.as_slice() {
-                [Some(a), Some(b), Some(c)] => o.nodes = [*a, *b, *c],
-                _ => {
-                    return Err(Failure::input(format!(
-                        "--nodes: '{nodes}' is not NP,NT,NF (three whole numbers)"
-                    )))
-                }
-            }
+            let [np, nt, nf] = fields("--nodes", nodes, ',', "NP,NT,NF (three whole numbers)")?;
+            o.nodes = [whole("--nodes", np)?, whole("--nodes", nt)?, whole("--nodes", nf)?];
         }
         if let Some(h) = &self.h_star {
-            let parts: Vec<&str> = h.split(':').collect();
-            let bad = || Failure::input(format!("--h-star: '{h}' is not LO:HI:COUNT"));
-            let [lo, hi, n] = parts.as_slice() else {
-                return Err(bad());
-            };
-            let lo = parse_f64(lo).map_err(|e| Failure::input(format!("--h-star: {e}")))?;
-            let hi = parse_f64(hi).map_err(|e| Failure::input(format!("--h-star: {e}")))?;
-            let n: usize = n.trim().parse().map_err(|_| bad())?;
-            o.h_star = (lo, hi, n);
+            let [lo, hi, n] = fields("--h-star", h, ':', "LO:HI:COUNT")?;
+            o.h_star = (number("--h-star", lo)?, number("--h-star", hi)?, whole("--h-star", n)?);
         }
         o.ghosts = self.ghosts.unwrap_or(o.ghosts);
         o.beta = self.beta.unwrap_or(o.beta);
         o.nu = self.nu.unwrap_or(o.nu);
         o.eps_star = self.eps_star.unwrap_or(o.eps_star);
-        o.fit = match self.fit {
-            FitArg::Consistent => Fit::Consistent,
-            FitArg::AsPrinted => Fit::AsPrinted,
-        };
-        o.kind = match self.model {
-            ModelKindArg::Ke => Kind::KogutEtsion,
-            ModelKindArg::Ceb => Kind::CebType,
-        };
+        o.fit = self.fit.into();
+        o.kind = self.model.into();
         o.precision = match self.precision {
             PrecisionArg::F32 => Precision::F32,
             PrecisionArg::F64 => Precision::F64,

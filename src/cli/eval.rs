@@ -58,6 +58,15 @@ pub enum FitArg {
     AsPrinted,
 }
 
+impl From<FitArg> for Fit {
+    fn from(f: FitArg) -> Fit {
+        match f {
+            FitArg::Consistent => Fit::Consistent,
+            FitArg::AsPrinted => Fit::AsPrinted,
+        }
+    }
+}
+
 /// `--model` values.
 #[derive(Debug, Clone, Copy, clap::ValueEnum)]
 pub enum ModelKindArg {
@@ -67,6 +76,15 @@ pub enum ModelKindArg {
     Ceb,
 }
 
+impl From<ModelKindArg> for Kind {
+    fn from(k: ModelKindArg) -> Kind {
+        match k {
+            ModelKindArg::Ke => Kind::KogutEtsion,
+            ModelKindArg::Ceb => Kind::CebType,
+        }
+    }
+}
+
 impl ModelArgs {
     /// The validated model, or a message naming the offending flag.
     pub fn model(&self) -> Result<Model, Failure> {
@@ -74,14 +92,8 @@ impl ModelArgs {
             .beta(self.beta)
             .nu(self.nu)
             .eps_star(self.eps_star)
-            .fit(match self.fit {
-                FitArg::Consistent => Fit::Consistent,
-                FitArg::AsPrinted => Fit::AsPrinted,
-            })
-            .kind(match self.model {
-                ModelKindArg::Ke => Kind::KogutEtsion,
-                ModelKindArg::Ceb => Kind::CebType,
-            });
+            .fit(self.fit.into())
+            .kind(self.model.into());
         Model::new(params).map_err(|e| Failure::input(format!("{}: {e}", flag_of(e.name))))
     }
 }
@@ -99,7 +111,7 @@ pub enum Spacing {
 pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Failure> {
     let bad = |why: String| Failure::input(format!("{flag}: {why}"));
     let parts: Vec<&str> = text.split(':').collect();
-    let num = |s: &str| parse_f64(s).map_err(&bad);
+    let num = |s: &str| super::number(flag, s);
     let positive = |v: f64| {
         if spacing == Spacing::Log && v <= 0.0 {
             Err(bad(format!("{v} is out of range: must be > 0")))

@@ -123,6 +123,27 @@ pub fn parse_f64(s: &str) -> Result<f64, String> {
     }
 }
 
+/// A number for `flag`: bad input names the flag.
+pub fn number(flag: &str, text: &str) -> Result<f64, Failure> {
+    parse_f64(text).map_err(|e| Failure::input(format!("{flag}: {e}")))
+}
+
+/// A whole number for `flag`.
+pub fn whole(flag: &str, text: &str) -> Result<usize, Failure> {
+    text.trim()
+        .parse()
+        .map_err(|_| Failure::input(format!("{flag}: '{text}' is not a whole number")))
+}
+
+/// The `N` fields of `text` split at `sep`, or a message naming `flag` and
+/// the expected `form` (e.g. `LO:HI`).
+pub fn fields<'a, const N: usize>(flag: &str, text: &'a str, sep: char, form: &str) -> Result<[&'a str; N], Failure> {
+    let parts: Vec<&str> = text.split(sep).collect();
+    parts
+        .try_into()
+        .map_err(|_| Failure::input(format!("{flag}: '{text}' is not {form}")))
+}
+
 /// The flag that sets a [`ke_friction::Params`] field, for messages.
 pub fn flag_of(field: &str) -> String {
     format!("--{}", field.replace('_', "-"))
