@@ -110,11 +110,28 @@ struct Acc {
     q: f64,
 }
 
-/// The window of z* that matters for integrals starting at `d`.
+/// The window of z* that matters for the contact integrals (z* ≥ d*) at
+/// separation `d`: beyond it the density has fallen by `e^−TAIL` from its
+/// largest value on the integrals' range.
 #[derive(Debug, Clone, Copy)]
 struct Window {
     lo: f64,
     hi: f64,
+}
+
+impl Window {
+    fn contact(d: f64, s: f64) -> Window {
+        let cut = tail_cut(s);
+        Window {
+            lo: -cut,
+            hi: d.max(0.0).hypot(cut),
+        }
+    }
+}
+
+/// How far past the density's largest value on a range it falls by `e^−TAIL`.
+fn tail_cut(s: f64) -> f64 {
+    (2.0 * TAIL).sqrt() * s
 }
 
 impl Surface {
@@ -151,11 +168,7 @@ impl Surface {
 
     /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
-        let cut = (2.0 * TAIL).sqrt() * self.s;
-        let win = Window {
-            lo: -cut,
-            hi: d.max(0.0).hypot(cut),
-        };
+        let win = Window::contact(d, self.s);
         let (load_sum, fric_sum, mut adh) = match self.kind {
             Kind::KogutEtsion => self.contact_ke(d, win, want_q),
             Kind::CebType => self.contact_ceb(d, win, want_q),
@@ -383,13 +396,11 @@ impl Surface {
     /// The non-contact adhesion integral `J_nc` (MODEL.md §4) and its
     /// d*-derivative, in the gap `g = d* − z* ≥ 0`.
     fn noncontact(&self, d: f64) -> (f64, f64) {
-        let cut = (2.0 * TAIL).sqrt() * self.s;
-        let z_lo = -(d.min(0.0).hypot(cut));
-        let g_max = d - z_lo;
-        // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
-        // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
-        // Skipping them keeps the work bounded for large d* (the panels
-        // shrink like 1/|z*| far out).
+        let g_max = d + d.min(0.0).hypot(tail_cut(self.s)); // down to z* = −hypot(min(d*, 0), cut)
+                                                            // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
+                                                            // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
+                                                            // Skipping them keeps the work bounded for large d* (the panels
+                                                            // shrink like 1/|z*| far out).
         let worst = 4.0 * self.norm * (d.max(0.0) + self.s + self.eps).powi(2) / self.eps;
         let z_hi = self.s * (2.0 * (TAIL + worst.ln().max(0.0))).sqrt();
         let mut g0 = (d - z_hi).max(0.0);
@@ -505,11 +516,7 @@ mod tests {
         /// `I^b[xa, xc]` (MODEL.md §4) with the same panels and rules as the
         /// model's own integrals.
         fn moment(&self, d: f64, b: f64, xa: f64, xc: f64) -> f64 {
-            let cut = (2.0 * TAIL).sqrt() * self.s;
-            let win = Window {
-                lo: -cut,
-                hi: d.max(0.0).hypot(cut),
-            };
+            let win = Window::contact(d, self.s);
             let rule = Rule::jacobi(b);
             let mut sum = 0.0;
             self.panels(d, win, xa, xc, |x0, x1, first, _| {
