@@ -129,6 +129,21 @@ impl Window {
     }
 }
 
+/// Adds the Hertz load `x^1.5` and the elastic adhesion `x^0.298` (both
+/// models) at an interior node with weights `w`, `dw`; returns `x^1.5`.
+#[inline(always)]
+fn elastic_node(acc: &mut Acc, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
+    let p = x * x.sqrt();
+    acc.p += p * w;
+    acc.dp += p * dw;
+    if adh {
+        let f = (adhesion::ELASTIC.1 * lx).exp();
+        acc.fs += f * w;
+        acc.dfs += f * dw;
+    }
+    p
+}
+
 /// How far past the density's largest value on a range it falls by `e^−TAIL`.
 fn tail_cut(s: f64) -> f64 {
     (2.0 * TAIL).sqrt() * s
@@ -260,30 +275,14 @@ impl Surface {
         let m15 = ceb.mu2_split(0.0).0;
         self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
             if first {
-                self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
-                    acc.p += w;
-                    acc.dp += dw;
-                    acc.q += m15 * w;
-                });
-                if adh {
-                    self.jacobi_panel(d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
-                        acc.fs += w;
-                        acc.dfs += dw;
-                    });
-                }
+                self.elastic_first_panel(d, x1, adh, &mut acc);
                 if want_q {
+                    acc.q += m15 * self.gj_moment(d, x1);
                     self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_split(x).1 * w);
                 }
             } else {
                 self.legendre_panel(d, x0, x1, |x, w, dw| {
-                    let p = x * x.sqrt();
-                    acc.p += p * w;
-                    acc.dp += p * dw;
-                    if adh {
-                        let f = x.powf(adhesion::ELASTIC.1);
-                        acc.fs += f * w;
-                        acc.dfs += f * dw;
-                    }
+                    let p = elastic_node(&mut acc, x, x.ln(), w, dw, adh);
                     if want_q {
                         acc.q += (m15 * p + x * ceb.mu2_split(x).1) * w;
                     }
@@ -292,14 +291,7 @@ impl Surface {
         });
         self.panels(d, win, xc, X_ELASTIC, |x0, x1, _, last| {
             self.legendre_panel(d, x0, x1, |x, w, dw| {
-                let p = x * x.sqrt();
-                acc.p += p * w;
-                acc.dp += p * dw;
-                if adh {
-                    let f = x.powf(adhesion::ELASTIC.1);
-                    acc.fs += f * w;
-                    acc.dfs += f * dw;
-                }
+                elastic_node(&mut acc, x, x.ln(), w, dw, adh);
                 if want_q && !last {
                     acc.q += ceb.mu1_factor(x) * (1.0 - x).sqrt() * w;
                 }
@@ -314,42 +306,23 @@ impl Surface {
                 }
             }
         });
-        if !want_q {
-            acc.q = 0.0;
-        }
         acc
     }
 
     /// The fully elastic regime `0 ≤ x < 1` of the Kogut–Etsion model.
     fn elastic(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Acc {
         let mut acc = Acc::default();
-        let (b_adh, b_fric) = (adhesion::ELASTIC.1, FRICTION_ELASTIC.1);
+        let b_fric = FRICTION_ELASTIC.1;
         self.panels(d, win, 0.0, X_ELASTIC, |x0, x1, first, _| {
             if first {
-                self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
-                    acc.p += w;
-                    acc.dp += dw;
-                });
-                if adh {
-                    self.jacobi_panel(d, &self.rules.gj_adh, b_adh, x1, |_, w, dw| {
-                        acc.fs += w;
-                        acc.dfs += dw;
-                    });
-                }
+                self.elastic_first_panel(d, x1, adh, &mut acc);
                 if want_q {
                     self.jacobi_panel(d, &self.rules.gj_fric, b_fric, x1, |_, w, _| acc.q += w);
                 }
             } else {
                 self.legendre_panel(d, x0, x1, |x, w, dw| {
-                    let p = x * x.sqrt();
-                    acc.p += p * w;
-                    acc.dp += p * dw;
                     let lx = x.ln();
-                    if adh {
-                        let f = (b_adh * lx).exp();
-                        acc.fs += f * w;
-                        acc.dfs += f * dw;
-                    }
+                    elastic_node(&mut acc, x, lx, w, dw, adh);
                     if want_q {
                         acc.q += (b_fric * lx).exp() * w;
                     }
@@ -357,6 +330,28 @@ impl Surface {
             }
         });
         acc
+    }
+
+    /// The Hertz load `x^1.5` and the elastic adhesion `x^0.298` (the same
+    /// in both models) on the panel `[0, x1]`, by their Gauss–Jacobi rules.
+    fn elastic_first_panel(&self, d: f64, x1: f64, adh: bool, acc: &mut Acc) {
+        self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+            acc.p += w;
+            acc.dp += dw;
+        });
+        if adh {
+            self.jacobi_panel(d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
+                acc.fs += w;
+                acc.dfs += dw;
+            });
+        }
+    }
+
+    /// `∫₀^x1 x^1.5 φ* dz*` (the Hertz load's rule, for the CEB-type friction).
+    fn gj_moment(&self, d: f64, x1: f64) -> f64 {
+        let mut sum = 0.0;
+        self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, _| sum += w);
+        sum
     }
 
     /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
