@@ -563,9 +563,10 @@ impl BuildOptions {
             eps_star: d.params.eps_star,
             fit: d.params.fit,
             kind: d.params.kind,
-            precision: match table.payload().ln_mu {
-                Coefs::F32(_) => Precision::F32,
-                Coefs::F64(_) => Precision::F64,
+            precision: if table.single_precision() {
+                Precision::F32
+            } else {
+                Precision::F64
             },
             tolerance: table.accuracy().tolerance,
             samples: b.samples as usize,

@@ -92,7 +92,10 @@ pub struct Table {
     avx2: bool,
     ln_mu: Vec<f64>,
     h_star: Vec<f64>,
-    payload: Payload,
+    accuracy: Accuracy,
+    build: BuildSpec,
+    /// Whether the file stores f32 coefficients.
+    single: bool,
 }
 
 /// The default table, committed in `tables/` and compiled in.
@@ -194,7 +197,9 @@ impl Table {
             avx2: cpu_has_avx2_fma(),
             ln_mu,
             h_star,
-            payload,
+            accuracy: payload.accuracy,
+            single: matches!(payload.ln_mu, format::Coefs::F32(_)),
+            build: payload.build,
         })
     }
 
@@ -205,12 +210,12 @@ impl Table {
 
     /// The accuracy measured when the table was built.
     pub fn accuracy(&self) -> &Accuracy {
-        &self.payload.accuracy
+        &self.accuracy
     }
 
     /// The build options recorded in the table.
     pub fn build_spec(&self) -> &BuildSpec {
-        &self.payload.build
+        &self.build
     }
 
     /// The lookup grid's axes (ψ, θ, F*), ghost nodes included.
@@ -218,9 +223,9 @@ impl Table {
         &self.axes
     }
 
-    /// The decoded file contents.
-    pub fn payload(&self) -> &Payload {
-        &self.payload
+    /// Whether the file stores its coefficients in single precision (f32).
+    pub fn single_precision(&self) -> bool {
+        self.single
     }
 
     /// The static friction coefficient μ(ψ, θ, F*).
