@@ -1,6 +1,6 @@
 //! `kefric lookup`, `kefric verify` and `kefric build` on small inputs.
 mod common;
-use common::kefric;
+use common::{kefric, SMALL_BUILD};
 
 #[test]
 fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
@@ -28,20 +28,7 @@ fn verify_passes_on_the_embedded_table_and_a_small_build_round_trips() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("small.kft");
     let p = path.to_str().unwrap();
-    let o = kefric(&[
-        "build",
-        "--nodes",
-        "9,9,9",
-        "--h-star",
-        "0:4:21",
-        "--samples",
-        "200",
-        "--tolerance",
-        "0.5",
-        "--quiet",
-        "--out",
-        p,
-    ]);
+    let o = kefric(&[SMALL_BUILD, &["--out", p]].concat());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let t = ke_friction::Table::load(&path).unwrap();
     assert_eq!(t.build_spec().nodes, [9, 9, 9]);

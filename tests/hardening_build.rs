@@ -1,6 +1,8 @@
 //! Hardening: `kefric build` is deterministic across thread counts, and an
 //! interrupted or failed build never damages the file at its output path.
 
+mod common;
+use common::{LONG_BUILD, SMALL_BUILD};
 use ke_friction::Table;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -34,20 +36,6 @@ impl Drop for Dir {
     }
 }
 
-/// A small build (a fraction of a second).
-const SMALL: &[&str] = &[
-    "build",
-    "--nodes",
-    "9,9,9",
-    "--h-star",
-    "0:4:21",
-    "--samples",
-    "200",
-    "--tolerance",
-    "1",
-    "--quiet",
-];
-
 fn kefric(args: &[&str], threads: Option<usize>) -> std::process::Output {
     let mut cmd = Command::new(env!("CARGO_BIN_EXE_kefric"));
     cmd.args(args);
@@ -59,7 +47,7 @@ fn kefric(args: &[&str], threads: Option<usize>) -> std::process::Output {
 
 fn build_small(out: &Path, threads: usize) -> Vec<u8> {
     let out_s = out.display().to_string();
-    let mut args = SMALL.to_vec();
+    let mut args = SMALL_BUILD.to_vec();
     args.extend(["--out", out_s.as_str()]);
     let o = kefric(&args, Some(threads));
     assert!(
@@ -101,16 +89,8 @@ fn an_interrupted_build_leaves_the_previous_file_intact() {
     let out_s = out.display().to_string();
     // Larger than the default build: several seconds at least.
     let mut child = Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args([
-            "build",
-            "--nodes",
-            "65,65,65",
-            "--samples",
-            "200000",
-            "--quiet",
-            "--out",
-            out_s.as_str(),
-        ])
+        .args(LONG_BUILD)
+        .args(["--out", out_s.as_str()])
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
@@ -151,7 +131,7 @@ fn a_failed_build_leaves_the_previous_file_intact() {
     std::fs::write(&out, previous).unwrap();
     let out_s = out.display().to_string();
     // Misses its tolerance after doing all the work: status 1, nothing written.
-    let mut args: Vec<&str> = SMALL.iter().map(|a| if *a == "1" { "1e-9" } else { a }).collect();
+    let mut args: Vec<&str> = SMALL_BUILD.iter().map(|a| if *a == "1" { "1e-9" } else { a }).collect();
     args.extend(["--out", out_s.as_str()]);
     let o = kefric(&args, None);
     let err = String::from_utf8_lossy(&o.stderr);
@@ -164,7 +144,7 @@ fn a_failed_build_leaves_the_previous_file_intact() {
     );
     assert_eq!(dir.names(), ["table.kft"]);
     // Rejected input: status 2, nothing written either.
-    let mut args = SMALL.to_vec();
+    let mut args = SMALL_BUILD.to_vec();
     args.extend(["--out", out_s.as_str(), "--psi", "8:0.5"]);
     let o = kefric(&args, None);
     assert_eq!(o.status.code(), Some(2));

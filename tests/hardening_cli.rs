@@ -6,6 +6,8 @@
 //! it ran), so a bad input that is not rejected up front shows up as a
 //! timeout. All failures are collected and reported together.
 
+mod common;
+use common::LONG_BUILD;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -333,16 +335,7 @@ fn build_rejects_bad_input_before_any_work() {
     let scratch = Scratch::new("build");
     let out = scratch.path("out.kft");
     // A build that would take tens of seconds: a bad option must be caught first.
-    let base_owned = [
-        "build",
-        "--nodes",
-        "65,65,65",
-        "--samples",
-        "200000",
-        "--quiet",
-        "--out",
-        out.as_str(),
-    ];
+    let base_owned: Vec<&str> = LONG_BUILD.iter().copied().chain(["--out", out.as_str()]).collect();
     let base = &base_owned[..];
     let mut all = vec![];
     // Ranges LO:HI.

@@ -77,3 +77,21 @@ impl Drop for TempDir {
         let _ = std::fs::remove_dir_all(&self.0);
     }
 }
+
+/// `kefric build` of a small table (a fraction of a second); any tolerance.
+pub const SMALL_BUILD: &[&str] = &[
+    "build",
+    "--nodes",
+    "9,9,9",
+    "--h-star",
+    "0:4:21",
+    "--samples",
+    "200",
+    "--tolerance",
+    "1",
+    "--quiet",
+];
+
+/// `kefric build` of a table larger than the default: several seconds at
+/// least, long enough to interrupt or to show that bad input is caught first.
+pub const LONG_BUILD: &[&str] = &["build", "--nodes", "65,65,65", "--samples", "200000", "--quiet"];
