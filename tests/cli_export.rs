@@ -2,12 +2,11 @@
 #![cfg(feature = "cli")]
 
 mod common;
-use common::{kefric, stderr, TempDir};
+use common::{assert_bad_input, kefric, stderr, TempDir};
 use ke_friction::Table;
 use ndarray::{Array0, Array1, Array3};
 use ndarray_npy::{read_npy, NpzReader};
 use std::path::Path;
-use std::process::Output;
 
 fn s(p: &Path) -> &str {
     p.to_str().unwrap()
@@ -141,16 +140,6 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     assert_eq!(tmp.names("arrays"), want);
     let again: Array3<f64> = read_npy(npy.join("mu.npy")).unwrap();
     assert_eq!(again, mu);
-}
-
-/// Exit status 2 and one line on stderr that contains `needle`.
-#[track_caller]
-fn assert_bad_input(o: &Output, needle: &str) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err}");
-    assert!(err.contains(needle), "{needle:?} not in: {err}");
-    assert!(o.stdout.is_empty(), "stdout: {}", String::from_utf8_lossy(&o.stdout));
 }
 
 #[test]

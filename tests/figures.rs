@@ -2,9 +2,8 @@
 //! curve and error-map subcommands on the embedded table, SVG output, and
 //! bad input (exit 2, one line naming the flag).
 mod common;
-use common::{kefric, stderr, TempDir};
+use common::{assert_bad_input, kefric, stderr, TempDir};
 use std::path::Path;
-use std::process::Output;
 
 /// Every image is 1000 × 750 pixels (`ke_friction::figures::SIZE`).
 const WIDTH: u32 = 1000;
@@ -20,15 +19,6 @@ fn assert_png(path: &Path) {
     assert_eq!(&bytes[12..16], b"IHDR", "{}: no IHDR chunk", path.display());
     let be = |i: usize| u32::from_be_bytes(bytes[i..i + 4].try_into().unwrap());
     assert_eq!((be(16), be(20)), (WIDTH, HEIGHT), "{}: image size", path.display());
-}
-
-/// Exit status 2 and exactly one line on stderr that contains `needle`.
-#[track_caller]
-fn assert_bad_input(o: &Output, needle: &str) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err:?}");
-    assert!(err.contains(needle), "{needle:?} not in {err:?}");
 }
 
 #[test]

@@ -2,39 +2,11 @@
 //! interrupted or failed build never damages the file at its output path.
 
 mod common;
-use common::{LONG_BUILD, SMALL_BUILD};
+use common::{TempDir, LONG_BUILD, SMALL_BUILD};
 use ke_friction::Table;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
-
-/// A scratch directory, removed when dropped.
-struct Dir(PathBuf);
-
-impl Dir {
-    fn new(name: &str) -> Dir {
-        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hardening-build-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Dir(dir)
-    }
-
-    /// The names in the directory, sorted.
-    fn names(&self) -> Vec<String> {
-        let mut v: Vec<String> = std::fs::read_dir(&self.0)
-            .unwrap()
-            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-            .collect();
-        v.sort();
-        v
-    }
-}
-
-impl Drop for Dir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 fn kefric(args: &[&str], threads: Option<usize>) -> std::process::Output {
     let mut cmd = Command::new(env!("CARGO_BIN_EXE_kefric"));
@@ -62,7 +34,7 @@ fn build_small(out: &Path, threads: usize) -> Vec<u8> {
 
 #[test]
 fn builds_on_one_and_two_threads_are_byte_identical() {
-    let dir = Dir::new("threads");
+    let dir = TempDir::new("threads");
     let one = build_small(&dir.0.join("one.kft"), 1);
     let two = build_small(&dir.0.join("two.kft"), 2);
     let four = build_small(&dir.0.join("four.kft"), 4);
@@ -71,7 +43,7 @@ fn builds_on_one_and_two_threads_are_byte_identical() {
     // A valid table, and exactly the files asked for (no temporary left).
     let t = Table::from_bytes(&one).expect("the build decodes");
     assert_eq!(t.build_spec().nodes, [9, 9, 9]);
-    assert_eq!(dir.names(), ["four.kft", "one.kft", "two.kft"]);
+    assert_eq!(dir.names(""), ["four.kft", "one.kft", "two.kft"]);
 }
 
 /// Temporary files `write_atomic` may leave behind when killed.
@@ -82,7 +54,7 @@ fn is_temporary(name: &str, target: &str) -> bool {
 
 #[test]
 fn an_interrupted_build_leaves_the_previous_file_intact() {
-    let dir = Dir::new("kill");
+    let dir = TempDir::new("kill");
     let out = dir.0.join("table.kft");
     let previous = Table::embedded_bytes();
     std::fs::write(&out, previous).unwrap();
@@ -108,7 +80,7 @@ fn an_interrupted_build_leaves_the_previous_file_intact() {
     let now = std::fs::read(&out).expect("the previous file is still there");
     assert!(now == previous, "the previous file at the output path was changed");
     let mut temporaries = vec![];
-    for name in dir.names() {
+    for name in dir.names("") {
         if name == "table.kft" {
             continue;
         }
@@ -125,7 +97,7 @@ fn an_interrupted_build_leaves_the_previous_file_intact() {
 
 #[test]
 fn a_failed_build_leaves_the_previous_file_intact() {
-    let dir = Dir::new("fail");
+    let dir = TempDir::new("fail");
     let out = dir.0.join("table.kft");
     let previous = Table::embedded_bytes();
     std::fs::write(&out, previous).unwrap();
@@ -142,19 +114,19 @@ fn a_failed_build_leaves_the_previous_file_intact() {
         std::fs::read(&out).unwrap() == previous,
         "the previous file was changed"
     );
-    assert_eq!(dir.names(), ["table.kft"]);
+    assert_eq!(dir.names(""), ["table.kft"]);
     // Rejected input: status 2, nothing written either.
     let mut args = SMALL_BUILD.to_vec();
     args.extend(["--out", out_s.as_str(), "--psi", "8:0.5"]);
     let o = kefric(&args, None);
     assert_eq!(o.status.code(), Some(2));
     assert!(std::fs::read(&out).unwrap() == previous);
-    assert_eq!(dir.names(), ["table.kft"]);
+    assert_eq!(dir.names(""), ["table.kft"]);
 }
 
 #[test]
 fn a_successful_build_replaces_the_previous_file_whole() {
-    let dir = Dir::new("replace");
+    let dir = TempDir::new("replace");
     let out = dir.0.join("table.kft");
     let old = b"an old, invalid table".to_vec();
     std::fs::write(&out, &old).unwrap();
@@ -166,5 +138,5 @@ fn a_successful_build_replaces_the_previous_file_whole() {
     let mut seen = vec![];
     std::io::Read::read_to_end(&mut reader, &mut seen).unwrap();
     assert!(seen == old, "the old file was rewritten in place, not replaced");
-    assert_eq!(dir.names(), ["table.kft"]);
+    assert_eq!(dir.names(""), ["table.kft"]);
 }

@@ -95,3 +95,14 @@ pub const SMALL_BUILD: &[&str] = &[
 /// `kefric build` of a table larger than the default: several seconds at
 /// least, long enough to interrupt or to show that bad input is caught first.
 pub const LONG_BUILD: &[&str] = &["build", "--nodes", "65,65,65", "--samples", "200000", "--quiet"];
+
+/// Asserts what bad input must give: exit status 2, exactly one line on
+/// stderr containing `needle` (the flag), and nothing on stdout.
+#[track_caller]
+pub fn assert_bad_input(o: &std::process::Output, needle: &str) {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err:?}");
+    assert!(err.contains(needle), "{needle:?} not in {err:?}");
+    assert!(o.stdout.is_empty(), "stdout: {}", String::from_utf8_lossy(&o.stdout));
+}
