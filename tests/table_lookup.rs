@@ -92,44 +92,101 @@ fn the_slope_matches_a_finite_difference_of_direct_integration() {
     }
 }
 
-#[test]
-fn mu_and_its_slope_are_continuous_across_cell_boundaries() {
+/// A probe across a node: axis, F*, the lookup below and above.
+type Probe = (usize, f64, (f64, f64), (f64, f64));
+
+/// Evaluates `lookup` a fraction `eps` of a node spacing below and above
+/// random interior nodes on each axis.
+fn across_nodes(eps: f64, lookup: impl Fn(f64, f64, f64) -> (f64, f64)) -> Vec<Probe> {
     let t = table();
     let axes = t.axes();
     let d = t.domain();
     let mut rng = ChaCha8Rng::seed_from_u64(11);
+    let mut out = vec![];
     for _ in 0..300 {
         let (p, th, f) = query(&mut rng);
-        // A node on each axis inside the domain; probe just below and above it.
         for k in 0..3 {
             let a = axes[k];
             let (lo, hi) = [d.psi, d.theta, d.f_star][k];
             let c_lo = a.scale.forward(lo);
             let cells = ((a.scale.forward(hi) - c_lo) / a.step).round() as usize;
             let node = c_lo + rng.gen_range(1..cells) as f64 * a.step;
-            let eps = 1e-9 * a.step;
             let at = |c: f64| {
                 let v = a.scale.inverse(c);
-                let q = match k {
-                    0 => (v, th, f),
-                    1 => (p, v, f),
-                    _ => (p, th, v),
-                };
-                t.mu_with_slope(q.0, q.1, q.2).unwrap()
+                let q = [(v, th, f), (p, v, f), (p, th, v)][k];
+                (q.2, lookup(q.0, q.1, q.2))
             };
-            let (m0, s0) = at(node - eps);
-            let (m1, s1) = at(node + eps);
-            assert!(
-                ((m1 - m0) / m0).abs() < 1e-7,
-                "μ jumps across axis {k} node: {m0} vs {m1}"
-            );
-            let scale = s0.abs().max(m0 / f);
-            assert!(
-                (s1 - s0).abs() < 1e-6 * scale,
-                "slope jumps across axis {k} node: {s0} vs {s1}"
-            );
+            let ((f_star, below), (_, above)) = (at(node - eps * a.step), at(node + eps * a.step));
+            out.push((k, f_star, below, above));
         }
     }
+    out
+}
+
+#[test]
+fn the_interpolant_and_its_slope_are_continuous_across_cell_boundaries() {
+    // The exact (f64) interpolant, a billionth of a spacing either side.
+    for (k, f, (m0, s0), (m1, s1)) in across_nodes(1e-9, |p, t, f| table().mu_with_slope_portable(p, t, f).unwrap()) {
+        assert!(
+            ((m1 - m0) / m0).abs() < 1e-8,
+            "μ jumps across axis {k} node: {m0} vs {m1}"
+        );
+        let scale = s0.abs().max(m0 / f);
+        assert!(
+            (s1 - s0).abs() < 1e-6 * scale,
+            "slope jumps across axis {k} node: {s0} vs {s1}"
+        );
+    }
+}
+
+#[test]
+fn lookups_are_continuous_across_cell_boundaries_to_within_f32_rounding() {
+    // What `mu_with_slope` returns (the f32 kernel on AVX2 machines), 1e-4
+    // of a spacing either side: μ and its slope change as the exact
+    // interpolant's do, to within the kernel's rounding (a jump of the
+    // size of the table's error, 4e-5, would fail).
+    // Differences from the exact interpolant, relative to μ and to μ/F*.
+    let deviation = |p, t, f| {
+        let (m, s) = table().mu_with_slope(p, t, f).unwrap();
+        let (me, se) = table().mu_with_slope_portable(p, t, f).unwrap();
+        ((m - me) / me, (s - se) * f / me)
+    };
+    for (k, _, (d0, ds0), (d1, ds1)) in across_nodes(1e-4, deviation) {
+        assert!((d1 - d0).abs() <= 1e-5, "μ jumps by {:e} across axis {k} node", d1 - d0);
+        assert!(
+            (ds1 - ds0).abs() <= 1e-4,
+            "slope jumps by {:e} across axis {k} node",
+            ds1 - ds0
+        );
+    }
+}
+
+#[test]
+fn the_fast_kernel_stays_within_3e_6_of_the_exact_interpolant() {
+    let t = table();
+    let mut rng = ChaCha8Rng::seed_from_u64(23);
+    let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
+    for _ in 0..100_000 {
+        let (p, th, f) = query(&mut rng);
+        let (m, s) = t.mu_with_slope(p, th, f).unwrap();
+        let (me, se) = t.mu_with_slope_portable(p, th, f).unwrap();
+        assert_eq!(t.mu(p, th, f).unwrap(), m);
+        assert_eq!(t.mu_portable(p, th, f).unwrap(), me);
+        worst = worst.max((m / me - 1.0).abs());
+        worst_slope = worst_slope.max((s - se).abs() / se.abs().max(me / f));
+    }
+    if !t.fast_kernel() {
+        assert_eq!(
+            (worst, worst_slope),
+            (0.0, 0.0),
+            "without the fast kernel, mu is mu_portable"
+        );
+    }
+    assert!(worst <= 3e-6, "μ differs from the exact interpolant by {worst:e}");
+    assert!(
+        worst_slope <= 1e-4,
+        "∂μ/∂F* differs from the exact interpolant's by {worst_slope:e}"
+    );
 }
 
 #[test]

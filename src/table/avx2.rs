@@ -1,179 +1,377 @@
-//! The lookup kernels for x86-64 CPUs with AVX2 and FMA (chosen at run time
-//! by [`Table`]'s constructor).
+//! The fast lookup kernel: x86-64 CPUs with AVX2 and FMA, tables stored in
+//! single precision (chosen at run time by [`Table`]'s constructor).
 //!
-//! The B-spline weights of an axis form one vector (Horner's rule in the
-//! cell offset); each row of four F* coefficients is one vector load, so a
-//! lookup is 16 loads and 20 fused multiply-adds. The batch kernel also
-//! maps, locates and weighs four queries at a time, then blends each and
-//! takes the four exponentials at once. Every operation mirrors the
-//! single-query kernel's, so a batch returns bit for bit what [`eval`]
-//! returns for each of its queries.
+//! It works in f32 throughout, eight queries to a vector: the maps ln ψ,
+//! √θ, ln F*, the cell search, the ψ weights and the final exponential
+//! are computed for eight queries at once; each query's 4×4×4 block is
+//! then blended with eight fused multiply-adds on pairs of coefficient
+//! rows. The single-query kernel runs the very same operations on one
+//! query, so a batch returns bit for bit what [`eval`] returns.
+//!
+//! f32 arithmetic adds a rounding noise of about 1e-7 relative to μ (the
+//! coefficients are f32 already); the portable f64 kernel is the exact
+//! interpolant.
 
-use super::fastmath::{self, Num};
 use super::Table;
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
-/// Four lanes.
-#[derive(Clone, Copy)]
-struct V(__m256d);
+/// The kernel's per-table constants.
+#[derive(Debug, Clone)]
+pub(super) struct Kernel {
+    /// ln μ coefficients, with the four θ rows of each cell interleaved:
+    /// `coefs[((i·cells_θ + j)·n_F + k)·4 + b]` is coefficient (i, j + b, k),
+    /// so the 4×4 (θ, F*) part of a block on one ψ plane is 16 floats in a
+    /// row (four times the file's coefficients: 0.7 MB for the default
+    /// table, which stays in a 1 MB L2 cache).
+    coefs: Vec<f32>,
+    /// Per axis (ψ, θ, F* in lanes 0, 1, 2; zeros in the others), the
+    /// map to cell coordinates, s = e·K + q/spacing + O for a coordinate
+    /// e·ln 2 + q (ln axes: x = 2^e·m, q = ln m; the √ axis: e = 0,
+    /// q = √x), with K = ln 2/spacing and O = −first/spacing each split
+    /// into a head with 12 fraction bits and a tail: e·K_hi + O_hi is then
+    /// exact, and the cell offset keeps f32 precision though s reaches 30
+    /// or more.
+    k_hi: [f32; 8],
+    k_lo: [f32; 8],
+    inv_step: [f32; 8],
+    o_hi: [f32; 8],
+    o_lo: [f32; 8],
+    /// The last cell and the stride in `coefs`, per axis.
+    last_cell: [f32; 8],
+    stride: [i32; 8],
+    /// The domain, as (lo, hi) per axis.
+    lo: [f64; 3],
+    hi: [f64; 3],
+}
 
-impl Num for V {
-    #[inline(always)]
-    fn splat(c: f64) -> Self {
-        // SAFETY: AVX is available in every caller (the AVX2 kernels).
-        V(unsafe { _mm256_set1_pd(c) })
-    }
-    #[inline(always)]
-    fn madd(self, b: Self, c: Self) -> Self {
-        // SAFETY: as above (FMA too).
-        V(unsafe { _mm256_fmadd_pd(self.0, b.0, c.0) })
-    }
-    #[inline(always)]
-    fn mul(self, b: Self) -> Self {
-        // SAFETY: as above.
-        V(unsafe { _mm256_mul_pd(self.0, b.0) })
+impl Kernel {
+    /// The kernel for a table, if this CPU runs it and the table suits it:
+    /// f32 coefficients, a domain of normal f32 numbers, offsets that fit
+    /// an i32.
+    pub(super) fn new(t: &Table, coefs: &[f32]) -> Option<Kernel> {
+        if !(std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")) {
+            return None;
+        }
+        let d = &t.domain;
+        let lo = [d.psi.0, d.theta.0, d.f_star.0];
+        let hi = [d.psi.1, d.theta.1, d.f_star.1];
+        let normal = |v: f64| v == 0.0 || (v.abs() >= f32::MIN_POSITIVE as f64 && v.abs() <= 1e30);
+        if !lo.iter().chain(&hi).all(|&v| normal(v)) {
+            return None;
+        }
+        let [s0, s1] = t.strides;
+        let n = [coefs.len() / s0, s0 / s1, s1];
+        let cells_theta = t.last_cell[1] + 1;
+        let stride = [cells_theta * n[2] * 4, n[2] * 4, 4];
+        let len = n[0] * stride[0];
+        // The block of the last cell must end inside the coefficients.
+        let last_block = (0..3).map(|a| t.last_cell[a] * stride[a]).sum::<usize>() + 3 * stride[0] + 15;
+        if n[0] * s0 != coefs.len() || t.last_cell[1] + 3 >= n[1] || last_block >= len || len >= i32::MAX as usize {
+            return None;
+        }
+        let mut inter = vec![0.0; len];
+        for i in 0..n[0] {
+            for j in 0..cells_theta {
+                for k in 0..n[2] {
+                    for b in 0..4 {
+                        inter[i * stride[0] + j * stride[1] + k * 4 + b] = coefs[i * s0 + (j + b) * s1 + k];
+                    }
+                }
+            }
+        }
+        let lanes = |v: [f64; 3]| [v[0], v[1], v[2], 0.0, 0.0, 0.0, 0.0, 0.0].map(|v| v as f32);
+        let head = |v: f64| (v * 4096.0).round() / 4096.0;
+        let k = [0, 1, 2].map(|a| {
+            if a == 1 {
+                0.0
+            } else {
+                core::f64::consts::LN_2 * t.inv_step[a]
+            }
+        });
+        Some(Kernel {
+            coefs: inter,
+            k_hi: lanes(k.map(head)),
+            k_lo: lanes(k.map(|v| v - head(v))),
+            inv_step: lanes(t.inv_step),
+            o_hi: lanes(t.offset.map(head)),
+            o_lo: lanes(t.offset.map(|v| v - head(v))),
+            last_cell: lanes(t.last_cell.map(|v| v as f64)),
+            stride: [stride[0] as i32, stride[1] as i32, stride[2] as i32, 0, 0, 0, 0, 0],
+            lo,
+            hi,
+        })
     }
 }
 
-/// The four B-spline weights at offset `f` ([`BASIS`] by Horner's rule).
-#[inline(always)]
-unsafe fn weights(f: f64) -> __m256d {
-    let f = _mm256_set1_pd(f);
-    let [a, b, c, d] = BASIS.map(|v| _mm256_loadu_pd(v.as_ptr()));
-    _mm256_fmadd_pd(_mm256_fmadd_pd(_mm256_fmadd_pd(a, f, b), f, c), f, d)
+/// The per-lane constants of the map to cell coordinates.
+struct Map {
+    k_hi: __m256,
+    k_lo: __m256,
+    inv_step: __m256,
+    o_hi: __m256,
+    o_lo: __m256,
+    last_cell: __m256,
+    stride: __m256i,
 }
 
-/// Their derivatives, (3A·f + 2B)·f + C.
+/// Cell offsets and block offsets of eight coordinates e·ln 2 + q (one
+/// per lane, each lane with its axis's constants). The cell is clamped,
+/// so that a query a rounding error outside the domain's edge still
+/// reads inside the table.
 #[inline(always)]
-unsafe fn weight_slopes(f: f64) -> __m256d {
-    let f = _mm256_set1_pd(f);
-    let [a, b, c, _] = BASIS.map(|v| _mm256_loadu_pd(v.as_ptr()));
-    let a3 = _mm256_mul_pd(a, _mm256_set1_pd(3.0));
-    _mm256_fmadd_pd(_mm256_fmadd_pd(a3, f, _mm256_add_pd(b, b)), f, c)
+unsafe fn cells(e: __m256, q: __m256, m: &Map) -> (__m256, __m256i) {
+    let a = _mm256_fmadd_ps(e, m.k_hi, m.o_hi);
+    let b = _mm256_fmadd_ps(e, m.k_lo, _mm256_fmadd_ps(q, m.inv_step, m.o_lo));
+    let cell = _mm256_max_ps(
+        _mm256_min_ps(_mm256_floor_ps(_mm256_add_ps(a, b)), m.last_cell),
+        _mm256_setzero_ps(),
+    );
+    let offset = _mm256_mullo_epi32(_mm256_cvttps_epi32(cell), m.stride);
+    (_mm256_add_ps(_mm256_sub_ps(a, cell), b), offset)
 }
 
-/// Σ wp[a]·wt[b]·(row_ab · wf) over the block at `p`, and the same with
-/// `df` in place of `wf` if `SLOPE`.
+/// The four B-spline weights at offset `f` (all lanes equal) in lanes
+/// 0..4 and again in 4..8, by Horner's rule.
 #[inline(always)]
-unsafe fn blend<const SLOPE: bool>(
-    p: *const f64,
-    s0: usize,
-    s1: usize,
-    wp: &[f64; 4],
-    wt: &[f64; 4],
-    wf: __m256d,
-    ff: f64,
-) -> (f64, f64) {
-    let mut acc = _mm256_setzero_pd();
-    for (i, w) in wp.iter().enumerate() {
-        let q = p.add(i * s0);
-        let mut plane = _mm256_mul_pd(_mm256_set1_pd(wt[0]), _mm256_loadu_pd(q));
-        plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[1]), _mm256_loadu_pd(q.add(s1)), plane);
-        plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[2]), _mm256_loadu_pd(q.add(2 * s1)), plane);
-        plane = _mm256_fmadd_pd(_mm256_set1_pd(wt[3]), _mm256_loadu_pd(q.add(3 * s1)), plane);
-        acc = _mm256_fmadd_pd(_mm256_set1_pd(*w), plane, acc);
+unsafe fn weights(f: __m256) -> __m256 {
+    let [a, b, c, d] = [basis(0), basis(1), basis(2), basis(3)];
+    _mm256_fmadd_ps(_mm256_fmadd_ps(_mm256_fmadd_ps(a, f, b), f, c), f, d)
+}
+
+/// `v` with its lanes picked by `idx`.
+#[inline(always)]
+unsafe fn pick(v: __m256, idx: [i32; 8]) -> __m256 {
+    _mm256_permutevar8x32_ps(v, _mm256_loadu_si256(idx.as_ptr().cast()))
+}
+
+/// Row `r` of [`BASIS`] in f32, in both halves of a vector.
+#[inline(always)]
+unsafe fn basis(r: usize) -> __m256 {
+    let b = BASIS[r].map(|v| v as f32);
+    _mm256_setr_ps(b[0], b[1], b[2], b[3], b[0], b[1], b[2], b[3])
+}
+
+/// One query's blend before the final horizontal sum: a vector whose
+/// lanes add up to ln μ, and (if `SLOPE`) one whose lanes add up to its
+/// derivative along the F* cell coordinate. `f` holds the θ cell offset
+/// in lanes 0..4 and the F* one in 4..8; `wp` the four ψ weights, each
+/// in every lane.
+#[inline(always)]
+unsafe fn blend<const SLOPE: bool>(k: &Kernel, base: usize, f: __m256, wp: [__m256; 4]) -> (__m256, __m256) {
+    // [θ weights | F* weights], by Horner's rule.
+    let [a, b, c, d] = [basis(0), basis(1), basis(2), basis(3)];
+    let w = _mm256_fmadd_ps(_mm256_fmadd_ps(_mm256_fmadd_ps(a, f, b), f, c), f, d);
+    // Each plane's 16 floats: F* offsets 0|1, then 2|3, four θ rows each.
+    let p = k.coefs.as_ptr().add(base);
+    let s0 = k.stride[0] as usize;
+    let (t0, t1) = (plane(p, s0, &wp, 0), plane(p, s0, &wp, 8));
+    // The (θ, F*) weights of the two halves, ready before the rows are.
+    const F01: [i32; 8] = [4, 4, 4, 4, 5, 5, 5, 5];
+    const F23: [i32; 8] = [6, 6, 6, 6, 7, 7, 7, 7];
+    let wt = pick(w, [0, 1, 2, 3, 0, 1, 2, 3]);
+    let g = _mm256_fmadd_ps(
+        t1,
+        _mm256_mul_ps(wt, pick(w, F23)),
+        _mm256_mul_ps(t0, _mm256_mul_ps(wt, pick(w, F01))),
+    );
+    if !SLOPE {
+        return (g, g);
     }
-    let v = _mm256_mul_pd(acc, wf);
-    let dv = if SLOPE {
-        _mm256_mul_pd(acc, weight_slopes(ff))
-    } else {
-        _mm256_setzero_pd()
-    };
-    let h = _mm256_hadd_pd(v, dv); // [v0+v1, d0+d1, v2+v3, d2+d3]
-    let s = _mm_add_pd(_mm256_castpd256_pd128(h), _mm256_extractf128_pd(h, 1));
-    (_mm_cvtsd_f64(s), _mm_cvtsd_f64(_mm_unpackhi_pd(s, s)))
+    let three_a = _mm256_mul_ps(a, _mm256_set1_ps(3.0));
+    let dw = _mm256_fmadd_ps(_mm256_fmadd_ps(three_a, f, _mm256_add_ps(b, b)), f, c);
+    let dg = _mm256_fmadd_ps(
+        t1,
+        _mm256_mul_ps(wt, pick(dw, F23)),
+        _mm256_mul_ps(t0, _mm256_mul_ps(wt, pick(dw, F01))),
+    );
+    (g, dg)
+}
+
+/// Σ_i wp[i]·(row i) for the 8-float rows at `p + i·s0 + off`, as a
+/// tree, (0 + 1) + (2 + 3): a shorter chain.
+#[inline(always)]
+unsafe fn plane(p: *const f32, s0: usize, wp: &[__m256; 4], off: usize) -> __m256 {
+    let row = |i: usize| _mm256_loadu_ps(p.add(i * s0 + off));
+    let a = _mm256_fmadd_ps(wp[1], row(1), _mm256_mul_ps(wp[0], row(0)));
+    let b = _mm256_fmadd_ps(wp[3], row(3), _mm256_mul_ps(wp[2], row(2)));
+    _mm256_add_ps(a, b)
+}
+
+/// Widens lanes 0..4 and 4..8 of `v` to f64.
+#[inline(always)]
+unsafe fn widen(v: __m256) -> [__m256d; 2] {
+    [
+        _mm256_cvtps_pd(_mm256_castps256_ps128(v)),
+        _mm256_cvtps_pd(_mm256_extractf128_ps::<1>(v)),
+    ]
 }
 
 /// One lookup: μ and, if `SLOPE`, d ln μ/d(cell coordinate of F*); μ is
 /// NaN (never otherwise) for a query outside the domain. A pair of floats
 /// comes back in registers, where a `Result` would go through memory.
 ///
+/// The three axes share one vector (lanes 0, 1, 2), and each lane goes
+/// through the operations the batch applies to that axis, so the result
+/// is the batch's bit for bit.
+///
 /// # Safety
-/// The CPU must support AVX2 and FMA.
+/// The CPU must support AVX2 and FMA (as [`Kernel::new`] checked).
 #[target_feature(enable = "avx2,fma")]
-pub unsafe fn eval<const SLOPE: bool>(t: &Table, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
-    let Some((base, frac)) = t.locate::<true>(psi, theta, f_star) else {
+pub(super) unsafe fn eval<const SLOPE: bool>(k: &Kernel, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
+    let x = [psi, theta, f_star];
+    if !(0..3).all(|a| x[a] >= k.lo[a] && x[a] <= k.hi[a]) {
         return (f64::NAN, f64::NAN);
+    }
+    let x = _mm256_setr_ps(psi as f32, theta as f32, f_star as f32, 1.0, 1.0, 1.0, 1.0, 1.0);
+    let (e, ln_m) = ln8(x);
+    let e = _mm256_blend_ps::<0b10>(e, _mm256_setzero_ps());
+    let q = _mm256_blend_ps::<0b10>(ln_m, _mm256_sqrt_ps(x));
+    let lanes = |v: &[f32; 8]| _mm256_loadu_ps(v.as_ptr());
+    let map = Map {
+        k_hi: lanes(&k.k_hi),
+        k_lo: lanes(&k.k_lo),
+        inv_step: lanes(&k.inv_step),
+        o_hi: lanes(&k.o_hi),
+        o_lo: lanes(&k.o_lo),
+        last_cell: lanes(&k.last_cell),
+        stride: _mm256_loadu_si256(k.stride.as_ptr().cast()),
     };
-    let [s0, s1] = t.strides;
-    let c = &t.ln_mu;
-    // One bounds check for the whole block (its last element).
-    let _ = c[base + 3 * s0 + 3 * s1 + 3];
-    let mut wp = [0.0; 4];
-    let mut wt = [0.0; 4];
-    _mm256_storeu_pd(wp.as_mut_ptr(), weights(frac[0]));
-    _mm256_storeu_pd(wt.as_mut_ptr(), weights(frac[1]));
-    let (ln_mu, d) = blend::<SLOPE>(c.as_ptr().add(base), s0, s1, &wp, &wt, weights(frac[2]), frac[2]);
-    (fastmath::exp::<true>(ln_mu), d)
+    let (frac, offsets) = cells(e, q, &map);
+    let o = _mm256_castsi256_si128(offsets);
+    let base = _mm_cvtsi128_si32(o) + _mm_extract_epi32::<1>(o) + _mm_extract_epi32::<2>(o);
+    let w_psi = weights(pick(frac, [0; 8]));
+    let wp = [
+        pick(w_psi, [0; 8]),
+        pick(w_psi, [1; 8]),
+        pick(w_psi, [2; 8]),
+        pick(w_psi, [3; 8]),
+    ];
+    let (g, dg) = blend::<SLOPE>(k, base as usize, pick(frac, [1, 1, 1, 1, 2, 2, 2, 2]), wp);
+    // The batch's sum order: (g0 + g1) + (g2 + g3), plus the same of 4..8.
+    let h = _mm256_hadd_ps(g, dg);
+    let h = _mm256_hadd_ps(h, h);
+    let s = _mm_add_ps(_mm256_castps256_ps128(h), _mm256_extractf128_ps::<1>(h));
+    let mu = exp8(_mm256_set1_ps(_mm_cvtss_f32(s)));
+    (_mm256_cvtss_f32(mu) as f64, _mm_cvtss_f32(_mm_movehdup_ps(s)) as f64)
 }
 
-/// μ for every query, four at a time; returns the index of the first
+/// Eight located queries: block offsets, cell offsets on the θ and F*
+/// axes, and the four ψ weights.
+#[derive(Default)]
+#[repr(C, align(32))]
+struct Located {
+    base: [i32; 8],
+    f_theta: [f32; 8],
+    f_f: [f32; 8],
+    w_psi: [[f32; 8]; 4],
+}
+
+/// μ for every query, eight at a time; returns the index of the first
 /// query outside the domain (`out` is then partly written).
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA; the slices have `out`'s length.
 #[target_feature(enable = "avx2,fma")]
-pub unsafe fn batch(t: &Table, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
+pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
     let n = out.len();
-    let d = &t.domain;
-    let lo = [d.psi.0, d.theta.0, d.f_star.0].map(|v| _mm256_set1_pd(v));
-    let hi = [d.psi.1, d.theta.1, d.f_star.1].map(|v| _mm256_set1_pd(v));
-    let [s0, s1] = t.strides;
-    let c = t.ln_mu.as_ptr();
-    // The largest base offset any in-domain query can have: checked once.
-    let max_base = (0..3).map(|k| t.last_cell[k] * t.stride3[k]).sum::<usize>();
-    let _ = t.ln_mu[max_base + 3 * s0 + 3 * s1 + 3];
+    let lo = [
+        _mm256_set1_pd(k.lo[0]),
+        _mm256_set1_pd(k.lo[1]),
+        _mm256_set1_pd(k.lo[2]),
+    ];
+    let hi = [
+        _mm256_set1_pd(k.hi[0]),
+        _mm256_set1_pd(k.hi[1]),
+        _mm256_set1_pd(k.hi[2]),
+    ];
+    let map = |a: usize| Map {
+        k_hi: _mm256_set1_ps(k.k_hi[a]),
+        k_lo: _mm256_set1_ps(k.k_lo[a]),
+        inv_step: _mm256_set1_ps(k.inv_step[a]),
+        o_hi: _mm256_set1_ps(k.o_hi[a]),
+        o_lo: _mm256_set1_ps(k.o_lo[a]),
+        last_cell: _mm256_set1_ps(k.last_cell[a]),
+        stride: _mm256_set1_epi32(k.stride[a]),
+    };
+    let maps = [map(0), map(1), map(2)];
+    let mut l = Located::default();
     let mut i = 0;
-    while i + 4 <= n {
-        let x = [
-            _mm256_loadu_pd(psi.as_ptr().add(i)),
-            _mm256_loadu_pd(theta.as_ptr().add(i)),
-            _mm256_loadu_pd(f_star.as_ptr().add(i)),
-        ];
-        // Ordered comparisons: NaN fails them.
+    while i + 8 <= n {
         let mut ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-        for k in 0..3 {
-            ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(x[k], lo[k]));
-            ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(x[k], hi[k]));
+        let mut x = [_mm256_setzero_ps(); 3];
+        for (a, s) in [psi, theta, f_star].iter().enumerate() {
+            let v = [
+                _mm256_loadu_pd(s.as_ptr().add(i)),
+                _mm256_loadu_pd(s.as_ptr().add(i + 4)),
+            ];
+            // Ordered comparisons: NaN fails them.
+            for h in v {
+                ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo[a]));
+                ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi[a]));
+            }
+            x[a] = _mm256_set_m128(_mm256_cvtpd_ps(v[1]), _mm256_cvtpd_ps(v[0]));
         }
         if _mm256_movemask_pd(ok) != 0b1111 {
-            // Some query is out: the single-query kernel finds which.
-            for j in i..i + 4 {
-                out[j] = eval::<false>(t, psi[j], theta[j], f_star[j]).0;
+            // Some query is out (or NaN): the single-query kernel finds it.
+            for j in i..i + 8 {
+                out[j] = eval::<false>(k, psi[j], theta[j], f_star[j]).0;
                 if out[j].is_nan() {
                     return Some(j);
                 }
             }
-            i += 4;
+            i += 8;
             continue;
         }
-        let coords = [ln4(x[0]), _mm256_sqrt_pd(x[1]), ln4(x[2])];
-        let mut base = _mm256_setzero_pd();
-        let mut frac = [[0.0; 4]; 3];
-        for k in 0..3 {
-            let s = _mm256_fmadd_pd(coords[k], _mm256_set1_pd(t.inv_step[k]), _mm256_set1_pd(t.offset[k]));
-            let cell = _mm256_min_pd(_mm256_floor_pd(s), _mm256_set1_pd(t.last_cell[k] as f64));
-            _mm256_storeu_pd(frac[k].as_mut_ptr(), _mm256_sub_pd(s, cell));
-            // Offsets are small integers: exact in f64.
-            base = _mm256_fmadd_pd(cell, _mm256_set1_pd(t.stride3[k] as f64), base);
+        // Map and locate: one axis per vector, eight queries in its lanes.
+        let coords = [ln8(x[0]), (_mm256_setzero_ps(), _mm256_sqrt_ps(x[1])), ln8(x[2])];
+        let mut base = _mm256_setzero_si256();
+        let mut frac = [_mm256_setzero_ps(); 3];
+        for a in 0..3 {
+            let (f, o) = cells(coords[a].0, coords[a].1, &maps[a]);
+            frac[a] = f;
+            base = _mm256_add_epi32(base, o);
         }
-        let mut offsets = [0i32; 4];
-        _mm_storeu_si128(offsets.as_mut_ptr().cast(), _mm256_cvttpd_epi32(base));
-        let mut ln_mu = [0.0; 4];
-        for q in 0..4 {
-            let mut wp = [0.0; 4];
-            let mut wt = [0.0; 4];
-            _mm256_storeu_pd(wp.as_mut_ptr(), weights(frac[0][q]));
-            _mm256_storeu_pd(wt.as_mut_ptr(), weights(frac[1][q]));
-            let p = c.add(offsets[q] as usize);
-            ln_mu[q] = blend::<false>(p, s0, s1, &wp, &wt, weights(frac[2][q]), 0.0).0;
+        _mm256_store_si256(l.base.as_mut_ptr().cast(), base);
+        _mm256_store_ps(l.f_theta.as_mut_ptr(), frac[1]);
+        _mm256_store_ps(l.f_f.as_mut_ptr(), frac[2]);
+        for (j, out) in l.w_psi.iter_mut().enumerate() {
+            let c = |r: usize| _mm256_set1_ps(BASIS[r][j] as f32);
+            let (c0, c1, c2, c3) = (c(0), c(1), c(2), c(3));
+            let w = _mm256_fmadd_ps(
+                _mm256_fmadd_ps(_mm256_fmadd_ps(c0, frac[0], c1), frac[0], c2),
+                frac[0],
+                c3,
+            );
+            _mm256_store_ps(out.as_mut_ptr(), w);
         }
-        _mm256_storeu_pd(out.as_mut_ptr().add(i), exp4(_mm256_loadu_pd(ln_mu.as_ptr())));
-        i += 4;
+        let one = |q: usize| {
+            let f = _mm256_set_m128(_mm_broadcast_ss(&l.f_f[q]), _mm_broadcast_ss(&l.f_theta[q]));
+            let wp = [
+                _mm256_broadcast_ss(&l.w_psi[0][q]),
+                _mm256_broadcast_ss(&l.w_psi[1][q]),
+                _mm256_broadcast_ss(&l.w_psi[2][q]),
+                _mm256_broadcast_ss(&l.w_psi[3][q]),
+            ];
+            blend::<false>(k, l.base[q] as usize, f, wp).0
+        };
+        // (Not `array::from_fn` or `map`: their closures are separate
+        // functions, compiled without AVX2.)
+        let g = [one(0), one(1), one(2), one(3), one(4), one(5), one(6), one(7)];
+        // Eight horizontal sums at once, in the single kernel's order.
+        let h0 = _mm256_hadd_ps(_mm256_hadd_ps(g[0], g[1]), _mm256_hadd_ps(g[2], g[3]));
+        let h1 = _mm256_hadd_ps(_mm256_hadd_ps(g[4], g[5]), _mm256_hadd_ps(g[6], g[7]));
+        let s = _mm256_add_ps(
+            _mm256_permute2f128_ps::<0x20>(h0, h1),
+            _mm256_permute2f128_ps::<0x31>(h0, h1),
+        );
+        let [m0, m1] = widen(exp8(s));
+        _mm256_storeu_pd(out.as_mut_ptr().add(i), m0);
+        _mm256_storeu_pd(out.as_mut_ptr().add(i + 4), m1);
+        i += 8;
     }
     for j in i..n {
-        out[j] = eval::<false>(t, psi[j], theta[j], f_star[j]).0;
+        out[j] = eval::<false>(k, psi[j], theta[j], f_star[j]).0;
         if out[j].is_nan() {
             return Some(j);
         }
@@ -181,50 +379,54 @@ pub unsafe fn batch(t: &Table, psi: &[f64], theta: &[f64], f_star: &[f64], out: 
     None
 }
 
-/// [`fastmath::ln`] on four lanes, operation for operation.
+/// ln x = e·ln 2 + ln m on eight lanes of positive normal numbers: e and
+/// ln m (Cephes' `logf`, error about 3e-8).
 #[inline(always)]
-unsafe fn ln4(x: __m256d) -> __m256d {
-    let bits = _mm256_castpd_si256(x);
-    let tmp = _mm256_sub_epi64(bits, _mm256_set1_epi64x(fastmath::LN_OFFSET as i64));
-    // e = tmp >> 52 (arithmetic). AVX2 has no 64-bit arithmetic shift:
-    // shift logically (0 ≤ k < 4096), convert exactly through 2^52, and
-    // fold k ≥ 2048 back to k − 4096.
-    let k = _mm256_srli_epi64::<52>(tmp);
-    let two52 = _mm256_set1_pd(4_503_599_627_370_496.0);
-    let kf = _mm256_sub_pd(
-        _mm256_castsi256_pd(_mm256_or_si256(k, _mm256_castpd_si256(two52))),
-        two52,
+unsafe fn ln8(x: __m256) -> (__m256, __m256) {
+    // x = 2^e·m, m in [√½, √2).
+    let bits = _mm256_castps_si256(x);
+    let tmp = _mm256_sub_epi32(bits, _mm256_set1_epi32(0x3f35_04f3));
+    let e = _mm256_cvtepi32_ps(_mm256_srai_epi32::<23>(tmp));
+    let top = _mm256_and_si256(tmp, _mm256_set1_epi32(0xff80_0000u32 as i32));
+    let m = _mm256_castsi256_ps(_mm256_sub_epi32(bits, top));
+    let u = _mm256_sub_ps(m, _mm256_set1_ps(1.0));
+    let z = _mm256_mul_ps(u, u);
+    // Σ c_k·u^k (Cephes' coefficients, c_0 first) by Estrin's scheme: a
+    // short dependency chain, which a single lookup's latency needs.
+    let c = |v: f32| _mm256_set1_ps(v);
+    let pair = |hi: f32, lo: f32| _mm256_fmadd_ps(c(hi), u, c(lo));
+    let z2 = _mm256_mul_ps(z, z);
+    let p0 = _mm256_fmadd_ps(pair(-0.166_680_57, 0.200_007_14), z, pair(-0.249_999_94, 0.333_333_3));
+    let p1 = _mm256_fmadd_ps(
+        pair(-1.151_461e-1, 1.167_699_9e-1),
+        z,
+        pair(-1.242_014_1e-1, 1.424_932_3e-1),
     );
-    let wrap = _mm256_and_pd(
-        _mm256_cmp_pd::<_CMP_GE_OQ>(kf, _mm256_set1_pd(2048.0)),
-        _mm256_set1_pd(4096.0),
-    );
-    let e = _mm256_sub_pd(kf, wrap);
-    let top = _mm256_and_si256(tmp, _mm256_set1_epi64x(0xfff0_0000_0000_0000u64 as i64));
-    let m = _mm256_castsi256_pd(_mm256_sub_epi64(bits, top));
-    let one = _mm256_set1_pd(1.0);
-    let s = _mm256_div_pd(_mm256_sub_pd(m, one), _mm256_add_pd(m, one));
-    let z = _mm256_mul_pd(s, s);
-    let p = _mm256_mul_pd(fastmath::ln_poly(V(z)).0, z);
-    let two_s = _mm256_add_pd(s, s);
-    let tail = _mm256_fmadd_pd(two_s, p, _mm256_mul_pd(e, _mm256_set1_pd(fastmath::LN2_LO)));
-    _mm256_fmadd_pd(e, _mm256_set1_pd(fastmath::LN2_HI), _mm256_add_pd(two_s, tail))
+    let p = _mm256_fmadd_ps(c(7.037_683_6e-2), _mm256_mul_ps(z2, z2), _mm256_fmadd_ps(p1, z2, p0));
+    // ln m = u − z/2 + u·z·p.
+    let y = _mm256_fmadd_ps(_mm256_mul_ps(u, z), p, _mm256_mul_ps(z, _mm256_set1_ps(-0.5)));
+    (e, _mm256_add_ps(u, y))
 }
 
-/// [`fastmath::exp`] on four lanes, operation for operation.
+/// e^x on eight lanes, |x| < 80 (Cephes' `expf`, error about 1e-7 relative).
 #[inline(always)]
-unsafe fn exp4(x: __m256d) -> __m256d {
-    let shift = _mm256_set1_pd(fastmath::EXP_SHIFT);
-    let shifted = _mm256_fmadd_pd(x, _mm256_set1_pd(core::f64::consts::LOG2_E), shift);
-    let k = _mm256_sub_pd(shifted, shift);
-    let k_int = _mm256_sub_epi64(_mm256_castpd_si256(shifted), _mm256_castpd_si256(shift));
-    let nk = _mm256_sub_pd(_mm256_setzero_pd(), k);
-    let r = _mm256_fmadd_pd(
-        nk,
-        _mm256_set1_pd(fastmath::LN2_LO),
-        _mm256_fmadd_pd(nk, _mm256_set1_pd(fastmath::LN2_HI), x),
+unsafe fn exp8(x: __m256) -> __m256 {
+    let k = _mm256_round_ps::<{ _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC }>(_mm256_mul_ps(
+        x,
+        _mm256_set1_ps(core::f32::consts::LOG2_E),
+    ));
+    let r = _mm256_fnmadd_ps(k, _mm256_set1_ps(0.693_359_4), x);
+    let r = _mm256_fnmadd_ps(k, _mm256_set1_ps(-2.121_944_4e-4), r);
+    // Σ c_k·r^k by Estrin's scheme.
+    let c = |v: f32| _mm256_set1_ps(v);
+    let pair = |hi: f32, lo: f32| _mm256_fmadd_ps(c(hi), r, c(lo));
+    let r2 = _mm256_mul_ps(r, r);
+    let p = _mm256_fmadd_ps(
+        pair(1.987_569_1e-4, 1.398_199_9e-3),
+        _mm256_mul_ps(r2, r2),
+        _mm256_fmadd_ps(pair(8.333_452e-3, 4.166_579_6e-2), r2, pair(0.166_666_66, 0.5)),
     );
-    let p = fastmath::exp_poly(V(r)).0;
-    let scale = _mm256_slli_epi64::<52>(_mm256_add_epi64(k_int, _mm256_set1_epi64x(1023)));
-    _mm256_mul_pd(p, _mm256_castsi256_pd(scale))
+    let y = _mm256_fmadd_ps(r2, p, _mm256_add_ps(r, _mm256_set1_ps(1.0)));
+    let scale = _mm256_slli_epi32::<23>(_mm256_add_epi32(_mm256_cvtps_epi32(k), _mm256_set1_epi32(127)));
+    _mm256_mul_ps(y, _mm256_castsi256_ps(scale))
 }

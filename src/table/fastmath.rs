@@ -1,6 +1,6 @@
-//! `ln` and `exp` for the lookup path: branch-free, inlinable (so that they
-//! compile with FMA inside the AVX2 kernels, which also run them on four
-//! lanes) and accurate to about 1e-14 — far below the tables' 1e-4…1e-7
+//! `ln` and `exp` for the portable lookup kernel: branch-free, inlinable,
+//! plain multiplies and adds (the same result on every machine) and
+//! accurate to about 1e-14 — far below the tables' 1e-4…1e-7
 //! interpolation error. The C library's versions are out-of-line calls
 //! that cost a third of a lookup.
 
@@ -41,82 +41,41 @@ pub const EXP_SERIES: [f64; 12] = [
     1.0,
 ];
 
-/// `a·b + c`: one fused instruction in the FMA kernels (`F = true`), a
-/// plain multiply-add elsewhere (where `mul_add` would be a slow libcall).
-#[inline(always)]
-pub fn madd<const F: bool>(a: f64, b: f64, c: f64) -> f64 {
-    if F {
-        a.mul_add(b, c)
-    } else {
-        a * b + c
-    }
-}
-
-/// The arithmetic the polynomials need, so that one definition serves the
-/// scalar kernels and the four-lane one (which must agree bit for bit).
-pub trait Num: Copy {
-    /// A constant in every lane.
-    fn splat(c: f64) -> Self;
-    /// `self·b + c`.
-    fn madd(self, b: Self, c: Self) -> Self;
-    /// `self·b`.
-    fn mul(self, b: Self) -> Self;
-}
-
-/// A scalar; `F` selects fused multiply-adds.
-#[derive(Clone, Copy)]
-pub struct Scalar<const F: bool>(pub f64);
-
-impl<const F: bool> Num for Scalar<F> {
-    #[inline(always)]
-    fn splat(c: f64) -> Self {
-        Scalar(c)
-    }
-    #[inline(always)]
-    fn madd(self, b: Self, c: Self) -> Self {
-        Scalar(madd::<F>(self.0, b.0, c.0))
-    }
-    #[inline(always)]
-    fn mul(self, b: Self) -> Self {
-        Scalar(self.0 * b.0)
-    }
-}
-
 /// Σ LN_SERIES[6−k]·z^k by Estrin's scheme (short dependency chains).
 #[inline(always)]
-pub fn ln_poly<N: Num>(z: N) -> N {
-    let c = |i: usize| N::splat(LN_SERIES[6 - i]);
-    let z2 = z.mul(z);
-    let p01 = c(1).madd(z, c(0));
-    let p23 = c(3).madd(z, c(2));
-    let p45 = c(5).madd(z, c(4));
-    let p0123 = p23.madd(z2, p01);
-    let p456 = c(6).madd(z2, p45);
-    p456.madd(z2.mul(z2), p0123)
+fn ln_poly(z: f64) -> f64 {
+    let c = |i: usize| LN_SERIES[6 - i];
+    let z2 = z * z;
+    let p01 = c(1) * z + c(0);
+    let p23 = c(3) * z + c(2);
+    let p45 = c(5) * z + c(4);
+    let p0123 = p23 * z2 + p01;
+    let p456 = c(6) * z2 + p45;
+    p456 * (z2 * z2) + p0123
 }
 
 /// Σ EXP_SERIES[11−k]·r^k by Estrin's scheme.
 #[inline(always)]
-pub fn exp_poly<N: Num>(r: N) -> N {
-    let c = |i: usize| N::splat(EXP_SERIES[11 - i]);
-    let r2 = r.mul(r);
-    let r4 = r2.mul(r2);
-    let q0 = c(1).madd(r, c(0));
-    let q1 = c(3).madd(r, c(2));
-    let q2 = c(5).madd(r, c(4));
-    let q3 = c(7).madd(r, c(6));
-    let q4 = c(9).madd(r, c(8));
-    let q5 = c(11).madd(r, c(10));
-    let s0 = q1.madd(r2, q0);
-    let s1 = q3.madd(r2, q2);
-    let s2 = q5.madd(r2, q4);
-    let t0 = s1.madd(r4, s0);
-    s2.madd(r4.mul(r4), t0)
+fn exp_poly(r: f64) -> f64 {
+    let c = |i: usize| EXP_SERIES[11 - i];
+    let r2 = r * r;
+    let r4 = r2 * r2;
+    let q0 = c(1) * r + c(0);
+    let q1 = c(3) * r + c(2);
+    let q2 = c(5) * r + c(4);
+    let q3 = c(7) * r + c(6);
+    let q4 = c(9) * r + c(8);
+    let q5 = c(11) * r + c(10);
+    let s0 = q1 * r2 + q0;
+    let s1 = q3 * r2 + q2;
+    let s2 = q5 * r2 + q4;
+    let t0 = s1 * r4 + s0;
+    s2 * (r4 * r4) + t0
 }
 
 /// Natural logarithm of a positive, finite, normal `x`.
 #[inline(always)]
-pub fn ln<const F: bool>(x: f64) -> f64 {
+pub fn ln(x: f64) -> f64 {
     // x = 2^e · m with m in [√½, √2): ln x = e·ln 2 + 2·atanh(s), s = (m−1)/(m+1).
     let bits = x.to_bits();
     let tmp = bits.wrapping_sub(LN_OFFSET);
@@ -124,21 +83,21 @@ pub fn ln<const F: bool>(x: f64) -> f64 {
     let m = f64::from_bits(bits.wrapping_sub(tmp & 0xfff0_0000_0000_0000));
     let s = (m - 1.0) / (m + 1.0);
     let z = s * s;
-    let p = ln_poly(Scalar::<F>(z)).0 * z;
+    let p = ln_poly(z) * z;
     let two_s = s + s;
-    madd::<F>(e, LN2_HI, two_s + madd::<F>(two_s, p, e * LN2_LO))
+    e * LN2_HI + (two_s + (two_s * p + e * LN2_LO))
 }
 
 /// e^x for |x| < 700.
 #[inline(always)]
-pub fn exp<const F: bool>(x: f64) -> f64 {
+pub fn exp(x: f64) -> f64 {
     // x = k·ln 2 + r, |r| ≤ ½ln 2.
-    let shifted = madd::<F>(x, core::f64::consts::LOG2_E, EXP_SHIFT);
+    let shifted = x * core::f64::consts::LOG2_E + EXP_SHIFT;
     let k = shifted - EXP_SHIFT;
     // k, an integer, sits in the low mantissa bits of `shifted`.
     let k_int = shifted.to_bits().wrapping_sub(EXP_SHIFT.to_bits());
-    let r = madd::<F>(-k, LN2_LO, madd::<F>(-k, LN2_HI, x));
-    exp_poly(Scalar::<F>(r)).0 * f64::from_bits(k_int.wrapping_add(1023) << 52)
+    let r = -k * LN2_LO + (-k * LN2_HI + x);
+    exp_poly(r) * f64::from_bits(k_int.wrapping_add(1023) << 52)
 }
 
 #[cfg(test)]
@@ -148,14 +107,14 @@ mod tests {
         let mut x = 1e-300f64;
         while x < 1e300 {
             for y in [x, x * 1.234_567, x * 1.42, x * 0.71] {
-                let (a, b) = (super::ln::<false>(y), y.ln());
+                let (a, b) = (super::ln(y), y.ln());
                 assert!((a - b).abs() <= 1e-13 * b.abs().max(1.0), "ln({y}) = {a} vs {b}");
             }
             x *= 3.7;
         }
         let mut x = -700.0;
         while x < 700.0 {
-            let (a, b) = (super::exp::<false>(x), x.exp());
+            let (a, b) = (super::exp(x), x.exp());
             assert!(((a - b) / b).abs() <= 1e-13, "exp({x}) = {a} vs {b}");
             x += 0.0137;
         }

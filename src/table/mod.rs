@@ -4,6 +4,13 @@
 //! over (ln ψ, √θ, ln F*) (see [`crate::spline`]). A lookup blends 4×4×4
 //! coefficients: no allocation, no lock, no branch on the data. The
 //! interpolant is C², so μ and ∂μ/∂F* are continuous everywhere.
+//!
+//! Two kernels evaluate it. The portable one works in f64 and gives the
+//! same bits on every machine ([`Table::mu_portable`]). On x86-64 CPUs
+//! with AVX2 and FMA, tables stored in f32 (the default) are looked up by
+//! a kernel in f32 arithmetic, eight queries to a vector in a batch; its
+//! rounding moves μ by at most about 3e-6 relative ([`Table::fast_kernel`]
+//! says which kernel runs).
 
 #[cfg(target_arch = "x86_64")]
 mod avx2;
@@ -88,8 +95,9 @@ pub struct Table {
     last_cell: [usize; 3],
     /// Strides of all three axes.
     stride3: [usize; 3],
-    /// Whether the CPU runs the AVX2 + FMA kernels.
-    avx2: bool,
+    /// The fast kernel, where the CPU and the table suit it.
+    #[cfg(target_arch = "x86_64")]
+    fast: Option<avx2::Kernel>,
     ln_mu: Vec<f64>,
     h_star: Vec<f64>,
     accuracy: Accuracy,
@@ -180,7 +188,7 @@ impl Table {
             return bad("accuracy record is not finite and positive".into());
         }
         let strides = [(axes[1].nodes + 2) * (axes[2].nodes + 2), axes[2].nodes + 2];
-        Ok(Table {
+        let mut table = Table {
             axes,
             domain: Domain {
                 psi: (a.lo, a.hi),
@@ -194,13 +202,19 @@ impl Table {
             offset: axes.map(|a| -a.first / a.step),
             stride3: [strides[0], strides[1], 1],
             last_cell: axes.map(|a| a.nodes - 2),
-            avx2: cpu_has_avx2_fma(),
+            #[cfg(target_arch = "x86_64")]
+            fast: None,
             ln_mu,
             h_star,
             accuracy: payload.accuracy,
             single: matches!(payload.ln_mu, format::Coefs::F32(_)),
             build: payload.build,
-        })
+        };
+        #[cfg(target_arch = "x86_64")]
+        if let format::Coefs::F32(c) = &payload.ln_mu {
+            table.fast = avx2::Kernel::new(&table, c);
+        }
+        Ok(table)
     }
 
     /// The ranges of ψ, θ, F* this table covers, and its model constants.
@@ -235,9 +249,9 @@ impl Table {
     #[inline]
     pub fn mu(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
         #[cfg(target_arch = "x86_64")]
-        if self.avx2 {
-            // SAFETY: `avx2` is set only where the CPU has AVX2 and FMA.
-            let (mu, _) = unsafe { avx2::eval::<false>(self, psi, theta, f_star) };
+        if let Some(k) = &self.fast {
+            // SAFETY: a kernel exists only where the CPU has AVX2 and FMA.
+            let (mu, _) = unsafe { avx2::eval::<false>(k, psi, theta, f_star) };
             return if mu.is_nan() {
                 Err(self.domain_error(psi, theta, f_star))
             } else {
@@ -258,21 +272,26 @@ impl Table {
         self.mu(clamp(psi, d.psi), clamp(theta, d.theta), clamp(f_star, d.f_star))
     }
 
-    /// μ by the portable kernel (no FMA), whatever the CPU: identical on
-    /// every machine, so the accuracy a build records does not depend on
-    /// where it ran. Within ~1e-15 relative of [`mu`](Self::mu).
+    /// μ by the portable kernel: the interpolant in f64 arithmetic without
+    /// fused multiply-adds, identical on every machine (so the accuracy a
+    /// build records does not depend on where it ran).
+    ///
+    /// [`mu`](Self::mu) runs the same kernel unless the fast one applies
+    /// (x86-64 with AVX2 and FMA, and a table stored in f32), which works
+    /// in f32 and differs from this by at most about 3e-6 relative
+    /// (measured over the default table), far below the table's own error.
     pub fn mu_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
         let cell = self.cell(psi, theta, f_star)?;
-        Ok(fastmath::exp::<false>(self.blend(&self.ln_mu, &cell, &cell.wf)))
+        Ok(fastmath::exp(self.blend(&self.ln_mu, &cell, &cell.wf)))
     }
 
     /// μ and its slope ∂μ/∂F* (for implicit solvers).
     #[inline]
     pub fn mu_with_slope(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
         #[cfg(target_arch = "x86_64")]
-        let (mu, d_ln_mu) = if self.avx2 {
+        let (mu, d_ln_mu) = if let Some(k) = &self.fast {
             // SAFETY: as in `mu`.
-            let (mu, d) = unsafe { avx2::eval::<true>(self, psi, theta, f_star) };
+            let (mu, d) = unsafe { avx2::eval::<true>(k, psi, theta, f_star) };
             if mu.is_nan() {
                 return Err(self.domain_error(psi, theta, f_star));
             }
@@ -282,15 +301,37 @@ impl Table {
         };
         #[cfg(not(target_arch = "x86_64"))]
         let (mu, d_ln_mu) = self.slope_portable(psi, theta, f_star)?;
-        // ln μ is splined in v = ln F*: dμ/dF* = μ · (d ln μ/dv) / F*.
-        Ok((mu, mu * d_ln_mu * self.inv_step[2] / f_star))
+        Ok((mu, self.slope_from(mu, d_ln_mu, f_star)))
     }
 
     /// μ and d ln μ/d(cell coordinate of F*), portably.
     fn slope_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
         let cell = self.cell(psi, theta, f_star)?;
         let (ln_mu, d_ln_mu) = self.blend2(&self.ln_mu, &cell);
-        Ok((fastmath::exp::<false>(ln_mu), d_ln_mu))
+        Ok((fastmath::exp(ln_mu), d_ln_mu))
+    }
+
+    /// [`mu_with_slope`](Self::mu_with_slope) by the portable kernel (see
+    /// [`mu_portable`](Self::mu_portable)).
+    pub fn mu_with_slope_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
+        let (mu, d_ln_mu) = self.slope_portable(psi, theta, f_star)?;
+        Ok((mu, self.slope_from(mu, d_ln_mu, f_star)))
+    }
+
+    /// ∂μ/∂F* from μ and d ln μ/d(cell coordinate): ln μ is splined in
+    /// v = ln F*, so dμ/dF* = μ · (d ln μ/dv) / F*.
+    #[inline(always)]
+    fn slope_from(&self, mu: f64, d_ln_mu: f64, f_star: f64) -> f64 {
+        mu * d_ln_mu * self.inv_step[2] / f_star
+    }
+
+    /// Whether lookups on this machine run the fast f32 kernel (see
+    /// [`mu_portable`](Self::mu_portable)).
+    pub fn fast_kernel(&self) -> bool {
+        #[cfg(target_arch = "x86_64")]
+        return self.fast.is_some();
+        #[cfg(not(target_arch = "x86_64"))]
+        false
     }
 
     /// The separation h*(ψ, θ, F*) at which the surfaces carry F*.
@@ -315,9 +356,9 @@ impl Table {
             });
         }
         #[cfg(target_arch = "x86_64")]
-        let failed = if self.avx2 {
+        let failed = if let Some(k) = &self.fast {
             // SAFETY: as in `mu`; the lengths are checked above.
-            unsafe { avx2::batch(self, psi, theta, f_star, out) }
+            unsafe { avx2::batch(k, psi, theta, f_star, out) }
         } else {
             self.batch_portable(psi, theta, f_star, out)
         };
@@ -365,7 +406,7 @@ impl Table {
     #[inline(always)]
     fn cell(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
         let (base, frac) = self
-            .locate::<false>(psi, theta, f_star)
+            .locate(psi, theta, f_star)
             .ok_or_else(|| self.domain_error(psi, theta, f_star))?;
         Ok(Cell {
             base,
@@ -377,18 +418,17 @@ impl Table {
     }
 
     /// The offset of a query's 4×4×4 block and its cell offsets on the
-    /// three axes; `None` outside the domain. `F` selects fused
-    /// multiply-adds (the AVX2 kernels).
+    /// three axes; `None` outside the domain.
     #[inline(always)]
-    fn locate<const F: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Option<(usize, [f64; 3])> {
+    fn locate(&self, psi: f64, theta: f64, f_star: f64) -> Option<(usize, [f64; 3])> {
         if !self.inside(psi, theta, f_star) {
             return None;
         }
-        let coords = [fastmath::ln::<F>(psi), theta.sqrt(), fastmath::ln::<F>(f_star)];
+        let coords = [fastmath::ln(psi), theta.sqrt(), fastmath::ln(f_star)];
         let mut base = 0;
         let mut frac = [0.0; 3];
         for k in 0..3 {
-            let s = fastmath::madd::<F>(coords[k], self.inv_step[k], self.offset[k]);
+            let s = coords[k] * self.inv_step[k] + self.offset[k];
             // i64 conversions are single instructions (usize ones, and
             // floor without SSE4.1, are not); s ≥ 0 inside the domain.
             let i = (s as i64).min(self.last_cell[k] as i64);
@@ -466,16 +506,6 @@ struct Cell {
     wt: [f64; 4],
     wf: [f64; 4],
     df: [f64; 4],
-}
-
-/// Whether this CPU has AVX2 and FMA (the fast kernels).
-fn cpu_has_avx2_fma() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    false
 }
 
 /// Validates a stored axis and converts it.
