@@ -275,16 +275,6 @@ struct Located {
 #[target_feature(enable = "avx2,fma")]
 pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
     let n = out.len();
-    let lo = [
-        _mm256_set1_pd(k.lo[0]),
-        _mm256_set1_pd(k.lo[1]),
-        _mm256_set1_pd(k.lo[2]),
-    ];
-    let hi = [
-        _mm256_set1_pd(k.hi[0]),
-        _mm256_set1_pd(k.hi[1]),
-        _mm256_set1_pd(k.hi[2]),
-    ];
     let map = |a: usize| Map {
         k_hi: _mm256_set1_ps(k.k_hi[a]),
         k_lo: _mm256_set1_ps(k.k_lo[a]),
@@ -295,79 +285,23 @@ pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64
         stride: _mm256_set1_epi32(k.stride[a]),
     };
     let maps = [map(0), map(1), map(2)];
-    let mut l = Located::default();
+    let x = [psi, theta, f_star];
+    // Software pipelined: block i + 8 is located while block i is blended,
+    // two independent chains the CPU overlaps. A block with a query
+    // outside the domain ends the loop; the single-query kernel then
+    // takes over from it (and finds which query it is).
+    let mut l = [Located::default(), Located::default()];
     let mut i = 0;
-    while i + 8 <= n {
-        let mut ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-        let mut x = [_mm256_setzero_ps(); 3];
-        for (a, s) in [psi, theta, f_star].iter().enumerate() {
-            let v = [
-                _mm256_loadu_pd(s.as_ptr().add(i)),
-                _mm256_loadu_pd(s.as_ptr().add(i + 4)),
-            ];
-            // Ordered comparisons: NaN fails them.
-            for h in v {
-                ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo[a]));
-                ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi[a]));
-            }
-            x[a] = _mm256_set_m128(_mm256_cvtpd_ps(v[1]), _mm256_cvtpd_ps(v[0]));
-        }
-        if _mm256_movemask_pd(ok) != 0b1111 {
-            // Some query is out (or NaN): the single-query kernel finds it.
-            for j in i..i + 8 {
-                out[j] = eval::<false>(k, psi[j], theta[j], f_star[j]).0;
-                if out[j].is_nan() {
-                    return Some(j);
-                }
-            }
-            i += 8;
-            continue;
-        }
-        // Map and locate: one axis per vector, eight queries in its lanes.
-        let coords = [ln8(x[0]), (_mm256_setzero_ps(), _mm256_sqrt_ps(x[1])), ln8(x[2])];
-        let mut base = _mm256_setzero_si256();
-        let mut frac = [_mm256_setzero_ps(); 3];
-        for a in 0..3 {
-            let (f, o) = cells(coords[a].0, coords[a].1, &maps[a]);
-            frac[a] = f;
-            base = _mm256_add_epi32(base, o);
-        }
-        _mm256_store_si256(l.base.as_mut_ptr().cast(), base);
-        _mm256_store_ps(l.f_theta.as_mut_ptr(), frac[1]);
-        _mm256_store_ps(l.f_f.as_mut_ptr(), frac[2]);
-        for (j, out) in l.w_psi.iter_mut().enumerate() {
-            let c = |r: usize| _mm256_set1_ps(BASIS[r][j] as f32);
-            let (c0, c1, c2, c3) = (c(0), c(1), c(2), c(3));
-            let w = _mm256_fmadd_ps(
-                _mm256_fmadd_ps(_mm256_fmadd_ps(c0, frac[0], c1), frac[0], c2),
-                frac[0],
-                c3,
-            );
-            _mm256_store_ps(out.as_mut_ptr(), w);
-        }
-        let one = |q: usize| {
-            let f = _mm256_set_m128(_mm_broadcast_ss(&l.f_f[q]), _mm_broadcast_ss(&l.f_theta[q]));
-            let wp = [
-                _mm256_broadcast_ss(&l.w_psi[0][q]),
-                _mm256_broadcast_ss(&l.w_psi[1][q]),
-                _mm256_broadcast_ss(&l.w_psi[2][q]),
-                _mm256_broadcast_ss(&l.w_psi[3][q]),
-            ];
-            blend::<false>(k, l.base[q] as usize, f, wp).0
+    let mut ready = n >= 8 && locate(k, &maps, x, 0, &mut l[0]);
+    while ready {
+        let (even, odd) = l.split_at_mut(1);
+        let (this, next) = if (i / 8) % 2 == 0 {
+            (&even[0], &mut odd[0])
+        } else {
+            (&odd[0], &mut even[0])
         };
-        // (Not `array::from_fn` or `map`: their closures are separate
-        // functions, compiled without AVX2.)
-        let g = [one(0), one(1), one(2), one(3), one(4), one(5), one(6), one(7)];
-        // Eight horizontal sums at once, in the single kernel's order.
-        let h0 = _mm256_hadd_ps(_mm256_hadd_ps(g[0], g[1]), _mm256_hadd_ps(g[2], g[3]));
-        let h1 = _mm256_hadd_ps(_mm256_hadd_ps(g[4], g[5]), _mm256_hadd_ps(g[6], g[7]));
-        let s = _mm256_add_ps(
-            _mm256_permute2f128_ps::<0x20>(h0, h1),
-            _mm256_permute2f128_ps::<0x31>(h0, h1),
-        );
-        let [m0, m1] = widen(exp8(s));
-        _mm256_storeu_pd(out.as_mut_ptr().add(i), m0);
-        _mm256_storeu_pd(out.as_mut_ptr().add(i + 4), m1);
+        ready = i + 16 <= n && locate(k, &maps, x, i + 8, next);
+        finish(k, this, out.as_mut_ptr().add(i));
         i += 8;
     }
     for j in i..n {
@@ -377,6 +311,93 @@ pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64
         }
     }
     None
+}
+
+/// Checks, maps and locates the eight queries at `i` (one axis per
+/// vector, eight queries in its lanes) into `l`; false if any is outside
+/// the domain or NaN.
+#[inline(always)]
+unsafe fn locate(k: &Kernel, maps: &[Map; 3], x: [&[f64]; 3], i: usize, l: &mut Located) -> bool {
+    let mut ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    let mut v = [_mm256_setzero_ps(); 3];
+    for a in 0..3 {
+        let h = [
+            _mm256_loadu_pd(x[a].as_ptr().add(i)),
+            _mm256_loadu_pd(x[a].as_ptr().add(i + 4)),
+        ];
+        // Ordered comparisons: NaN fails them.
+        let (lo, hi) = (_mm256_set1_pd(k.lo[a]), _mm256_set1_pd(k.hi[a]));
+        for h in h {
+            ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo));
+            ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi));
+        }
+        v[a] = _mm256_set_m128(_mm256_cvtpd_ps(h[1]), _mm256_cvtpd_ps(h[0]));
+    }
+    if _mm256_movemask_pd(ok) != 0b1111 {
+        return false;
+    }
+    let coords = [ln8(v[0]), (_mm256_setzero_ps(), _mm256_sqrt_ps(v[1])), ln8(v[2])];
+    let mut base = _mm256_setzero_si256();
+    let mut frac = [_mm256_setzero_ps(); 3];
+    for a in 0..3 {
+        let (f, o) = cells(coords[a].0, coords[a].1, &maps[a]);
+        frac[a] = f;
+        base = _mm256_add_epi32(base, o);
+    }
+    _mm256_store_si256(l.base.as_mut_ptr().cast(), base);
+    _mm256_store_ps(l.f_theta.as_mut_ptr(), frac[1]);
+    _mm256_store_ps(l.f_f.as_mut_ptr(), frac[2]);
+    for (j, out) in l.w_psi.iter_mut().enumerate() {
+        let c = |r: usize| _mm256_set1_ps(BASIS[r][j] as f32);
+        let (c0, c1, c2, c3) = (c(0), c(1), c(2), c(3));
+        let w = _mm256_fmadd_ps(
+            _mm256_fmadd_ps(_mm256_fmadd_ps(c0, frac[0], c1), frac[0], c2),
+            frac[0],
+            c3,
+        );
+        _mm256_store_ps(out.as_mut_ptr(), w);
+    }
+    true
+}
+
+/// Query `q` of a located block, blended.
+#[inline(always)]
+unsafe fn one(k: &Kernel, l: &Located, q: usize) -> __m256 {
+    let f = _mm256_set_m128(_mm_broadcast_ss(&l.f_f[q]), _mm_broadcast_ss(&l.f_theta[q]));
+    let wp = [
+        _mm256_broadcast_ss(&l.w_psi[0][q]),
+        _mm256_broadcast_ss(&l.w_psi[1][q]),
+        _mm256_broadcast_ss(&l.w_psi[2][q]),
+        _mm256_broadcast_ss(&l.w_psi[3][q]),
+    ];
+    blend::<false>(k, l.base[q] as usize, f, wp).0
+}
+
+/// Blends the eight located queries and writes their μ to `out[0..8]`.
+#[inline(always)]
+unsafe fn finish(k: &Kernel, l: &Located, out: *mut f64) {
+    // (Not `array::from_fn`, `map` or a closure: those are separate
+    // functions, compiled without AVX2 and not always inlined.)
+    let g = [
+        one(k, l, 0),
+        one(k, l, 1),
+        one(k, l, 2),
+        one(k, l, 3),
+        one(k, l, 4),
+        one(k, l, 5),
+        one(k, l, 6),
+        one(k, l, 7),
+    ];
+    // Eight horizontal sums at once, in the single kernel's order.
+    let h0 = _mm256_hadd_ps(_mm256_hadd_ps(g[0], g[1]), _mm256_hadd_ps(g[2], g[3]));
+    let h1 = _mm256_hadd_ps(_mm256_hadd_ps(g[4], g[5]), _mm256_hadd_ps(g[6], g[7]));
+    let s = _mm256_add_ps(
+        _mm256_permute2f128_ps::<0x20>(h0, h1),
+        _mm256_permute2f128_ps::<0x31>(h0, h1),
+    );
+    let [m0, m1] = widen(exp8(s));
+    _mm256_storeu_pd(out, m0);
+    _mm256_storeu_pd(out.add(4), m1);
 }
 
 /// ln x = e·ln 2 + ln m on eight lanes of positive normal numbers: e and
