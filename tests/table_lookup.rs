@@ -193,7 +193,7 @@ fn the_fast_kernel_stays_within_3e_6_of_the_exact_interpolant() {
 fn batch_lookups_equal_scalar_lookups() {
     let t = table();
     let mut rng = ChaCha8Rng::seed_from_u64(3);
-    let q: Vec<(f64, f64, f64)> = (0..1000).map(|_| query(&mut rng)).collect();
+    let q: Vec<(f64, f64, f64)> = (0..1003).map(|_| query(&mut rng)).collect();
     let psi: Vec<f64> = q.iter().map(|x| x.0).collect();
     let theta: Vec<f64> = q.iter().map(|x| x.1).collect();
     let f: Vec<f64> = q.iter().map(|x| x.2).collect();
@@ -204,20 +204,29 @@ fn batch_lookups_equal_scalar_lookups() {
     }
     let err = t.mu_batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
     assert!(matches!(err, LookupError::LengthMismatch { f_star: 10, .. }));
-    let mut bad = f.clone();
-    bad[7] = f64::NAN;
-    let err = t.mu_batch(&psi, &theta, &bad, &mut out).unwrap_err();
-    assert!(
-        matches!(
-            err,
-            LookupError::BatchElement {
-                index: 7,
-                name: "f_star",
-                ..
-            }
-        ),
-        "{err}"
-    );
+    // A bad element in the first block, in a later one, in the tail; the
+    // elements before it are written as if it were not there.
+    for (len, at) in [(1000, 7), (1000, 500), (1003, 1001), (13, 12)] {
+        let mut bad = f[..len].to_vec();
+        bad[at] = f64::NAN;
+        let mut out = vec![-1.0; len];
+        let err = t.mu_batch(&psi[..len], &theta[..len], &bad, &mut out).unwrap_err();
+        assert!(
+            matches!(err, LookupError::BatchElement { index, name: "f_star", .. } if index == at),
+            "{err}"
+        );
+        for j in 0..at {
+            assert_eq!(out[j].to_bits(), t.mu(psi[j], theta[j], f[j]).unwrap().to_bits());
+        }
+    }
+    // Lengths that are not a multiple of the kernel's eight.
+    for len in [0, 1, 7, 9, 17, 1001] {
+        let mut out = vec![0.0; len];
+        t.mu_batch(&psi[..len], &theta[..len], &f[..len], &mut out).unwrap();
+        for j in 0..len {
+            assert_eq!(out[j].to_bits(), t.mu(psi[j], theta[j], f[j]).unwrap().to_bits());
+        }
+    }
 }
 
 #[test]
