@@ -49,6 +49,18 @@ fn bench_lookup(c: &mut Criterion) {
             black_box(s)
         })
     });
+    // The exact f64 kernel, which f64 tables and CPUs without AVX2 run.
+    g.bench_function("mu_portable", |b| {
+        b.iter(|| {
+            let mut s = 0.0;
+            for i in 0..N {
+                s += table
+                    .mu_portable(black_box(p[i]), black_box(t[i]), black_box(f[i]))
+                    .unwrap();
+            }
+            black_box(s)
+        })
+    });
     let mut out = vec![0.0; N];
     g.bench_function("mu_batch", |b| {
         b.iter(|| {
