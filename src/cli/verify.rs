@@ -1,7 +1,7 @@
 //! `kefric verify`: re-measure a table against direct integration.
 
 use super::{Bar, Failure};
-use ke_friction::build::measure;
+use ke_friction::build::{measure, sample_points};
 use std::path::PathBuf;
 
 /// Check a table against direct integration; exit 1 if it misses its
@@ -45,13 +45,29 @@ pub fn run(args: Args) -> Result<(), Failure> {
         acc.max_rel, acc.p99_rel, acc.samples, args.seed
     );
     super::print_worst(&acc);
-    if acc.max_rel <= recorded.tolerance {
+    // The figures above are the exact (f64) interpolant's; where this
+    // machine runs the f32 kernel, its rounding adds to them.
+    let mut worst = acc.max_rel;
+    if table.fast_kernel() {
+        let deviation = sample_points(table, args.samples, args.seed)
+            .iter()
+            .map(|&[p, t, f]| match (table.mu(p, t, f), table.mu_portable(p, t, f)) {
+                (Ok(fast), Ok(exact)) => (fast / exact - 1.0).abs(),
+                _ => f64::INFINITY,
+            })
+            .fold(0.0, f64::max);
+        println!(
+            "fast f32 kernel:   max relative deviation from the exact interpolant {deviation:.3e} (same points)"
+        );
+        worst += deviation;
+    }
+    if worst <= recorded.tolerance {
         println!("ok: within the table's tolerance {:.1e}", recorded.tolerance);
         Ok(())
     } else {
         Err(Failure::other(format!(
-            "the table misses its tolerance: max relative error {:.3e} > {:.1e}",
-            acc.max_rel, recorded.tolerance
+            "the table misses its tolerance: max relative error {worst:.3e} > {:.1e}",
+            recorded.tolerance
         )))
     }
 }
