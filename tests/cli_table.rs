@@ -23,7 +23,15 @@ fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
 fn verify_passes_on_the_embedded_table_and_a_small_build_round_trips() {
     let o = kefric(&["verify", "--samples", "200", "--quiet"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert!(String::from_utf8_lossy(&o.stdout).contains("ok: within the table's tolerance"));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("ok: within the table's tolerance"));
+    // Where the f32 kernel runs, its deviation is reported (and small).
+    let fast = out.lines().find(|l| l.starts_with("fast f32 kernel:"));
+    assert_eq!(fast.is_some(), ke_friction::Table::embedded().fast_kernel(), "{out}");
+    if let Some(line) = fast {
+        let dev: f64 = line.split_whitespace().find_map(|w| w.parse().ok()).unwrap();
+        assert!(dev > 0.0 && dev <= 3e-6, "{line}");
+    }
     let dir = std::env::temp_dir().join(format!("kefric-cli-table-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("small.kft");

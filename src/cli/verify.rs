@@ -56,9 +56,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 _ => f64::INFINITY,
             })
             .fold(0.0, f64::max);
-        println!(
-            "fast f32 kernel:   max relative deviation from the exact interpolant {deviation:.3e} (same points)"
-        );
+        println!("fast f32 kernel:   max relative deviation from the exact interpolant {deviation:.3e} (same points)");
         worst += deviation;
     }
     if worst <= recorded.tolerance {
