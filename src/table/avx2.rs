@@ -4,13 +4,15 @@
 //! It works in f32 throughout, eight queries to a vector: the maps ln ψ,
 //! √θ, ln F*, the cell search, the ψ weights and the final exponential
 //! are computed for eight queries at once; each query's 4×4×4 block is
-//! then blended with eight fused multiply-adds on pairs of coefficient
-//! rows. The single-query kernel runs the very same operations on one
-//! query, so a batch returns bit for bit what [`eval`] returns.
+//! then blended with eight fused multiply-adds, one per half of each ψ
+//! plane's 16 contiguous (θ, F*) coefficients. The single-query kernel
+//! runs the very same operations on one query (its three axes in the
+//! lanes of one vector), so a batch returns bit for bit what [`eval`]
+//! returns.
 //!
-//! f32 arithmetic adds a rounding noise of about 1e-7 relative to μ (the
-//! coefficients are f32 already); the portable f64 kernel is the exact
-//! interpolant.
+//! f32 arithmetic moves μ by up to ~3e-6 relative (mostly from summing
+//! ln μ, which reaches −9 in the default table, in f32; the coefficients
+//! are f32 already); the portable f64 kernel is the exact interpolant.
 
 use super::Table;
 use crate::spline::BASIS;
@@ -30,8 +32,8 @@ pub(super) struct Kernel {
     /// e·ln 2 + q (ln axes: x = 2^e·m, q = ln m; the √ axis: e = 0,
     /// q = √x), with K = ln 2/spacing and O = −first/spacing each split
     /// into a head with 12 fraction bits and a tail: e·K_hi + O_hi is then
-    /// exact, and the cell offset keeps f32 precision though s reaches 30
-    /// or more.
+    /// exact (|s| < 2048), and the offset in the cell keeps f32 precision
+    /// though s reaches 30 or more.
     k_hi: [f32; 8],
     k_lo: [f32; 8],
     inv_step: [f32; 8],
@@ -47,8 +49,9 @@ pub(super) struct Kernel {
 
 impl Kernel {
     /// The kernel for a table, if this CPU runs it and the table suits it:
-    /// f32 coefficients, a domain of normal f32 numbers, offsets that fit
-    /// an i32.
+    /// f32 coefficients, a domain of normal f32 numbers, fewer than 2048
+    /// nodes per axis (so that cell coordinates keep their precision in
+    /// f32, see `k_hi`) and offsets that fit an i32.
     pub(super) fn new(t: &Table, coefs: &[f32]) -> Option<Kernel> {
         if !(std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")) {
             return None;
@@ -67,7 +70,12 @@ impl Kernel {
         let len = n[0] * stride[0];
         // The block of the last cell must end inside the coefficients.
         let last_block = (0..3).map(|a| t.last_cell[a] * stride[a]).sum::<usize>() + 3 * stride[0] + 15;
-        if n[0] * s0 != coefs.len() || t.last_cell[1] + 3 >= n[1] || last_block >= len || len >= i32::MAX as usize {
+        if n[0] * s0 != coefs.len()
+            || t.last_cell[1] + 3 >= n[1]
+            || n.iter().any(|&m| m >= 2048)
+            || last_block >= len
+            || len >= i32::MAX as usize
+        {
             return None;
         }
         let mut inter = vec![0.0; len];
@@ -82,6 +90,7 @@ impl Kernel {
         }
         let lanes = |v: [f64; 3]| [v[0], v[1], v[2], 0.0, 0.0, 0.0, 0.0, 0.0].map(|v| v as f32);
         let head = |v: f64| (v * 4096.0).round() / 4096.0;
+        // K = ln 2/spacing on the ln axes, 0 on the √θ one.
         let k = [0, 1, 2].map(|a| {
             if a == 1 {
                 0.0
@@ -131,12 +140,21 @@ unsafe fn cells(e: __m256, q: __m256, m: &Map) -> (__m256, __m256i) {
     (_mm256_add_ps(_mm256_sub_ps(a, cell), b), offset)
 }
 
-/// The four B-spline weights at offset `f` (all lanes equal) in lanes
-/// 0..4 and again in 4..8, by Horner's rule.
+/// The four B-spline weights at offset `f` (an offset per half: lanes
+/// 0..4 hold the weights at f's lane 0, lanes 4..8 those at lane 4), by
+/// Horner's rule.
 #[inline(always)]
 unsafe fn weights(f: __m256) -> __m256 {
     let [a, b, c, d] = [basis(0), basis(1), basis(2), basis(3)];
     _mm256_fmadd_ps(_mm256_fmadd_ps(_mm256_fmadd_ps(a, f, b), f, c), f, d)
+}
+
+/// Their derivatives, (3A·f + 2B)·f + C.
+#[inline(always)]
+unsafe fn weight_slopes(f: __m256) -> __m256 {
+    let [a, b, c] = [basis(0), basis(1), basis(2)];
+    let three_a = _mm256_mul_ps(a, _mm256_set1_ps(3.0));
+    _mm256_fmadd_ps(_mm256_fmadd_ps(three_a, f, _mm256_add_ps(b, b)), f, c)
 }
 
 /// `v` with its lanes picked by `idx`.
@@ -159,9 +177,8 @@ unsafe fn basis(r: usize) -> __m256 {
 /// in every lane.
 #[inline(always)]
 unsafe fn blend<const SLOPE: bool>(k: &Kernel, base: usize, f: __m256, wp: [__m256; 4]) -> (__m256, __m256) {
-    // [θ weights | F* weights], by Horner's rule.
-    let [a, b, c, d] = [basis(0), basis(1), basis(2), basis(3)];
-    let w = _mm256_fmadd_ps(_mm256_fmadd_ps(_mm256_fmadd_ps(a, f, b), f, c), f, d);
+    // [θ weights | F* weights].
+    let w = weights(f);
     // Each plane's 16 floats: F* offsets 0|1, then 2|3, four θ rows each.
     let p = k.coefs.as_ptr().add(base);
     let s0 = k.stride[0] as usize;
@@ -178,8 +195,7 @@ unsafe fn blend<const SLOPE: bool>(k: &Kernel, base: usize, f: __m256, wp: [__m2
     if !SLOPE {
         return (g, g);
     }
-    let three_a = _mm256_mul_ps(a, _mm256_set1_ps(3.0));
-    let dw = _mm256_fmadd_ps(_mm256_fmadd_ps(three_a, f, _mm256_add_ps(b, b)), f, c);
+    let dw = weight_slopes(f);
     let dg = _mm256_fmadd_ps(
         t1,
         _mm256_mul_ps(wt, pick(dw, F23)),
