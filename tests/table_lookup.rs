@@ -325,3 +325,33 @@ fn the_clamping_variant_takes_the_edge_value_and_still_rejects_nan() {
         Err(LookupError::OutOfDomain { name: "theta", .. })
     ));
 }
+
+#[test]
+fn f32_tables_run_the_fast_kernel_where_the_cpu_has_avx2_and_f64_tables_the_exact_one() {
+    #[cfg(target_arch = "x86_64")]
+    let avx2 = std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma");
+    #[cfg(not(target_arch = "x86_64"))]
+    let avx2 = false;
+    assert_eq!(table().fast_kernel(), avx2);
+    let options = BuildOptions {
+        nodes: [9, 9, 9],
+        samples: 200,
+        tolerance: 0.5,
+        precision: ke_friction::build::Precision::F64,
+        ..BuildOptions::default()
+    };
+    let t = Table::from_bytes(&build(&options, &()).unwrap().bytes).unwrap();
+    assert!(!t.single_precision() && !t.fast_kernel());
+    let mut rng = ChaCha8Rng::seed_from_u64(41);
+    for _ in 0..100 {
+        let (p, th, f) = query(&mut rng);
+        assert_eq!(
+            t.mu(p, th, f).unwrap().to_bits(),
+            t.mu_portable(p, th, f).unwrap().to_bits()
+        );
+        assert_eq!(
+            t.mu_with_slope(p, th, f).unwrap(),
+            t.mu_with_slope_portable(p, th, f).unwrap()
+        );
+    }
+}
