@@ -4,7 +4,7 @@
 //! Every integral is taken in `x = (z* − d*)/ω_c*`, split at the regime
 //! boundaries (the single-asperity laws jump there) and then into panels on
 //! which the Gaussian changes by a bounded factor. Each panel gets a
-//! [`NODES`](crate::quadrature::NODES)-point Gauss rule; the panel that
+//! [`NODES`]-point Gauss rule; the panel that
 //! starts at the contact point `x = 0` gets a Gauss–Jacobi rule with the
 //! exact weight `x^b`, and the panels of the non-contact adhesion integral
 //! grow geometrically away from `z* = d*`, where its integrand varies on

@@ -204,7 +204,7 @@ unsafe fn blend<const SLOPE: bool>(k: &Kernel, base: usize, f: __m256, wp: [__m2
     (g, dg)
 }
 
-/// Σ_i wp[i]·(row i) for the 8-float rows at `p + i·s0 + off`, as a
+/// Σᵢ `wp[i]`·(row i) for the 8-float rows at `p + i·s0 + off`, as a
 /// tree, (0 + 1) + (2 + 3): a shorter chain.
 #[inline(always)]
 unsafe fn plane(p: *const f32, s0: usize, wp: &[__m256; 4], off: usize) -> __m256 {
