@@ -333,41 +333,34 @@ fn linear_chart(title: &str, y_title: &str, series: Vec<Series>, legend: Corner)
     }
 }
 
-/// Fig. 3: Fs*/P* against F*, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
-fn fig3() -> Result<Chart, FigureError> {
+/// One curve `(F*, y)` per ψ = 0.5, 1, 2, 4, 8 at θ = 0.003 (Figs. 3 and 4).
+fn psi_series(y: impl Fn(&Contact) -> f64) -> Result<Vec<Series>, FigureError> {
     let mut series = Vec::new();
     for (k, psi) in [0.5, 1.0, 2.0, 4.0, 8.0].into_iter().enumerate() {
         let m = model(psi, PAPER_THETA, Kind::KogutEtsion)?;
         series.push(Series {
             label: Some(psi_label(psi)),
-            points: paper_sweep(&m)?
-                .iter()
-                .map(|c| (c.f_star, c.fs_star / c.p_star))
-                .collect(),
+            points: paper_sweep(&m)?.iter().map(|c| (c.f_star, y(c))).collect(),
             color: k,
             dashed: false,
         });
     }
+    Ok(series)
+}
+
+/// Fig. 3: Fs*/P* against F*, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
+fn fig3() -> Result<Chart, FigureError> {
     Ok(linear_chart(
         "Fig. 3: adhesion force ratio Fₛ*/P*, θ = 0.003",
         "Fₛ*/P*",
-        series,
+        psi_series(|c| c.fs_star / c.p_star)?,
         Corner::UpperRight,
     ))
 }
 
 /// Fig. 4: Q* against F*, log–log, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
 fn fig4() -> Result<Chart, FigureError> {
-    let mut series = Vec::new();
-    for (k, psi) in [0.5, 1.0, 2.0, 4.0, 8.0].into_iter().enumerate() {
-        let m = model(psi, PAPER_THETA, Kind::KogutEtsion)?;
-        series.push(Series {
-            label: Some(psi_label(psi)),
-            points: paper_sweep(&m)?.iter().map(|c| (c.f_star, c.q_star)).collect(),
-            color: k,
-            dashed: false,
-        });
-    }
+    let series = psi_series(|c| c.q_star)?;
     let y = extent(&series).1;
     Ok(Chart {
         title: Some("Fig. 4: static friction force Q*, θ = 0.003".into()),

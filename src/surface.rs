@@ -207,35 +207,14 @@ impl Surface {
     fn contact_ke(&self, d: f64, win: Window, want_q: bool) -> ((f64, f64), f64, (f64, f64)) {
         let adh = self.adh_pref != 0.0;
         let el = self.elastic(d, win, adh, want_q);
-        let pow = |b: f64| move |_: f64, lx: f64| (b * lx).exp();
-        let ep1a = self.smooth(
-            d,
-            win,
-            X_ELASTIC,
-            X0,
-            pow(load::EP1.1),
-            adh.then_some(adhesion::EP1.1),
-            want_q,
-        );
-        let want_q2 = want_q && self.q_unclipped;
-        let ep1b = self.smooth(
-            d,
-            win,
-            X0,
-            X_EP1,
-            pow(load::EP1.1),
-            adh.then_some(adhesion::EP1.1),
-            want_q2,
-        );
-        let ep2 = self.smooth(
-            d,
-            win,
-            X_EP1,
-            X_PLASTIC,
-            pow(load::EP2.1),
-            adh.then_some(adhesion::EP2.1),
-            false,
-        );
+        // A power-law regime [xa, xc]: load x^b_load, adhesion exponent b_adh.
+        let regime = |xa: f64, xc: f64, b_load: f64, b_adh: f64, want_q: bool| {
+            let law = move |_: f64, lx: f64| (b_load * lx).exp();
+            self.smooth(d, win, xa, xc, law, adh.then_some(b_adh), want_q)
+        };
+        let ep1a = regime(X_ELASTIC, X0, load::EP1.1, adhesion::EP1.1, want_q);
+        let ep1b = regime(X0, X_EP1, load::EP1.1, adhesion::EP1.1, want_q && self.q_unclipped);
+        let ep2 = regime(X_EP1, X_PLASTIC, load::EP2.1, adhesion::EP2.1, false);
         let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, |x, _| x, None, false);
         let (a1, a2, a3) = (load::EP1.0, load::EP2.0, self.plastic);
         let p = el.p + a1 * (ep1a.p + ep1b.p) + a2 * ep2.p + a3 * pl.p;

@@ -48,65 +48,40 @@ fn single_figures_write_png_or_svg_by_extension() {
     assert!(svg.contains("CEB-type (approx.)"));
 }
 
+/// Runs `kefric plot ARGS --out DIR/NAME` and asserts it wrote a PNG.
+#[track_caller]
+fn assert_plots(dir: &TempDir, args: &[&str], name: &str) {
+    let out = dir.arg(name);
+    let o = kefric(&[&["plot"], args, &["--out", &out]].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join(name));
+}
+
 #[test]
 fn curve_overlays_the_embedded_table_and_a_table_file() {
     let dir = TempDir::new("curve");
     // `--table` alone: the embedded default table.
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "1",
-        "--theta",
-        "0.003",
-        "--table",
-        "--out",
-        &dir.arg("a.png"),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert_png(&dir.join("a.png"));
+    assert_plots(&dir, &["curve", "--psi", "1", "--theta", "0.003", "--table"], "a.png");
     // The same table from its file.
     let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft");
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "0.7",
-        "--theta",
-        "0.001",
-        "--table",
-        file,
-        "--out",
-        &dir.arg("b.png"),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert_png(&dir.join("b.png"));
+    assert_plots(
+        &dir,
+        &["curve", "--psi", "0.7", "--theta", "0.001", "--table", file],
+        "b.png",
+    );
     // Without a table, and for the CEB-type model.
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "2",
-        "--theta",
-        "0.003",
-        "--model",
-        "ceb",
-        "--out",
-        &dir.arg("c.png"),
-    ]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert_png(&dir.join("c.png"));
+    assert_plots(
+        &dir,
+        &["curve", "--psi", "2", "--theta", "0.003", "--model", "ceb"],
+        "c.png",
+    );
 }
 
 #[test]
 fn table_error_maps_the_embedded_table() {
     let dir = TempDir::new("table-error");
-    let o = kefric(&["plot", "table-error", "--out", &dir.arg("e.png")]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert_png(&dir.join("e.png"));
-    let o = kefric(&["plot", "table-error", "--theta", "0", "--out", &dir.arg("e0.png")]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    assert_png(&dir.join("e0.png"));
+    assert_plots(&dir, &["table-error"], "e.png");
+    assert_plots(&dir, &["table-error", "--theta", "0"], "e0.png");
 }
 
 #[test]
@@ -121,53 +96,24 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
     assert!(stderr(&o).contains("does not exist"), "{}", stderr(&o));
     let o = kefric(&["plot", "all", "--out-dir", &dir.arg("missing")]);
     assert_bad_input(&o, "--out-dir");
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "1",
-        "--theta",
-        "0.02",
-        "--table",
-        "--out",
-        &dir.arg("c.png"),
-    ]);
-    assert_bad_input(&o, "--theta");
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "1",
-        "--theta",
-        "0.003",
-        "--beta",
-        "0.05",
-        "--table",
-        "--out",
-        &dir.arg("c.png"),
-    ]);
-    assert_bad_input(&o, "--table");
-    let o = kefric(&[
-        "plot",
-        "curve",
-        "--psi",
-        "-1",
-        "--theta",
-        "0.003",
-        "--out",
-        &dir.arg("c.png"),
-    ]);
-    assert_bad_input(&o, "--psi");
-    let o = kefric(&["plot", "table-error", "--theta", "0.5", "--out", &dir.arg("e.png")]);
-    assert_bad_input(&o, "--theta");
-    let o = kefric(&[
-        "plot",
-        "table-error",
-        "--table",
-        &dir.arg("none.kft"),
-        "--out",
-        &dir.arg("e.png"),
-    ]);
-    assert_bad_input(&o, "--table");
+    let (c_png, e_png, none) = (dir.arg("c.png"), dir.arg("e.png"), dir.arg("none.kft"));
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["curve", "--psi", "1", "--theta", "0.02", "--table", "--out", &c_png],
+            "--theta",
+        ),
+        (
+            &[
+                "curve", "--psi", "1", "--theta", "0.003", "--beta", "0.05", "--table", "--out", &c_png,
+            ],
+            "--table",
+        ),
+        (&["curve", "--psi", "-1", "--theta", "0.003", "--out", &c_png], "--psi"),
+        (&["table-error", "--theta", "0.5", "--out", &e_png], "--theta"),
+        (&["table-error", "--table", &none, "--out", &e_png], "--table"),
+    ];
+    for (args, flag) in cases {
+        assert_bad_input(&kefric(&[&["plot"], args].concat()), flag);
+    }
     assert_eq!(std::fs::read_dir(&dir.0).unwrap().count(), 0, "bad input wrote a file");
 }

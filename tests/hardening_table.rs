@@ -39,6 +39,17 @@ fn recrc(bytes: &mut [u8]) {
     bytes[end..].copy_from_slice(&crc.to_le_bytes());
 }
 
+/// A file with the real magic and version, `payload` as its payload, its
+/// true length and a valid CRC.
+fn framed(payload: &[u8]) -> Vec<u8> {
+    let mut b = good()[..12].to_vec();
+    b.extend_from_slice(&(payload.len() as u64).to_le_bytes());
+    b.extend_from_slice(payload);
+    b.extend_from_slice(&[0; 4]);
+    recrc(&mut b);
+    b
+}
+
 /// The default table's payload, for forging consistent-looking files.
 fn payload() -> Payload {
     format::decode(good()).expect("the embedded table decodes")
@@ -65,12 +76,7 @@ fn every_truncation_is_rejected() {
     // And a header that claims exactly the truncated length (valid CRC):
     // the payload itself is cut short.
     for cut in [1, 2, 3, 7, 100, 4096, bytes.len() / 2, bytes.len() - 25] {
-        let body = &bytes[20..bytes.len() - 4 - cut];
-        let mut forged = bytes[..12].to_vec();
-        forged.extend_from_slice(&(body.len() as u64).to_le_bytes());
-        forged.extend_from_slice(body);
-        forged.extend_from_slice(&[0; 4]);
-        recrc(&mut forged);
+        let forged = framed(&bytes[20..bytes.len() - 4 - cut]);
         let e = rejected(&format!("a payload cut by {cut} bytes, CRC valid"), &forged);
         assert!(
             matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
@@ -295,11 +301,7 @@ fn payloads_that_do_not_decode_are_rejected() {
             let keep = rng.gen_range(1..40);
             body[..keep].copy_from_slice(&good()[20..20 + keep]);
         }
-        let mut b = good()[..12].to_vec();
-        b.extend_from_slice(&(len as u64).to_le_bytes());
-        b.extend_from_slice(&body);
-        b.extend_from_slice(&[0; 4]);
-        recrc(&mut b);
+        let b = framed(&body);
         let e = rejected(&format!("random payload {trial} ({len} bytes)"), &b);
         assert!(
             matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),

@@ -641,14 +641,18 @@ def cmd_generate(path='tests/data/reference_points.json'):
     def log(msg):
         print('[%6.1f s] %s' % (time.time() - t0, msg), flush=True)
 
+    def h_point(model, fit, psi, theta, h, beta=B, nu=NU, eps=EPS):
+        """Evaluates and records one point at separation h."""
+        p = Params(psi, theta, beta, nu, eps)
+        pts.append(_record(model, fit, 'h', psi, theta, beta, nu, eps, h,
+                           evaluate(model, fit, p, mpf(h))))
+
     # 24 KE consistent at h*
     for i in range(24):
         psi = _loguni(rng, 0.5, 8)
         theta = 0.0 if rng.random() < 1 / 6 else _loguni(rng, 1e-4, 1e-2)
         h = rng.uniform(0, 3)
-        p = Params(psi, theta, B, NU, EPS)
-        pts.append(_record('ke', 'consistent', 'h', psi, theta, B, NU, EPS, h,
-                           evaluate('ke', 'consistent', p, mpf(h))))
+        h_point('ke', 'consistent', psi, theta, h)
     log('24 KE consistent h points')
 
     # 8 KE consistent, non-default constants
@@ -659,9 +663,7 @@ def cmd_generate(path='tests/data/reference_points.json'):
         psi = _loguni(rng, 0.3, 12)
         theta = _loguni(rng, 1e-4, 0.03)
         h = rng.uniform(-1, 4)
-        p = Params(psi, theta, beta, nu, eps)
-        pts.append(_record('ke', 'consistent', 'h', psi, theta, beta, nu, eps, h,
-                           evaluate('ke', 'consistent', p, mpf(h))))
+        h_point('ke', 'consistent', psi, theta, h, beta, nu, eps)
     log('8 KE non-default points')
 
     # 6 as-printed
@@ -669,9 +671,7 @@ def cmd_generate(path='tests/data/reference_points.json'):
         psi = _loguni(rng, 0.5, 8)
         theta = rng.uniform(0, 0.01)
         h = rng.uniform(0, 3)
-        p = Params(psi, theta, B, NU, EPS)
-        pts.append(_record('ke', 'as-printed', 'h', psi, theta, B, NU, EPS, h,
-                           evaluate('ke', 'as-printed', p, mpf(h))))
+        h_point('ke', 'as-printed', psi, theta, h)
     log('6 as-printed points')
 
     # 6 CEB at h*
@@ -679,9 +679,7 @@ def cmd_generate(path='tests/data/reference_points.json'):
         psi = _loguni(rng, 0.5, 4)
         theta = rng.uniform(0, 0.01)
         h = rng.uniform(0, 3)
-        p = Params(psi, theta, B, NU, EPS)
-        pts.append(_record('ceb', None, 'h', psi, theta, B, NU, EPS, h,
-                           evaluate('ceb', None, p, mpf(h))))
+        h_point('ceb', None, psi, theta, h)
     log('6 CEB points')
 
     # 10 KE at F*, 3 CEB at F*
