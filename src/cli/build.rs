@@ -141,12 +141,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let acc = t.accuracy();
     let axes = t.axes();
     println!("wrote {} ({} bytes)", args.out.display(), built.bytes.len());
+    let h_nodes = options.h_star.2;
     println!(
-        "integration grid: {} psi x {} theta x {} h* = {} evaluations",
-        built.grid.psi.len(),
-        built.grid.theta.len(),
-        built.grid.h_star.len(),
-        built.grid.psi.len() * built.grid.theta.len() * built.grid.h_star.len()
+        "F*(h*) guess grid: {} psi x {} theta x {h_nodes} h* = {} force evaluations",
+        axes[0].nodes,
+        axes[1].nodes,
+        axes[0].nodes * axes[1].nodes * h_nodes
     );
     println!(
         "lookup grid: {} psi x {} theta x {} F* nodes ({} ghost nodes per end on psi and F*), {:?} coefficients",

@@ -1,7 +1,7 @@
 //! `kefric verify`: re-measure a table against direct integration.
 
 use super::{Bar, Failure};
-use ke_friction::build::{measure, sample_points};
+use ke_friction::build::{kernel_deviation, measure};
 use std::path::PathBuf;
 
 /// Check a table against direct integration; exit 1 if it misses its
@@ -49,13 +49,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     // machine runs the f32 kernel, its rounding adds to them.
     let mut worst = acc.max_rel;
     if table.fast_kernel() {
-        let deviation = sample_points(table, args.samples, args.seed)
-            .iter()
-            .map(|&[p, t, f]| match (table.mu(p, t, f), table.mu_portable(p, t, f)) {
-                (Ok(fast), Ok(exact)) => (fast / exact - 1.0).abs(),
-                _ => f64::INFINITY,
-            })
-            .fold(0.0, f64::max);
+        let deviation = kernel_deviation(table, args.samples, args.seed);
         println!("fast f32 kernel:   max relative deviation from the exact interpolant {deviation:.3e} (same points)");
         worst += deviation;
     }
