@@ -517,7 +517,7 @@ pub fn measure(table: &Table, samples: usize, seed: u64, progress: &dyn Progress
 /// coordinates, half at cell centres.
 pub fn sample_points(table: &Table, samples: usize, seed: u64) -> Vec<[f64; 3]> {
     let d = table.domain();
-    let ranges = [d.psi, d.theta, d.f_star];
+    let ranges = d.ranges();
     let axes = table.axes();
     let mut rng = SplitMix64(seed);
     (0..samples)

@@ -33,7 +33,7 @@ pub type Named = (&'static str, ArrayD<f64>);
 /// so every value is a valid lookup argument.
 pub fn table_nodes(table: &Table) -> [Vec<f64>; 3] {
     let d = table.domain();
-    let ranges = [d.psi, d.theta, d.f_star];
+    let ranges = d.ranges();
     let axes = table.axes();
     std::array::from_fn(|k| domain_nodes(&axes[k], ranges[k]))
 }
@@ -182,7 +182,7 @@ mod tests {
         let d = table.domain();
         let nodes = table_nodes(table);
         let spec = table.build_spec();
-        for (k, (values, (lo, hi))) in nodes.iter().zip([d.psi, d.theta, d.f_star]).enumerate() {
+        for (k, (values, (lo, hi))) in nodes.iter().zip(d.ranges()).enumerate() {
             assert_eq!(values.len(), spec.nodes[k] as usize);
             assert_eq!((values[0], values[values.len() - 1]), (lo, hi));
             assert!(values.windows(2).all(|w| w[0] < w[1]));

@@ -107,7 +107,7 @@ fn across_nodes(eps: f64, lookup: impl Fn(f64, f64, f64) -> (f64, f64)) -> Vec<P
         let (p, th, f) = query(&mut rng);
         for k in 0..3 {
             let a = axes[k];
-            let (lo, hi) = [d.psi, d.theta, d.f_star][k];
+            let (lo, hi) = d.ranges()[k];
             let c_lo = a.scale.forward(lo);
             let cells = ((a.scale.forward(hi) - c_lo) / a.step).round() as usize;
             let node = c_lo + rng.gen_range(1..cells) as f64 * a.step;

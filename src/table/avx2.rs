@@ -14,7 +14,7 @@
 //! ln μ, which reaches −9 in the default table, in f32; the coefficients
 //! are f32 already); the portable f64 kernel is the exact interpolant.
 
-use super::Table;
+use super::{Domain, Table};
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
@@ -42,9 +42,8 @@ pub(super) struct Kernel {
     /// The last cell and the stride in `coefs`, per axis.
     last_cell: [f32; 8],
     stride: [i32; 8],
-    /// The domain, as (lo, hi) per axis.
-    lo: [f64; 3],
-    hi: [f64; 3],
+    /// The table's domain.
+    domain: Domain,
 }
 
 impl Kernel {
@@ -56,26 +55,18 @@ impl Kernel {
         if !(std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")) {
             return None;
         }
-        let d = &t.domain;
-        let lo = [d.psi.0, d.theta.0, d.f_star.0];
-        let hi = [d.psi.1, d.theta.1, d.f_star.1];
         let normal = |v: f64| v == 0.0 || (v.abs() >= f32::MIN_POSITIVE as f64 && v.abs() <= 1e30);
-        if !lo.iter().chain(&hi).all(|&v| normal(v)) {
+        if !t.domain.ranges().iter().all(|&(lo, hi)| normal(lo) && normal(hi)) {
             return None;
         }
-        let [s0, s1] = t.strides;
-        let n = [coefs.len() / s0, s0 / s1, s1];
+        let [s0, s1, _] = t.strides;
+        let n = t.axes.map(|a| a.nodes + 2);
         let cells_theta = t.last_cell[1] + 1;
         let stride = [cells_theta * n[2] * 4, n[2] * 4, 4];
         let len = n[0] * stride[0];
         // The block of the last cell must end inside the coefficients.
         let last_block = (0..3).map(|a| t.last_cell[a] * stride[a]).sum::<usize>() + 3 * stride[0] + 15;
-        if n[0] * s0 != coefs.len()
-            || t.last_cell[1] + 3 >= n[1]
-            || n.iter().any(|&m| m >= 2048)
-            || last_block >= len
-            || len >= i32::MAX as usize
-        {
+        if n[0] * s0 != coefs.len() || n.iter().any(|&m| m >= 2048) || last_block >= len || len >= i32::MAX as usize {
             return None;
         }
         let mut inter = vec![0.0; len];
@@ -107,8 +98,7 @@ impl Kernel {
             o_lo: lanes(t.offset.map(|v| v - head(v))),
             last_cell: lanes(t.last_cell.map(|v| v as f64)),
             stride: [stride[0] as i32, stride[1] as i32, stride[2] as i32, 0, 0, 0, 0, 0],
-            lo,
-            hi,
+            domain: t.domain,
         })
     }
 }
@@ -235,8 +225,7 @@ unsafe fn widen(v: __m256) -> [__m256d; 2] {
 /// The CPU must support AVX2 and FMA (as [`Kernel::new`] checked).
 #[target_feature(enable = "avx2,fma")]
 pub(super) unsafe fn eval<const SLOPE: bool>(k: &Kernel, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
-    let x = [psi, theta, f_star];
-    if !(0..3).all(|a| x[a] >= k.lo[a] && x[a] <= k.hi[a]) {
+    if k.domain.check(psi, theta, f_star).is_err() {
         return (f64::NAN, f64::NAN);
     }
     let x = _mm256_setr_ps(psi as f32, theta as f32, f_star as f32, 1.0, 1.0, 1.0, 1.0, 1.0);
@@ -342,7 +331,8 @@ unsafe fn locate(k: &Kernel, maps: &[Map; 3], x: [&[f64]; 3], i: usize, l: &mut 
             _mm256_loadu_pd(x[a].as_ptr().add(i + 4)),
         ];
         // Ordered comparisons: NaN fails them.
-        let (lo, hi) = (_mm256_set1_pd(k.lo[a]), _mm256_set1_pd(k.hi[a]));
+        let (lo, hi) = k.domain.ranges()[a];
+        let (lo, hi) = (_mm256_set1_pd(lo), _mm256_set1_pd(hi));
         for h in h {
             ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo));
             ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi));

@@ -86,15 +86,14 @@ pub struct Domain {
 pub struct Table {
     axes: [Axis; 3],
     domain: Domain,
-    /// Strides of the coefficient arrays along ψ and θ.
-    strides: [usize; 2],
-    /// Per axis: 1/spacing and index of the last cell.
+    /// Strides of the coefficient arrays along ψ, θ, F* (the last is 1).
+    strides: [usize; 3],
+    /// Per axis: 1/spacing.
     inv_step: [f64; 3],
     /// −first/spacing: the cell coordinate is `c·inv_step + offset`.
     offset: [f64; 3],
+    /// Per axis: the index of the last cell.
     last_cell: [usize; 3],
-    /// Strides of all three axes.
-    stride3: [usize; 3],
     /// The fast kernel, where the CPU and the table suit it.
     #[cfg(target_arch = "x86_64")]
     fast: Option<avx2::Kernel>,
@@ -104,6 +103,26 @@ pub struct Table {
     build: BuildSpec,
     /// Whether the file stores f32 coefficients.
     single: bool,
+}
+
+impl Domain {
+    /// The ranges of ψ, θ and F*, in that order.
+    pub fn ranges(&self) -> [(f64, f64); 3] {
+        [self.psi, self.theta, self.f_star]
+    }
+
+    /// `Ok` for a query inside the domain; otherwise the error naming the
+    /// first argument outside its range (or NaN).
+    #[inline(always)]
+    pub fn check(&self, psi: f64, theta: f64, f_star: f64) -> Result<(), LookupError> {
+        let names = ["psi", "theta", "f_star"];
+        for ((name, value), (lo, hi)) in names.into_iter().zip([psi, theta, f_star]).zip(self.ranges()) {
+            if !(value >= lo && value <= hi) {
+                return Err(LookupError::OutOfDomain { name, value, lo, hi });
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The default table, committed in `tables/` and compiled in.
@@ -160,9 +179,6 @@ impl Table {
         params
             .validate()
             .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;
-        if b.lo < 0.0 || a.lo <= 0.0 || c.lo <= 0.0 {
-            return bad("domain starts below the model's valid range".into());
-        }
         let count = axes
             .iter()
             .map(|x| x.nodes + 2)
@@ -187,7 +203,7 @@ impl Table {
         if !(acc.tolerance.is_finite() && acc.tolerance > 0.0 && acc.max_rel.is_finite() && acc.p99_rel.is_finite()) {
             return bad("accuracy record is not finite and positive".into());
         }
-        let strides = [(axes[1].nodes + 2) * (axes[2].nodes + 2), axes[2].nodes + 2];
+        let strides = [(axes[1].nodes + 2) * (axes[2].nodes + 2), axes[2].nodes + 2, 1];
         let mut table = Table {
             axes,
             domain: Domain {
@@ -200,7 +216,6 @@ impl Table {
             strides,
             inv_step: axes.map(|a| 1.0 / a.step),
             offset: axes.map(|a| -a.first / a.step),
-            stride3: [strides[0], strides[1], 1],
             last_cell: axes.map(|a| a.nodes - 2),
             #[cfg(target_arch = "x86_64")]
             fast: None,
@@ -284,7 +299,7 @@ impl Table {
     /// (measured over the default table), far below the table's own error.
     pub fn mu_portable(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
         let cell = self.cell(psi, theta, f_star)?;
-        Ok(fastmath::exp(self.blend(&self.ln_mu, &cell, &cell.wf)))
+        Ok(fastmath::exp(self.blend(&self.ln_mu, &cell)))
     }
 
     /// μ and its slope ∂μ/∂F* (for implicit solvers).
@@ -340,7 +355,7 @@ impl Table {
     #[inline]
     pub fn h_star(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
         let cell = self.cell(psi, theta, f_star)?;
-        Ok(self.blend(&self.h_star, &cell, &cell.wf))
+        Ok(self.blend(&self.h_star, &cell))
     }
 
     /// μ for many queries at once, written into `out` (no allocation);
@@ -395,13 +410,7 @@ impl Table {
     /// Whether a query lies in the domain (false for NaN).
     #[inline(always)]
     fn inside(&self, psi: f64, theta: f64, f_star: f64) -> bool {
-        let d = &self.domain;
-        psi >= d.psi.0
-            && psi <= d.psi.1
-            && theta >= d.theta.0
-            && theta <= d.theta.1
-            && f_star >= d.f_star.0
-            && f_star <= d.f_star.1
+        self.domain.check(psi, theta, f_star).is_ok()
     }
 
     /// Locates a query: base offset and the ψ, θ, F* weights.
@@ -415,7 +424,7 @@ impl Table {
             wp: weights(frac[0]),
             wt: weights(frac[1]),
             wf: weights(frac[2]),
-            df: weight_slopes(frac[2]),
+            f_f: frac[2],
         })
     }
 
@@ -434,7 +443,7 @@ impl Table {
             // i64 conversions are single instructions (usize ones, and
             // floor without SSE4.1, are not); s ≥ 0 inside the domain.
             let i = (s as i64).min(self.last_cell[k] as i64);
-            base += i as usize * self.stride3[k];
+            base += i as usize * self.strides[k];
             frac[k] = s - i as f64;
         }
         Some((base, frac))
@@ -443,23 +452,17 @@ impl Table {
     /// The error for a query outside the domain (the first bad argument).
     #[cold]
     fn domain_error(&self, psi: f64, theta: f64, f_star: f64) -> LookupError {
-        let d = &self.domain;
-        for (name, value, (lo, hi)) in [
-            ("psi", psi, d.psi),
-            ("theta", theta, d.theta),
-            ("f_star", f_star, d.f_star),
-        ] {
-            if !(value >= lo && value <= hi) {
-                return LookupError::OutOfDomain { name, value, lo, hi };
-            }
+        match self.domain.check(psi, theta, f_star) {
+            Err(e) => e,
+            Ok(()) => unreachable!("domain_error is called only for a query outside the domain"),
         }
-        unreachable!("domain_error is called only for a query outside the domain")
     }
 
     /// Σ wp·wt·wf·c over the 4×4×4 block.
     #[inline(always)]
-    fn blend(&self, c: &[f64], cell: &Cell, wf: &[f64; 4]) -> f64 {
-        let [s0, s1] = self.strides;
+    fn blend(&self, c: &[f64], cell: &Cell) -> f64 {
+        let [s0, s1, _] = self.strides;
+        let wf = &cell.wf;
         // One bounds check for the whole block (the last element it reads).
         let _ = c[cell.base + 3 * s0 + 3 * s1 + 3];
         let mut sum = 0.0;
@@ -480,7 +483,8 @@ impl Table {
     /// The blend and its derivative along the F* coordinate, in one pass.
     #[inline(always)]
     fn blend2(&self, c: &[f64], cell: &Cell) -> (f64, f64) {
-        let [s0, s1] = self.strides;
+        let [s0, s1, _] = self.strides;
+        let df = weight_slopes(cell.f_f);
         let _ = c[cell.base + 3 * s0 + 3 * s1 + 3];
         let (mut sum, mut dsum) = (0.0, 0.0);
         for a in 0..4 {
@@ -490,7 +494,7 @@ impl Table {
                 // SAFETY: as in `blend`.
                 let row = unsafe { c.get_unchecked(o..o + 4) };
                 let r = row[0] * cell.wf[0] + row[1] * cell.wf[1] + row[2] * cell.wf[2] + row[3] * cell.wf[3];
-                let dr = row[0] * cell.df[0] + row[1] * cell.df[1] + row[2] * cell.df[2] + row[3] * cell.df[3];
+                let dr = row[0] * df[0] + row[1] * df[1] + row[2] * df[2] + row[3] * df[3];
                 plane += cell.wt[b] * r;
                 dplane += cell.wt[b] * dr;
             }
@@ -507,7 +511,8 @@ struct Cell {
     wp: [f64; 4],
     wt: [f64; 4],
     wf: [f64; 4],
-    df: [f64; 4],
+    /// The cell offset along F* (for the weights' slopes).
+    f_f: f64,
 }
 
 /// Validates a stored axis and converts it.
