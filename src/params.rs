@@ -136,7 +136,7 @@ impl Params {
         check("theta", self.theta, ">= 0", |v| v >= 0.0)?;
         check("theta", self.theta, "<= 1e3", |v| v <= THETA_MAX)?;
         check("beta", self.beta, "in (0.01928, 100]", |v| {
-            v > 0.0 && v <= BETA_MAX && 1.0 - 3.717e-4 / (v * v) > 0.0
+            v > 0.0 && v <= BETA_MAX && beta_admissible(v)
         })?;
         check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
         check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
@@ -174,9 +174,7 @@ impl Params {
         check("delta_gamma", phys.delta_gamma, ">= 0 J/m²", |v| v >= 0.0)?;
         check("epsilon", phys.epsilon, "> 0 m", positive)?;
         let beta = phys.density * phys.radius * phys.sigma;
-        check("beta (= density·radius·sigma)", beta, "> 0.01928", |v| {
-            1.0 - 3.717e-4 / (v * v) > 0.0
-        })?;
+        check("beta (= density·radius·sigma)", beta, "> 0.01928", beta_admissible)?;
         let inv_e = (1.0 - phys.nu1 * phys.nu1) / phys.e1 + (1.0 - phys.nu2 * phys.nu2) / phys.e2;
         let e = 1.0 / inv_e;
         let k = hardness_coefficient(phys.nu1);
@@ -248,9 +246,19 @@ pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
     0.454 + 0.41 * nu
 }
 
+/// `1 − 3.717e-4/β²`, the square of σ_s/σ (McCool; MODEL.md §2).
+fn sigma_s_ratio_squared(beta: f64) -> f64 {
+    1.0 - 3.717e-4 / (beta * beta)
+}
+
+/// Whether σ_s/σ is real and positive at `beta` (NaN is not).
+fn beta_admissible(beta: f64) -> bool {
+    sigma_s_ratio_squared(beta) > 0.0
+}
+
 /// `σ_s/σ = (1 − 3.717e-4/β²)^½` (McCool; MODEL.md §2).
 pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
-    (1.0 - 3.717e-4 / (beta * beta)).sqrt()
+    sigma_s_ratio_squared(beta).sqrt()
 }
 
 #[cfg(test)]

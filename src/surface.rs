@@ -49,8 +49,6 @@ pub(crate) struct Surface {
     plastic: f64,
     /// `a·r^c` of the three contact adhesion rows.
     adh_coef: [f64; 3],
-    /// Coefficient of the elastic friction row.
-    q_el: f64,
     /// Coefficient of `x^1.425·μ_ep(x)` in the 1st elastic-plastic friction row.
     q_ep: f64,
     /// Whether the friction row goes on past x₀ (the printed form).
@@ -84,7 +82,9 @@ impl Rules {
     }
 }
 
-/// The integrals at one separation, already multiplied by their prefactors.
+/// The integrals at one separation: P*, Fs*, their d*-derivatives and Q*
+/// (what [`Surface::evaluate`] returns, with their prefactors), or the raw
+/// integrals of one regime while they are summed (without).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct Sums {
     /// P*.
@@ -97,17 +97,6 @@ pub(crate) struct Sums {
     pub dfs: f64,
     /// Q* (0 unless asked for).
     pub q: f64,
-}
-
-/// Raw integrals of one regime: load, adhesion, friction, and the
-/// derivatives of the first two with respect to d*.
-#[derive(Debug, Clone, Copy, Default)]
-struct Acc {
-    p: f64,
-    dp: f64,
-    fs: f64,
-    dfs: f64,
-    q: f64,
 }
 
 /// The window of z* that matters for the contact integrals (z* ≥ d*) at
@@ -129,18 +118,25 @@ impl Window {
     }
 }
 
-/// Adds the Hertz load `x^1.5` and the elastic adhesion `x^0.298` (both
-/// models) at an interior node with weights `w`, `dw`; returns `x^1.5`.
+/// Adds a node's load `p` and, with an adhesion exponent `b_adh`, its
+/// adhesion `x^b_adh` (from `lx = ln x`), with weights `w`, `dw`.
 #[inline(always)]
-fn elastic_node(acc: &mut Acc, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
-    let p = x * x.sqrt();
+fn add_node(acc: &mut Sums, p: f64, lx: f64, w: f64, dw: f64, b_adh: Option<f64>) {
     acc.p += p * w;
     acc.dp += p * dw;
-    if adh {
-        let f = (adhesion::ELASTIC.1 * lx).exp();
+    if let Some(b) = b_adh {
+        let f = (b * lx).exp();
         acc.fs += f * w;
         acc.dfs += f * dw;
     }
+}
+
+/// Adds the Hertz load `x^1.5` and the elastic adhesion `x^0.298` (both
+/// models) at an interior node; returns `x^1.5`.
+#[inline(always)]
+fn elastic_node(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
+    let p = x * x.sqrt();
+    add_node(acc, p, lx, w, dw, adh.then_some(adhesion::ELASTIC.1));
     p
 }
 
@@ -157,9 +153,9 @@ impl Surface {
         let k = hardness_coefficient(p.nu);
         let omega = s / (p.psi * p.psi);
         let r = p.eps_star / omega;
-        let (q_el, q_ep, q_unclipped) = match p.fit {
-            Fit::Consistent => (FRICTION_ELASTIC.0, load::EP1.0, false),
-            Fit::AsPrinted => (FRICTION_ELASTIC.0, FRICTION_ELASTIC.0, true),
+        let (q_ep, q_unclipped) = match p.fit {
+            Fit::Consistent => (load::EP1.0, false),
+            Fit::AsPrinted => (FRICTION_ELASTIC.0, true),
         };
         Surface {
             kind: p.kind,
@@ -173,7 +169,6 @@ impl Surface {
             adh_pref: 2.0 * pi * p.beta * p.theta,
             plastic: 3.0 / k,
             adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2].map(|(a, _, c)| a * r.powf(c)),
-            q_el,
             q_ep,
             q_unclipped,
             rules: Rules::get(),
@@ -184,27 +179,26 @@ impl Surface {
     /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
         let win = Window::contact(d, self.s);
-        let (load_sum, fric_sum, mut adh) = match self.kind {
+        let mut c = match self.kind {
             Kind::KogutEtsion => self.contact_ke(d, win, want_q),
             Kind::CebType => self.contact_ceb(d, win, want_q),
         };
         if self.adh_pref != 0.0 {
             let (j, dj) = self.noncontact(d);
-            adh.0 += j;
-            adh.1 += dj;
+            c.fs += j;
+            c.dfs += dj;
         }
         Sums {
-            p: self.load_pref * load_sum.0,
-            dp: self.load_pref * load_sum.1,
-            fs: self.adh_pref * adh.0,
-            dfs: self.adh_pref * adh.1,
-            q: self.load_pref * fric_sum,
+            p: self.load_pref * c.p,
+            dp: self.load_pref * c.dp,
+            fs: self.adh_pref * c.fs,
+            dfs: self.adh_pref * c.dfs,
+            q: self.load_pref * c.q,
         }
     }
 
-    /// Contact integrals of MODEL.md §4: returns (load, d load), friction,
-    /// (adhesion, d adhesion), each without its prefactor.
-    fn contact_ke(&self, d: f64, win: Window, want_q: bool) -> ((f64, f64), f64, (f64, f64)) {
+    /// Contact integrals of MODEL.md §4, without their prefactors.
+    fn contact_ke(&self, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
         let el = self.elastic(d, win, adh, want_q);
         // A power-law regime [xa, xc]: load x^b_load, adhesion exponent b_adh.
@@ -222,14 +216,14 @@ impl Surface {
         let [c0, c1, c2] = self.adh_coef;
         let fs = c0 * el.fs + c1 * (ep1a.fs + ep1b.fs) + c2 * ep2.fs;
         let dfs = c0 * el.dfs + c1 * (ep1a.dfs + ep1b.dfs) + c2 * ep2.dfs;
-        let q = self.q_el * el.q + self.q_ep * (ep1a.q + ep1b.q);
-        ((p, dp), q, (fs, dfs))
+        let q = FRICTION_ELASTIC.0 * el.q + self.q_ep * (ep1a.q + ep1b.q);
+        Sums { p, dp, fs, dfs, q }
     }
 
     /// Contact integrals of the CEB-type model (MODEL.md §8): Hertz load
     /// and `μ_CEB` below x = 1, the volume-conserving load `1.5(2x − 1)`
     /// above, and the Kogut–Etsion adhesion throughout.
-    fn contact_ceb(&self, d: f64, win: Window, want_q: bool) -> ((f64, f64), f64, (f64, f64)) {
+    fn contact_ceb(&self, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
         let el = self.elastic_ceb(d, win, adh, want_q);
         let law = |x: f64, _: f64| 1.5 * (2.0 * x - 1.0);
@@ -241,22 +235,29 @@ impl Surface {
         let [c0, c1, c2] = self.adh_coef;
         let fs = c0 * el.fs + c1 * ep1.fs + c2 * ep2.fs;
         let dfs = c0 * el.dfs + c1 * ep1.dfs + c2 * ep2.dfs;
-        ((p, dp), el.q, (fs, dfs))
+        Sums {
+            p,
+            dp,
+            fs,
+            dfs,
+            q: el.q,
+        }
     }
 
     /// The elastic regime of the CEB-type model: `Q̄ = μ_CEB·P̄`, with the
     /// branch `μ2` below the crossing `xc` and `μ1` (which vanishes like
     /// `(1 − x)^½` at x = 1) above it.
-    fn elastic_ceb(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Acc {
+    fn elastic_ceb(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let xc = self.ceb.x_cross;
         let ceb = &self.ceb;
-        let mut acc = Acc::default();
+        let mut acc = Sums::default();
         let m15 = ceb.mu2_split(0.0).0;
         self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
             if first {
                 self.elastic_first_panel(d, x1, adh, &mut acc);
                 if want_q {
-                    acc.q += m15 * self.gj_moment(d, x1);
+                    // acc.p is so far just ∫₀^x1 x^1.5 φ*, the first panel's load.
+                    acc.q += m15 * acc.p;
                     self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_split(x).1 * w);
                 }
             } else {
@@ -289,8 +290,8 @@ impl Surface {
     }
 
     /// The fully elastic regime `0 ≤ x < 1` of the Kogut–Etsion model.
-    fn elastic(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Acc {
-        let mut acc = Acc::default();
+    fn elastic(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+        let mut acc = Sums::default();
         let b_fric = FRICTION_ELASTIC.1;
         self.panels(d, win, 0.0, X_ELASTIC, |x0, x1, first, _| {
             if first {
@@ -313,7 +314,7 @@ impl Surface {
 
     /// The Hertz load `x^1.5` and the elastic adhesion `x^0.298` (the same
     /// in both models) on the panel `[0, x1]`, by their Gauss–Jacobi rules.
-    fn elastic_first_panel(&self, d: f64, x1: f64, adh: bool, acc: &mut Acc) {
+    fn elastic_first_panel(&self, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
         self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
             acc.p += w;
             acc.dp += dw;
@@ -324,13 +325,6 @@ impl Surface {
                 acc.dfs += dw;
             });
         }
-    }
-
-    /// `∫₀^x1 x^1.5 φ* dz*` (the Hertz load's rule, for the CEB-type friction).
-    fn gj_moment(&self, d: f64, x1: f64) -> f64 {
-        let mut sum = 0.0;
-        self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, _| sum += w);
-        sum
     }
 
     /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
@@ -346,19 +340,13 @@ impl Surface {
         load: impl Fn(f64, f64) -> f64,
         b_adh: Option<f64>,
         want_q: bool,
-    ) -> Acc {
-        let mut acc = Acc::default();
+    ) -> Sums {
+        let mut acc = Sums::default();
         self.panels(d, win, xa, xc, |x0, x1, _, _| {
             self.legendre_panel(d, x0, x1, |x, w, dw| {
                 let lx = x.ln();
                 let p = load(x, lx);
-                acc.p += p * w;
-                acc.dp += p * dw;
-                if let Some(b) = b_adh {
-                    let f = (b * lx).exp();
-                    acc.fs += f * w;
-                    acc.dfs += f * dw;
-                }
+                add_node(&mut acc, p, lx, w, dw, b_adh);
                 if want_q {
                     acc.q += p * asperity::mu_ep(x) * w;
                 }
