@@ -17,10 +17,9 @@
 
 use crate::build::{integrate_grid, BuildError, BuildOptions, Progress};
 use crate::spline::Axis;
-use crate::table::Table;
+use crate::table::{write_atomic_with, Table};
 use ndarray::{arr0, ArrayD, IxDyn};
 use ndarray_npy::{NpzWriter, WriteNpyExt};
-use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
@@ -144,23 +143,6 @@ pub fn write_npy_dir(dir: &Path, arrays: &[Named]) -> io::Result<()> {
         })?;
     }
     Ok(())
-}
-
-/// Writes `path` through `write` into a temporary file in the same
-/// directory, then renames it over `path` (as [`crate::table::write_atomic`]);
-/// on failure the temporary file is removed and `path` is untouched.
-fn write_atomic_with(path: &Path, write: impl FnOnce(File) -> io::Result<()>) -> io::Result<()> {
-    let name = path
-        .file_name()
-        .ok_or_else(|| io::Error::new(io::ErrorKind::InvalidInput, "no file name"))?;
-    let tmp = path.with_file_name(format!(".{}.tmp-{}", name.to_string_lossy(), std::process::id()));
-    let result = File::create(&tmp)
-        .and_then(write)
-        .and_then(|()| std::fs::rename(&tmp, path));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
 }
 
 #[cfg(test)]

@@ -553,17 +553,24 @@ fn check_axis(name: &str, s: &AxisSpec) -> Result<Axis, String> {
 /// write leaves any previous file at `path` intact and no partial file
 /// under its name.
 pub fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
-    use std::io::Write;
+    write_atomic_with(path, |mut file| {
+        std::io::Write::write_all(&mut file, bytes)?;
+        file.sync_all()
+    })
+}
+
+/// [`write_atomic`] with the file's contents written (and synced) by `write`.
+pub(crate) fn write_atomic_with(
+    path: &std::path::Path,
+    write: impl FnOnce(std::fs::File) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let name = path
         .file_name()
         .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::InvalidInput, "no file name"))?;
     let tmp = path.with_file_name(format!(".{}.tmp-{}", name.to_string_lossy(), std::process::id()));
-    let result = (|| {
-        let mut file = std::fs::File::create(&tmp)?;
-        file.write_all(bytes)?;
-        file.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
+    let result = std::fs::File::create(&tmp)
+        .and_then(write)
+        .and_then(|()| std::fs::rename(&tmp, path));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
