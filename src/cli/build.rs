@@ -129,7 +129,7 @@ fn option_flag(name: &str) -> String {
 /// Runs `kefric build`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let options = args.options()?;
-    super::check_writable(&args.out)?;
+    super::check_writable("--out", &args.out, false)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;

@@ -3,7 +3,7 @@
 use super::{Bar, Failure};
 use ke_friction::build::BuildError;
 use ke_friction::export::{arrays, write_npy_dir, write_npz};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// Export a table to NumPy: its nodes (`psi`, `theta`, `f_star`), `mu` and
@@ -27,39 +27,6 @@ pub struct Args {
     pub quiet: bool,
 }
 
-/// The parent directory of `path` ("." for a bare name).
-fn parent_of(path: &Path) -> &Path {
-    match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    }
-}
-
-/// Fails early (before the integration) if the output cannot be written.
-fn check_output(flag: &str, path: &Path, want_dir: bool) -> Result<(), Failure> {
-    if want_dir {
-        if path.exists() && !path.is_dir() {
-            return Err(Failure::input(format!(
-                "{flag}: {} exists and is not a directory",
-                path.display()
-            )));
-        }
-    } else if path.is_dir() {
-        return Err(Failure::input(format!("{flag}: {} is a directory", path.display())));
-    }
-    if path.file_name().is_none() {
-        return Err(Failure::input(format!("{flag}: {} has no file name", path.display())));
-    }
-    let parent = parent_of(path);
-    if !parent.is_dir() {
-        return Err(Failure::input(format!(
-            "{flag}: directory {} does not exist",
-            parent.display()
-        )));
-    }
-    Ok(())
-}
-
 /// Runs `kefric export`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let (flag, path, want_dir) = match (&args.npz, &args.npy) {
@@ -69,7 +36,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let table = super::table(args.table.as_deref())?;
     let table = &*table;
-    check_output(flag, path, want_dir)?;
+    super::check_writable(flag, path, want_dir)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let named = arrays(table, &bar).map_err(|e| match (&e, &args.table) {

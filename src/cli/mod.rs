@@ -149,11 +149,23 @@ pub fn flag_of(field: &str) -> String {
     format!("--{}", field.replace('_', "-"))
 }
 
-/// Fails early (before long work) if `path` cannot be written: a directory,
-/// or a parent directory that does not exist.
-pub fn check_writable(path: &std::path::Path) -> Result<(), Failure> {
-    if path.is_dir() {
-        return Err(Failure::input(format!("--out: {} is a directory", path.display())));
+/// Fails early (before long work) if `path`, given by `flag`, cannot be
+/// written: a directory where a file is wanted (or a file where a
+/// directory is, with `want_dir`), no file name, or a parent directory
+/// that does not exist.
+pub fn check_writable(flag: &str, path: &std::path::Path, want_dir: bool) -> Result<(), Failure> {
+    if want_dir {
+        if path.exists() && !path.is_dir() {
+            return Err(Failure::input(format!(
+                "{flag}: {} exists and is not a directory",
+                path.display()
+            )));
+        }
+    } else if path.is_dir() {
+        return Err(Failure::input(format!("{flag}: {} is a directory", path.display())));
+    }
+    if path.file_name().is_none() {
+        return Err(Failure::input(format!("{flag}: {} has no file name", path.display())));
     }
     let parent = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
@@ -161,7 +173,7 @@ pub fn check_writable(path: &std::path::Path) -> Result<(), Failure> {
     };
     if !parent.is_dir() {
         return Err(Failure::input(format!(
-            "--out: directory {} does not exist",
+            "{flag}: directory {} does not exist",
             parent.display()
         )));
     }

@@ -121,7 +121,7 @@ fn figure(fig: Figure, out: &Path) -> Result<(), Failure> {
 /// Checks `--out` before any work: a known extension, a writable place.
 fn output(path: &Path) -> Result<&Path, Failure> {
     Format::from_path(path).map_err(|e| Failure::input(format!("--out: {e}")))?;
-    check_writable(path)?;
+    check_writable("--out", path, false)?;
     Ok(path)
 }
 
