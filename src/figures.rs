@@ -26,10 +26,7 @@ use std::path::{Path, PathBuf};
 pub const SIZE: (u32, u32) = (1000, 750);
 /// Separations sampled per curve over 0 ≤ h* ≤ 3.
 pub const H_SAMPLES: usize = 200;
-/// The paper's range of separations.
-pub const H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
-/// The paper's largest load.
-pub const F_STAR_MAX: f64 = 0.1;
+pub use crate::validate::{F_STAR_MAX, H_STAR_RANGE};
 /// θ of the paper's figures 3–5.
 pub const PAPER_THETA: f64 = 0.003;
 
@@ -245,10 +242,8 @@ pub fn save_all(dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
 /// over 0 ≤ h* ≤ 3 with 0 < F* ≤ 0.1, ordered by decreasing F*; if F* > 0.1
 /// at h* = 0, the contact at F* = 0.1 exactly comes first.
 pub fn paper_sweep(model: &Model) -> Result<Vec<Contact>, FigureError> {
-    let (a, b) = H_STAR_RANGE;
     let mut out = Vec::with_capacity(H_SAMPLES + 1);
-    for i in 0..H_SAMPLES {
-        let h = a + (b - a) * i as f64 / (H_SAMPLES - 1) as f64;
+    for (i, h) in crate::validate::h_points(H_SAMPLES).enumerate() {
         let c = model.at_h_star(h)?;
         if c.f_star > F_STAR_MAX {
             continue;
@@ -452,16 +447,16 @@ fn constants(p: &Params) -> String {
     )
 }
 
-/// μ against F* for `params` by direct integration over the paper's range;
+/// μ against F* for `model` by direct integration over the paper's range;
 /// with a table, its lookup overlaid (dashed) and, in a lower panel, the
 /// relative difference μ_table/μ − 1 at the loads inside the table's domain.
-pub fn curve(params: Params, table: Option<&Table>) -> Result<Page, FigureError> {
-    let model = Model::new(params)?;
+pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> {
+    let params = *model.params();
     let name = match params.kind {
         Kind::KogutEtsion => "Kogut–Etsion",
         Kind::CebType => "CEB-type (approx.)",
     };
-    let direct = mu_points(&model)?;
+    let direct = mu_points(model)?;
     if direct.is_empty() {
         return Err(FigureError::Empty(format!(
             "F* is not positive anywhere on 0 <= h* <= 3 for psi = {}, theta = {}",

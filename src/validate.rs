@@ -83,14 +83,16 @@ pub enum ValidateError {
 /// The contact at each of the [`SWEEP_POINTS`] separations
 /// h* = 0, 0.01, …, 3.
 pub fn sweep_h(model: &Model) -> Vec<Contact> {
-    let (a, b) = H_STAR_RANGE;
-    let last = (SWEEP_POINTS - 1) as f64;
-    (0..SWEEP_POINTS)
-        .map(|i| {
-            let h = a + (b - a) * i as f64 / last;
-            model.at_h_star(h).expect("h* in [0, 3] is always in range")
-        })
+    h_points(SWEEP_POINTS)
+        .map(|h| model.at_h_star(h).expect("h* in [0, 3] is always in range"))
         .collect()
+}
+
+/// `n` evenly spaced separations over [`H_STAR_RANGE`], both ends included.
+pub fn h_points(n: usize) -> impl Iterator<Item = f64> {
+    let (a, b) = H_STAR_RANGE;
+    let last = (n - 1) as f64;
+    (0..n).map(move |i| a + (b - a) * i as f64 / last)
 }
 
 /// Least-squares slope of `ys` on `xs`.

@@ -81,9 +81,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         What::Fig6(o) => figure(Figure::Fig6, &o.out),
         What::Curve(a) => {
             let out = output(&a.out.out)?;
-            let params = *a.model.model()?.params();
+            let model = a.model.model()?;
             let table = a.table.as_ref().map(|path| super::table(path.as_deref())).transpose()?;
-            let page = figures::curve(params, table.as_deref()).map_err(failure)?;
+            let page = figures::curve(&model, table.as_deref()).map_err(failure)?;
             page.save(out).map_err(failure)?;
             wrote(out);
             Ok(())
