@@ -465,10 +465,11 @@ pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> 
     }
     let mut series = vec![Series {
         label: Some(format!("{name}, direct integration")),
-        points: direct.clone(),
+        points: direct,
         color: 0,
         dashed: false,
     }];
+    // The lower panel's y axis and curve (its x axis is the upper one's).
     let mut bottom = None;
     if let Some(table) = table {
         let d = table.domain();
@@ -487,7 +488,7 @@ pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> 
         table.mu(params.psi, params.theta, d.f_star.0)?;
         let mut looked = Vec::new();
         let mut rel = Vec::new();
-        for &(f, mu) in &direct {
+        for &(f, mu) in &series[0].points {
             if f >= d.f_star.0 && f <= d.f_star.1 {
                 let t = table.mu(params.psi, params.theta, f)?;
                 looked.push((f, t));
@@ -512,23 +513,20 @@ pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> 
         let unit = 10f64.powi(k);
         let step = nice_step(worst / unit / 2.5);
         let span = (worst / unit / step).ceil() * step * 1.05;
-        bottom = Some(Chart {
-            title: None,
-            x: f_axis(&series),
-            y: Axis {
+        bottom = Some((
+            Axis {
                 title: format!("(μ_table/μ − 1)/{}", pow10(k)),
                 log: false,
                 range: (-span, span),
                 ticks: None,
             },
-            series: vec![Series {
+            Series {
                 label: None,
                 points: rel.iter().map(|&(f, r)| (f, r / unit)).collect(),
                 color: 1,
                 dashed: false,
-            }],
-            legend: Corner::UpperRight,
-        });
+            },
+        ));
     }
     let (_, (ylo, yhi)) = extent(&series);
     let y = if yhi / ylo > 10.0 {
@@ -547,9 +545,15 @@ pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> 
         }
     };
     let mut x = f_axis(&series);
-    if let Some(b) = bottom.as_mut() {
+    let bottom = bottom.map(|(y, curve)| Chart {
+        title: None,
+        x: x.clone(),
+        y,
+        series: vec![curve],
+        legend: Corner::UpperRight,
+    });
+    if bottom.is_some() {
         // One axis title, under the lower panel.
-        b.x = x.clone();
         x.title.clear();
     }
     Ok(Page {
