@@ -265,17 +265,27 @@ impl Table {
     /// exact interpolant [`mu_portable`](Self::mu_portable).
     #[inline]
     pub fn mu(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
+        match self.fast::<false>(psi, theta, f_star) {
+            Some(r) => r.map(|(mu, _)| mu),
+            None => self.mu_portable(psi, theta, f_star),
+        }
+    }
+
+    /// The fast kernel's μ and (if `SLOPE`) d ln μ/d(cell coordinate of
+    /// F*), or `None` where it does not run.
+    #[inline(always)]
+    fn fast<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Option<Result<(f64, f64), LookupError>> {
         #[cfg(target_arch = "x86_64")]
         if let Some(k) = &self.fast {
             // SAFETY: a kernel exists only where the CPU has AVX2 and FMA.
-            let (mu, _) = unsafe { avx2::eval::<false>(k, psi, theta, f_star) };
-            return if mu.is_nan() {
+            let (mu, d) = unsafe { avx2::eval::<SLOPE>(k, psi, theta, f_star) };
+            return Some(if mu.is_nan() {
                 Err(self.domain_error(psi, theta, f_star))
             } else {
-                Ok(mu)
-            };
+                Ok((mu, d))
+            });
         }
-        self.mu_portable(psi, theta, f_star)
+        None
     }
 
     /// μ with each argument first clamped into the table's range — an
@@ -305,19 +315,10 @@ impl Table {
     /// μ and its slope ∂μ/∂F* (for implicit solvers).
     #[inline]
     pub fn mu_with_slope(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
-        #[cfg(target_arch = "x86_64")]
-        let (mu, d_ln_mu) = if let Some(k) = &self.fast {
-            // SAFETY: as in `mu`.
-            let (mu, d) = unsafe { avx2::eval::<true>(k, psi, theta, f_star) };
-            if mu.is_nan() {
-                return Err(self.domain_error(psi, theta, f_star));
-            }
-            (mu, d)
-        } else {
-            self.slope_portable(psi, theta, f_star)?
+        let (mu, d_ln_mu) = match self.fast::<true>(psi, theta, f_star) {
+            Some(r) => r?,
+            None => self.slope_portable(psi, theta, f_star)?,
         };
-        #[cfg(not(target_arch = "x86_64"))]
-        let (mu, d_ln_mu) = self.slope_portable(psi, theta, f_star)?;
         Ok((mu, self.slope_from(mu, d_ln_mu, f_star)))
     }
 
@@ -372,15 +373,14 @@ impl Table {
                 out: n,
             });
         }
-        #[cfg(target_arch = "x86_64")]
-        let failed = if let Some(k) = &self.fast {
-            // SAFETY: as in `mu`; the lengths are checked above.
-            unsafe { avx2::batch(k, psi, theta, f_star, out) }
-        } else {
+        let failed = 'run: {
+            #[cfg(target_arch = "x86_64")]
+            if let Some(k) = &self.fast {
+                // SAFETY: as in `fast`; the lengths are checked above.
+                break 'run unsafe { avx2::batch(k, psi, theta, f_star, out) };
+            }
             self.batch_portable(psi, theta, f_star, out)
         };
-        #[cfg(not(target_arch = "x86_64"))]
-        let failed = self.batch_portable(psi, theta, f_star, out);
         match failed {
             None => Ok(()),
             Some(i) => match self.domain_error(psi[i], theta[i], f_star[i]) {
