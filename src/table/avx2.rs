@@ -42,6 +42,10 @@ pub(super) struct Kernel {
     /// The last cell and the stride in `coefs`, per axis.
     last_cell: [f32; 8],
     stride: [i32; 8],
+    /// The domain's lower and upper ends (ψ, θ, F*, then 1 in both for
+    /// the padding lane of a single query).
+    lo: [f64; 4],
+    hi: [f64; 4],
     /// The table's domain.
     domain: Domain,
 }
@@ -98,6 +102,8 @@ impl Kernel {
             o_lo: lanes(t.offset.map(|v| v - head(v))),
             last_cell: lanes(t.last_cell.map(|v| v as f64)),
             stride: [stride[0] as i32, stride[1] as i32, stride[2] as i32, 0, 0, 0, 0, 0],
+            lo: [t.domain.psi.0, t.domain.theta.0, t.domain.f_star.0, 1.0],
+            hi: [t.domain.psi.1, t.domain.theta.1, t.domain.f_star.1, 1.0],
             domain: t.domain,
         })
     }
@@ -225,10 +231,16 @@ unsafe fn widen(v: __m256) -> [__m256d; 2] {
 /// The CPU must support AVX2 and FMA (as [`Kernel::new`] checked).
 #[target_feature(enable = "avx2,fma")]
 pub(super) unsafe fn eval<const SLOPE: bool>(k: &Kernel, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
-    if k.domain.check(psi, theta, f_star).is_err() {
+    // The domain check, all three at once (ordered comparisons: NaN fails).
+    let xd = _mm256_setr_pd(psi, theta, f_star, 1.0);
+    let ok = _mm256_and_pd(
+        _mm256_cmp_pd::<_CMP_GE_OQ>(xd, _mm256_loadu_pd(k.lo.as_ptr())),
+        _mm256_cmp_pd::<_CMP_LE_OQ>(xd, _mm256_loadu_pd(k.hi.as_ptr())),
+    );
+    if _mm256_movemask_pd(ok) != 0b1111 {
         return (f64::NAN, f64::NAN);
     }
-    let x = _mm256_setr_ps(psi as f32, theta as f32, f_star as f32, 1.0, 1.0, 1.0, 1.0, 1.0);
+    let x = _mm256_set_m128(_mm_set1_ps(1.0), _mm256_cvtpd_ps(xd));
     let (e, ln_m) = ln8(x);
     let e = _mm256_blend_ps::<0b10>(e, _mm256_setzero_ps());
     let q = _mm256_blend_ps::<0b10>(ln_m, _mm256_sqrt_ps(x));
