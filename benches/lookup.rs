@@ -70,6 +70,15 @@ fn bench_lookup(c: &mut Criterion) {
             black_box(&out);
         })
     });
+    let mut pairs = vec![(0.0, 0.0); N];
+    g.bench_function("mu_with_slope_batch", |b| {
+        b.iter(|| {
+            table
+                .mu_with_slope_batch(black_box(&p), black_box(&t), black_box(&f), &mut pairs)
+                .unwrap();
+            black_box(&pairs);
+        })
+    });
     g.finish();
 
     // The peer: interpn's regular-grid multicubic interpolation on the very

@@ -201,43 +201,71 @@ fn the_fast_kernel_stays_within_3e_6_of_the_exact_interpolant() {
     );
 }
 
-#[test]
-fn batch_lookups_equal_scalar_lookups() {
-    let t = table();
+/// A batch form checked against its scalar form (`key` gives a result's
+/// bits): equal bit for bit on random queries and on lengths that are not
+/// a multiple of the fast kernel's eight; a length mismatch is an error;
+/// a bad element in the first block, a later one or the tail is reported
+/// by index, with the elements before it written as if it were not there.
+fn check_batch<T: Copy + Default>(
+    batch: impl Fn(&[f64], &[f64], &[f64], &mut [T]) -> Result<(), LookupError>,
+    single: impl Fn(f64, f64, f64) -> T,
+    key: impl Fn(T) -> (u64, u64),
+) {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
     let q: Vec<(f64, f64, f64)> = (0..1003).map(|_| query(&mut rng)).collect();
     let psi: Vec<f64> = q.iter().map(|x| x.0).collect();
     let theta: Vec<f64> = q.iter().map(|x| x.1).collect();
     let f: Vec<f64> = q.iter().map(|x| x.2).collect();
-    let mut out = vec![0.0; q.len()];
-    t.mu_batch(&psi, &theta, &f, &mut out).unwrap();
-    for (i, &(p, th, ff)) in q.iter().enumerate() {
-        assert_eq!(out[i].to_bits(), t.mu(p, th, ff).unwrap().to_bits());
+    let same = |out: &[T], upto: usize| {
+        for j in 0..upto {
+            assert_eq!(key(out[j]), key(single(psi[j], theta[j], f[j])), "element {j}");
+        }
+    };
+    for len in [0, 1, 7, 9, 17, 1001, 1003] {
+        let mut out = vec![T::default(); len];
+        batch(&psi[..len], &theta[..len], &f[..len], &mut out).unwrap();
+        same(&out, len);
     }
-    let err = t.mu_batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
+    let mut out = vec![T::default(); q.len()];
+    let err = batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
     assert!(matches!(err, LookupError::LengthMismatch { f_star: 10, .. }));
-    // A bad element in the first block, in a later one, in the tail; the
-    // elements before it are written as if it were not there.
     for (len, at) in [(1000, 7), (1000, 500), (1003, 1001), (13, 12)] {
         let mut bad = f[..len].to_vec();
         bad[at] = f64::NAN;
-        let mut out = vec![-1.0; len];
-        let err = t.mu_batch(&psi[..len], &theta[..len], &bad, &mut out).unwrap_err();
+        let mut out = vec![T::default(); len];
+        let err = batch(&psi[..len], &theta[..len], &bad, &mut out).unwrap_err();
         assert!(
             matches!(err, LookupError::BatchElement { index, name: "f_star", .. } if index == at),
             "{err}"
         );
-        for j in 0..at {
-            assert_eq!(out[j].to_bits(), t.mu(psi[j], theta[j], f[j]).unwrap().to_bits());
-        }
+        same(&out, at);
     }
-    // Lengths that are not a multiple of the kernel's eight.
-    for len in [0, 1, 7, 9, 17, 1001] {
-        let mut out = vec![0.0; len];
-        t.mu_batch(&psi[..len], &theta[..len], &f[..len], &mut out).unwrap();
-        for j in 0..len {
-            assert_eq!(out[j].to_bits(), t.mu(psi[j], theta[j], f[j]).unwrap().to_bits());
-        }
+}
+
+/// Both batch forms on both kernels: the default (f32) table, which runs
+/// the fast kernel on AVX2 machines, and an f64 table, which runs the
+/// portable one.
+#[test]
+fn batch_lookups_equal_scalar_lookups() {
+    let options = BuildOptions {
+        nodes: [9, 9, 9],
+        samples: 200,
+        tolerance: 1.0,
+        precision: ke_friction::build::Precision::F64,
+        ..BuildOptions::default()
+    };
+    let f64_table = Table::from_bytes(&build(&options, &()).unwrap().bytes).unwrap();
+    for t in [table(), &f64_table] {
+        check_batch(
+            |p, th, f, out| t.mu_batch(p, th, f, out),
+            |p, th, f| t.mu(p, th, f).unwrap(),
+            |m: f64| (m.to_bits(), 0),
+        );
+        check_batch(
+            |p, th, f, out| t.mu_with_slope_batch(p, th, f, out),
+            |p, th, f| t.mu_with_slope(p, th, f).unwrap(),
+            |(m, s): (f64, f64)| (m.to_bits(), s.to_bits()),
+        );
     }
 }
 

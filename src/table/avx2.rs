@@ -284,14 +284,33 @@ struct Located {
     w_psi: [[f32; 8]; 4],
 }
 
-/// μ for every query, eight at a time; returns the index of the first
-/// query outside the domain (`out` is then partly written).
+/// Where a batch writes: μ alone, or μ with d ln μ/d(cell coordinate of
+/// F*) (which [`Table`] then turns into ∂μ/∂F*).
+pub(super) enum Out<'a> {
+    /// μ.
+    Mu(&'a mut [f64]),
+    /// (μ, d ln μ/d(cell coordinate)).
+    WithSlope(&'a mut [(f64, f64)]),
+}
+
+/// μ (and, if `SLOPE`, its slope) for every query, eight at a time;
+/// returns the index of the first query outside the domain (`out` is then
+/// partly written). `out` must be `Out::WithSlope` exactly when `SLOPE`.
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA; the slices have `out`'s length.
 #[target_feature(enable = "avx2,fma")]
-pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
-    let n = out.len();
+pub(super) unsafe fn batch<const SLOPE: bool>(
+    k: &Kernel,
+    psi: &[f64],
+    theta: &[f64],
+    f_star: &[f64],
+    mut out: Out,
+) -> Option<usize> {
+    let n = match &out {
+        Out::Mu(o) => o.len(),
+        Out::WithSlope(o) => o.len(),
+    };
     let map = |a: usize| Map {
         k_hi: _mm256_set1_ps(k.k_hi[a]),
         k_lo: _mm256_set1_ps(k.k_lo[a]),
@@ -318,13 +337,33 @@ pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64
             (&odd[0], &mut even[0])
         };
         ready = i + 16 <= n && locate(k, &maps, x, i + 8, next);
-        finish(k, this, out.as_mut_ptr().add(i));
+        let (mu, d) = finish::<SLOPE>(k, this);
+        match &mut out {
+            Out::Mu(o) => {
+                _mm256_storeu_pd(o.as_mut_ptr().add(i), mu[0]);
+                _mm256_storeu_pd(o.as_mut_ptr().add(i + 4), mu[1]);
+            }
+            Out::WithSlope(o) => {
+                let (mut m, mut s) = ([0.0; 8], [0.0; 8]);
+                _mm256_storeu_pd(m.as_mut_ptr(), mu[0]);
+                _mm256_storeu_pd(m.as_mut_ptr().add(4), mu[1]);
+                _mm256_storeu_pd(s.as_mut_ptr(), d[0]);
+                _mm256_storeu_pd(s.as_mut_ptr().add(4), d[1]);
+                for j in 0..8 {
+                    o[i + j] = (m[j], s[j]);
+                }
+            }
+        }
         i += 8;
     }
     for j in i..n {
-        out[j] = eval::<false>(k, psi[j], theta[j], f_star[j]).0;
-        if out[j].is_nan() {
+        let r = eval::<SLOPE>(k, psi[j], theta[j], f_star[j]);
+        if r.0.is_nan() {
             return Some(j);
+        }
+        match &mut out {
+            Out::Mu(o) => o[j] = r.0,
+            Out::WithSlope(o) => o[j] = r,
         }
     }
     None
@@ -378,9 +417,9 @@ unsafe fn locate(k: &Kernel, maps: &[Map; 3], x: [&[f64]; 3], i: usize, l: &mut 
     true
 }
 
-/// Query `q` of a located block, blended.
+/// Query `q` of a located block, blended (see [`blend`]).
 #[inline(always)]
-unsafe fn one(k: &Kernel, l: &Located, q: usize) -> __m256 {
+unsafe fn one<const SLOPE: bool>(k: &Kernel, l: &Located, q: usize) -> (__m256, __m256) {
     let f = _mm256_set_m128(_mm_broadcast_ss(&l.f_f[q]), _mm_broadcast_ss(&l.f_theta[q]));
     let wp = [
         _mm256_broadcast_ss(&l.w_psi[0][q]),
@@ -388,34 +427,43 @@ unsafe fn one(k: &Kernel, l: &Located, q: usize) -> __m256 {
         _mm256_broadcast_ss(&l.w_psi[2][q]),
         _mm256_broadcast_ss(&l.w_psi[3][q]),
     ];
-    blend::<false>(k, l.base[q] as usize, f, wp).0
+    blend::<SLOPE>(k, l.base[q] as usize, f, wp)
 }
 
-/// Blends the eight located queries and writes their μ to `out[0..8]`.
+/// The lane sums of eight vectors, in the single kernel's order.
 #[inline(always)]
-unsafe fn finish(k: &Kernel, l: &Located, out: *mut f64) {
-    // (Not `array::from_fn`, `map` or a closure: those are separate
-    // functions, compiled without AVX2 and not always inlined.)
-    let g = [
-        one(k, l, 0),
-        one(k, l, 1),
-        one(k, l, 2),
-        one(k, l, 3),
-        one(k, l, 4),
-        one(k, l, 5),
-        one(k, l, 6),
-        one(k, l, 7),
-    ];
-    // Eight horizontal sums at once, in the single kernel's order.
+unsafe fn sums(g: &[__m256; 8]) -> __m256 {
     let h0 = _mm256_hadd_ps(_mm256_hadd_ps(g[0], g[1]), _mm256_hadd_ps(g[2], g[3]));
     let h1 = _mm256_hadd_ps(_mm256_hadd_ps(g[4], g[5]), _mm256_hadd_ps(g[6], g[7]));
-    let s = _mm256_add_ps(
+    _mm256_add_ps(
         _mm256_permute2f128_ps::<0x20>(h0, h1),
         _mm256_permute2f128_ps::<0x31>(h0, h1),
-    );
-    let [m0, m1] = widen(exp8(s));
-    _mm256_storeu_pd(out, m0);
-    _mm256_storeu_pd(out.add(4), m1);
+    )
+}
+
+/// Blends the eight located queries: their μ and (if `SLOPE`, else μ
+/// again) d ln μ/d(cell coordinate of F*), in f64.
+#[inline(always)]
+unsafe fn finish<const SLOPE: bool>(k: &Kernel, l: &Located) -> ([__m256d; 2], [__m256d; 2]) {
+    // (Not `array::from_fn`, `map` or a closure: those are separate
+    // functions, compiled without AVX2 and not always inlined.)
+    let r = [
+        one::<SLOPE>(k, l, 0),
+        one::<SLOPE>(k, l, 1),
+        one::<SLOPE>(k, l, 2),
+        one::<SLOPE>(k, l, 3),
+        one::<SLOPE>(k, l, 4),
+        one::<SLOPE>(k, l, 5),
+        one::<SLOPE>(k, l, 6),
+        one::<SLOPE>(k, l, 7),
+    ];
+    let g = [r[0].0, r[1].0, r[2].0, r[3].0, r[4].0, r[5].0, r[6].0, r[7].0];
+    let mu = widen(exp8(sums(&g)));
+    if !SLOPE {
+        return (mu, mu);
+    }
+    let dg = [r[0].1, r[1].1, r[2].1, r[3].1, r[4].1, r[5].1, r[6].1, r[7].1];
+    (mu, widen(sums(&dg)))
 }
 
 /// ln x = e·ln 2 + ln m on eight lanes of positive normal numbers: e and

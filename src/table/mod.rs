@@ -364,23 +364,68 @@ impl Table {
     /// must have the same length; on an out-of-domain element the error
     /// names its index and `out` is left partly written.
     pub fn mu_batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
-        let n = out.len();
-        if psi.len() != n || theta.len() != n || f_star.len() != n {
-            return Err(LookupError::LengthMismatch {
-                psi: psi.len(),
-                theta: theta.len(),
-                f_star: f_star.len(),
-                out: n,
-            });
-        }
+        self.check_lengths(psi, theta, f_star, out.len())?;
         let failed = 'run: {
             #[cfg(target_arch = "x86_64")]
             if let Some(k) = &self.fast {
                 // SAFETY: as in `fast`; the lengths are checked above.
-                break 'run unsafe { avx2::batch(k, psi, theta, f_star, out) };
+                break 'run unsafe { avx2::batch::<false>(k, psi, theta, f_star, avx2::Out::Mu(out)) };
             }
-            self.batch_portable(psi, theta, f_star, out)
+            fill(out, |i| self.mu_portable(psi[i], theta[i], f_star[i]))
         };
+        self.batch_result(psi, theta, f_star, failed)
+    }
+
+    /// μ and ∂μ/∂F* for many queries at once, written into `out` as
+    /// `(μ, ∂μ/∂F*)` pairs (no allocation): the batch form of
+    /// [`mu_with_slope`](Self::mu_with_slope), bit for bit, for implicit
+    /// solvers with many contacts. Lengths and errors as in
+    /// [`mu_batch`](Self::mu_batch).
+    pub fn mu_with_slope_batch(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        out: &mut [(f64, f64)],
+    ) -> Result<(), LookupError> {
+        self.check_lengths(psi, theta, f_star, out.len())?;
+        let failed = 'run: {
+            #[cfg(target_arch = "x86_64")]
+            if let Some(k) = &self.fast {
+                // SAFETY: as in `fast`; the lengths are checked above.
+                break 'run unsafe { avx2::batch::<true>(k, psi, theta, f_star, avx2::Out::WithSlope(out)) };
+            }
+            fill(out, |i| self.slope_portable(psi[i], theta[i], f_star[i]))
+        };
+        // The kernels leave d ln μ/d(cell coordinate) in the second place.
+        let done = failed.unwrap_or(out.len());
+        for (o, &f) in out[..done].iter_mut().zip(f_star) {
+            o.1 = self.slope_from(o.0, o.1, f);
+        }
+        self.batch_result(psi, theta, f_star, failed)
+    }
+
+    /// `LengthMismatch` unless the three argument slices have `out`'s length.
+    fn check_lengths(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: usize) -> Result<(), LookupError> {
+        if psi.len() != out || theta.len() != out || f_star.len() != out {
+            return Err(LookupError::LengthMismatch {
+                psi: psi.len(),
+                theta: theta.len(),
+                f_star: f_star.len(),
+                out,
+            });
+        }
+        Ok(())
+    }
+
+    /// A batch's result from the index of its first query outside the domain.
+    fn batch_result(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        failed: Option<usize>,
+    ) -> Result<(), LookupError> {
         match failed {
             None => Ok(()),
             Some(i) => match self.domain_error(psi[i], theta[i], f_star[i]) {
@@ -394,17 +439,6 @@ impl Table {
                 other => Err(other),
             },
         }
-    }
-
-    /// Fills `out`; returns the index of the first out-of-domain query.
-    fn batch_portable(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Option<usize> {
-        for i in 0..out.len() {
-            match self.mu_portable(psi[i], theta[i], f_star[i]) {
-                Ok(m) => out[i] = m,
-                Err(_) => return Some(i),
-            }
-        }
-        None
     }
 
     /// Whether a query lies in the domain (false for NaN).
@@ -503,6 +537,17 @@ impl Table {
         }
         (sum, dsum)
     }
+}
+
+/// Sets `out[i] = f(i)` in order; returns the first `i` where `f` fails.
+fn fill<T>(out: &mut [T], f: impl Fn(usize) -> Result<T, LookupError>) -> Option<usize> {
+    for (i, o) in out.iter_mut().enumerate() {
+        match f(i) {
+            Ok(v) => *o = v,
+            Err(_) => return Some(i),
+        }
+    }
+    None
 }
 
 /// A located query.
