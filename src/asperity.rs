@@ -70,6 +70,12 @@ pub struct CebCapacity {
     /// `c5 = c5_const − c5_inv/x`.
     c5_const: f64,
     c5_inv: f64,
+    /// `μ2(x)·x^1.5 = m15·x^1.5 + x·(d1·x + d0)^½/(2c3)`, with
+    /// `m15 = −c4/(2c3)`, `d1 = c4² − 4c3·c5_const`, `d0 = 4c3·c5_inv`.
+    m15: f64,
+    d1: f64,
+    d0: f64,
+    inv_2c3: f64,
     /// Where the branches cross: `μ2` below, `μ1` above.
     pub x_cross: f64,
 }
@@ -80,12 +86,21 @@ impl CebCapacity {
         let k = crate::params::hardness_coefficient(nu);
         let c1 = -1.0 + 1.5 * ZETA * (1.0 / ZETA).atan() - ZETA * ZETA / (2.0 * (1.0 + ZETA * ZETA));
         let pi = core::f64::consts::PI;
+        let c3 = (9.0 * pi * pi / 16.0) * (2.0 - nu / 2.0 + 7.0 * nu * nu / 8.0);
+        let c4 = (9.0 * pi / 4.0) * (1.0 - 2.0 * nu) * (1.0 - nu / 2.0);
+        let c5_const = 1.5 * (1.0 - 2.0 * nu) * (1.0 - 2.0 * nu);
+        let c5_inv = 0.56 / (k * k);
+        let inv_2c3 = 1.0 / (2.0 * c3);
         let mut cap = CebCapacity {
             a1: 0.2045 / (k * c1.abs()),
-            c3: (9.0 * pi * pi / 16.0) * (2.0 - nu / 2.0 + 7.0 * nu * nu / 8.0),
-            c4: (9.0 * pi / 4.0) * (1.0 - 2.0 * nu) * (1.0 - nu / 2.0),
-            c5_const: 1.5 * (1.0 - 2.0 * nu) * (1.0 - 2.0 * nu),
-            c5_inv: 0.56 / (k * k),
+            c3,
+            c4,
+            c5_const,
+            c5_inv,
+            m15: -c4 * inv_2c3,
+            d1: c4 * c4 - 4.0 * c3 * c5_const,
+            d0: 4.0 * c3 * c5_inv,
+            inv_2c3,
             x_cross: 1.0,
         };
         // μ1 − μ2 goes from + (μ1 > μ2 near 0) to − (μ1(1) = 0 < μ2(1)):
@@ -127,12 +142,15 @@ impl CebCapacity {
     }
 
     /// `μ2(x)·x^1.5 = m15·x^1.5 + x·g(x)` with `g` analytic on [0, 1]:
-    /// returns `(m15, g(x))`. This splits off the `x^1.5` part that a
-    /// Gauss–Jacobi rule must integrate, leaving an analytic remainder.
-    pub fn mu2_split(&self, x: f64) -> (f64, f64) {
-        let inv = 1.0 / (2.0 * self.c3);
-        let disc = (self.c4 * self.c4 - 4.0 * self.c3 * self.c5_const) * x + 4.0 * self.c3 * self.c5_inv;
-        (-self.c4 * inv, disc.sqrt() * inv)
+    /// this is `m15`. The split leaves a Gauss–Jacobi rule only the
+    /// `x^1.5` part to integrate, and an analytic remainder.
+    pub fn mu2_power_coefficient(&self) -> f64 {
+        self.m15
+    }
+
+    /// The analytic remainder `g(x)` of [`mu2_power_coefficient`](Self::mu2_power_coefficient).
+    pub fn mu2_remainder(&self, x: f64) -> f64 {
+        (self.d1 * x + self.d0).sqrt() * self.inv_2c3
     }
 
     /// `μ1(x)·x^1.5 = a1·x·(1 − x)^½`: returns `a1·x`, the analytic factor
@@ -168,7 +186,7 @@ mod tests {
         assert!((cap.mu(0.951) - 0.28193).abs() < 5e-6);
         assert!((cap.x_cross - 0.951169).abs() < 5e-7);
         for x in [0.05, 0.3, 0.9, 0.96, 0.999] {
-            let (m15, g) = cap.mu2_split(x);
+            let (m15, g) = (cap.mu2_power_coefficient(), cap.mu2_remainder(x));
             let direct = cap.mu2(x) * x.powf(1.5);
             assert!((m15 * x.powf(1.5) + x * g - direct).abs() < 1e-13 * direct.abs().max(1.0));
             let d1 = cap.mu1(x) * x.powf(1.5);

@@ -251,20 +251,20 @@ impl Surface {
         let xc = self.ceb.x_cross;
         let ceb = &self.ceb;
         let mut acc = Sums::default();
-        let m15 = ceb.mu2_split(0.0).0;
+        let m15 = ceb.mu2_power_coefficient();
         self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
             if first {
                 self.elastic_first_panel(d, x1, adh, &mut acc);
                 if want_q {
                     // acc.p is so far just ∫₀^x1 x^1.5 φ*, the first panel's load.
                     acc.q += m15 * acc.p;
-                    self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_split(x).1 * w);
+                    self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_remainder(x) * w);
                 }
             } else {
                 self.legendre_panel(d, x0, x1, |x, w, dw| {
                     let p = elastic_node(&mut acc, x, x.ln(), w, dw, adh);
                     if want_q {
-                        acc.q += (m15 * p + x * ceb.mu2_split(x).1) * w;
+                        acc.q += (m15 * p + x * ceb.mu2_remainder(x)) * w;
                     }
                 });
             }
