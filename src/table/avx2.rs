@@ -46,6 +46,8 @@ pub(super) struct Kernel {
     /// the padding lane of a single query).
     lo: [f64; 4],
     hi: [f64; 4],
+    /// 1/spacing of the F* axis, in f64, for ∂μ/∂F* (see [`super::slope`]).
+    f_inv_step: f64,
     /// The table's domain.
     domain: Domain,
 }
@@ -104,6 +106,7 @@ impl Kernel {
             stride: [stride[0] as i32, stride[1] as i32, stride[2] as i32, 0, 0, 0, 0, 0],
             lo: [t.domain.psi.0, t.domain.theta.0, t.domain.f_star.0, 1.0],
             hi: [t.domain.psi.1, t.domain.theta.1, t.domain.f_star.1, 1.0],
+            f_inv_step: t.inv_step[2],
             domain: t.domain,
         })
     }
@@ -284,13 +287,20 @@ struct Located {
     w_psi: [[f32; 8]; 4],
 }
 
-/// Where a batch writes: μ alone, or μ with d ln μ/d(cell coordinate of
-/// F*) (which [`Table`] then turns into ∂μ/∂F*).
+/// Where a batch writes: μ alone, or μ with ∂μ/∂F*.
 pub(super) enum Out<'a> {
     /// μ.
     Mu(&'a mut [f64]),
-    /// (μ, d ln μ/d(cell coordinate)).
+    /// (μ, ∂μ/∂F*).
     WithSlope(&'a mut [(f64, f64)]),
+}
+
+/// [`super::slope`] four at a time, its operations in its order (so the
+/// same bits).
+#[inline(always)]
+unsafe fn slopes(k: &Kernel, mu: __m256d, d: __m256d, f_star: *const f64) -> __m256d {
+    let scaled = _mm256_mul_pd(_mm256_mul_pd(mu, d), _mm256_set1_pd(k.f_inv_step));
+    _mm256_div_pd(scaled, _mm256_loadu_pd(f_star))
 }
 
 /// μ (and, if `SLOPE`, its slope) for every query, eight at a time;
@@ -347,8 +357,11 @@ pub(super) unsafe fn batch<const SLOPE: bool>(
                 let (mut m, mut s) = ([0.0; 8], [0.0; 8]);
                 _mm256_storeu_pd(m.as_mut_ptr(), mu[0]);
                 _mm256_storeu_pd(m.as_mut_ptr().add(4), mu[1]);
-                _mm256_storeu_pd(s.as_mut_ptr(), d[0]);
-                _mm256_storeu_pd(s.as_mut_ptr().add(4), d[1]);
+                _mm256_storeu_pd(s.as_mut_ptr(), slopes(k, mu[0], d[0], f_star.as_ptr().add(i)));
+                _mm256_storeu_pd(
+                    s.as_mut_ptr().add(4),
+                    slopes(k, mu[1], d[1], f_star.as_ptr().add(i + 4)),
+                );
                 for j in 0..8 {
                     o[i + j] = (m[j], s[j]);
                 }
@@ -363,7 +376,7 @@ pub(super) unsafe fn batch<const SLOPE: bool>(
         }
         match &mut out {
             Out::Mu(o) => o[j] = r.0,
-            Out::WithSlope(o) => o[j] = r,
+            Out::WithSlope(o) => o[j] = (r.0, super::slope(r.0, r.1, k.f_inv_step, f_star[j])),
         }
     }
     None

@@ -336,11 +336,10 @@ impl Table {
         Ok((mu, self.slope_from(mu, d_ln_mu, f_star)))
     }
 
-    /// ∂μ/∂F* from μ and d ln μ/d(cell coordinate): ln μ is splined in
-    /// v = ln F*, so dμ/dF* = μ · (d ln μ/dv) / F*.
+    /// ∂μ/∂F* from μ and d ln μ/d(cell coordinate) (see [`slope`]).
     #[inline(always)]
     fn slope_from(&self, mu: f64, d_ln_mu: f64, f_star: f64) -> f64 {
-        mu * d_ln_mu * self.inv_step[2] / f_star
+        slope(mu, d_ln_mu, self.inv_step[2], f_star)
     }
 
     /// Whether lookups on this machine run the fast f32 kernel (see
@@ -395,13 +394,8 @@ impl Table {
                 // SAFETY: as in `fast`; the lengths are checked above.
                 break 'run unsafe { avx2::batch::<true>(k, psi, theta, f_star, avx2::Out::WithSlope(out)) };
             }
-            fill(out, |i| self.slope_portable(psi[i], theta[i], f_star[i]))
+            fill(out, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i]))
         };
-        // The kernels leave d ln μ/d(cell coordinate) in the second place.
-        let done = failed.unwrap_or(out.len());
-        for (o, &f) in out[..done].iter_mut().zip(f_star) {
-            o.1 = self.slope_from(o.0, o.1, f);
-        }
         self.batch_result(psi, theta, f_star, failed)
     }
 
@@ -537,6 +531,15 @@ impl Table {
         }
         (sum, dsum)
     }
+}
+
+/// ∂μ/∂F* from μ and d ln μ/d(cell coordinate of F*), the coordinate
+/// being v·`inv_step` + const: ln μ is splined in v = ln F*, so
+/// dμ/dF* = μ · (d ln μ/dv) / F*. (The AVX2 batch does these operations,
+/// in this order, four at a time.)
+#[inline(always)]
+fn slope(mu: f64, d_ln_mu: f64, inv_step: f64, f_star: f64) -> f64 {
+    mu * d_ln_mu * inv_step / f_star
 }
 
 /// Sets `out[i] = f(i)` in order; returns the first `i` where `f` fails.
