@@ -362,6 +362,19 @@ impl Table {
     /// bit for bit what [`mu`](Self::mu) gives for each. All four slices
     /// must have the same length; on an out-of-domain element the error
     /// names its index and `out` is left partly written.
+    ///
+    /// ```
+    /// # use ke_friction::{LookupError, Table};
+    /// let table = Table::embedded();
+    /// let (psi, theta) = ([1.0; 3], [0.001; 3]);
+    /// let mut mu = [0.0; 3];
+    /// table.mu_batch(&psi, &theta, &[0.001, 0.01, 0.1], &mut mu)?;
+    /// assert_eq!(mu[1], table.mu(1.0, 0.001, 0.01)?);
+    /// // F* = 0.2 is outside the default table (1e-5 ≤ F* ≤ 0.1):
+    /// let err = table.mu_batch(&psi, &theta, &[0.001, 0.2, 0.1], &mut mu).unwrap_err();
+    /// assert!(matches!(err, LookupError::BatchElement { index: 1, name: "f_star", .. }));
+    /// # Ok::<(), LookupError>(())
+    /// ```
     pub fn mu_batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
         self.check_lengths(psi, theta, f_star, out.len())?;
         let failed = 'run: {
@@ -380,6 +393,19 @@ impl Table {
     /// [`mu_with_slope`](Self::mu_with_slope), bit for bit, for implicit
     /// solvers with many contacts. Lengths and errors as in
     /// [`mu_batch`](Self::mu_batch).
+    ///
+    /// ```
+    /// # use ke_friction::Table;
+    /// let table = Table::embedded();
+    /// let loads = [0.001, 0.01, 0.1];
+    /// let mut out = [(0.0, 0.0); 3];
+    /// table.mu_with_slope_batch(&[2.0; 3], &[0.003; 3], &loads, &mut out)?;
+    /// for (&f, &(mu, dmu)) in loads.iter().zip(&out) {
+    ///     assert_eq!((mu, dmu), table.mu_with_slope(2.0, 0.003, f)?);
+    ///     assert!(dmu < 0.0); // μ falls as the load rises
+    /// }
+    /// # Ok::<(), ke_friction::LookupError>(())
+    /// ```
     pub fn mu_with_slope_batch(
         &self,
         psi: &[f64],
