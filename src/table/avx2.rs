@@ -317,6 +317,7 @@ pub(super) unsafe fn batch<const SLOPE: bool>(
     f_star: &[f64],
     mut out: Out,
 ) -> Option<usize> {
+    debug_assert_eq!(SLOPE, matches!(out, Out::WithSlope(_)));
     let n = match &out {
         Out::Mu(o) => o.len(),
         Out::WithSlope(o) => o.len(),
