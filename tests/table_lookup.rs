@@ -11,6 +11,19 @@ fn table() -> &'static Table {
     Table::embedded()
 }
 
+/// A coarse (9³) table over the default domain, stored in f64: it runs
+/// the portable kernel everywhere.
+fn small_f64_table() -> Table {
+    let options = BuildOptions {
+        nodes: [9, 9, 9],
+        samples: 200,
+        tolerance: 0.5,
+        precision: ke_friction::build::Precision::F64,
+        ..BuildOptions::default()
+    };
+    Table::from_bytes(&build(&options, &()).unwrap().bytes).unwrap()
+}
+
 /// A random in-domain query, uniform in (ln ψ, θ, ln F*).
 fn query(rng: &mut ChaCha8Rng) -> (f64, f64, f64) {
     let d = table().domain();
@@ -247,14 +260,7 @@ fn check_batch<T: Copy + Default>(
 /// portable one.
 #[test]
 fn batch_lookups_equal_scalar_lookups() {
-    let options = BuildOptions {
-        nodes: [9, 9, 9],
-        samples: 200,
-        tolerance: 1.0,
-        precision: ke_friction::build::Precision::F64,
-        ..BuildOptions::default()
-    };
-    let f64_table = Table::from_bytes(&build(&options, &()).unwrap().bytes).unwrap();
+    let f64_table = small_f64_table();
     for t in [table(), &f64_table] {
         check_batch(
             |p, th, f, out| t.mu_batch(p, th, f, out),
@@ -361,14 +367,7 @@ fn f32_tables_run_the_fast_kernel_where_the_cpu_has_avx2_and_f64_tables_the_exac
     #[cfg(not(target_arch = "x86_64"))]
     let avx2 = false;
     assert_eq!(table().fast_kernel(), avx2);
-    let options = BuildOptions {
-        nodes: [9, 9, 9],
-        samples: 200,
-        tolerance: 0.5,
-        precision: ke_friction::build::Precision::F64,
-        ..BuildOptions::default()
-    };
-    let t = Table::from_bytes(&build(&options, &()).unwrap().bytes).unwrap();
+    let t = small_f64_table();
     assert!(!t.single_precision() && !t.fast_kernel());
     let mut rng = ChaCha8Rng::seed_from_u64(41);
     for _ in 0..100 {
