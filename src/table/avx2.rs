@@ -14,7 +14,7 @@
 //! ln μ, which reaches −9 in the default table, in f32; the coefficients
 //! are f32 already); the portable f64 kernel is the exact interpolant.
 
-use super::{Domain, Table};
+use super::{Domain, Out, Table};
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
@@ -287,14 +287,6 @@ struct Located {
     w_psi: [[f32; 8]; 4],
 }
 
-/// Where a batch writes: μ alone, or μ with ∂μ/∂F*.
-pub(super) enum Out<'a> {
-    /// μ.
-    Mu(&'a mut [f64]),
-    /// (μ, ∂μ/∂F*).
-    WithSlope(&'a mut [(f64, f64)]),
-}
-
 /// [`super::slope`] four at a time, its operations in its order (so the
 /// same bits).
 #[inline(always)]
@@ -303,25 +295,30 @@ unsafe fn slopes(k: &Kernel, mu: __m256d, d: __m256d, f_star: *const f64) -> __m
     _mm256_div_pd(scaled, _mm256_loadu_pd(f_star))
 }
 
-/// μ (and, if `SLOPE`, its slope) for every query, eight at a time;
-/// returns the index of the first query outside the domain (`out` is then
-/// partly written). `out` must be `Out::WithSlope` exactly when `SLOPE`.
+/// μ (or μ and ∂μ/∂F*, as `out` asks) for every query, eight at a
+/// time; returns the index of the first query outside the domain (`out`
+/// is then partly written).
 ///
 /// # Safety
 /// The CPU must support AVX2 and FMA; the slices have `out`'s length.
 #[target_feature(enable = "avx2,fma")]
-pub(super) unsafe fn batch<const SLOPE: bool>(
+pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: Out) -> Option<usize> {
+    match out {
+        Out::Mu(_) => run::<false>(k, psi, theta, f_star, out),
+        Out::WithSlope(_) => run::<true>(k, psi, theta, f_star, out),
+    }
+}
+
+/// [`batch`] with `SLOPE` true exactly when `out` is `Out::WithSlope`.
+#[inline(always)]
+unsafe fn run<const SLOPE: bool>(
     k: &Kernel,
     psi: &[f64],
     theta: &[f64],
     f_star: &[f64],
     mut out: Out,
 ) -> Option<usize> {
-    debug_assert_eq!(SLOPE, matches!(out, Out::WithSlope(_)));
-    let n = match &out {
-        Out::Mu(o) => o.len(),
-        Out::WithSlope(o) => o.len(),
-    };
+    let n = out.len();
     let map = |a: usize| Map {
         k_hi: _mm256_set1_ps(k.k_hi[a]),
         k_lo: _mm256_set1_ps(k.k_lo[a]),

@@ -376,16 +376,7 @@ impl Table {
     /// # Ok::<(), LookupError>(())
     /// ```
     pub fn mu_batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
-        self.check_lengths(psi, theta, f_star, out.len())?;
-        let failed = 'run: {
-            #[cfg(target_arch = "x86_64")]
-            if let Some(k) = &self.fast {
-                // SAFETY: as in `fast`; the lengths are checked above.
-                break 'run unsafe { avx2::batch::<false>(k, psi, theta, f_star, avx2::Out::Mu(out)) };
-            }
-            fill(out, |i| self.mu_portable(psi[i], theta[i], f_star[i]))
-        };
-        self.batch_result(psi, theta, f_star, failed)
+        self.batch(psi, theta, f_star, Out::Mu(out))
     }
 
     /// μ and ∂μ/∂F* for many queries at once, written into `out` as
@@ -413,52 +404,45 @@ impl Table {
         f_star: &[f64],
         out: &mut [(f64, f64)],
     ) -> Result<(), LookupError> {
-        self.check_lengths(psi, theta, f_star, out.len())?;
-        let failed = 'run: {
-            #[cfg(target_arch = "x86_64")]
-            if let Some(k) = &self.fast {
-                // SAFETY: as in `fast`; the lengths are checked above.
-                break 'run unsafe { avx2::batch::<true>(k, psi, theta, f_star, avx2::Out::WithSlope(out)) };
-            }
-            fill(out, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i]))
-        };
-        self.batch_result(psi, theta, f_star, failed)
+        self.batch(psi, theta, f_star, Out::WithSlope(out))
     }
 
-    /// `LengthMismatch` unless the three argument slices have `out`'s length.
-    fn check_lengths(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: usize) -> Result<(), LookupError> {
-        if psi.len() != out || theta.len() != out || f_star.len() != out {
+    /// Both batch forms: checks the lengths, runs the kernel, and turns
+    /// the index of the first query outside the domain into the error.
+    fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: Out) -> Result<(), LookupError> {
+        let n = out.len();
+        if psi.len() != n || theta.len() != n || f_star.len() != n {
             return Err(LookupError::LengthMismatch {
                 psi: psi.len(),
                 theta: theta.len(),
                 f_star: f_star.len(),
-                out,
+                out: n,
             });
         }
-        Ok(())
-    }
-
-    /// A batch's result from the index of its first query outside the domain.
-    fn batch_result(
-        &self,
-        psi: &[f64],
-        theta: &[f64],
-        f_star: &[f64],
-        failed: Option<usize>,
-    ) -> Result<(), LookupError> {
-        match failed {
-            None => Ok(()),
-            Some(i) => match self.domain_error(psi[i], theta[i], f_star[i]) {
-                LookupError::OutOfDomain { name, value, lo, hi } => Err(LookupError::BatchElement {
-                    index: i,
-                    name,
-                    value,
-                    lo,
-                    hi,
-                }),
-                other => Err(other),
+        let failed = 'run: {
+            #[cfg(target_arch = "x86_64")]
+            if let Some(k) = &self.fast {
+                // SAFETY: as in `fast`; the lengths are checked above.
+                break 'run unsafe { avx2::batch(k, psi, theta, f_star, out) };
+            }
+            match out {
+                Out::Mu(o) => fill(o, |i| self.mu_portable(psi[i], theta[i], f_star[i])),
+                Out::WithSlope(o) => fill(o, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i])),
+            }
+        };
+        let Some(i) = failed else {
+            return Ok(());
+        };
+        Err(match self.domain_error(psi[i], theta[i], f_star[i]) {
+            LookupError::OutOfDomain { name, value, lo, hi } => LookupError::BatchElement {
+                index: i,
+                name,
+                value,
+                lo,
+                hi,
             },
-        }
+            other => other,
+        })
     }
 
     /// Whether a query lies in the domain (false for NaN).
@@ -566,6 +550,24 @@ impl Table {
 #[inline(always)]
 fn slope(mu: f64, d_ln_mu: f64, inv_step: f64, f_star: f64) -> f64 {
     mu * d_ln_mu * inv_step / f_star
+}
+
+/// Where a batch writes: μ alone, or (μ, ∂μ/∂F*) pairs.
+enum Out<'a> {
+    /// [`Table::mu_batch`].
+    Mu(&'a mut [f64]),
+    /// [`Table::mu_with_slope_batch`].
+    WithSlope(&'a mut [(f64, f64)]),
+}
+
+impl Out<'_> {
+    /// The number of queries.
+    fn len(&self) -> usize {
+        match self {
+            Out::Mu(o) => o.len(),
+            Out::WithSlope(o) => o.len(),
+        }
+    }
 }
 
 /// Sets `out[i] = f(i)` in order; returns the first `i` where `f` fails.
