@@ -52,13 +52,20 @@ fn is_temporary(name: &str, target: &str) -> bool {
         .is_some_and(|pid| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()))
 }
 
+/// A scratch directory holding a valid table (the embedded one) at
+/// `table.kft`, its path, and the path as an argument.
+fn with_previous_table(name: &str) -> (TempDir, std::path::PathBuf, String) {
+    let dir = TempDir::new(name);
+    let out = dir.join("table.kft");
+    std::fs::write(&out, Table::embedded_bytes()).unwrap();
+    let arg = dir.arg("table.kft");
+    (dir, out, arg)
+}
+
 #[test]
 fn an_interrupted_build_leaves_the_previous_file_intact() {
-    let dir = TempDir::new("kill");
-    let out = dir.0.join("table.kft");
+    let (dir, out, out_s) = with_previous_table("kill");
     let previous = Table::embedded_bytes();
-    std::fs::write(&out, previous).unwrap();
-    let out_s = out.display().to_string();
     // Larger than the default build: several seconds at least.
     let mut child = Command::new(env!("CARGO_BIN_EXE_kefric"))
         .args(LONG_BUILD)
@@ -97,11 +104,8 @@ fn an_interrupted_build_leaves_the_previous_file_intact() {
 
 #[test]
 fn a_failed_build_leaves_the_previous_file_intact() {
-    let dir = TempDir::new("fail");
-    let out = dir.0.join("table.kft");
+    let (dir, out, out_s) = with_previous_table("fail");
     let previous = Table::embedded_bytes();
-    std::fs::write(&out, previous).unwrap();
-    let out_s = out.display().to_string();
     // Misses its tolerance after doing all the work: status 1, nothing written.
     let mut args: Vec<&str> = SMALL_BUILD.iter().map(|a| if *a == "1" { "1e-9" } else { a }).collect();
     args.extend(["--out", out_s.as_str()]);
