@@ -19,6 +19,17 @@ fn decode(what: &str, bytes: &[u8]) -> Result<Table, TableError> {
     }
 }
 
+/// Asserts that `bytes`, a well-framed file (valid header and CRC), is
+/// rejected for its payload: it does not decode or is inconsistent.
+#[track_caller]
+fn payload_rejected(what: &str, bytes: &[u8]) {
+    let e = rejected(what, bytes);
+    assert!(
+        matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
+        "{what}: {e:?}"
+    );
+}
+
 /// Asserts that `bytes` is rejected, and returns the error.
 #[track_caller]
 fn rejected(what: &str, bytes: &[u8]) -> TableError {
@@ -77,11 +88,7 @@ fn every_truncation_is_rejected() {
     // the payload itself is cut short.
     for cut in [1, 2, 3, 7, 100, 4096, bytes.len() / 2, bytes.len() - 25] {
         let forged = framed(&bytes[20..bytes.len() - 4 - cut]);
-        let e = rejected(&format!("a payload cut by {cut} bytes, CRC valid"), &forged);
-        assert!(
-            matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
-            "cut {cut}: {e:?}"
-        );
+        payload_rejected(&format!("a payload cut by {cut} bytes, CRC valid"), &forged);
     }
 }
 
@@ -302,11 +309,7 @@ fn payloads_that_do_not_decode_are_rejected() {
             body[..keep].copy_from_slice(&good()[20..20 + keep]);
         }
         let b = framed(&body);
-        let e = rejected(&format!("random payload {trial} ({len} bytes)"), &b);
-        assert!(
-            matches!(e, TableError::Payload(_) | TableError::Inconsistent(_)),
-            "trial {trial}: {e:?}"
-        );
+        payload_rejected(&format!("random payload {trial} ({len} bytes)"), &b);
     }
 }
 
