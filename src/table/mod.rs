@@ -445,34 +445,11 @@ impl Table {
         })
     }
 
-    /// Whether a query lies in the domain (false for NaN).
-    #[inline(always)]
-    fn inside(&self, psi: f64, theta: f64, f_star: f64) -> bool {
-        self.domain.check(psi, theta, f_star).is_ok()
-    }
-
-    /// Locates a query: base offset and the ψ, θ, F* weights.
+    /// Locates a query: the offset of its 4×4×4 block and the ψ, θ, F*
+    /// weights; the error names the first argument outside the domain.
     #[inline(always)]
     fn cell(&self, psi: f64, theta: f64, f_star: f64) -> Result<Cell, LookupError> {
-        let (base, frac) = self
-            .locate(psi, theta, f_star)
-            .ok_or_else(|| self.domain_error(psi, theta, f_star))?;
-        Ok(Cell {
-            base,
-            wp: weights(frac[0]),
-            wt: weights(frac[1]),
-            wf: weights(frac[2]),
-            f_f: frac[2],
-        })
-    }
-
-    /// The offset of a query's 4×4×4 block and its cell offsets on the
-    /// three axes; `None` outside the domain.
-    #[inline(always)]
-    fn locate(&self, psi: f64, theta: f64, f_star: f64) -> Option<(usize, [f64; 3])> {
-        if !self.inside(psi, theta, f_star) {
-            return None;
-        }
+        self.domain.check(psi, theta, f_star)?;
         let coords = [fastmath::ln(psi), theta.sqrt(), fastmath::ln(f_star)];
         let mut base = 0;
         let mut frac = [0.0; 3];
@@ -484,7 +461,13 @@ impl Table {
             base += i as usize * self.strides[k];
             frac[k] = s - i as f64;
         }
-        Some((base, frac))
+        Ok(Cell {
+            base,
+            wp: weights(frac[0]),
+            wt: weights(frac[1]),
+            wf: weights(frac[2]),
+            f_f: frac[2],
+        })
     }
 
     /// The error for a query outside the domain (the first bad argument).
