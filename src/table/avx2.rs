@@ -14,7 +14,7 @@
 //! ln μ, which reaches −9 in the default table, in f32; the coefficients
 //! are f32 already); the portable f64 kernel is the exact interpolant.
 
-use super::{Domain, Out, Table};
+use super::{Out, Table};
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
@@ -48,8 +48,6 @@ pub(super) struct Kernel {
     hi: [f64; 4],
     /// 1/spacing of the F* axis, in f64, for ∂μ/∂F* (see [`super::slope`]).
     f_inv_step: f64,
-    /// The table's domain.
-    domain: Domain,
 }
 
 impl Kernel {
@@ -107,7 +105,6 @@ impl Kernel {
             lo: [t.domain.psi.0, t.domain.theta.0, t.domain.f_star.0, 1.0],
             hi: [t.domain.psi.1, t.domain.theta.1, t.domain.f_star.1, 1.0],
             f_inv_step: t.inv_step[2],
-            domain: t.domain,
         })
     }
 }
@@ -393,8 +390,7 @@ unsafe fn locate(k: &Kernel, maps: &[Map; 3], x: [&[f64]; 3], i: usize, l: &mut 
             _mm256_loadu_pd(x[a].as_ptr().add(i + 4)),
         ];
         // Ordered comparisons: NaN fails them.
-        let (lo, hi) = k.domain.ranges()[a];
-        let (lo, hi) = (_mm256_set1_pd(lo), _mm256_set1_pd(hi));
+        let (lo, hi) = (_mm256_set1_pd(k.lo[a]), _mm256_set1_pd(k.hi[a]));
         for h in h {
             ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo));
             ok = _mm256_and_pd(ok, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi));
