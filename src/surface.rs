@@ -358,11 +358,12 @@ impl Surface {
     /// The non-contact adhesion integral `J_nc` (MODEL.md §4) and its
     /// d*-derivative, in the gap `g = d* − z* ≥ 0`.
     fn noncontact(&self, d: f64) -> (f64, f64) {
-        let g_max = d + d.min(0.0).hypot(tail_cut(self.s)); // down to z* = −hypot(min(d*, 0), cut)
-                                                            // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
-                                                            // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
-                                                            // Skipping them keeps the work bounded for large d* (the panels
-                                                            // shrink like 1/|z*| far out).
+        // The largest gap g = d* − z*, at z* = −hypot(min(d*, 0), cut).
+        let g_max = d + d.min(0.0).hypot(tail_cut(self.s));
+        // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
+        // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
+        // Skipping them keeps the work bounded for large d* (the panels
+        // shrink like 1/|z*| far out).
         let worst = 4.0 * self.norm * (d.max(0.0) + self.s + self.eps).powi(2) / self.eps;
         let z_hi = self.s * (2.0 * (TAIL + worst.ln().max(0.0))).sqrt();
         let mut g0 = (d - z_hi).max(0.0);
