@@ -311,8 +311,9 @@ fn f_axis(series: &[Series]) -> Axis {
     }
 }
 
-/// A chart against F* (log) with a linear y axis from zero.
-fn linear_chart(title: &str, y_title: &str, series: Vec<Series>, legend: Corner) -> Chart {
+/// A chart against F* (log) with a linear y axis from zero, its legend
+/// upper right.
+fn linear_chart(title: &str, y_title: &str, series: Vec<Series>) -> Chart {
     let y = extent(&series).1;
     Chart {
         title: Some(title.into()),
@@ -324,7 +325,7 @@ fn linear_chart(title: &str, y_title: &str, series: Vec<Series>, legend: Corner)
             ticks: None,
         },
         series,
-        legend,
+        legend: Corner::UpperRight,
     }
 }
 
@@ -349,7 +350,6 @@ fn fig3() -> Result<Chart, FigureError> {
         "Fig. 3: adhesion force ratio Fₛ*/P*, θ = 0.003",
         "Fₛ*/P*",
         psi_series(|c| c.fs_star / c.p_star)?,
-        Corner::UpperRight,
     ))
 }
 
@@ -410,7 +410,6 @@ fn fig5() -> Result<Chart, FigureError> {
         "Fig. 5: static friction coefficient μ, θ = 0.003",
         "μ",
         series,
-        Corner::UpperRight,
     ))
 }
 
@@ -435,7 +434,6 @@ fn fig6() -> Result<Chart, FigureError> {
         "Fig. 6: effect of the adhesion parameter θ on μ",
         "μ",
         series,
-        Corner::UpperRight,
     ))
 }
 
