@@ -7,7 +7,7 @@
 //! timeout. All failures are collected and reported together.
 
 mod common;
-use common::LONG_BUILD;
+use common::{bad_input_problem, LONG_BUILD};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -73,36 +73,18 @@ fn run(args: &[String], limit: Duration) -> Run {
     }
 }
 
-/// What is wrong with this run as a rejection naming `flag` (None if nothing).
+/// What is wrong with this run as a rejection naming its flag (None if
+/// nothing).
 fn judge(case: &Case, r: &Run) -> Option<String> {
-    let lines: Vec<&str> = r.stderr.lines().collect();
-    let mut why = vec![];
-    match r.status {
-        None => why.push(format!(
-            "still running after {:.1} s (not rejected up front)",
+    let why = bad_input_problem(r.status, &r.stdout, &r.stderr, &case.flag)?;
+    let killed = match r.status {
+        None => format!(
+            " (killed after {:.1} s: not rejected up front)",
             r.elapsed.as_secs_f64()
-        )),
-        Some(2) => {}
-        Some(s) => why.push(format!("exit status {s}, want 2")),
-    }
-    if r.stderr.contains("panicked") || r.stdout.contains("panicked") {
-        why.push("panicked".into());
-    }
-    if r.status.is_some() {
-        if lines.len() != 1 {
-            why.push(format!("{} lines on stderr, want 1", lines.len()));
-        } else if !lines[0].contains(case.flag.as_str()) {
-            why.push(format!("message does not name {}", case.flag));
-        }
-    }
-    (!why.is_empty()).then(|| {
-        format!(
-            "kefric {:?}: {}\n    stderr: {:?}",
-            case.args,
-            why.join("; "),
-            r.stderr.chars().take(400).collect::<String>()
-        )
-    })
+        ),
+        Some(_) => String::new(),
+    };
+    Some(format!("kefric {:?}: {why}{killed}", case.args))
 }
 
 /// Runs every case (a few at a time) and fails listing all bad outcomes.

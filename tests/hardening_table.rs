@@ -9,7 +9,8 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
-use std::process::Command;
+mod common;
+use common::{bad_input_problem, kefric, stderr, TempDir};
 
 /// Decodes `bytes`, turning a panic into a test failure that names `what`.
 fn decode(what: &str, bytes: &[u8]) -> Result<Table, TableError> {
@@ -336,14 +337,6 @@ fn random_byte_strings_are_rejected() {
 
 // --- The CLI with corrupted table files -----------------------------------
 
-struct Dir(PathBuf);
-
-impl Drop for Dir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
-
 /// Corrupted table files, each with a short name.
 fn corrupted_files(dir: &Path) -> Vec<(String, PathBuf)> {
     let mut files: Vec<(String, Vec<u8>)> = vec![];
@@ -383,10 +376,8 @@ fn corrupted_files(dir: &Path) -> Vec<(String, PathBuf)> {
 
 #[test]
 fn the_cli_rejects_corrupted_tables_with_status_2_and_one_line() {
-    let dir = Dir(Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hardening-table-{}", std::process::id())));
-    let _ = std::fs::remove_dir_all(&dir.0);
-    std::fs::create_dir_all(&dir.0).unwrap();
-    let npz = dir.0.join("out.npz");
+    let dir = TempDir::new("hardening-table");
+    let npz = dir.join("out.npz");
     let mut failures = vec![];
     for (what, path) in corrupted_files(&dir.0) {
         let table = path.display().to_string();
@@ -399,22 +390,10 @@ fn the_cli_rejects_corrupted_tables_with_status_2_and_one_line() {
             &["export", "--quiet", "--npz", &npz, "--table", &table],
         ];
         for args in runs {
-            let o = Command::new(env!("CARGO_BIN_EXE_kefric"))
-                .args(args)
-                .output()
-                .expect("kefric runs");
-            let err = String::from_utf8_lossy(&o.stderr);
-            let ok = o.status.code() == Some(2)
-                && err.lines().count() == 1
-                && err.contains("--table")
-                && !err.contains("panicked")
-                && o.stdout.is_empty();
-            if !ok {
-                failures.push(format!(
-                    "{} on {what}: status {:?}, stderr {err:?}",
-                    args[0],
-                    o.status.code()
-                ));
+            let o = kefric(args);
+            let out = String::from_utf8_lossy(&o.stdout);
+            if let Some(why) = bad_input_problem(o.status.code(), &out, &stderr(&o), "--table") {
+                failures.push(format!("{} on {what}: {why}", args[0]));
             }
         }
     }

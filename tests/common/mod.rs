@@ -96,13 +96,37 @@ pub const SMALL_BUILD: &[&str] = &[
 /// least, long enough to interrupt or to show that bad input is caught first.
 pub const LONG_BUILD: &[&str] = &["build", "--nodes", "65,65,65", "--samples", "200000", "--quiet"];
 
-/// Asserts what bad input must give: exit status 2, exactly one line on
-/// stderr containing `needle` (the flag), and nothing on stdout.
+/// What is wrong with a run as the rejection of bad input naming `needle`
+/// (the flag), or `None`: it must exit with status 2 (`None`: it did not
+/// exit), print exactly one line on stderr containing `needle`, print
+/// nothing on stdout, and not panic.
+pub fn bad_input_problem(status: Option<i32>, stdout: &str, stderr: &str, needle: &str) -> Option<String> {
+    let mut why = vec![];
+    match status {
+        Some(2) => {}
+        Some(s) => why.push(format!("exit status {s}, want 2")),
+        None => why.push("did not exit".to_string()),
+    }
+    if stderr.contains("panicked") || stdout.contains("panicked") {
+        why.push("panicked".into());
+    }
+    let lines = stderr.trim_end().lines().count();
+    if lines != 1 {
+        why.push(format!("{lines} lines on stderr, want 1"));
+    } else if !stderr.contains(needle) {
+        why.push(format!("message does not name {needle}"));
+    }
+    if !stdout.is_empty() {
+        why.push(format!("stdout not empty: {stdout:?}"));
+    }
+    (!why.is_empty()).then(|| format!("{}; stderr: {stderr:?}", why.join("; ")))
+}
+
+/// Asserts what bad input must give (see [`bad_input_problem`]).
 #[track_caller]
 pub fn assert_bad_input(o: &std::process::Output, needle: &str) {
-    let err = stderr(o);
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert_eq!(err.trim_end().lines().count(), 1, "not one line: {err:?}");
-    assert!(err.contains(needle), "{needle:?} not in {err:?}");
-    assert!(o.stdout.is_empty(), "stdout: {}", String::from_utf8_lossy(&o.stdout));
+    let out = String::from_utf8_lossy(&o.stdout);
+    if let Some(why) = bad_input_problem(o.status.code(), &out, &stderr(o), needle) {
+        panic!("{why}");
+    }
 }
