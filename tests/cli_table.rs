@@ -1,6 +1,6 @@
 //! `kefric lookup`, `kefric verify` and `kefric build` on small inputs.
 mod common;
-use common::{kefric, SMALL_BUILD};
+use common::{kefric, TempDir, SMALL_BUILD};
 
 #[test]
 fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
@@ -32,8 +32,7 @@ fn verify_passes_on_the_embedded_table_and_a_small_build_round_trips() {
         let dev: f64 = line.split_whitespace().find_map(|w| w.parse().ok()).unwrap();
         assert!(dev > 0.0 && dev <= 3e-6, "{line}");
     }
-    let dir = std::env::temp_dir().join(format!("kefric-cli-table-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("cli-table");
     let path = dir.join("small.kft");
     let p = path.to_str().unwrap();
     let o = kefric(&[SMALL_BUILD, &["--out", p]].concat());
@@ -60,5 +59,4 @@ fn verify_passes_on_the_embedded_table_and_a_small_build_round_trips() {
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("misses its tolerance"));
     assert!(!strict.exists());
-    std::fs::remove_dir_all(&dir).unwrap();
 }
