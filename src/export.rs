@@ -15,16 +15,93 @@
 //! [`write_npz`] and [`write_npy_dir`] write atomically (a temporary file
 //! in the same directory, flushed, then renamed).
 
-use crate::build::{integrate_grid, BuildError, BuildOptions, Progress};
+use crate::build::{params_of, BuildError, BuildOptions, Progress};
+use crate::io::write_atomic_with;
+use crate::model::Model;
 use crate::spline::Axis;
-use crate::table::{write_atomic_with, Table};
+use crate::table::Table;
 use ndarray::{arr0, ArrayD, IxDyn};
+use rayon::prelude::*;
 use ndarray_npy::{NpzWriter, WriteNpyExt};
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 
 /// A named array, as it will appear in the `.npz` file (or as `NAME.npy`).
 pub type Named = (&'static str, ArrayD<f64>);
+
+/// The model evaluated on the integration grid (shape ψ × θ × h*, h* fastest).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    /// ψ nodes.
+    pub psi: Vec<f64>,
+    /// θ nodes.
+    pub theta: Vec<f64>,
+    /// h* nodes.
+    pub h_star: Vec<f64>,
+    /// P*.
+    pub p_star: Vec<f64>,
+    /// Fs*.
+    pub fs_star: Vec<f64>,
+    /// Q*.
+    pub q_star: Vec<f64>,
+    /// F*.
+    pub f_star: Vec<f64>,
+    /// μ, NaN where F* ≤ 0.
+    pub mu: Vec<f64>,
+}
+
+/// Integrates the model on the (ψ, θ, h*) grid of the options' axes.
+pub fn integrate_grid(o: &BuildOptions, progress: &dyn Progress) -> Result<Grid, BuildError> {
+    o.validate()?;
+    let [ax_p, ax_t, _] = o.axes();
+    let psi: Vec<f64> = (0..ax_p.nodes).map(|i| ax_p.value(i)).collect();
+    let theta: Vec<f64> = (0..ax_t.nodes).map(|j| ax_t.value(j)).collect();
+    let h = o.h_nodes();
+    progress.stage(
+        "integrating the (psi, theta, h*) grid",
+        (psi.len() * theta.len()) as u64,
+    );
+    let columns: Vec<Result<Vec<[f64; 5]>, BuildError>> = (0..psi.len() * theta.len())
+        .into_par_iter()
+        .map(|ij| {
+            let (p, t) = (psi[ij / theta.len()], theta[ij % theta.len()]);
+            let model = Model::new(params_of(o, p, t))?;
+            let col = h
+                .iter()
+                .map(|&h| {
+                    let c = model.at_h_star(h).map_err(|error| BuildError::Eval {
+                        psi: p,
+                        theta: t,
+                        error,
+                    })?;
+                    Ok([c.p_star, c.fs_star, c.q_star, c.f_star, c.mu.unwrap_or(f64::NAN)])
+                })
+                .collect();
+            progress.advance(1);
+            col
+        })
+        .collect();
+    let mut grid = Grid {
+        psi,
+        theta,
+        h_star: h,
+        p_star: vec![],
+        fs_star: vec![],
+        q_star: vec![],
+        f_star: vec![],
+        mu: vec![],
+    };
+    for col in columns {
+        for [p, fs, q, f, mu] in col? {
+            grid.p_star.push(p);
+            grid.fs_star.push(fs);
+            grid.q_star.push(q);
+            grid.f_star.push(f);
+            grid.mu.push(mu);
+        }
+    }
+    Ok(grid)
+}
 
 /// The lookup table's nodes inside its domain on each axis (ψ, θ, F*), in
 /// natural units, ghost nodes excluded. Node values are clamped into the
@@ -98,9 +175,9 @@ pub fn arrays(table: &Table, progress: &dyn Progress) -> Result<Vec<Named>, Buil
         ("grid_q_star", cube(g_shape, grid.q_star)),
         ("grid_f_star", cube(g_shape, grid.f_star)),
         ("grid_mu", cube(g_shape, grid.mu)),
-        ("beta", arr0(d.params.beta).into_dyn()),
-        ("nu", arr0(d.params.nu).into_dyn()),
-        ("eps_star", arr0(d.params.eps_star).into_dyn()),
+        ("beta", arr0(d.beta).into_dyn()),
+        ("nu", arr0(d.nu).into_dyn()),
+        ("eps_star", arr0(d.eps_star).into_dyn()),
     ])
 }
 
@@ -163,14 +240,14 @@ mod tests {
         let table = Table::embedded();
         let d = table.domain();
         let nodes = table_nodes(table);
-        let spec = table.build_spec();
+        let spec = &table.info().build;
         for (k, (values, (lo, hi))) in nodes.iter().zip(d.ranges()).enumerate() {
-            assert_eq!(values.len(), spec.nodes[k] as usize);
+            assert_eq!(values.len(), spec.nodes[k]);
             assert_eq!((values[0], values[values.len() - 1]), (lo, hi));
             assert!(values.windows(2).all(|w| w[0] < w[1]));
             // Each value is a node of the table's axis (ghost nodes skipped).
             let axis = table.axes()[k];
-            let offset = if k == 1 { 0 } else { spec.ghosts as usize };
+            let offset = if k == 1 { 0 } else { spec.ghosts };
             for (i, &v) in values.iter().enumerate() {
                 let want = axis.value(i + offset);
                 assert!((v - want).abs() <= 1e-14 * want.abs(), "{k} {i}: {v} {want}");

@@ -9,8 +9,11 @@
 //!   CEB-type comparison model.
 //! - [`Table`]: μ(ψ, θ, F*) from a precomputed table (nanoseconds); the
 //!   default table is compiled in.
-//! - `build`, `export`, `validate`, `figures` (default features): the table
-//!   builder, NumPy export, the paper's statements and figures.
+//! - [`paper`]: the paper's statements, computed from the model.
+//! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
+//!   the table builder and its verification, NumPy export, the figures.
+//!   Neither feature is on by default: a plain dependency is the light
+//!   runtime (the model and the lookups).
 //!
 //! The model is specified, equation by equation, in `docs/MODEL.md`; doc
 //! comments cite its sections.
@@ -20,30 +23,29 @@
 //! let table = Table::embedded();                       // the default table
 //! let mu = table.mu(1.0, 0.001, 0.01)?;                // ψ, θ, F*
 //! let exact = Model::new(Params::new(1.0, 0.001))?.at_f_star(0.01)?.mu.unwrap();
-//! assert!((mu - exact).abs() <= table.domain().tolerance * exact);
+//! assert!((mu - exact).abs() <= table.info().tolerance * exact);
 //! assert!((exact - 0.52521087083).abs() < 1e-10);       // MODEL.md §7
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![warn(missing_docs)]
+#![deny(unsafe_op_in_unsafe_fn)]
 
-pub mod asperity;
 #[cfg(feature = "builder")]
 pub mod build;
 #[cfg(feature = "builder")]
 pub mod export;
 #[cfg(feature = "plot")]
 pub mod figures;
+pub mod io;
 mod model;
+pub mod paper;
 mod params;
-mod quadrature;
 pub mod spline;
-mod surface;
 pub mod table;
-pub mod validate;
 
-pub use model::{Contact, EvalError, Model, H_LIMIT};
+pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use params::{
     Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
     EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
-pub use table::{Domain, LookupError, Table, TableError};
+pub use table::{Domain, LookupError, Table, TableError, TableInfo};

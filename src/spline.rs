@@ -7,9 +7,10 @@
 //! an axis on which the function is even about its first node). Fitting
 //! happens once, in the builder; a lookup only blends 4×4×4 coefficients.
 
-/// How a physical input maps to the uniform coordinate of an axis (stored
-/// as is in table files: its variant index is the format's scale code).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+/// How a physical input maps to the uniform coordinate of an axis. Table
+/// files store it by [`Scale::code`], an explicit number, so reordering
+/// the variants cannot change the format.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Scale {
     /// Coordinate = ln(value); value > 0.
     Log,
@@ -21,6 +22,25 @@ pub enum Scale {
 }
 
 impl Scale {
+    /// The scale's code in table files (format version 1).
+    pub const fn code(self) -> u8 {
+        match self {
+            Scale::Log => 0,
+            Scale::Sqrt => 1,
+            Scale::Linear => 2,
+        }
+    }
+
+    /// The scale with this code, if any.
+    pub const fn from_code(code: u8) -> Option<Scale> {
+        match code {
+            0 => Some(Scale::Log),
+            1 => Some(Scale::Sqrt),
+            2 => Some(Scale::Linear),
+            _ => None,
+        }
+    }
+
     /// The coordinate of `value`.
     #[inline(always)]
     pub fn forward(self, value: f64) -> f64 {
@@ -37,16 +57,6 @@ impl Scale {
             Scale::Log => c.exp(),
             Scale::Sqrt => c * c,
             Scale::Linear => c,
-        }
-    }
-
-    /// d(value)/d(coordinate) at `value`.
-    #[inline(always)]
-    pub fn jacobian(self, value: f64) -> f64 {
-        match self {
-            Scale::Log => value,
-            Scale::Sqrt => 2.0 * value.sqrt(),
-            Scale::Linear => 1.0,
         }
     }
 }
@@ -225,6 +235,15 @@ mod tests {
         };
         let ratio = err(11) / err(21);
         assert!(ratio > 12.0, "halving the spacing gained only {ratio}");
+    }
+
+    #[test]
+    fn scale_codes_round_trip_and_are_the_format_s() {
+        for (scale, code) in [(Scale::Log, 0), (Scale::Sqrt, 1), (Scale::Linear, 2)] {
+            assert_eq!(scale.code(), code);
+            assert_eq!(Scale::from_code(code), Some(scale));
+        }
+        assert_eq!(Scale::from_code(3), None);
     }
 
     #[test]

@@ -6,7 +6,7 @@
 //! this model and the tolerance. Numbers measured when these tests were
 //! written are quoted in the comments ("measured").
 //!
-//! The quantities are computed by `ke_friction::validate`, the same
+//! The quantities are computed by `ke_friction::paper`, the same
 //! functions `kefric validate` uses for `docs/validation.md`; how the
 //! power-law exponents are fitted (301 points equally spaced in h* over
 //! 0 ≤ h* ≤ 3, F* ≤ 0.1, ordinary least squares in log–log coordinates) and
@@ -14,7 +14,7 @@
 //! there.
 mod common;
 use common::rel;
-use ke_friction::validate::{
+use ke_friction::paper::{
     adhesion_ratio_at, adhesion_ratio_crossing, exponent_n, extremes_over_h, friction_peak, ke_over_ceb,
     max_adhesion_ratio, power_m, CEB_LOADS, MIN_FIT_POINTS, SWEEP_POINTS,
 };
@@ -195,7 +195,7 @@ fn ceb_type_mu_is_1_5x_3_to_4x_and_10x_below_ke_at_psi_0_5_1_2() {
 /// ψ = 2) and n at ψ = 2, which follows from the latter (n ≈ 1 − m).
 #[test]
 fn statements_differ_from_the_paper_only_where_model_md_says_so() {
-    use ke_friction::validate::{statements, Verdict};
+    use ke_friction::paper::{statements, Verdict};
     let rows = statements().unwrap();
     let differ: Vec<&str> = rows
         .iter()

@@ -1,5 +1,5 @@
 //! The fast lookup kernel: x86-64 CPUs with AVX2 and FMA, tables stored in
-//! single precision (chosen at run time by [`Table`]'s constructor).
+//! single precision (chosen at run time by the table's constructor).
 //!
 //! It works in f32 throughout, eight queries to a vector: the maps ln ψ,
 //! √θ, ln F*, the cell search, the ψ weights and the final exponential
@@ -14,7 +14,9 @@
 //! ln μ, which reaches −9 in the default table, in f32; the coefficients
 //! are f32 already); the portable f64 kernel is the exact interpolant.
 
-use super::{Out, Table};
+#![allow(unsafe_op_in_unsafe_fn)] // TEMPORARY: hygiene pass pending
+use super::layout::Layout;
+use super::BatchOutput;
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
@@ -51,16 +53,16 @@ pub(super) struct Kernel {
 }
 
 impl Kernel {
-    /// The kernel for a table, if this CPU runs it and the table suits it:
-    /// f32 coefficients, a domain of normal f32 numbers, fewer than 2048
-    /// nodes per axis (so that cell coordinates keep their precision in
-    /// f32, see `k_hi`) and offsets that fit an i32.
-    pub(super) fn new(t: &Table, coefs: &[f32]) -> Option<Kernel> {
+    /// The kernel for a table's layout and f32 coefficients, if this CPU
+    /// runs it and the table suits it: a domain of normal f32 numbers,
+    /// fewer than 2048 nodes per axis (so that cell coordinates keep their
+    /// precision in f32, see `k_hi`) and offsets that fit an i32.
+    pub(super) fn new(t: &Layout, coefs: &[f32]) -> Option<Kernel> {
         if !(std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")) {
             return None;
         }
         let normal = |v: f64| v == 0.0 || (v.abs() >= f32::MIN_POSITIVE as f64 && v.abs() <= 1e30);
-        if !t.domain.ranges().iter().all(|&(lo, hi)| normal(lo) && normal(hi)) {
+        if !t.ranges.iter().all(|&(lo, hi)| normal(lo) && normal(hi)) {
             return None;
         }
         let [s0, s1, _] = t.strides;
@@ -102,10 +104,27 @@ impl Kernel {
             o_lo: lanes(t.offset.map(|v| v - head(v))),
             last_cell: lanes(t.last_cell.map(|v| v as f64)),
             stride: [stride[0] as i32, stride[1] as i32, stride[2] as i32, 0, 0, 0, 0, 0],
-            lo: [t.domain.psi.0, t.domain.theta.0, t.domain.f_star.0, 1.0],
-            hi: [t.domain.psi.1, t.domain.theta.1, t.domain.f_star.1, 1.0],
+            lo: [t.ranges[0].0, t.ranges[1].0, t.ranges[2].0, 1.0],
+            hi: [t.ranges[0].1, t.ranges[1].1, t.ranges[2].1, 1.0],
             f_inv_step: t.inv_step[2],
         })
+    }
+
+    /// One lookup (see [`eval`]): μ, NaN for a query outside the domain,
+    /// and if `SLOPE`, d ln μ/d(cell coordinate of F*).
+    #[inline(always)]
+    pub(super) fn eval<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
+        // SAFETY: a `Kernel` exists only where `new` found AVX2 and FMA.
+        unsafe { eval::<SLOPE>(self, psi, theta, f_star) }
+    }
+
+    /// Many lookups (see [`batch`]); the slices must all have `out`'s
+    /// length. Returns the index of the first query outside the domain.
+    pub(super) fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
+        let n = out.len();
+        assert!(psi.len() == n && theta.len() == n && f_star.len() == n, "batch slices of one length");
+        // SAFETY: AVX2 and FMA as in `eval`; the lengths are checked above.
+        unsafe { batch(self, psi, theta, f_star, out) }
     }
 }
 
@@ -230,7 +249,7 @@ unsafe fn widen(v: __m256) -> [__m256d; 2] {
 /// # Safety
 /// The CPU must support AVX2 and FMA (as [`Kernel::new`] checked).
 #[target_feature(enable = "avx2,fma")]
-pub(super) unsafe fn eval<const SLOPE: bool>(k: &Kernel, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
+unsafe fn eval<const SLOPE: bool>(k: &Kernel, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
     // The domain check, all three at once (ordered comparisons: NaN fails).
     let xd = _mm256_setr_pd(psi, theta, f_star, 1.0);
     let ok = _mm256_and_pd(
@@ -299,21 +318,21 @@ unsafe fn slopes(k: &Kernel, mu: __m256d, d: __m256d, f_star: *const f64) -> __m
 /// # Safety
 /// The CPU must support AVX2 and FMA; the slices have `out`'s length.
 #[target_feature(enable = "avx2,fma")]
-pub(super) unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: Out) -> Option<usize> {
+unsafe fn batch(k: &Kernel, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
     match out {
-        Out::Mu(_) => run::<false>(k, psi, theta, f_star, out),
-        Out::WithSlope(_) => run::<true>(k, psi, theta, f_star, out),
+        BatchOutput::Mu(_) => run::<false>(k, psi, theta, f_star, out),
+        BatchOutput::WithSlope(_) => run::<true>(k, psi, theta, f_star, out),
     }
 }
 
-/// [`batch`] with `SLOPE` true exactly when `out` is `Out::WithSlope`.
+/// [`batch`] with `SLOPE` true exactly when `out` is `BatchOutput::WithSlope`.
 #[inline(always)]
 unsafe fn run<const SLOPE: bool>(
     k: &Kernel,
     psi: &[f64],
     theta: &[f64],
     f_star: &[f64],
-    mut out: Out,
+    mut out: BatchOutput,
 ) -> Option<usize> {
     let n = out.len();
     let map = |a: usize| Map {
@@ -344,11 +363,11 @@ unsafe fn run<const SLOPE: bool>(
         ready = i + 16 <= n && locate(k, &maps, x, i + 8, next);
         let (mu, d) = finish::<SLOPE>(k, this);
         match &mut out {
-            Out::Mu(o) => {
+            BatchOutput::Mu(o) => {
                 _mm256_storeu_pd(o.as_mut_ptr().add(i), mu[0]);
                 _mm256_storeu_pd(o.as_mut_ptr().add(i + 4), mu[1]);
             }
-            Out::WithSlope(o) => {
+            BatchOutput::WithSlope(o) => {
                 let (mut m, mut s) = ([0.0; 8], [0.0; 8]);
                 _mm256_storeu_pd(m.as_mut_ptr(), mu[0]);
                 _mm256_storeu_pd(m.as_mut_ptr().add(4), mu[1]);
@@ -370,8 +389,8 @@ unsafe fn run<const SLOPE: bool>(
             return Some(j);
         }
         match &mut out {
-            Out::Mu(o) => o[j] = r.0,
-            Out::WithSlope(o) => o[j] = (r.0, super::slope(r.0, r.1, k.f_inv_step, f_star[j])),
+            BatchOutput::Mu(o) => o[j] = r.0,
+            BatchOutput::WithSlope(o) => o[j] = (r.0, super::slope(r.0, r.1, k.f_inv_step, f_star[j])),
         }
     }
     None
@@ -426,7 +445,7 @@ unsafe fn locate(k: &Kernel, maps: &[Map; 3], x: [&[f64]; 3], i: usize, l: &mut 
 
 /// Query `q` of a located block, blended (see [`blend`]).
 #[inline(always)]
-unsafe fn one<const SLOPE: bool>(k: &Kernel, l: &Located, q: usize) -> (__m256, __m256) {
+unsafe fn blend_query<const SLOPE: bool>(k: &Kernel, l: &Located, q: usize) -> (__m256, __m256) {
     let f = _mm256_set_m128(_mm_broadcast_ss(&l.f_f[q]), _mm_broadcast_ss(&l.f_theta[q]));
     let wp = [
         _mm256_broadcast_ss(&l.w_psi[0][q]),
@@ -455,14 +474,14 @@ unsafe fn finish<const SLOPE: bool>(k: &Kernel, l: &Located) -> ([__m256d; 2], [
     // (Not `array::from_fn`, `map` or a closure: those are separate
     // functions, compiled without AVX2 and not always inlined.)
     let r = [
-        one::<SLOPE>(k, l, 0),
-        one::<SLOPE>(k, l, 1),
-        one::<SLOPE>(k, l, 2),
-        one::<SLOPE>(k, l, 3),
-        one::<SLOPE>(k, l, 4),
-        one::<SLOPE>(k, l, 5),
-        one::<SLOPE>(k, l, 6),
-        one::<SLOPE>(k, l, 7),
+        blend_query::<SLOPE>(k, l, 0),
+        blend_query::<SLOPE>(k, l, 1),
+        blend_query::<SLOPE>(k, l, 2),
+        blend_query::<SLOPE>(k, l, 3),
+        blend_query::<SLOPE>(k, l, 4),
+        blend_query::<SLOPE>(k, l, 5),
+        blend_query::<SLOPE>(k, l, 6),
+        blend_query::<SLOPE>(k, l, 7),
     ];
     let g = [r[0].0, r[1].0, r[2].0, r[3].0, r[4].0, r[5].0, r[6].0, r[7].0];
     let mu = widen(exp8(sums(&g)));

@@ -17,8 +17,8 @@
 //! constants); any failure is a [`TableError`], never a panic.
 
 use crate::params::{Fit, Kind, Params};
-use crate::spline::Scale;
-use serde::{Deserialize, Serialize};
+use serde::de::{self, EnumAccess, VariantAccess, Visitor};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// The first eight bytes of every table file.
 pub const MAGIC: [u8; 8] = *b"KEFRICTB";
@@ -28,6 +28,7 @@ const HEADER: usize = 20;
 
 /// Why a table file was rejected.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum TableError {
     /// Fewer bytes than a header and a checksum.
     #[error("not a ke-friction table: {len} bytes is too short (at least 24)")]
@@ -79,8 +80,8 @@ pub enum TableError {
 /// One axis of the lookup grid, as stored.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AxisSpec {
-    /// Coordinate map.
-    pub scale: Scale,
+    /// Coordinate map, by [`crate::spline::Scale::code`].
+    pub scale: u8,
     /// Coordinate of the first node (a ghost node, if any, lies below the domain).
     pub first: f64,
     /// Coordinate spacing.
@@ -93,8 +94,10 @@ pub struct AxisSpec {
     pub hi: f64,
 }
 
-/// Stored precision of the coefficients.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+/// Stored coefficients, in single or double precision. On the wire: the
+/// code [`Coefs::F32_CODE`] or [`Coefs::F64_CODE`] (a varint), then the
+/// array; the codes are explicit, not the variants' order.
+#[derive(Debug, Clone, PartialEq)]
 pub enum Coefs {
     /// Single precision (relative rounding 6e-8).
     F32(Vec<f32>),
@@ -103,6 +106,11 @@ pub enum Coefs {
 }
 
 impl Coefs {
+    /// The code of f32 coefficients.
+    pub const F32_CODE: u32 = 0;
+    /// The code of f64 coefficients.
+    pub const F64_CODE: u32 = 1;
+
     /// Number of coefficients.
     pub fn len(&self) -> usize {
         match self {
@@ -111,17 +119,42 @@ impl Coefs {
         }
     }
 
-    /// Whether empty.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
     /// As doubles.
     pub fn to_f64(&self) -> Vec<f64> {
         match self {
             Coefs::F32(v) => v.iter().map(|&x| x as f64).collect(),
             Coefs::F64(v) => v.clone(),
         }
+    }
+}
+
+impl Serialize for Coefs {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Coefs::F32(v) => s.serialize_newtype_variant("Coefs", Coefs::F32_CODE, "F32", v),
+            Coefs::F64(v) => s.serialize_newtype_variant("Coefs", Coefs::F64_CODE, "F64", v),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Coefs {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Coefs, D::Error> {
+        struct Codes;
+        impl<'de> Visitor<'de> for Codes {
+            type Value = Coefs;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("coefficients with precision code 0 (f32) or 1 (f64)")
+            }
+            fn visit_enum<A: EnumAccess<'de>>(self, data: A) -> Result<Coefs, A::Error> {
+                let (code, array): (u32, _) = data.variant()?;
+                match code {
+                    Coefs::F32_CODE => array.newtype_variant().map(Coefs::F32),
+                    Coefs::F64_CODE => array.newtype_variant().map(Coefs::F64),
+                    other => Err(de::Error::custom(format_args!("unknown precision code {other}"))),
+                }
+            }
+        }
+        d.deserialize_enum("Coefs", &["F32", "F64"], Codes)
     }
 }
 

@@ -1,31 +1,26 @@
-//! The offline table builder: integrate the model over a (ψ, θ, h*) grid
-//! in parallel, solve for the lookup grid's F* nodes, fit the splines, and
-//! measure the result against direct integration.
+//! The offline table builder: solve the model for the lookup grid's F*
+//! nodes in parallel, fit the splines, and measure the result against
+//! direct integration ([`verify`]).
 //!
 //! Deterministic: every number depends only on the options (parallel work
 //! is collected in a fixed order, and the verification points come from a
 //! seeded generator), so the same options give a byte-identical file on
 //! any number of threads.
 
+pub mod verify;
+
 use crate::model::{EvalError, Model, H_LIMIT};
 use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
-use crate::table::format::{self, Accuracy, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
+use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
+pub use crate::table::Precision;
 use crate::table::Table;
 use rayon::prelude::*;
 
-/// The largest F* a table may cover (ghost nodes included): F* = F/(A_n·H)
+/// The largest F* a table may cover, ghost nodes included (a limit on the
+/// builder's input, not the paper's range of loads): F* = F/(A_n·H)
 /// above 1 would already mean a mean pressure above the hardness.
-pub const F_STAR_MAX: f64 = 100.0;
-
-/// Stored precision of the table's coefficients.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Precision {
-    /// 4 bytes a coefficient; enough for tolerances down to ~1e-6.
-    F32,
-    /// 8 bytes a coefficient.
-    F64,
-}
+pub const F_STAR_LIMIT: f64 = 100.0;
 
 /// Everything that shapes a table. [`Default`] gives the default table.
 #[derive(Debug, Clone, PartialEq)]
@@ -87,6 +82,7 @@ impl Default for BuildOptions {
 
 /// Why a build failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum BuildError {
     /// An option is out of range.
     #[error(transparent)]
@@ -128,27 +124,6 @@ impl Progress for () {
     fn advance(&self, _: u64) {}
 }
 
-/// The model evaluated on the integration grid (shape ψ × θ × h*, h* fastest).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Grid {
-    /// ψ nodes.
-    pub psi: Vec<f64>,
-    /// θ nodes.
-    pub theta: Vec<f64>,
-    /// h* nodes.
-    pub h_star: Vec<f64>,
-    /// P*.
-    pub p_star: Vec<f64>,
-    /// Fs*.
-    pub fs_star: Vec<f64>,
-    /// Q*.
-    pub q_star: Vec<f64>,
-    /// F*.
-    pub f_star: Vec<f64>,
-    /// μ, NaN where F* ≤ 0.
-    pub mu: Vec<f64>,
-}
-
 /// A finished build.
 #[derive(Debug, Clone)]
 pub struct Built {
@@ -158,7 +133,8 @@ pub struct Built {
     pub table: Table,
 }
 
-fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
+/// The model's parameters at (ψ, θ) with the options' constants.
+pub(crate) fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
     Params::new(psi, theta)
         .beta(o.beta)
         .nu(o.nu)
@@ -197,12 +173,7 @@ impl BuildOptions {
             (2.0..=1e5).contains(&v)
         })?;
         check("tolerance", self.tolerance, "in (0, 1]", |v| v > 0.0 && v <= 1.0)?;
-        check(
-            "samples",
-            self.samples as f64,
-            "a whole number from 2 to 10000000",
-            |v| (2.0..=1e7).contains(&v),
-        )?;
+        verify::check_samples(self.samples)?;
         // The model must be valid at every node, ghost nodes included: at
         // both ends of the ψ axis and at the top of the θ axis.
         let axes = self.axes();
@@ -219,7 +190,7 @@ impl BuildOptions {
             "f_star",
             ax_f.value(ax_f.nodes - 1),
             "<= 100, ghost nodes included",
-            |v| v <= F_STAR_MAX,
+            |v| v <= F_STAR_LIMIT,
         )?;
         // Sizes: the table's coefficient arrays (the limit `Table` accepts)
         // and the integration grid (five arrays of doubles, twice over).
@@ -271,63 +242,11 @@ impl BuildOptions {
         ]
     }
 
-    fn h_nodes(&self) -> Vec<f64> {
+    /// The integration grid's h* points.
+    pub(crate) fn h_nodes(&self) -> Vec<f64> {
         let (lo, hi, n) = self.h_star;
         (0..n).map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64).collect()
     }
-}
-
-/// Integrates the model on the (ψ, θ, h*) grid of the options' axes.
-pub fn integrate_grid(o: &BuildOptions, progress: &dyn Progress) -> Result<Grid, BuildError> {
-    o.validate()?;
-    let [ax_p, ax_t, _] = o.axes();
-    let psi: Vec<f64> = (0..ax_p.nodes).map(|i| ax_p.value(i)).collect();
-    let theta: Vec<f64> = (0..ax_t.nodes).map(|j| ax_t.value(j)).collect();
-    let h = o.h_nodes();
-    progress.stage(
-        "integrating the (psi, theta, h*) grid",
-        (psi.len() * theta.len()) as u64,
-    );
-    let columns: Vec<Result<Vec<[f64; 5]>, BuildError>> = (0..psi.len() * theta.len())
-        .into_par_iter()
-        .map(|ij| {
-            let (p, t) = (psi[ij / theta.len()], theta[ij % theta.len()]);
-            let model = Model::new(params_of(o, p, t))?;
-            let col = h
-                .iter()
-                .map(|&h| {
-                    let c = model.at_h_star(h).map_err(|error| BuildError::Eval {
-                        psi: p,
-                        theta: t,
-                        error,
-                    })?;
-                    Ok([c.p_star, c.fs_star, c.q_star, c.f_star, c.mu.unwrap_or(f64::NAN)])
-                })
-                .collect();
-            progress.advance(1);
-            col
-        })
-        .collect();
-    let mut grid = Grid {
-        psi,
-        theta,
-        h_star: h,
-        p_star: vec![],
-        fs_star: vec![],
-        q_star: vec![],
-        f_star: vec![],
-        mu: vec![],
-    };
-    for col in columns {
-        for [p, fs, q, f, mu] in col? {
-            grid.p_star.push(p);
-            grid.fs_star.push(fs);
-            grid.q_star.push(q);
-            grid.f_star.push(f);
-            grid.mu.push(mu);
-        }
-    }
-    Ok(grid)
 }
 
 /// Builds a table: integrates, solves, fits, measures, encodes.
@@ -383,7 +302,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         Precision::F64 => Coefs::F64(v),
     };
     let spec = |axis: &Axis, (lo, hi): (f64, f64)| AxisSpec {
-        scale: axis.scale,
+        scale: axis.scale.code(),
         first: axis.first,
         step: axis.step,
         nodes: axis.nodes as u32,
@@ -405,7 +324,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             seed: o.seed,
             generator: concat!("ke-friction ", env!("CARGO_PKG_VERSION")).to_string(),
         },
-        accuracy: Accuracy {
+        accuracy: format::Accuracy {
             tolerance: o.tolerance,
             max_rel: 0.0,
             p99_rel: 0.0,
@@ -414,18 +333,24 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         },
     };
     let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
-    let accuracy = measure(&draft, o.samples, o.seed, progress)?;
     // The record is the exact interpolant's (the same on every machine);
     // the verdict also counts this machine's kernel, as `kefric verify` does.
-    let max_rel = accuracy.max_rel + kernel_deviation(&draft, o.samples, o.seed);
-    if max_rel.is_nan() || max_rel > o.tolerance {
+    let checked = verify::verify(&draft, o.tolerance, o.samples, o.seed, progress)?;
+    let accuracy = checked.accuracy;
+    if !checked.passes() {
         return Err(BuildError::Tolerance {
-            max_rel,
+            max_rel: checked.max_rel(),
             tolerance: o.tolerance,
             worst: accuracy.worst,
         });
     }
-    payload.accuracy = accuracy;
+    payload.accuracy = format::Accuracy {
+        tolerance: o.tolerance,
+        max_rel: accuracy.max_rel,
+        p99_rel: accuracy.p99_rel,
+        samples: accuracy.samples as u32,
+        worst: accuracy.worst,
+    };
     let bytes = format::encode(&payload);
     let table = Table::from_bytes(&bytes).expect("a freshly encoded table decodes");
     Ok(Built { bytes, table })
@@ -444,153 +369,37 @@ fn guess(h: &[f64], f_col: &[f64], f: f64) -> f64 {
     1.0
 }
 
-/// How far this machine's lookups ([`Table::mu`], which is the f32 kernel
-/// where [`Table::fast_kernel`]) stray from the exact interpolant
-/// ([`Table::mu_portable`]) at the points [`measure`] checks: the largest
-/// relative difference, 0 where the portable kernel runs.
-pub fn kernel_deviation(table: &Table, samples: usize, seed: u64) -> f64 {
-    if !table.fast_kernel() {
-        return 0.0;
-    }
-    sample_points(table, samples, seed)
-        .iter()
-        .map(|&[p, t, f]| match (table.mu(p, t, f), table.mu_portable(p, t, f)) {
-            (Ok(fast), Ok(exact)) => (fast / exact - 1.0).abs(),
-            _ => f64::INFINITY,
-        })
-        .fold(0.0, f64::max)
-}
-
-/// Measures a table's μ against direct integration at `samples` points in
-/// its domain (seeded): half uniform in the grid's coordinates, half at the
-/// centres of random cells (the midpoint of the cell in every axis, where
-/// interpolation errs most). The accuracy record carries the table's own
-/// tolerance.
-pub fn measure(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<Accuracy, BuildError> {
-    let points = sample_points(table, samples, seed);
-    let d = *table.domain();
-    progress.stage("checking against direct integration", points.len() as u64);
-    let errors: Vec<Result<f64, BuildError>> = points
-        .par_iter()
-        .map(|&[p, t, f]| {
-            let params = Params {
-                psi: p,
-                theta: t,
-                ..d.params
-            };
-            let model = Model::new(params)?;
-            let exact = model
-                .at_f_star(f)
-                .map_err(|error| BuildError::Eval {
-                    psi: p,
-                    theta: t,
-                    error,
-                })?
-                .mu
-                .unwrap_or(f64::NAN);
-            let got = table.mu_portable(p, t, f).unwrap_or(f64::NAN);
-            progress.advance(1);
-            Ok(((got - exact) / exact).abs())
-        })
-        .collect();
-    let errors = errors.into_iter().collect::<Result<Vec<f64>, _>>()?;
-    let (mut worst, mut max_rel) = (0, 0.0f64);
-    for (i, &e) in errors.iter().enumerate() {
-        if e.is_nan() || e > max_rel {
-            worst = i;
-            max_rel = e;
-        }
-    }
-    let mut sorted = errors.clone();
-    sorted.sort_by(f64::total_cmp);
-    let p99 = sorted[((sorted.len() as f64 * 0.99).ceil() as usize).clamp(1, sorted.len()) - 1];
-    Ok(Accuracy {
-        tolerance: d.tolerance,
-        max_rel,
-        p99_rel: p99,
-        samples: errors.len() as u32,
-        worst: points[worst],
-    })
-}
-
-/// The verification points: in the domain, half uniform in the axes'
-/// coordinates, half at cell centres.
-pub fn sample_points(table: &Table, samples: usize, seed: u64) -> Vec<[f64; 3]> {
-    let d = table.domain();
-    let ranges = d.ranges();
-    let axes = table.axes();
-    let mut rng = SplitMix64(seed);
-    (0..samples)
-        .map(|n| {
-            let mut q = [0.0; 3];
-            for k in 0..3 {
-                let (lo, hi) = ranges[k];
-                let (a, s) = (axes[k].scale, axes[k]);
-                let (c_lo, c_hi) = (a.forward(lo), a.forward(hi));
-                let c = if n % 2 == 0 {
-                    c_lo + (c_hi - c_lo) * rng.unit()
-                } else {
-                    // Centre of a random cell lying inside the domain.
-                    let first = ((c_lo - s.first) / s.step).round();
-                    let cells = ((c_hi - c_lo) / s.step).round().max(1.0);
-                    let i = (rng.unit() * cells).floor().min(cells - 1.0);
-                    s.first + (first + i + 0.5) * s.step
-                };
-                q[k] = a.inverse(c).clamp(lo, hi);
-            }
-            q
-        })
-        .collect()
-}
-
-/// A small, fast, seedable generator (Steele, Lea & Flood's SplitMix64).
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-}
-
 impl BuildOptions {
     /// The options a table was built with, reconstructed from what the
     /// file records: its domain and model constants, its tolerance, its
     /// build spec (nodes, ghost nodes, the h* grid, samples, seed) and the
-    /// stored precision of its coefficients. [`integrate_grid`] with these
+    /// stored precision of its coefficients. [`crate::export::integrate_grid`] with these
     /// options integrates the model on the table's (ψ, θ, h*) grid (whose
     /// F* gave the builder its starting guesses; the file does not store it).
     pub fn from_table(table: &Table) -> BuildOptions {
-        let d = table.domain();
-        let b = table.build_spec();
+        let info = table.info();
+        let (d, b) = (&info.domain, &info.build);
         BuildOptions {
             psi: d.psi,
             theta: d.theta,
             f_star: d.f_star,
-            nodes: b.nodes.map(|n| n as usize),
-            ghosts: b.ghosts as usize,
-            h_star: (b.h_lo, b.h_hi, b.h_nodes as usize),
-            beta: d.params.beta,
-            nu: d.params.nu,
-            eps_star: d.params.eps_star,
-            fit: d.params.fit,
-            kind: d.params.kind,
-            precision: if table.single_precision() {
-                Precision::F32
-            } else {
-                Precision::F64
-            },
-            tolerance: table.accuracy().tolerance,
-            samples: b.samples as usize,
+            nodes: b.nodes,
+            ghosts: b.ghosts,
+            h_star: b.h_star,
+            beta: d.beta,
+            nu: d.nu,
+            eps_star: d.eps_star,
+            fit: d.fit,
+            kind: d.kind,
+            precision: info.precision,
+            tolerance: info.tolerance,
+            samples: b.samples,
             seed: b.seed,
         }
     }
+}
+
+/// The threads a build runs on.
+pub fn threads() -> usize {
+    rayon::current_num_threads()
 }

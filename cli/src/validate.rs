@@ -1,7 +1,7 @@
 //! `kefric validate`: the paper's statements against this model, as Markdown.
 
-use super::Failure;
-use ke_friction::validate::{statements, Statement, Verdict};
+use crate::args::Failure;
+use ke_friction::paper::{statements, Statement, Verdict};
 
 /// Compare this model with the statements of the paper (MODEL.md §7, §8)
 /// and print a Markdown table (`kefric validate > docs/validation.md`).

@@ -1,6 +1,6 @@
 //! `kefric export`: a table's values and its integration grid as NumPy arrays.
 
-use super::{Bar, Failure};
+use crate::args::{check_writable, load_table, Bar, Failure};
 use ke_friction::build::BuildError;
 use ke_friction::export::{arrays, write_npy_dir, write_npz};
 use std::path::PathBuf;
@@ -34,9 +34,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         (None, Some(p)) => ("--npy", p, true),
         _ => unreachable!("clap requires exactly one of --npz and --npy"),
     };
-    let table = super::table(args.table.as_deref())?;
+    let table = load_table(args.table.as_deref())?;
     let table = &*table;
-    super::check_writable(flag, path, want_dir)?;
+    check_writable(flag, path, want_dir)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let named = arrays(table, &bar).map_err(|e| match (&e, &args.table) {

@@ -12,9 +12,9 @@
 //! factor are cut. No allocation, no recursion: a fixed amount of
 //! arithmetic per panel.
 
-use crate::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
+use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
-use crate::quadrature::{Rule, NODES};
+use super::quadrature::{Rule, NODES};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
 /// relative to its value at the start of the integral (below 1e-17, far

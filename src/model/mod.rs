@@ -1,8 +1,12 @@
 //! The surface friction model: direct integration at a separation h* or an
 //! external force F* (MODEL.md §4–5).
 
+pub mod asperity;
+mod quadrature;
+mod surface;
+
 use crate::params::{ParamError, Params};
-use crate::surface::Surface;
+use surface::Surface;
 
 /// The state of the contact at one separation (all quantities dimensionless,
 /// MODEL.md §1).
@@ -27,6 +31,7 @@ pub struct Contact {
 
 /// An evaluation that cannot be done.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum EvalError {
     /// h* is NaN, infinite or beyond the supported range.
     #[error("h_star = {0} is out of range: must be finite, within ±{H_LIMIT:e}")]

@@ -15,7 +15,7 @@
 //!
 //! * [`SWEEP_POINTS`] = 301 points equally spaced in h* over 0 ≤ h* ≤ 3 (the
 //!   paper's range of separations, MODEL.md §1), i.e. h* = 0, 0.01, …, 3;
-//! * points with F* > [`F_STAR_MAX`] = 0.1 dropped (the paper's range of
+//! * points with F* > [`PAPER_F_STAR_MAX`] = 0.1 dropped (the paper's range of
 //!   loads, MODEL.md §1; this only matters at ψ = 2, where
 //!   F*(h* = 0) = 0.13);
 //! * ordinary least squares of ln y on ln F*, every point weighted equally.
@@ -34,9 +34,9 @@ use crate::{Contact, EvalError, Kind, Model, ParamError, Params};
 /// Points of the h* sweep: h* = 0, 0.01, …, 3.
 pub const SWEEP_POINTS: usize = 301;
 /// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
-pub const H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
+pub const PAPER_H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
 /// The paper's largest load, F* ≤ 0.1 (MODEL.md §1).
-pub const F_STAR_MAX: f64 = 0.1;
+pub const PAPER_F_STAR_MAX: f64 = 0.1;
 /// A log–log fit needs at least this many points with F* ≤ 0.1 (of the
 /// 301): fewer means the sweep left the paper's range of loads.
 pub const MIN_FIT_POINTS: usize = 251;
@@ -45,7 +45,8 @@ pub const CEB_LOADS: [f64; 7] = [1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 5e-2];
 
 /// A statement that cannot be computed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ValidateError {
+#[non_exhaustive]
+pub enum PaperError {
     /// The parameters are invalid.
     #[error(transparent)]
     Params(#[from] ParamError),
@@ -88,9 +89,9 @@ pub fn sweep_h(model: &Model) -> Vec<Contact> {
         .collect()
 }
 
-/// `n` evenly spaced separations over [`H_STAR_RANGE`], both ends included.
+/// `n` evenly spaced separations over [`PAPER_H_STAR_RANGE`], both ends included.
 pub fn h_points(n: usize) -> impl Iterator<Item = f64> {
-    let (a, b) = H_STAR_RANGE;
+    let (a, b) = PAPER_H_STAR_RANGE;
     let last = (n - 1) as f64;
     (0..n).map(move |i| a + (b - a) * i as f64 / last)
 }
@@ -120,15 +121,15 @@ pub fn loglog_slope_over_h(
     model: &Model,
     what: &'static str,
     y: impl Fn(&Contact) -> f64,
-) -> Result<LogLogFit, ValidateError> {
+) -> Result<LogLogFit, PaperError> {
     let (mut ln_f, mut ln_y) = (Vec::new(), Vec::new());
     for c in sweep_h(model) {
-        if c.f_star > F_STAR_MAX {
+        if c.f_star > PAPER_F_STAR_MAX {
             continue;
         }
         for (name, v) in [("F*", c.f_star), (what, y(&c))] {
             if v.is_nan() || v <= 0.0 {
-                return Err(ValidateError::NotPositive {
+                return Err(PaperError::NotPositive {
                     what: name,
                     h_star: c.h_star,
                     value: v,
@@ -139,7 +140,7 @@ pub fn loglog_slope_over_h(
         ln_y.push(y(&c).ln());
     }
     if ln_f.len() < MIN_FIT_POINTS {
-        return Err(ValidateError::TooFewPoints { points: ln_f.len() });
+        return Err(PaperError::TooFewPoints { points: ln_f.len() });
     }
     Ok(LogLogFit {
         exponent: slope(&ln_f, &ln_y),
@@ -148,12 +149,12 @@ pub fn loglog_slope_over_h(
 }
 
 /// m in Q* ≈ C·F*^m (the paper's Eq. 22).
-pub fn power_m(model: &Model) -> Result<LogLogFit, ValidateError> {
+pub fn power_m(model: &Model) -> Result<LogLogFit, PaperError> {
     loglog_slope_over_h(model, "Q*", |c| c.q_star)
 }
 
 /// n in μ ∝ F*^−n (the paper's Eq. 23).
-pub fn exponent_n(model: &Model) -> Result<LogLogFit, ValidateError> {
+pub fn exponent_n(model: &Model) -> Result<LogLogFit, PaperError> {
     let fit = loglog_slope_over_h(model, "mu", |c| c.q_star / c.f_star)?;
     Ok(LogLogFit {
         exponent: -fit.exponent,
@@ -216,7 +217,7 @@ pub fn max_adhesion_ratio(model: &Model) -> AtH {
 }
 
 /// Fs*/P* at the load F*.
-pub fn adhesion_ratio_at(model: &Model, f_star: f64) -> Result<f64, ValidateError> {
+pub fn adhesion_ratio_at(model: &Model, f_star: f64) -> Result<f64, PaperError> {
     let c = model.at_f_star(f_star)?;
     Ok(c.fs_star / c.p_star)
 }
@@ -233,10 +234,10 @@ pub struct Bracket {
 /// Where Fs*/P* falls through `level` as F* grows from `lo` to `hi`: 60
 /// bisections in ln F*, which shrink the bracket to a relative width below
 /// 1e-9 for any starting bracket within the paper's range of loads.
-pub fn adhesion_ratio_crossing(model: &Model, level: f64, (lo, hi): (f64, f64)) -> Result<Bracket, ValidateError> {
+pub fn adhesion_ratio_crossing(model: &Model, level: f64, (lo, hi): (f64, f64)) -> Result<Bracket, PaperError> {
     let excess = |f: f64| adhesion_ratio_at(model, f).map(|r| r - level);
     if !(excess(lo)? > 0.0 && excess(hi)? <= 0.0) {
-        return Err(ValidateError::NoCrossing { level, lo, hi });
+        return Err(PaperError::NoCrossing { level, lo, hi });
     }
     let (mut lo, mut hi) = (lo, hi);
     for _ in 0..60 {
@@ -252,7 +253,7 @@ pub fn adhesion_ratio_crossing(model: &Model, level: f64, (lo, hi): (f64, f64)) 
 
 /// The maximum of Q*(h*) on `[a, b]`, by golden-section search (80 steps;
 /// Q* must have a single maximum there).
-pub fn friction_peak(model: &Model, (a, b): (f64, f64)) -> Result<Contact, ValidateError> {
+pub fn friction_peak(model: &Model, (a, b): (f64, f64)) -> Result<Contact, PaperError> {
     let q = |h: f64| model.at_h_star(h).map(|c| c.q_star);
     let g = (5.0_f64.sqrt() - 1.0) / 2.0;
     let (mut a, mut b) = (a, b);
@@ -268,7 +269,7 @@ pub fn friction_peak(model: &Model, (a, b): (f64, f64)) -> Result<Contact, Valid
 }
 
 /// μ_KE / μ_CEB at each load (default β, ν, ε*; MODEL.md §8).
-pub fn ke_over_ceb(psi: f64, theta: f64, loads: &[f64]) -> Result<Vec<f64>, ValidateError> {
+pub fn ke_over_ceb(psi: f64, theta: f64, loads: &[f64]) -> Result<Vec<f64>, PaperError> {
     let ke = Model::new(Params::new(psi, theta))?;
     let ceb = Model::new(Params::new(psi, theta).kind(Kind::CebType))?;
     loads
@@ -355,7 +356,7 @@ pub fn sig(x: f64, digits: usize) -> String {
     }
 }
 
-fn model(psi: f64, theta: f64) -> Result<Model, ValidateError> {
+fn model(psi: f64, theta: f64) -> Result<Model, PaperError> {
     Ok(Model::new(Params::new(psi, theta))?)
 }
 
@@ -368,7 +369,7 @@ fn rounds_to(x: f64, printed: f64, decimals: i32) -> bool {
 /// Every statement of MODEL.md §7 and the CEB-type comparison of §8,
 /// computed now with the default β = 0.04, ν = 0.3, ε* = 0.004 (except
 /// where a row says otherwise). Takes about a tenth of a second.
-pub fn statements() -> Result<Vec<Statement>, ValidateError> {
+pub fn statements() -> Result<Vec<Statement>, PaperError> {
     let mut rows = Vec::new();
 
     // Fig. 4, Eq. 22: m at ψ = 0.5, θ = 0.003.
@@ -461,7 +462,7 @@ pub fn statements() -> Result<Vec<Statement>, ValidateError> {
     let psi8 = model(8.0, 0.003)?;
     let ratio = |c: &Contact| c.q_star / c.f_star;
     let all = extremes_over_h(&psi8, f64::INFINITY, ratio).expect("F* > 0 at ψ = 8");
-    let paper = extremes_over_h(&psi8, F_STAR_MAX, ratio).expect("F* ≤ 0.1 at ψ = 8");
+    let paper = extremes_over_h(&psi8, PAPER_F_STAR_MAX, ratio).expect("F* ≤ 0.1 at ψ = 8");
     let orders = |x: f64| -x.log10();
     rows.push(Statement {
         paper: "ψ = 8: Q* three to four orders of magnitude below F* (θ = 0.003; Fig. 4)",

@@ -1,7 +1,7 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use super::{flag_of, parse_f64, Failure};
-use ke_friction::{Contact, Fit, Kind, Model, Params, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
+use crate::args::{full, number, Failure, ModelArgs};
+use ke_friction::Contact;
 
 /// Evaluate the model by direct integration at given h* or F*.
 ///
@@ -23,81 +23,6 @@ pub struct Args {
     pub json: bool,
 }
 
-/// The model's parameters, shared by the subcommands that evaluate it.
-#[derive(Debug, Clone, clap::Args)]
-pub struct ModelArgs {
-    /// Plasticity index ψ > 0.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub psi: f64,
-    /// Adhesion parameter θ ≥ 0.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub theta: f64,
-    /// Roughness parameter β = ηRσ > 0.01928.
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_BETA, allow_hyphen_values = true)]
-    pub beta: f64,
-    /// Poisson's ratio ν of the softer material, in [0, 0.5).
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_NU, allow_hyphen_values = true)]
-    pub nu: f64,
-    /// Intermolecular distance ε* = ε/σ > 0.
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_EPS_STAR, allow_hyphen_values = true)]
-    pub eps_star: f64,
-    /// Friction row: the self-consistent model, or the literal printed Eq. 18.
-    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
-    pub fit: FitArg,
-    /// Kogut–Etsion, or the CEB-type comparison model (MODEL.md §8).
-    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
-    pub model: ModelKindArg,
-}
-
-/// `--fit` values.
-#[derive(Debug, Clone, Copy, clap::ValueEnum)]
-pub enum FitArg {
-    /// MODEL.md §4 (the default).
-    Consistent,
-    /// The literal printed Eq. 18 (negative μ for ψ ≳ 2).
-    AsPrinted,
-}
-
-impl From<FitArg> for Fit {
-    fn from(f: FitArg) -> Fit {
-        match f {
-            FitArg::Consistent => Fit::Consistent,
-            FitArg::AsPrinted => Fit::AsPrinted,
-        }
-    }
-}
-
-/// `--model` values.
-#[derive(Debug, Clone, Copy, clap::ValueEnum)]
-pub enum ModelKindArg {
-    /// Kogut–Etsion (2004).
-    Ke,
-    /// CEB-type (approximate reconstruction).
-    Ceb,
-}
-
-impl From<ModelKindArg> for Kind {
-    fn from(k: ModelKindArg) -> Kind {
-        match k {
-            ModelKindArg::Ke => Kind::KogutEtsion,
-            ModelKindArg::Ceb => Kind::CebType,
-        }
-    }
-}
-
-impl ModelArgs {
-    /// The validated model, or a message naming the offending flag.
-    pub fn model(&self) -> Result<Model, Failure> {
-        let params = Params::new(self.psi, self.theta)
-            .beta(self.beta)
-            .nu(self.nu)
-            .eps_star(self.eps_star)
-            .fit(self.fit.into())
-            .kind(self.model.into());
-        Model::new(params).map_err(|e| Failure::input(format!("{}: {e}", flag_of(e.name))))
-    }
-}
-
 /// Spacing of the points of a range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Spacing {
@@ -111,7 +36,7 @@ pub enum Spacing {
 pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Failure> {
     let bad = |why: String| Failure::input(format!("{flag}: {why}"));
     let parts: Vec<&str> = text.split(':').collect();
-    let num = |s: &str| super::number(flag, s);
+    let num = |s: &str| number(flag, s);
     let positive = |v: f64| {
         if spacing == Spacing::Log && v <= 0.0 {
             Err(bad(format!("{v} is out of range: must be > 0")))
@@ -195,9 +120,4 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
     }
     Ok(())
-}
-
-/// 17 significant digits: every double round-trips.
-pub fn full(x: f64) -> String {
-    format!("{x:.16e}")
 }

@@ -1,8 +1,7 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map. PNG or SVG by the output file's extension.
 
-use super::eval::ModelArgs;
-use super::{check_writable, flag_of, parse_f64, Failure};
+use crate::args::{check_writable, flag_of, load_table, parse_f64, Failure, ModelArgs};
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
@@ -82,7 +81,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         What::Curve(a) => {
             let out = output(&a.out.out)?;
             let model = a.model.model()?;
-            let table = a.table.as_ref().map(|path| super::table(path.as_deref())).transpose()?;
+            let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
             let page = figures::curve(&model, table.as_deref()).map_err(failure)?;
             page.save(out).map_err(failure)?;
             wrote(out);
@@ -90,7 +89,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
         What::TableError(a) => {
             let out = output(&a.out.out)?;
-            let table = super::table(a.table.as_deref())?;
+            let table = load_table(a.table.as_deref())?;
             let map = figures::table_error(&table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
             map.save(out).map_err(failure)?;
             wrote(out);

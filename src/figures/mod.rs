@@ -26,18 +26,19 @@ use std::path::{Path, PathBuf};
 pub const SIZE: (u32, u32) = (1000, 750);
 /// Separations sampled per curve over 0 ≤ h* ≤ 3.
 pub const H_SAMPLES: usize = 200;
-pub use crate::validate::{F_STAR_MAX, H_STAR_RANGE};
+use crate::paper::PAPER_F_STAR_MAX;
 /// θ of the paper's figures 3–5.
 pub const PAPER_THETA: f64 = 0.003;
 
 /// DejaVu Sans (assets/DejaVuSans-LICENSE.txt), so that no system font is
 /// needed at run time.
-static FONT: &[u8] = include_bytes!("../assets/DejaVuSans.ttf");
+static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
 /// The family name the charts ask for.
 const FAMILY: &str = "sans-serif";
 
 /// A figure that cannot be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum FigureError {
     /// The output file's extension is neither `.png` nor `.svg`.
     #[error("{path}: unknown image format {ext:?}: the name must end in .png or .svg")]
@@ -243,16 +244,16 @@ pub fn save_all(dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
 /// at h* = 0, the contact at F* = 0.1 exactly comes first.
 pub fn paper_sweep(model: &Model) -> Result<Vec<Contact>, FigureError> {
     let mut out = Vec::with_capacity(H_SAMPLES + 1);
-    for (i, h) in crate::validate::h_points(H_SAMPLES).enumerate() {
+    for (i, h) in crate::paper::h_points(H_SAMPLES).enumerate() {
         let c = model.at_h_star(h)?;
-        if c.f_star > F_STAR_MAX {
+        if c.f_star > PAPER_F_STAR_MAX {
             continue;
         }
         if c.f_star <= 0.0 {
             break;
         }
         if out.is_empty() && i > 0 {
-            out.push(model.at_f_star(F_STAR_MAX)?);
+            out.push(model.at_f_star(PAPER_F_STAR_MAX)?);
         }
         out.push(c);
     }
@@ -306,7 +307,7 @@ fn f_axis(series: &[Series]) -> Axis {
     Axis {
         title: "F*".into(),
         log: true,
-        range: (log_range(lo, F_STAR_MAX).0, F_STAR_MAX),
+        range: (log_range(lo, PAPER_F_STAR_MAX).0, PAPER_F_STAR_MAX),
         ticks: None,
     }
 }
@@ -471,14 +472,10 @@ pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> 
     let mut bottom = None;
     if let Some(table) = table {
         let d = table.domain();
-        let held = Params {
-            psi: params.psi,
-            theta: params.theta,
-            ..d.params
-        };
+        let held = d.params(params.psi, params.theta);
         if held != params {
             return Err(FigureError::TableMismatch {
-                table: constants(&d.params),
+                table: constants(&held),
                 asked: constants(&params),
             });
         }
@@ -615,11 +612,7 @@ pub fn table_error(table: &Table, theta: f64, rows: usize, cols: usize) -> Resul
     let mut rel = Vec::with_capacity(rows * cols);
     for r in 0..psi.len() - 1 {
         let p = (psi[r] * psi[r + 1]).sqrt();
-        let model = Model::new(Params {
-            psi: p,
-            theta,
-            ..d.params
-        })?;
+        let model = Model::new(d.params(p, theta))?;
         for c in 0..f_star.len() - 1 {
             let f = (f_star[c] * f_star[c + 1]).sqrt();
             let guess = table.h_star(p, theta, f)?;
@@ -634,7 +627,7 @@ pub fn table_error(table: &Table, theta: f64, rows: usize, cols: usize) -> Resul
         psi,
         f_star,
         rel,
-        tolerance: d.tolerance,
+        tolerance: table.info().tolerance,
     })
 }
 

@@ -1,41 +1,8 @@
-//! Argument parsing and the subcommands of `kefric`.
+//! What the subcommands share: failures and their exit codes, number
+//! parsing, the model's flags, progress bars, tables and output paths.
 
-mod build;
-mod eval;
-mod export;
-mod lookup;
-mod plot;
-mod validate;
-mod verify;
-
-use clap::{Parser, Subcommand};
+use ke_friction::{Fit, Kind, Model, Params, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
 use std::fmt::Display;
-
-/// The Kogut–Etsion (2004) static friction model of rough surfaces.
-#[derive(Debug, Parser)]
-#[command(name = "kefric", version, about, long_about = None)]
-struct Cli {
-    #[command(subcommand)]
-    command: Command,
-}
-
-#[derive(Debug, Subcommand)]
-enum Command {
-    /// Evaluate the model by direct integration at given h* or F*.
-    Eval(eval::Args),
-    /// Build a table by direct integration, verify it, write it atomically.
-    Build(build::Args),
-    /// Check a table against direct integration.
-    Verify(verify::Args),
-    /// Look up μ and ∂μ/∂F* in a table.
-    Lookup(lookup::Args),
-    /// Draw the paper's figures, a curve, or a table's error map.
-    Plot(plot::Args),
-    /// Compare this model with the statements of the paper.
-    Validate(validate::Args),
-    /// Export a table to NumPy .npz/.npy.
-    Export(export::Args),
-}
 
 /// A failure to report: the message, and whether it is the user's input
 /// (exit 2) or something else (exit 1).
@@ -61,55 +28,11 @@ impl Failure {
             code: 1,
         }
     }
-}
 
-/// Parses the command line, runs the subcommand, returns the exit status.
-pub fn run() -> i32 {
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        Err(err) => return clap_exit(err),
-    };
-    let result = match cli.command {
-        Command::Eval(args) => eval::run(args),
-        Command::Build(args) => build::run(args),
-        Command::Verify(args) => verify::run(args),
-        Command::Lookup(args) => lookup::run(args),
-        Command::Plot(args) => plot::run(args),
-        Command::Validate(args) => validate::run(args),
-        Command::Export(args) => export::run(args),
-    };
-    match result {
-        Ok(()) => 0,
-        Err(f) => {
-            eprintln!("error: {}", f.message);
-            f.code
-        }
-    }
-}
-
-/// Help and version go to stdout with status 0; parse errors become one
-/// line on stderr with status 2.
-fn clap_exit(err: clap::Error) -> i32 {
-    use clap::error::ErrorKind;
-    match err.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            let _ = err.print();
-            if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-                2
-            } else {
-                0
-            }
-        }
-        _ => {
-            let text = err.render().to_string();
-            let line: Vec<&str> = text
-                .lines()
-                .take_while(|l| !l.trim().is_empty() && !l.starts_with("Usage:"))
-                .map(str::trim)
-                .collect();
-            eprintln!("{}", line.join(" "));
-            2
-        }
+    /// Prints the message as one line on stderr; returns the exit status.
+    pub fn report(&self) -> i32 {
+        eprintln!("error: {}", self.message);
+        self.code
     }
 }
 
@@ -222,7 +145,7 @@ impl ke_friction::build::Progress for Bar {
 
 /// The table at `path`, or the embedded default table without one; any
 /// problem with the file is bad input (exit 2) naming it.
-pub fn table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'static, ke_friction::Table>, Failure> {
+pub fn load_table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'static, ke_friction::Table>, Failure> {
     use std::borrow::Cow;
     match path {
         None => Ok(Cow::Borrowed(ke_friction::Table::embedded())),
@@ -233,9 +156,89 @@ pub fn table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'static,
 }
 
 /// Prints where a table's measured error of μ is largest.
-pub fn print_worst(acc: &ke_friction::table::format::Accuracy) {
+pub fn print_worst(acc: &ke_friction::table::Accuracy) {
     println!(
         "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
         acc.worst[0], acc.worst[1], acc.worst[2]
     );
+}
+
+/// The model's parameters, shared by the subcommands that evaluate it.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ModelArgs {
+    /// Plasticity index ψ > 0.
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub psi: f64,
+    /// Adhesion parameter θ ≥ 0.
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub theta: f64,
+    /// Roughness parameter β = ηRσ > 0.01928.
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_BETA, allow_hyphen_values = true)]
+    pub beta: f64,
+    /// Poisson's ratio ν of the softer material, in [0, 0.5).
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_NU, allow_hyphen_values = true)]
+    pub nu: f64,
+    /// Intermolecular distance ε* = ε/σ > 0.
+    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_EPS_STAR, allow_hyphen_values = true)]
+    pub eps_star: f64,
+    /// Friction row: the self-consistent model, or the literal printed Eq. 18.
+    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
+    pub fit: FitArg,
+    /// Kogut–Etsion, or the CEB-type comparison model (MODEL.md §8).
+    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
+    pub model: ModelKindArg,
+}
+
+/// `--fit` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum FitArg {
+    /// MODEL.md §4 (the default).
+    Consistent,
+    /// The literal printed Eq. 18 (negative μ for ψ ≳ 2).
+    AsPrinted,
+}
+
+impl From<FitArg> for Fit {
+    fn from(f: FitArg) -> Fit {
+        match f {
+            FitArg::Consistent => Fit::Consistent,
+            FitArg::AsPrinted => Fit::AsPrinted,
+        }
+    }
+}
+
+/// `--model` values.
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum ModelKindArg {
+    /// Kogut–Etsion (2004).
+    Ke,
+    /// CEB-type (approximate reconstruction).
+    Ceb,
+}
+
+impl From<ModelKindArg> for Kind {
+    fn from(k: ModelKindArg) -> Kind {
+        match k {
+            ModelKindArg::Ke => Kind::KogutEtsion,
+            ModelKindArg::Ceb => Kind::CebType,
+        }
+    }
+}
+
+impl ModelArgs {
+    /// The validated model, or a message naming the offending flag.
+    pub fn model(&self) -> Result<Model, Failure> {
+        let params = Params::new(self.psi, self.theta)
+            .beta(self.beta)
+            .nu(self.nu)
+            .eps_star(self.eps_star)
+            .fit(self.fit.into())
+            .kind(self.model.into());
+        Model::new(params).map_err(|e| Failure::input(format!("{}: {e}", flag_of(e.name))))
+    }
+}
+
+/// 17 significant digits: every double round-trips.
+pub fn full(x: f64) -> String {
+    format!("{x:.16e}")
 }

@@ -1,7 +1,6 @@
 //! `kefric lookup`: μ and ∂μ/∂F* from a table.
 
-use super::eval::full;
-use super::{parse_f64, Failure};
+use crate::args::{flag_of, full, load_table, parse_f64, Failure};
 use ke_friction::LookupError;
 use std::path::PathBuf;
 
@@ -27,11 +26,11 @@ pub struct Args {
 
 /// Runs `kefric lookup`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    let table = super::table(args.table.as_deref())?;
+    let table = load_table(args.table.as_deref())?;
     let table = &*table;
     let (mu, slope) = table.mu_with_slope(args.psi, args.theta, args.f_star).map_err(|e| {
         let flag = match e {
-            LookupError::OutOfDomain { name, .. } => super::flag_of(name),
+            LookupError::OutOfDomain { name, .. } => flag_of(name),
             _ => "lookup".into(),
         };
         Failure::input(format!("{flag}: {e}"))

@@ -1,9 +1,8 @@
 //! `kefric build`: integrate, tabulate, verify, write atomically.
 
-use super::eval::{FitArg, ModelKindArg};
-use super::{fields, number, parse_f64, whole, Bar, Failure};
-use ke_friction::build::{build, BuildOptions, Precision};
-use ke_friction::table::write_atomic;
+use crate::args::{check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, Failure, FitArg, ModelKindArg};
+use ke_friction::build::{build, threads, BuildOptions, Precision};
+use ke_friction::io::write_atomic;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -122,14 +121,14 @@ fn option_flag(name: &str) -> String {
         "psi_nodes" | "theta_nodes" | "f_nodes" => "--nodes".into(),
         "h_nodes" => "--h-star".into(),
         "grid_nodes" | "grid_points" => "--nodes".into(),
-        other => super::flag_of(other),
+        other => flag_of(other),
     }
 }
 
 /// Runs `kefric build`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let options = args.options()?;
-    super::check_writable("--out", &args.out, false)?;
+    check_writable("--out", &args.out, false)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;
@@ -138,7 +137,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .map_err(|e| Failure::input(format!("--out: cannot write {}: {e}", args.out.display())))?;
     let secs = started.elapsed().as_secs_f64();
     let t = &built.table;
-    let acc = t.accuracy();
+    let info = t.info();
+    let acc = &info.accuracy;
     let axes = t.axes();
     println!("wrote {} ({} bytes)", args.out.display(), built.bytes.len());
     let h_nodes = options.h_star.2;
@@ -154,9 +154,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     );
     println!(
         "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {:.1e}), 99th percentile {:.3e}",
-        acc.samples, acc.max_rel, acc.tolerance, acc.p99_rel
+        acc.samples, acc.max_rel, info.tolerance, acc.p99_rel
     );
-    super::print_worst(acc);
-    println!("build time: {secs:.1} s on {} threads", rayon::current_num_threads());
+    print_worst(acc);
+    println!("build time: {secs:.1} s on {} threads", threads());
     Ok(())
 }

@@ -1,0 +1,113 @@
+//! `kefric`: the Kogut–Etsion static friction model from the command line.
+//!
+//! Thin by design: it parses, calls the library, prints. Bad input exits
+//! with status 2 and a one-line message naming the input and its range.
+
+mod args;
+mod build;
+mod eval;
+mod export;
+mod lookup;
+mod plot;
+mod validate;
+mod verify;
+
+use clap::{Parser, Subcommand};
+
+fn main() {
+    restore_sigpipe();
+    std::process::exit(run());
+}
+
+/// The Kogut–Etsion (2004) static friction model of rough surfaces.
+#[derive(Debug, Parser)]
+#[command(name = "kefric", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Evaluate the model by direct integration at given h* or F*.
+    Eval(eval::Args),
+    /// Build a table by direct integration, verify it, write it atomically.
+    Build(build::Args),
+    /// Check a table against direct integration.
+    Verify(verify::Args),
+    /// Look up μ and ∂μ/∂F* in a table.
+    Lookup(lookup::Args),
+    /// Draw the paper's figures, a curve, or a table's error map.
+    Plot(plot::Args),
+    /// Compare this model with the statements of the paper.
+    Validate(validate::Args),
+    /// Export a table to NumPy .npz/.npy.
+    Export(export::Args),
+}
+
+/// Parses the command line, runs the subcommand, returns the exit status.
+fn run() -> i32 {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(err) => return clap_exit(err),
+    };
+    let result = match cli.command {
+        Command::Eval(args) => eval::run(args),
+        Command::Build(args) => build::run(args),
+        Command::Verify(args) => verify::run(args),
+        Command::Lookup(args) => lookup::run(args),
+        Command::Plot(args) => plot::run(args),
+        Command::Validate(args) => validate::run(args),
+        Command::Export(args) => export::run(args),
+    };
+    match result {
+        Ok(()) => 0,
+        Err(f) => f.report(),
+    }
+}
+
+/// Help and version go to stdout with status 0; parse errors become one
+/// line on stderr with status 2.
+fn clap_exit(err: clap::Error) -> i32 {
+    use clap::error::ErrorKind;
+    match err.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = err.print();
+            if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                2
+            } else {
+                0
+            }
+        }
+        _ => {
+            let text = err.render().to_string();
+            let line: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty() && !l.starts_with("Usage:"))
+                .map(str::trim)
+                .collect();
+            eprintln!("{}", line.join(" "));
+            2
+        }
+    }
+}
+
+
+
+/// Rust ignores SIGPIPE, so `kefric eval … | head -1` would panic on the
+/// closed pipe; restore the default (end quietly), as Unix tools do.
+fn restore_sigpipe() {
+    #[cfg(unix)]
+    {
+        extern "C" {
+            fn signal(signum: i32, handler: usize) -> usize;
+        }
+        const SIGPIPE: i32 = 13;
+        const SIG_DFL: usize = 0;
+        // SAFETY: resetting a signal's disposition to the default before
+        // any thread starts has no preconditions.
+        unsafe {
+            signal(SIGPIPE, SIG_DFL);
+        }
+    }
+}

@@ -1,0 +1,170 @@
+//! Checking a table against direct integration: the sample points, the
+//! measurement, and the one verdict that both `kefric build` and
+//! `kefric verify` give.
+
+use super::{BuildError, Progress};
+use crate::model::{EvalError, Model};
+use crate::table::{Accuracy, Table};
+use rayon::prelude::*;
+
+/// The accepted numbers of verification points.
+pub const SAMPLES: std::ops::RangeInclusive<usize> = 2..=10_000_000;
+
+/// `Ok` for an accepted number of verification points, else a message
+/// naming the range.
+pub fn check_samples(samples: usize) -> Result<(), crate::ParamError> {
+    crate::params::check("samples", samples as f64, "a whole number from 2 to 10000000", |v| {
+        SAMPLES.contains(&(v as usize))
+    })
+}
+
+/// A table measured against direct integration, and its verdict.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Verification {
+    /// The exact (f64) interpolant's error, the same on every machine.
+    pub accuracy: Accuracy,
+    /// How far this machine's lookups ([`Table::mu`]) stray from the exact
+    /// interpolant at the same points: 0 where the portable kernel runs.
+    pub kernel_deviation: f64,
+    /// The tolerance the table must meet.
+    pub tolerance: f64,
+}
+
+impl Verification {
+    /// The worst relative error of μ as this machine looks it up: the
+    /// interpolant's plus the fast kernel's rounding.
+    pub fn max_rel(&self) -> f64 {
+        self.accuracy.max_rel + self.kernel_deviation
+    }
+
+    /// Whether the table meets its tolerance (NaN never does).
+    pub fn passes(&self) -> bool {
+        self.max_rel() <= self.tolerance
+    }
+}
+
+/// Measures `table` at `samples` seeded points (see [`measure`]) and this
+/// machine's kernel at the same points, against `tolerance`.
+pub fn verify(
+    table: &Table,
+    tolerance: f64,
+    samples: usize,
+    seed: u64,
+    progress: &dyn Progress,
+) -> Result<Verification, BuildError> {
+    check_samples(samples)?;
+    Ok(Verification {
+        accuracy: measure(table, samples, seed, progress)?,
+        kernel_deviation: kernel_deviation(table, samples, seed),
+        tolerance,
+    })
+}
+
+/// μ at (ψ, θ, F*) by direct integration, with the table's model constants.
+pub fn direct_mu(table: &Table, psi: f64, theta: f64, f_star: f64) -> Result<f64, BuildError> {
+    let eval = |error| BuildError::Eval { psi, theta, error };
+    let model = Model::new(table.domain().params(psi, theta))?;
+    let contact = model.at_f_star(f_star).map_err(eval)?;
+    contact.mu.ok_or(eval(EvalError::FStar(contact.f_star)))
+}
+
+/// How far this machine's lookups ([`Table::mu`], which is the f32 kernel
+/// where [`Table::fast_kernel`]) stray from the exact interpolant
+/// ([`Table::mu_portable`]) at the points [`measure`] checks: the largest
+/// relative difference, 0 where the portable kernel runs.
+fn kernel_deviation(table: &Table, samples: usize, seed: u64) -> f64 {
+    if !table.fast_kernel() {
+        return 0.0;
+    }
+    sample_points(table, samples, seed)
+        .iter()
+        .map(|&[p, t, f]| match (table.mu(p, t, f), table.mu_portable(p, t, f)) {
+            (Ok(fast), Ok(exact)) => (fast / exact - 1.0).abs(),
+            _ => f64::INFINITY,
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Measures a table's μ against direct integration at `samples` points in
+/// its domain (seeded): half uniform in the grid's coordinates, half at the
+/// centres of random cells (the midpoint of the cell in every axis, where
+/// interpolation errs most).
+pub fn measure(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<Accuracy, BuildError> {
+    let points = sample_points(table, samples, seed);
+    progress.stage("checking against direct integration", points.len() as u64);
+    let errors: Vec<Result<f64, BuildError>> = points
+        .par_iter()
+        .map(|&[p, t, f]| {
+            let exact = direct_mu(table, p, t, f)?;
+            let got = table.mu_portable(p, t, f).unwrap_or(f64::NAN);
+            progress.advance(1);
+            Ok(((got - exact) / exact).abs())
+        })
+        .collect();
+    let errors = errors.into_iter().collect::<Result<Vec<f64>, _>>()?;
+    let (mut worst, mut max_rel) = (0, 0.0f64);
+    for (i, &e) in errors.iter().enumerate() {
+        if e.is_nan() || e > max_rel {
+            worst = i;
+            max_rel = e;
+        }
+    }
+    let mut sorted = errors.clone();
+    sorted.sort_by(f64::total_cmp);
+    let p99 = sorted[((sorted.len() as f64 * 0.99).ceil() as usize).clamp(1, sorted.len()) - 1];
+    Ok(Accuracy {
+        max_rel,
+        p99_rel: p99,
+        samples: errors.len(),
+        worst: points[worst],
+    })
+}
+
+/// The verification points: in the domain, half uniform in the axes'
+/// coordinates, half at cell centres.
+pub fn sample_points(table: &Table, samples: usize, seed: u64) -> Vec<[f64; 3]> {
+    let d = table.domain();
+    let ranges = d.ranges();
+    let axes = table.axes();
+    let mut rng = SplitMix64(seed);
+    (0..samples)
+        .map(|n| {
+            let mut q = [0.0; 3];
+            for k in 0..3 {
+                let (lo, hi) = ranges[k];
+                let (a, s) = (axes[k].scale, axes[k]);
+                let (c_lo, c_hi) = (a.forward(lo), a.forward(hi));
+                let c = if n % 2 == 0 {
+                    c_lo + (c_hi - c_lo) * rng.unit()
+                } else {
+                    // Centre of a random cell lying inside the domain.
+                    let first = ((c_lo - s.first) / s.step).round();
+                    let cells = ((c_hi - c_lo) / s.step).round().max(1.0);
+                    let i = (rng.unit() * cells).floor().min(cells - 1.0);
+                    s.first + (first + i + 0.5) * s.step
+                };
+                q[k] = a.inverse(c).clamp(lo, hi);
+            }
+            q
+        })
+        .collect()
+}
+
+/// A small, fast, seedable generator (Steele, Lea & Flood's SplitMix64).
+struct SplitMix64(u64);
+
+impl SplitMix64 {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
