@@ -21,8 +21,8 @@ use crate::model::Model;
 use crate::spline::Axis;
 use crate::table::Table;
 use ndarray::{arr0, ArrayD, IxDyn};
-use rayon::prelude::*;
 use ndarray_npy::{NpzWriter, WriteNpyExt};
+use rayon::prelude::*;
 use std::io::{self, BufWriter, Write};
 use std::path::Path;
 

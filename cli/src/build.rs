@@ -1,6 +1,8 @@
 //! `kefric build`: integrate, tabulate, verify, write atomically.
 
-use crate::args::{check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, Failure, FitArg, ModelKindArg};
+use crate::args::{
+    check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, Failure, FitArg, ModelKindArg,
+};
 use ke_friction::build::{build, threads, BuildOptions, Precision};
 use ke_friction::io::write_atomic;
 use std::path::PathBuf;

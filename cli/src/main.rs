@@ -92,8 +92,6 @@ fn clap_exit(err: clap::Error) -> i32 {
     }
 }
 
-
-
 /// Rust ignores SIGPIPE, so `kefric eval … | head -1` would panic on the
 /// closed pipe; restore the default (end quietly), as Unix tools do.
 fn restore_sigpipe() {

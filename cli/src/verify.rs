@@ -28,8 +28,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let table = load_table(args.table.as_deref())?;
     let info = table.info();
     let bar = Bar::new(args.quiet);
-    let checked = verify(&table, info.tolerance, args.samples, args.seed, &bar)
-        .map_err(|e| Failure::other(e.to_string()))?;
+    let checked =
+        verify(&table, info.tolerance, args.samples, args.seed, &bar).map_err(|e| Failure::other(e.to_string()))?;
     bar.done();
     let (recorded, acc) = (&info.accuracy, &checked.accuracy);
     println!(

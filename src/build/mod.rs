@@ -324,13 +324,16 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             seed: o.seed,
             generator: concat!("ke-friction ", env!("CARGO_PKG_VERSION")).to_string(),
         },
-        accuracy: format::Accuracy {
-            tolerance: o.tolerance,
-            max_rel: 0.0,
-            p99_rel: 0.0,
-            samples: 0,
-            worst: [0.0; 3],
-        },
+        // Measured below, on the decoded draft.
+        accuracy: format::Accuracy::record(
+            o.tolerance,
+            &crate::table::Accuracy {
+                max_rel: 0.0,
+                p99_rel: 0.0,
+                samples: 0,
+                worst: [0.0; 3],
+            },
+        ),
     };
     let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
     // The record is the exact interpolant's (the same on every machine);
@@ -344,13 +347,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             worst: accuracy.worst,
         });
     }
-    payload.accuracy = format::Accuracy {
-        tolerance: o.tolerance,
-        max_rel: accuracy.max_rel,
-        p99_rel: accuracy.p99_rel,
-        samples: accuracy.samples as u32,
-        worst: accuracy.worst,
-    };
+    payload.accuracy = format::Accuracy::record(o.tolerance, &accuracy);
     let bytes = format::encode(&payload);
     let table = Table::from_bytes(&bytes).expect("a freshly encoded table decodes");
     Ok(Built { bytes, table })

@@ -13,8 +13,8 @@
 //! arithmetic per panel.
 
 use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
-use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 use super::quadrature::{Rule, NODES};
+use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
 /// relative to its value at the start of the integral (below 1e-17, far
@@ -498,7 +498,7 @@ mod tests {
     /// pieces `I^b[0,1]`, `I^b[1,∞)` from 30-digit quadrature.
     #[test]
     fn moments_match_the_closed_form_semi_infinite_integrals() {
-        let doc: Value = serde_json::from_str(include_str!("../tests/data/reference_points.json")).unwrap();
+        let doc: Value = serde_json::from_str(include_str!("../../tests/data/reference_points.json")).unwrap();
         let mut n = 0;
         for p in doc["points"].as_array().unwrap() {
             if p["kind"] != "closed_form" {

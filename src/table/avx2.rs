@@ -122,7 +122,10 @@ impl Kernel {
     /// length. Returns the index of the first query outside the domain.
     pub(super) fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
         let n = out.len();
-        assert!(psi.len() == n && theta.len() == n && f_star.len() == n, "batch slices of one length");
+        assert!(
+            psi.len() == n && theta.len() == n && f_star.len() == n,
+            "batch slices of one length"
+        );
         // SAFETY: AVX2 and FMA as in `eval`; the lengths are checked above.
         unsafe { batch(self, psi, theta, f_star, out) }
     }

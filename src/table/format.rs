@@ -249,6 +249,43 @@ pub struct Accuracy {
     pub worst: [f64; 3],
 }
 
+impl Accuracy {
+    /// The stored form of a measured accuracy and the tolerance it met.
+    pub fn record(tolerance: f64, measured: &super::Accuracy) -> Accuracy {
+        Accuracy {
+            tolerance,
+            max_rel: measured.max_rel,
+            p99_rel: measured.p99_rel,
+            samples: measured.samples as u32,
+            worst: measured.worst,
+        }
+    }
+
+    /// The measured accuracy, as the public API reports it.
+    pub fn measured(&self) -> super::Accuracy {
+        super::Accuracy {
+            max_rel: self.max_rel,
+            p99_rel: self.p99_rel,
+            samples: self.samples as usize,
+            worst: self.worst,
+        }
+    }
+}
+
+impl BuildSpec {
+    /// The build options, as the public API reports them.
+    pub fn record(&self) -> super::BuildRecord {
+        super::BuildRecord {
+            nodes: self.nodes.map(|n| n as usize),
+            ghosts: self.ghosts as usize,
+            h_star: (self.h_lo, self.h_hi, self.h_nodes as usize),
+            samples: self.samples as usize,
+            seed: self.seed,
+            generator: self.generator.clone(),
+        }
+    }
+}
+
 /// Everything in a table file between the header and the checksum.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Payload {

@@ -60,7 +60,7 @@ impl Layout {
             .iter()
             .map(|x| x.nodes + 2)
             .try_fold(1usize, |acc, n| acc.checked_mul(n));
-        if !count.is_some_and(|n| n <= MAX_COEFS) {
+        if count.is_none_or(|n| n > MAX_COEFS) {
             return Err("grid is too large".into());
         }
         Ok(Layout {

@@ -177,14 +177,26 @@ pub struct TableInfo {
 }
 
 /// A loaded table: immutable, `Send + Sync`, shareable across threads.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct Table {
     layout: Layout,
     info: TableInfo,
-    /// The fast kernel, where the CPU and the table suit it.
-    fast: Option<avx2::Kernel>,
+    /// The AVX2 kernel, where the CPU and the table suit it.
+    avx2: Option<avx2::Kernel>,
+    /// Spline coefficients of ln μ and of h*, shape (nψ, nθ, nF), F* fastest.
     ln_mu: Vec<f64>,
     h_star: Vec<f64>,
+}
+
+/// What the table holds and which kernel runs (not its coefficients).
+impl std::fmt::Debug for Table {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Table")
+            .field("info", &self.info)
+            .field("axes", &self.layout.axes)
+            .field("fast_kernel", &self.fast_kernel())
+            .finish_non_exhaustive()
+    }
 }
 
 /// The default table, committed in `tables/` and compiled in.
@@ -230,10 +242,7 @@ impl Table {
         let bad = |m: String| Err(TableError::Inconsistent(m));
         let layout = Layout::new(&payload.axes).map_err(TableError::Inconsistent)?;
         let [psi, theta, f_star] = layout.ranges;
-        let params = payload
-            .model
-            .params(psi.0, theta.0)
-            .map_err(TableError::Inconsistent)?;
+        let params = payload.model.params(psi.0, theta.0).map_err(TableError::Inconsistent)?;
         params
             .validate()
             .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;
@@ -255,7 +264,6 @@ impl Table {
         if !(acc.tolerance.is_finite() && acc.tolerance > 0.0 && acc.max_rel.is_finite() && acc.p99_rel.is_finite()) {
             return bad("accuracy record is not finite and positive".into());
         }
-        let b = &payload.build;
         let info = TableInfo {
             domain: Domain {
                 psi,
@@ -268,34 +276,22 @@ impl Table {
                 kind: params.kind,
             },
             tolerance: acc.tolerance,
-            accuracy: Accuracy {
-                max_rel: acc.max_rel,
-                p99_rel: acc.p99_rel,
-                samples: acc.samples as usize,
-                worst: acc.worst,
-            },
-            build: BuildRecord {
-                nodes: b.nodes.map(|n| n as usize),
-                ghosts: b.ghosts as usize,
-                h_star: (b.h_lo, b.h_hi, b.h_nodes as usize),
-                samples: b.samples as usize,
-                seed: b.seed,
-                generator: b.generator.clone(),
-            },
+            accuracy: acc.measured(),
+            build: payload.build.record(),
             precision: match payload.ln_mu {
                 Coefs::F32(_) => Precision::F32,
                 Coefs::F64(_) => Precision::F64,
             },
             format_version: format::VERSION,
         };
-        let fast = match &payload.ln_mu {
+        let avx2 = match &payload.ln_mu {
             Coefs::F32(c) => avx2::Kernel::new(&layout, c),
             Coefs::F64(_) => None,
         };
         Ok(Table {
             layout,
             info,
-            fast,
+            avx2,
             ln_mu,
             h_star,
         })
@@ -325,17 +321,22 @@ impl Table {
     /// exact interpolant [`mu_portable`](Self::mu_portable).
     #[inline]
     pub fn mu(&self, psi: f64, theta: f64, f_star: f64) -> Result<f64, LookupError> {
-        match self.fast::<false>(psi, theta, f_star) {
+        match self.avx2_lookup::<false>(psi, theta, f_star) {
             Some(r) => r.map(|(mu, _)| mu),
             None => self.mu_portable(psi, theta, f_star),
         }
     }
 
-    /// The fast kernel's μ and (if `SLOPE`) d ln μ/d(cell coordinate of
+    /// The AVX2 kernel's μ and (if `SLOPE`) d ln μ/d(cell coordinate of
     /// F*), or `None` where it does not run.
     #[inline(always)]
-    fn fast<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> Option<Result<(f64, f64), LookupError>> {
-        let kernel = self.fast.as_ref()?;
+    fn avx2_lookup<const SLOPE: bool>(
+        &self,
+        psi: f64,
+        theta: f64,
+        f_star: f64,
+    ) -> Option<Result<(f64, f64), LookupError>> {
+        let kernel = self.avx2.as_ref()?;
         let (mu, d) = kernel.eval::<SLOPE>(psi, theta, f_star);
         Some(if mu.is_nan() {
             Err(self.domain_error(psi, theta, f_star))
@@ -371,7 +372,7 @@ impl Table {
     /// μ and its slope ∂μ/∂F* (for implicit solvers).
     #[inline]
     pub fn mu_with_slope(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
-        let (mu, d_ln_mu) = match self.fast::<true>(psi, theta, f_star) {
+        let (mu, d_ln_mu) = match self.avx2_lookup::<true>(psi, theta, f_star) {
             Some(r) => r?,
             None => self.ln_slope_portable(psi, theta, f_star)?,
         };
@@ -395,7 +396,7 @@ impl Table {
     /// Whether lookups on this machine run the fast f32 kernel (see
     /// [`mu_portable`](Self::mu_portable)).
     pub fn fast_kernel(&self) -> bool {
-        self.fast.is_some()
+        self.avx2.is_some()
     }
 
     /// The separation h*(ψ, θ, F*) at which the surfaces carry F*.
@@ -466,7 +467,7 @@ impl Table {
                 out: n,
             });
         }
-        let failed = match (&self.fast, out) {
+        let failed = match (&self.avx2, out) {
             (Some(kernel), out) => kernel.batch(psi, theta, f_star, out),
             (None, BatchOutput::Mu(o)) => fill(o, |i| self.mu_portable(psi[i], theta[i], f_star[i])),
             (None, BatchOutput::WithSlope(o)) => fill(o, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i])),

@@ -1,8 +1,8 @@
 //! Hardening: `kefric build` is deterministic across thread counts, and an
 //! interrupted or failed build never damages the file at its output path.
 
-mod common;
-use common::{TempDir, LONG_BUILD, SMALL_BUILD};
+use crate::common::TempDir;
+use crate::support::{LONG_BUILD, SMALL_BUILD};
 use ke_friction::Table;
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -42,7 +42,7 @@ fn builds_on_one_and_two_threads_are_byte_identical() {
     assert!(one == four, "1 and 4 threads differ");
     // A valid table, and exactly the files asked for (no temporary left).
     let t = Table::from_bytes(&one).expect("the build decodes");
-    assert_eq!(t.build_spec().nodes, [9, 9, 9]);
+    assert_eq!(t.info().build.nodes, [9, 9, 9]);
     assert_eq!(dir.names(""), ["four.kft", "one.kft", "two.kft"]);
 }
 

@@ -6,8 +6,7 @@
 //! it ran), so a bad input that is not rejected up front shows up as a
 //! timeout. All failures are collected and reported together.
 
-mod common;
-use common::{bad_input_problem, LONG_BUILD};
+use crate::support::{bad_input_problem, LONG_BUILD};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicUsize, Ordering};

@@ -1,6 +1,6 @@
 //! `kefric lookup`, `kefric verify` and `kefric build` on small inputs.
-mod common;
-use common::{kefric, TempDir, SMALL_BUILD};
+use crate::common::TempDir;
+use crate::support::{kefric, SMALL_BUILD};
 
 #[test]
 fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
@@ -38,8 +38,8 @@ fn verify_passes_on_the_embedded_table_and_a_small_build_round_trips() {
     let o = kefric(&[SMALL_BUILD, &["--out", p]].concat());
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let t = ke_friction::Table::load(&path).unwrap();
-    assert_eq!(t.build_spec().nodes, [9, 9, 9]);
-    assert!(t.accuracy().max_rel <= 0.5);
+    assert_eq!(t.info().build.nodes, [9, 9, 9]);
+    assert!(t.info().accuracy.max_rel <= 0.5);
     let o = kefric(&["verify", "--table", p, "--samples", "200", "--quiet"]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     // A table that cannot meet a tolerance is not written, and says why (exit 1).

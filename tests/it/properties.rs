@@ -5,8 +5,7 @@
 //! Random sets: ψ log-uniform in [0.5, 8] (the paper's range), θ = 0 with
 //! probability 1/4, otherwise log-uniform in [1e-4, 1e-2], h* uniform in
 //! [0, 3].
-mod common;
-use common::rel;
+use crate::common::rel;
 use ke_friction::{EvalError, Fit, Kind, Model, Params};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

@@ -1,13 +1,12 @@
 //! Agreement with an independent 30-digit mpmath implementation
 //! (`tools/reference.py generate`) at random points nobody picked by hand:
 //! default and non-default constants, both fits, both models, h* and F*.
-mod common;
-use common::{assert_rel, REFERENCE_REL};
+use crate::common::{assert_rel, REFERENCE_REL};
 use ke_friction::{Fit, Kind, Model, Params};
 use serde_json::Value;
 
 fn points() -> Vec<Value> {
-    let text = include_str!("data/reference_points.json");
+    let text = include_str!("../data/reference_points.json");
     let doc: Value = serde_json::from_str(text).expect("reference_points.json parses");
     doc["points"].as_array().expect("points array").clone()
 }

@@ -1,6 +1,5 @@
 //! The reference values of MODEL.md §7 and §8 (30-digit quadrature).
-mod common;
-use common::{assert_rel, REFERENCE_REL};
+use crate::common::{assert_rel, REFERENCE_REL};
 use ke_friction::{Kind, Model, Params};
 
 /// (ψ, θ, h*, d*, P*, Fs*, Q*, F*, μ) from MODEL.md §7.

@@ -1,8 +1,7 @@
 //! `kefric export`: the arrays written to .npz and .npy, and bad input.
-#![cfg(feature = "cli")]
 
-mod common;
-use common::{assert_bad_input, kefric, stderr, TempDir};
+use crate::common::TempDir;
+use crate::support::{assert_bad_input, kefric, stderr};
 use ke_friction::Table;
 use ndarray::{Array0, Array1, Array3};
 use ndarray_npy::{read_npy, NpzReader};
@@ -53,9 +52,10 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
 
     let table = Table::embedded();
     let d = table.domain();
-    let spec = table.build_spec();
-    let [np, nt, nf] = spec.nodes.map(|n| n as usize);
-    let g = spec.ghosts as usize;
+    let spec = &table.info().build;
+    let [np, nt, nf] = spec.nodes;
+    let g = spec.ghosts;
+    let (h_lo, h_hi, h_nodes) = spec.h_star;
     let psi: Array1<f64> = z.by_name("psi").unwrap();
     let theta: Array1<f64> = z.by_name("theta").unwrap();
     let f_star: Array1<f64> = z.by_name("f_star").unwrap();
@@ -87,9 +87,9 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     let grid_psi: Array1<f64> = z.by_name("grid_psi").unwrap();
     let grid_theta: Array1<f64> = z.by_name("grid_theta").unwrap();
     let grid_h: Array1<f64> = z.by_name("grid_h_star").unwrap();
-    let shape = [np + 2 * g, nt + g, spec.h_nodes as usize];
+    let shape = [np + 2 * g, nt + g, h_nodes];
     assert_eq!([grid_psi.len(), grid_theta.len(), grid_h.len()], shape);
-    assert_eq!((grid_h[0], grid_h[shape[2] - 1]), (spec.h_lo, spec.h_hi));
+    assert_eq!((grid_h[0], grid_h[shape[2] - 1]), (h_lo, h_hi));
     assert_eq!(grid_psi[g], d.psi.0);
     let grid_mu: Array3<f64> = z.by_name("grid_mu").unwrap();
     let grid_f: Array3<f64> = z.by_name("grid_f_star").unwrap();
@@ -112,11 +112,7 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     assert_eq!(grid_mu[[i, j, k]], c.mu.unwrap());
 
     // The model constants.
-    for (name, want) in [
-        ("beta", d.params.beta),
-        ("nu", d.params.nu),
-        ("eps_star", d.params.eps_star),
-    ] {
+    for (name, want) in [("beta", d.beta), ("nu", d.nu), ("eps_star", d.eps_star)] {
         let a: Array0<f64> = z.by_name(name).unwrap();
         assert_eq!(a.into_scalar(), want, "{name}");
     }
@@ -130,7 +126,7 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
         .zip(&grid_mu)
         .all(|(a, b)| a.to_bits() == b.to_bits()));
     let nu_npy: Array0<f64> = read_npy(npy.join("nu.npy")).unwrap();
-    assert_eq!(nu_npy.into_scalar(), d.params.nu);
+    assert_eq!(nu_npy.into_scalar(), d.nu);
 
     // Exporting again replaces the files; an explicit --table gives the same arrays.
     let table_file = tmp.join("default.kft");

@@ -1,8 +1,8 @@
 //! `kefric plot`: the paper's figures as PNGs of the promised size, the
 //! curve and error-map subcommands on the embedded table, SVG output, and
 //! bad input (exit 2, one line naming the flag).
-mod common;
-use common::{assert_bad_input, kefric, stderr, TempDir};
+use crate::common::TempDir;
+use crate::support::{assert_bad_input, kefric, stderr};
 use std::path::Path;
 
 /// Every image is 1000 × 750 pixels (`ke_friction::figures::SIZE`).
@@ -63,7 +63,7 @@ fn curve_overlays_the_embedded_table_and_a_table_file() {
     // `--table` alone: the embedded default table.
     assert_plots(&dir, &["curve", "--psi", "1", "--theta", "0.003", "--table"], "a.png");
     // The same table from its file.
-    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tables/default.kft");
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/../tables/default.kft");
     assert_plots(
         &dir,
         &["curve", "--psi", "0.7", "--theta", "0.001", "--table", file],

@@ -12,8 +12,7 @@
 //! 0 ≤ h* ≤ 3, F* ≤ 0.1, ordinary least squares in log–log coordinates) and
 //! which alternatives do not reproduce MODEL.md's numbers is documented
 //! there.
-mod common;
-use common::rel;
+use crate::common::rel;
 use ke_friction::paper::{
     adhesion_ratio_at, adhesion_ratio_crossing, exponent_n, extremes_over_h, friction_peak, ke_over_ceb,
     max_adhesion_ratio, power_m, CEB_LOADS, MIN_FIT_POINTS, SWEEP_POINTS,

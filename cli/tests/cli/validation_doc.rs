@@ -10,7 +10,7 @@ fn validation_doc_is_the_output_of_kefric_validate() {
         .output()
         .expect("kefric runs");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let doc_path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/validation.md");
+    let doc_path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/validation.md");
     let doc = std::fs::read(doc_path).expect("docs/validation.md exists");
     if o.stdout != doc {
         let (out, doc) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&doc));

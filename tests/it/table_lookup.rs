@@ -1,8 +1,8 @@
 //! The default table: accuracy against direct integration, smoothness,
 //! batch and threads, domain errors, and that it is exactly what the
 //! builder makes.
-mod common;
 use ke_friction::build::{build, BuildOptions};
+use ke_friction::table::Precision;
 use ke_friction::{LookupError, Model, Params, Table};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -49,9 +49,9 @@ fn the_committed_default_table_is_exactly_what_the_builder_writes() {
 #[test]
 fn the_default_table_meets_its_tolerance_against_direct_integration() {
     let t = table();
-    let tol = t.domain().tolerance;
+    let tol = t.info().tolerance;
     assert!(tol <= 1e-4, "default tolerance {tol}");
-    assert!(t.accuracy().max_rel <= tol);
+    assert!(t.info().accuracy.max_rel <= tol);
     // Fresh points (not the builder's): random, plus the centres of cells.
     let mut rng = ChaCha8Rng::seed_from_u64(99);
     let mut points: Vec<(f64, f64, f64)> = (0..600).map(|_| query(&mut rng)).collect();
@@ -368,7 +368,7 @@ fn f32_tables_run_the_fast_kernel_where_the_cpu_has_avx2_and_f64_tables_the_exac
     let avx2 = false;
     assert_eq!(table().fast_kernel(), avx2);
     let t = small_f64_table();
-    assert!(!t.single_precision() && !t.fast_kernel());
+    assert!(t.info().precision == Precision::F64 && !t.fast_kernel());
     let mut rng = ChaCha8Rng::seed_from_u64(41);
     for _ in 0..100 {
         let (p, th, f) = query(&mut rng);

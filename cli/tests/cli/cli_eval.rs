@@ -1,6 +1,5 @@
 //! `kefric eval`: output formats, ranges and bad input.
-mod common;
-use common::{kefric, stderr};
+use crate::support::{kefric, stderr};
 
 #[test]
 fn eval_json_at_f_star_matches_model_md() {

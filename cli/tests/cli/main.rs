@@ -1,0 +1,16 @@
+//! The tests of the `kefric` program, one crate (one binary to compile and
+//! link): each module runs the binary built for the tests.
+
+// Tolerances and `TempDir`, shared with the library's tests.
+#[path = "../../../tests/it/common.rs"]
+mod common;
+mod support;
+
+mod cli_eval;
+mod cli_export;
+mod cli_table;
+mod corrupted_tables;
+mod figures;
+mod hardening_build;
+mod hardening_cli;
+mod validation_doc;

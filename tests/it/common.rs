@@ -1,0 +1,68 @@
+//! Tolerances and helpers shared by the library's integration tests
+//! (`tests/it`) and the program's (`cli/tests/cli`, which includes this
+//! file by path).
+#![allow(dead_code)]
+
+/// Relative agreement with 30-digit quadrature that the issue demands of
+/// every model output (MODEL.md §7 values are themselves good to ~1e-15,
+/// printed to 11 digits, so this also bounds the printing error).
+pub const REFERENCE_REL: f64 = 1e-9;
+
+/// Relative difference, safe at zero.
+pub fn rel(a: f64, b: f64) -> f64 {
+    if a == b {
+        0.0
+    } else {
+        (a - b).abs() / a.abs().max(b.abs())
+    }
+}
+
+/// Asserts `|a − b| ≤ tol·max(|a|, |b|)` with a message naming `what`.
+#[track_caller]
+pub fn assert_rel(what: &str, got: f64, want: f64, tol: f64) {
+    let r = rel(got, want);
+    assert!(
+        r <= tol,
+        "{what}: got {got:e}, want {want:e}, relative error {r:e} > {tol:e}"
+    );
+}
+
+/// A fresh, empty directory under the system's temporary directory,
+/// unique to this process and `name`, removed on drop.
+pub struct TempDir(pub std::path::PathBuf);
+
+impl TempDir {
+    /// Creates (or empties) the directory.
+    pub fn new(name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("kefric-test-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        TempDir(dir)
+    }
+
+    /// A path inside it.
+    pub fn join(&self, name: &str) -> std::path::PathBuf {
+        self.0.join(name)
+    }
+
+    /// A path inside it, as a string argument.
+    pub fn arg(&self, name: &str) -> String {
+        self.join(name).to_str().unwrap().to_string()
+    }
+
+    /// The sorted names in a subdirectory (to spot leftover temporary files).
+    pub fn names(&self, sub: &str) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(self.0.join(sub))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        v.sort();
+        v
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}

@@ -1,0 +1,12 @@
+//! The library's integration tests, one crate (one binary to compile and
+//! link): the model against reference values and an independent
+//! implementation, its properties and hardening, the paper's statements,
+//! and the tables against direct integration.
+
+mod common;
+mod hardening_numerics;
+mod paper_statements;
+mod properties;
+mod reference_points;
+mod reference_values;
+mod table_lookup;
