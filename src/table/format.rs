@@ -175,6 +175,7 @@ pub struct ModelSpec {
 
 impl ModelSpec {
     /// The stored form of a model's constants, fit and kind.
+    #[cfg(any(feature = "builder", test))]
     pub fn of(p: &Params) -> ModelSpec {
         ModelSpec {
             beta: p.beta,
@@ -251,6 +252,7 @@ pub struct Accuracy {
 
 impl Accuracy {
     /// The stored form of a measured accuracy and the tolerance it met.
+    #[cfg(any(feature = "builder", test))]
     pub fn record(tolerance: f64, measured: &super::Accuracy) -> Accuracy {
         Accuracy {
             tolerance,
@@ -303,7 +305,9 @@ pub struct Payload {
     pub accuracy: Accuracy,
 }
 
-/// Serialises a payload into a complete table file.
+/// Serialises a payload into a complete table file (the builder's, and
+/// the tests' forgeries).
+#[cfg(any(feature = "builder", test))]
 pub fn encode(payload: &Payload) -> Vec<u8> {
     let body = postcard::to_allocvec(payload).expect("postcard serialises plain data");
     let mut out = Vec::with_capacity(HEADER + body.len() + 4);
