@@ -13,10 +13,11 @@
 //! which alternatives do not reproduce MODEL.md's numbers is documented
 //! there.
 use crate::common::rel;
-use ke_friction::paper::{
+use ke_friction::paper::fits::{
     adhesion_ratio_at, adhesion_ratio_crossing, exponent_n, extremes_over_h, friction_peak, ke_over_ceb,
-    max_adhesion_ratio, power_m, CEB_LOADS, MIN_FIT_POINTS, SWEEP_POINTS,
+    max_adhesion_ratio, power_m, MIN_FIT_POINTS, SWEEP_POINTS,
 };
+use ke_friction::paper::CEB_LOADS;
 use ke_friction::{Model, Params};
 
 fn model(psi: f64, theta: f64) -> Model {

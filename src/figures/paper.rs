@@ -1,0 +1,176 @@
+//! The paper's figures 3–6 as data.
+
+use super::chart::{extent, f_axis, log_range, num, zero_to, Chart, ChartAxis, Corner, Series, BLACK_INDEX};
+use super::{FigureError, H_SAMPLES, PAPER_THETA};
+use crate::paper::PAPER_F_STAR_MAX;
+use crate::{Contact, Kind, Model, Params};
+
+/// The contacts of a curve in the paper's range: [`H_SAMPLES`] separations
+/// over 0 ≤ h* ≤ 3 with 0 < F* ≤ 0.1, ordered by decreasing F*; if F* > 0.1
+/// at h* = 0, the contact at F* = 0.1 exactly comes first.
+pub fn paper_sweep(model: &Model) -> Result<Vec<Contact>, FigureError> {
+    let mut out = Vec::with_capacity(H_SAMPLES + 1);
+    for (i, h) in crate::paper::fits::h_points(H_SAMPLES).enumerate() {
+        let c = model.at_h_star(h)?;
+        if c.f_star > PAPER_F_STAR_MAX {
+            continue;
+        }
+        if c.f_star <= 0.0 {
+            break;
+        }
+        if out.is_empty() && i > 0 {
+            out.push(model.at_f_star(PAPER_F_STAR_MAX)?);
+        }
+        out.push(c);
+    }
+    Ok(out)
+}
+
+fn model(psi: f64, theta: f64, kind: Kind) -> Result<Model, FigureError> {
+    Ok(Model::new(Params::new(psi, theta).kind(kind))?)
+}
+
+fn psi_label(psi: f64) -> String {
+    format!("ψ = {}", num(psi))
+}
+
+/// A chart against F* (log) with a linear y axis from zero, its legend
+/// upper right.
+fn linear_chart(title: &str, y_title: &str, series: Vec<Series>) -> Chart {
+    let y = extent(&series).1;
+    Chart {
+        title: Some(title.into()),
+        x: f_axis(&series),
+        y: ChartAxis {
+            title: y_title.into(),
+            log: false,
+            range: zero_to(y.1),
+            ticks: None,
+        },
+        series,
+        legend: Corner::UpperRight,
+    }
+}
+
+/// One curve `(F*, y)` per ψ = 0.5, 1, 2, 4, 8 at θ = 0.003 (Figs. 3 and 4).
+fn psi_series(y: impl Fn(&Contact) -> f64) -> Result<Vec<Series>, FigureError> {
+    let mut series = Vec::new();
+    for (k, psi) in [0.5, 1.0, 2.0, 4.0, 8.0].into_iter().enumerate() {
+        let m = model(psi, PAPER_THETA, Kind::KogutEtsion)?;
+        series.push(Series {
+            label: Some(psi_label(psi)),
+            points: paper_sweep(&m)?.iter().map(|c| (c.f_star, y(c))).collect(),
+            color: k,
+            dashed: false,
+        });
+    }
+    Ok(series)
+}
+
+/// Fig. 3: Fs*/P* against F*, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
+pub(super) fn fig3() -> Result<Chart, FigureError> {
+    Ok(linear_chart(
+        "Fig. 3: adhesion force ratio Fₛ*/P*, θ = 0.003",
+        "Fₛ*/P*",
+        psi_series(|c| c.fs_star / c.p_star)?,
+    ))
+}
+
+/// Fig. 4: Q* against F*, log–log, ψ = 0.5, 1, 2, 4, 8, θ = 0.003.
+pub(super) fn fig4() -> Result<Chart, FigureError> {
+    let series = psi_series(|c| c.q_star)?;
+    let y = extent(&series).1;
+    Ok(Chart {
+        title: Some("Fig. 4: static friction force Q*, θ = 0.003".into()),
+        x: f_axis(&series),
+        y: ChartAxis {
+            title: "Q*".into(),
+            log: true,
+            range: log_range(y.0, y.1),
+            ticks: None,
+        },
+        series,
+        legend: Corner::UpperLeft,
+    })
+}
+
+/// μ(F*) along the paper's sweep.
+pub(super) fn mu_points(model: &Model) -> Result<Vec<(f64, f64)>, FigureError> {
+    Ok(paper_sweep(model)?
+        .iter()
+        .filter_map(|c| c.mu.map(|mu| (c.f_star, mu)))
+        .collect())
+}
+
+/// Legend entries that explain line styles.
+fn style_entry(label: &str, dashed: bool) -> Series {
+    Series {
+        label: Some(label.into()),
+        points: Vec::new(),
+        color: BLACK_INDEX,
+        dashed,
+    }
+}
+
+/// Fig. 5: μ against F*, ψ = 0.5, 1, 2, θ = 0.003; Kogut–Etsion solid,
+/// CEB-type (MODEL.md §8) dashed.
+pub(super) fn fig5() -> Result<Chart, FigureError> {
+    let mut series = Vec::new();
+    for (k, psi) in [0.5, 1.0, 2.0].into_iter().enumerate() {
+        for kind in [Kind::KogutEtsion, Kind::CebType] {
+            let m = model(psi, PAPER_THETA, kind)?;
+            series.push(Series {
+                label: (kind == Kind::KogutEtsion).then(|| psi_label(psi)),
+                points: mu_points(&m)?,
+                color: k,
+                dashed: kind == Kind::CebType,
+            });
+        }
+    }
+    series.push(style_entry("Kogut–Etsion", false));
+    series.push(style_entry("CEB-type (approx.)", true));
+    Ok(linear_chart(
+        "Fig. 5: static friction coefficient μ, θ = 0.003",
+        "μ",
+        series,
+    ))
+}
+
+/// Fig. 6: μ against F*, ψ = 0.5 (solid) and 2 (dashed), θ = 1e-4, 1e-3,
+/// 3e-3 (colours).
+pub(super) fn fig6() -> Result<Chart, FigureError> {
+    let mut series = Vec::new();
+    for (j, psi) in [0.5, 2.0].into_iter().enumerate() {
+        for (k, theta) in [1e-4, 1e-3, 3e-3].into_iter().enumerate() {
+            let m = model(psi, theta, Kind::KogutEtsion)?;
+            series.push(Series {
+                label: (j == 0).then(|| format!("θ = {}", num(theta))),
+                points: mu_points(&m)?,
+                color: k,
+                dashed: j == 1,
+            });
+        }
+    }
+    series.push(style_entry("ψ = 0.5", false));
+    series.push(style_entry("ψ = 2", true));
+    Ok(linear_chart(
+        "Fig. 6: effect of the adhesion parameter θ on μ",
+        "μ",
+        series,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_paper_sweep_ends_at_f_star_0_1() {
+        // ψ = 2: F*(h* = 0) = 0.13, so the curve starts at F* = 0.1 exactly.
+        let m = Model::new(Params::new(2.0, 0.003)).unwrap();
+        let s = paper_sweep(&m).unwrap();
+        assert!((s[0].f_star - 0.1).abs() < 1e-12);
+        assert!(s.windows(2).all(|w| w[1].f_star < w[0].f_star));
+        assert!(s.len() > 180, "{} points", s.len());
+    }
+}

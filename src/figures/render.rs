@@ -1,0 +1,576 @@
+//! Drawing charts with plotters, to PNG (supersampled) or SVG.
+
+use super::chart::{nice_step, num, pow10, Chart, ChartAxis, Corner, ErrorMap, Page, PALETTE};
+use super::{FigureError, Format, SIZE};
+use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+use std::path::Path;
+
+/// DejaVu Sans (assets/DejaVuSans-LICENSE.txt), so that no system font is
+/// needed at run time.
+static FONT: &[u8] = include_bytes!("../../assets/DejaVuSans.ttf");
+/// The family name the charts ask for.
+const FAMILY: &str = "sans-serif";
+
+/// Registers the embedded font (once).
+fn fonts() -> Result<(), String> {
+    static DONE: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let ok = *DONE.get_or_init(|| plotters::style::register_font(FAMILY, FontStyle::Normal, FONT).is_ok());
+    if ok {
+        Ok(())
+    } else {
+        Err("the embedded font could not be read".into())
+    }
+}
+
+/// Something that draws itself on a drawing area of any backend, with
+/// every length in pixels multiplied by `s`.
+trait Render {
+    fn render<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, s: u32) -> Result<(), String>;
+}
+
+/// PNGs are drawn this many times larger and averaged down: plotters does
+/// not anti-alias lines, and thick polylines drawn at the final size look
+/// jagged.
+const SUPERSAMPLE: u32 = 3;
+
+/// Draws `what` into `path`, PNG or SVG by its extension.
+fn save(path: &Path, what: &impl Render) -> Result<(), FigureError> {
+    let format = Format::from_path(path)?;
+    let result = fonts().and_then(|()| match format {
+        Format::Png => {
+            let k = SUPERSAMPLE;
+            let big = (SIZE.0 * k, SIZE.1 * k);
+            let mut buf = vec![0u8; big.0 as usize * big.1 as usize * 3];
+            {
+                let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
+                what.render(&root, k)?;
+                root.present().map_err(err)?;
+            }
+            let small = downsample(&buf, big, k);
+            let mut png = BitMapBackend::new(path, SIZE);
+            png.blit_bitmap((0, 0), SIZE, &small).map_err(err)?;
+            png.present().map_err(err)
+        }
+        Format::Svg => {
+            let root = SVGBackend::new(path, SIZE).into_drawing_area();
+            what.render(&root, 1)?;
+            root.present().map_err(err)
+        }
+    });
+    result.map_err(|message| FigureError::Draw {
+        path: path.display().to_string(),
+        message,
+    })
+}
+
+/// Averages each `k`×`k` block of an RGB image of size `big`.
+fn downsample(buf: &[u8], big: (u32, u32), k: u32) -> Vec<u8> {
+    let (w, h) = ((big.0 / k) as usize, (big.1 / k) as usize);
+    let (bw, k) = (big.0 as usize, k as usize);
+    let n = (k * k) as u32;
+    let mut out = vec![0u8; w * h * 3];
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = [0u32; 3];
+            for dy in 0..k {
+                let row = ((y * k + dy) * bw + x * k) * 3;
+                for px in buf[row..row + 3 * k].chunks_exact(3) {
+                    for (acc, &v) in sum.iter_mut().zip(px) {
+                        *acc += u32::from(v);
+                    }
+                }
+            }
+            for (c, acc) in sum.iter().enumerate() {
+                out[(y * w + x) * 3 + c] = ((acc + n / 2) / n) as u8;
+            }
+        }
+    }
+    out
+}
+
+impl Page {
+    /// Draws the page into `path` ([`SIZE`] pixels; PNG or SVG by the
+    /// extension).
+    pub fn save(&self, path: &Path) -> Result<(), FigureError> {
+        save(path, self)
+    }
+}
+
+impl ErrorMap {
+    /// Draws the map and its colour bar into `path` ([`SIZE`] pixels; PNG
+    /// or SVG by the extension).
+    pub fn save(&self, path: &Path) -> Result<(), FigureError> {
+        save(path, self)
+    }
+}
+
+fn err<E: std::fmt::Display>(e: E) -> String {
+    e.to_string()
+}
+
+fn rgb(i: usize) -> RGBColor {
+    let (r, g, b) = PALETTE[i % PALETTE.len()];
+    RGBColor(r, g, b)
+}
+
+// Sizes in pixels of the final image.
+const CAPTION_PX: u32 = 30;
+const DESC_PX: u32 = 26;
+const LABEL_PX: u32 = 22;
+const LEGEND_PX: u32 = 22;
+const LINE_PX: u32 = 3;
+const X_AREA_PX: u32 = 75;
+const Y_AREA_PX: u32 = 100;
+const X_TICKS_ONLY_PX: u32 = 40;
+const MARGIN_PX: u32 = 16;
+const MARGIN_RIGHT_PX: u32 = 40;
+const TICK_PX: u32 = 6;
+const COLOUR_BAR_PX: u32 = 170;
+
+/// A tick label: a decade as 10ᵏ, a small or large number as m×10ᵏ,
+/// others in plain decimals suited to the step.
+fn tick_label(v: f64, step: f64) -> String {
+    if v.abs() < step * 1e-6 {
+        return "0".into();
+    }
+    let big = v.abs().max(step);
+    if !(1e-2..1e4).contains(&big) {
+        let k = v.abs().log10().floor() as i32;
+        let m = v / 10f64.powi(k);
+        let m = (m * 100.0).round() / 100.0;
+        return format!("{}×{}", num(m).replace('-', "−"), pow10(k));
+    }
+    let decimals = (-(step.log10().floor()) as i32).max(0) as usize
+        + usize::from((step / 10f64.powf(step.log10().floor()) - 2.5).abs() < 1e-9);
+    format!("{v:.decimals$}").replace('-', "−")
+}
+
+impl ChartAxis {
+    /// Data value → plotting coordinate.
+    fn to(&self, v: f64) -> f64 {
+        if self.log {
+            v.log10()
+        } else {
+            v
+        }
+    }
+
+    /// Plotting coordinate → data value.
+    fn from(&self, u: f64) -> f64 {
+        if self.log {
+            10f64.powf(u)
+        } else {
+            u
+        }
+    }
+
+    /// The labelled ticks and the light grid lines, in plotting coordinates,
+    /// and the step used for labels.
+    fn ticks(&self) -> (Vec<f64>, Vec<f64>, f64) {
+        let (a, b) = (self.to(self.range.0), self.to(self.range.1));
+        let eps = 1e-9 * (b - a);
+        if let Some(t) = &self.ticks {
+            let major: Vec<f64> = t.iter().map(|&v| self.to(v)).collect();
+            return (major, Vec::new(), 1.0);
+        }
+        if self.log {
+            // Decades; on a short axis (under 2.5 decades) also 2× and 5×.
+            let labelled: &[i32] = if b - a < 2.5 { &[1, 2, 5] } else { &[1] };
+            let (mut major, mut minor) = (Vec::new(), Vec::new());
+            for k in (a.floor() as i32)..=(b.ceil() as i32) {
+                for m in 1..=9 {
+                    let u = f64::from(k) + f64::from(m).log10();
+                    if u > a - eps && u < b + eps {
+                        if labelled.contains(&m) {
+                            major.push(u);
+                        } else {
+                            minor.push(u);
+                        }
+                    }
+                }
+            }
+            (major, minor, 1.0)
+        } else {
+            let step = nice_step((b - a) / 6.0);
+            let first = (a / step - 1e-9).ceil() as i64;
+            let last = (b / step + 1e-9).floor() as i64;
+            let major = (first..=last).map(|i| i as f64 * step).collect();
+            let fine = step / 5.0;
+            let minor = (((a / fine) - 1e-9).ceil() as i64..=((b / fine) + 1e-9).floor() as i64)
+                .filter(|i| i % 5 != 0)
+                .map(|i| i as f64 * fine)
+                .collect();
+            (major, minor, step)
+        }
+    }
+
+    /// The plotting coordinate with its ticks.
+    fn coord(&self) -> Ticked {
+        let (major, minor, _) = self.ticks();
+        Ticked {
+            inner: (self.to(self.range.0)..self.to(self.range.1)).into(),
+            major,
+            minor,
+        }
+    }
+
+    /// The label of the tick at plotting coordinate `u`.
+    fn label(&self, u: f64) -> String {
+        if self.ticks.is_some() {
+            return num((self.from(u) * 1e6).round() / 1e6);
+        }
+        if self.log {
+            let k = u.round();
+            if (u - k).abs() < 1e-6 {
+                pow10(k as i32)
+            } else {
+                let k = u.floor();
+                format!("{}×{}", 10f64.powf(u - k).round(), pow10(k as i32))
+            }
+        } else {
+            tick_label(u, self.ticks().2)
+        }
+    }
+}
+
+/// A linear plotting coordinate (data are mapped through log10 for log
+/// axes beforehand) with ticks and light grid lines chosen here, not by
+/// plotters: decades and 2…9 subdivisions on log axes.
+struct Ticked {
+    inner: RangedCoordf64,
+    major: Vec<f64>,
+    minor: Vec<f64>,
+}
+
+impl Ranged for Ticked {
+    type FormatOption = DefaultFormatting;
+    type ValueType = f64;
+
+    fn map(&self, value: &f64, limit: (i32, i32)) -> i32 {
+        self.inner.map(value, limit)
+    }
+
+    fn key_points<Hint: KeyPointHint>(&self, hint: Hint) -> Vec<f64> {
+        if hint.weight().allow_light_points() {
+            self.minor.clone()
+        } else {
+            self.major.clone()
+        }
+    }
+
+    fn range(&self) -> std::ops::Range<f64> {
+        self.inner.range()
+    }
+}
+
+type Plot<'a, DB> = ChartContext<'a, DB, Cartesian2d<Ticked, Ticked>>;
+
+/// The chart's frame, mesh and labels on `area`.
+fn frame<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: Option<&str>,
+    x: &ChartAxis,
+    y: &ChartAxis,
+    grid: bool,
+    y_area: u32,
+    s: u32,
+) -> Result<Plot<'a, DB>, String> {
+    let mut builder = ChartBuilder::on(area);
+    builder
+        .margin(MARGIN_PX * s)
+        .margin_right(MARGIN_RIGHT_PX * s)
+        .x_label_area_size(if x.title.is_empty() { X_TICKS_ONLY_PX } else { X_AREA_PX } * s)
+        .y_label_area_size(y_area);
+    if let Some(t) = title {
+        builder.caption(t, (FAMILY, CAPTION_PX * s));
+    }
+    let mut chart = builder.build_cartesian_2d(x.coord(), y.coord()).map_err(err)?;
+    let fx = |u: &f64| x.label(*u);
+    let fy = |u: &f64| y.label(*u);
+    let mut mesh = chart.configure_mesh();
+    mesh.x_label_formatter(&fx)
+        .y_label_formatter(&fy)
+        .x_desc(x.title.as_str())
+        .y_desc(y.title.as_str())
+        .axis_desc_style((FAMILY, DESC_PX * s))
+        .label_style((FAMILY, LABEL_PX * s))
+        .axis_style(BLACK.stroke_width(s))
+        .bold_line_style(BLACK.mix(0.16).stroke_width(s))
+        .light_line_style(BLACK.mix(0.045).stroke_width(s))
+        .set_all_tick_mark_size(TICK_PX * s);
+    if !grid {
+        mesh.disable_mesh();
+    }
+    mesh.draw().map_err(err)?;
+    Ok(chart)
+}
+
+/// A box around the plotting area.
+fn border<DB: DrawingBackend>(chart: &Plot<'_, DB>, s: u32) -> Result<(), String> {
+    let area = chart.plotting_area();
+    let (w, h) = area.dim_in_pixel();
+    area.strip_coord_spec()
+        .draw(&Rectangle::new(
+            [(0, 0), (w as i32 - 1, h as i32 - 1)],
+            BLACK.stroke_width(s),
+        ))
+        .map_err(err)
+}
+
+/// The width of the vertical axis's label area: room for the widest tick
+/// label, the ticks and the axis title.
+fn y_area<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, y: &ChartAxis, s: u32) -> Result<u32, String> {
+    let font: TextStyle = (FAMILY, LABEL_PX * s).into_font().into();
+    let mut widest = 0;
+    for u in y.ticks().0 {
+        widest = widest.max(area.estimate_text_size(&y.label(u), &font).map_err(err)?.0);
+    }
+    Ok((Y_AREA_PX * s).max(widest + (DESC_PX + TICK_PX + 34) * s))
+}
+
+fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_area: u32, s: u32) -> Result<(), String> {
+    let mut chart = frame(area, c.title.as_deref(), &c.x, &c.y, true, y_area, s)?;
+    let si = s as i32;
+    let mut labelled = false;
+    for line in &c.series {
+        let style = rgb(line.color).stroke_width(LINE_PX * s);
+        let pts: Vec<(f64, f64)> = line
+            .points
+            .iter()
+            .filter(|&&(x, y)| (!c.x.log || x > 0.0) && (!c.y.log || y > 0.0))
+            .map(|&(x, y)| (c.x.to(x), c.y.to(y)))
+            .collect();
+        let anno = if line.dashed {
+            chart
+                .draw_series(DashedLineSeries::new(pts, 14 * si, 9 * si, style))
+                .map_err(err)?
+        } else {
+            chart.draw_series(LineSeries::new(pts, style)).map_err(err)?
+        };
+        if let Some(label) = &line.label {
+            labelled = true;
+            let dashed = line.dashed;
+            anno.label(label.as_str()).legend(move |(x, y)| {
+                let pts = vec![(x - 4 * si, y), (x + 36 * si, y)];
+                if dashed {
+                    DashedPathElement::new(pts, 10 * si, 6 * si, style).into_dyn()
+                } else {
+                    PathElement::new(pts, style).into_dyn()
+                }
+            });
+        }
+    }
+    border(&chart, s)?;
+    if labelled {
+        let font: TextStyle = (FAMILY, LEGEND_PX * s).into_font().into();
+        let pad = 10 * s;
+        let glyph = 50 * s;
+        let mut text_w = 0;
+        let labels = c.series.iter().filter_map(|l| l.label.as_deref());
+        for label in labels.clone() {
+            text_w = text_w.max(area.estimate_text_size(label, &font).map_err(err)?.0);
+        }
+        // The box's size as plotters lays it out (line height 1.25 em),
+        // so that it can sit a little inside the frame.
+        let lines = labels.count() as f64;
+        let w = (text_w + glyph + 2 * pad) as i32;
+        let h = ((lines - 1.0) * 1.25 * f64::from(LEGEND_PX * s) + f64::from(LEGEND_PX * s)) as i32 + 2 * pad as i32;
+        let (aw, ah) = chart.plotting_area().dim_in_pixel();
+        let inset = (12 * s) as i32;
+        let (x, y) = match c.legend {
+            Corner::UpperLeft => (inset, inset),
+            Corner::UpperRight => (aw as i32 - w - inset, inset),
+            Corner::LowerLeft => (inset, ah as i32 - h - inset),
+            Corner::LowerRight => (aw as i32 - w - inset, ah as i32 - h - inset),
+        };
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::Coordinate(x, y))
+            .margin(pad)
+            .legend_area_size(glyph)
+            .label_font(font)
+            .background_style(WHITE.mix(0.92))
+            .border_style(BLACK.mix(0.5).stroke_width(s))
+            .draw()
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+impl Render for Page {
+    fn render<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, s: u32) -> Result<(), String> {
+        root.fill(&WHITE).map_err(err)?;
+        let mut width = y_area(root, &self.top.y, s)?;
+        match &self.bottom {
+            None => draw_chart(root, &self.top, width, s),
+            Some(bottom) => {
+                // The same label width in both panels keeps their F* axes aligned.
+                width = width.max(y_area(root, &bottom.y, s)?);
+                let (upper, lower) = root.split_vertically(SIZE.1 * 3 / 5 * s);
+                draw_chart(&upper, &self.top, width, s)?;
+                draw_chart(&lower, bottom, width, s)
+            }
+        }
+    }
+}
+
+/// Viridis, sampled at five points and interpolated linearly.
+fn viridis(t: f64) -> RGBColor {
+    const STOPS: [(f64, f64, f64); 5] = [
+        (68.0, 1.0, 84.0),
+        (59.0, 82.0, 139.0),
+        (33.0, 145.0, 140.0),
+        (94.0, 201.0, 98.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = t.clamp(0.0, 1.0) * 4.0;
+    let i = (t.floor() as usize).min(3);
+    let f = t - i as f64;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    let mix = |x: f64, y: f64| (x + (y - x) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+impl ErrorMap {
+    /// The colour scale's decades (log10 of the error): whole decades
+    /// covering the errors and, not at the very top, the tolerance; at
+    /// most 6 of them.
+    fn scale(&self) -> (f64, f64) {
+        let max = self.rel.iter().copied().fold(0.0, f64::max);
+        let min = self
+            .rel
+            .iter()
+            .copied()
+            .filter(|&r| r > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let hi = (max.max(self.tolerance).log10() + 0.3).ceil();
+        let lo = if min.is_finite() { min.log10().floor() } else { hi - 6.0 };
+        (lo.max(hi - 6.0), hi)
+    }
+}
+
+impl Render for ErrorMap {
+    fn render<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, s: u32) -> Result<(), String> {
+        root.fill(&WHITE).map_err(err)?;
+        let (main, bar) = root.split_horizontally((SIZE.0 - COLOUR_BAR_PX) * s);
+        let (lo, hi) = self.scale();
+        let colour = |r: f64| viridis((r.max(1e-300).log10() - lo) / (hi - lo));
+        let (psi_lo, psi_hi) = (self.psi[0], self.psi[self.psi.len() - 1]);
+        let x = ChartAxis {
+            title: "F*".into(),
+            log: true,
+            range: (self.f_star[0], self.f_star[self.f_star.len() - 1]),
+            ticks: None,
+        };
+        let psi_ticks: Vec<f64> = [0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0]
+            .into_iter()
+            .filter(|&v| v >= psi_lo * (1.0 - 1e-9) && v <= psi_hi * (1.0 + 1e-9))
+            .collect();
+        let y = ChartAxis {
+            title: "ψ".into(),
+            log: true,
+            range: (psi_lo, psi_hi),
+            ticks: (psi_ticks.len() >= 2).then_some(psi_ticks),
+        };
+        let (max, at_psi, at_f) = self.max();
+        let title = format!(
+            "Table error, θ = {} (max {} at ○)",
+            num(self.theta),
+            tick_label(max, max)
+        );
+        let width = y_area(&main, &y, s)?;
+        let mut chart = frame(&main, Some(&title), &x, &y, false, width, s)?;
+        let cols = self.f_star.len() - 1;
+        chart
+            .draw_series(self.rel.iter().enumerate().map(|(i, &r)| {
+                let (row, col) = (i / cols, i % cols);
+                Rectangle::new(
+                    [
+                        (x.to(self.f_star[col]), y.to(self.psi[row + 1])),
+                        (x.to(self.f_star[col + 1]), y.to(self.psi[row])),
+                    ],
+                    colour(r).filled(),
+                )
+            }))
+            .map_err(err)?;
+        // The largest error, ringed.
+        let ring = ShapeStyle::from(&WHITE).stroke_width(3 * s);
+        chart
+            .draw_series(std::iter::once(Circle::new((x.to(at_f), y.to(at_psi)), 12 * s, ring)))
+            .map_err(err)?;
+        border(&chart, s)?;
+
+        // The colour bar: the same caption and x-label space as the map,
+        // so that the two line up.
+        let mut builder = ChartBuilder::on(&bar);
+        builder
+            .margin(MARGIN_PX * s)
+            .margin_right(10 * s)
+            .caption(" ", (FAMILY, CAPTION_PX * s))
+            .x_label_area_size(X_AREA_PX * s)
+            .y_label_area_size(0)
+            .right_y_label_area_size(95 * s);
+        let cb = ChartAxis {
+            title: "|μ_table/μ − 1|   (red: tolerance)".into(),
+            log: true,
+            range: (10f64.powf(lo), 10f64.powf(hi)),
+            ticks: None,
+        };
+        let unit = ChartAxis {
+            title: String::new(),
+            log: false,
+            range: (0.0, 1.0),
+            ticks: Some(vec![]),
+        };
+        let mut bar_chart = builder.build_cartesian_2d(unit.coord(), cb.coord()).map_err(err)?;
+        let fy = |u: &f64| cb.label(*u);
+        bar_chart
+            .configure_mesh()
+            .disable_mesh()
+            .disable_x_axis()
+            .y_label_formatter(&fy)
+            .y_desc(cb.title.as_str())
+            .axis_desc_style((FAMILY, DESC_PX * s))
+            .label_style((FAMILY, LABEL_PX * s))
+            .axis_style(BLACK.stroke_width(s))
+            .set_all_tick_mark_size(TICK_PX * s)
+            .draw()
+            .map_err(err)?;
+        let steps = 120;
+        bar_chart
+            .draw_series((0..steps).map(|i| {
+                let a = lo + (hi - lo) * i as f64 / steps as f64;
+                let b = lo + (hi - lo) * (i + 1) as f64 / steps as f64;
+                Rectangle::new([(0.0, b), (1.0, a)], viridis((i as f64 + 0.5) / steps as f64).filled())
+            }))
+            .map_err(err)?;
+        // The tolerance the table promises, as a line across the bar.
+        let t = self.tolerance.log10();
+        if t >= lo && t <= hi {
+            bar_chart
+                .draw_series(LineSeries::new(vec![(0.0, t), (1.0, t)], RED.stroke_width(3 * s)))
+                .map_err(err)?;
+        }
+        border(&bar_chart, s)?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tick_labels_suit_the_step() {
+        assert_eq!(tick_label(0.5, 0.5), "0.5");
+        assert_eq!(tick_label(0.25, 0.25), "0.25");
+        assert_eq!(tick_label(2.0, 0.5), "2.0");
+        assert_eq!(tick_label(1e-19, 0.5), "0");
+        assert_eq!(tick_label(-2e-5, 1e-5), "−2×10⁻⁵");
+        assert_eq!(tick_label(4.02e-5, 4.02e-5), "4.02×10⁻⁵");
+    }
+}
