@@ -30,8 +30,12 @@
 //!   coefficients.
 //!
 //! The helpers are `#[inline]`, not `#[inline(always)]` (which stable Rust
-//! does not allow with `#[target_feature]`); all of them are inlined into
-//! the two entry points [`eval`] and [`batch`] (checked in the machine code).
+//! does not allow with `#[target_feature]`, and which `unsafe fn` helpers
+//! without the features needed). In optimised builds without debug
+//! assertions (the bench and dist profiles, and a plain release build) all
+//! of them are inlined into the two entry points [`eval`] and [`batch`],
+//! checked in the machine code; with debug assertions (std's precondition
+//! checks) [`blend`] and [`locate`] stay separate functions.
 
 use super::layout::Layout;
 use super::BatchOutput;
@@ -99,7 +103,10 @@ impl Kernel {
         let len = nodes[0] * stride[0];
         // The block of the last cell must end inside the coefficients.
         let last_block = (0..3).map(|a| layout.last_cell[a] * stride[a]).sum::<usize>() + 3 * stride[0] + 15;
-        if nodes[0] * s0 != coefs.len() || nodes.iter().any(|&m| m >= 2048) || last_block >= len || len >= i32::MAX as usize
+        if nodes[0] * s0 != coefs.len()
+            || nodes.iter().any(|&m| m >= 2048)
+            || last_block >= len
+            || len >= i32::MAX as usize
         {
             return None;
         }
@@ -175,7 +182,9 @@ struct CellMap {
 /// query a rounding error outside the domain's edge still reads inside the
 /// table): `min` returns `last_cell` and then `max` returns it again for a
 /// NaN lane. A lane's block offset is therefore at most
-/// `last_cell·stride`, the bound the block reads rely on.
+/// `last_cell·stride`, the bound the block reads rely on (and at least 0:
+/// the i32 product cannot overflow, as `Kernel::new` keeps the
+/// coefficients' length below `i32::MAX`).
 #[target_feature(enable = "avx2,fma")]
 #[inline]
 fn cells(e: __m256, q: __m256, map: &CellMap) -> (__m256, __m256i) {
@@ -220,8 +229,12 @@ fn pick(v: __m256, idx: [i32; 8]) -> __m256 {
 #[target_feature(enable = "avx2,fma")]
 #[inline]
 fn basis(r: usize) -> __m256 {
-    let b = BASIS[r].map(|v| v as f32);
-    _mm256_setr_ps(b[0], b[1], b[2], b[3], b[0], b[1], b[2], b[3])
+    // (Element by element, not `map`: a closure here would inherit this
+    // function's target features, and std's `map`, compiled without them,
+    // could not inline it.)
+    let [b0, b1, b2, b3] = BASIS[r];
+    let [b0, b1, b2, b3] = [b0 as f32, b1 as f32, b2 as f32, b3 as f32];
+    _mm256_setr_ps(b0, b1, b2, b3, b0, b1, b2, b3)
 }
 
 /// The eight f32 of `v` in a vector.
@@ -264,9 +277,9 @@ fn f64_lanes(v: [__m256d; 2]) -> [f64; 8] {
 
 /// One query's blend before the final horizontal sum: a vector whose
 /// lanes add up to ln μ, and (if `SLOPE`) one whose lanes add up to its
-/// derivative along the F* cell coordinate. `f` holds the θ cell offset
-/// in lanes 0..4 and the F* one in 4..8; `w_psi` the four ψ weights, each
-/// in every lane.
+/// derivative along the F* cell coordinate. `frac` holds the offset in
+/// the cell along θ in lanes 0..4 and along F* in 4..8; `w_psi` the four
+/// ψ weights, each in every lane.
 ///
 /// # Safety
 /// `base` must be a block offset the kernel formed: a sum over the axes
@@ -275,16 +288,16 @@ fn f64_lanes(v: [__m256d; 2]) -> [f64; 8] {
 /// 15`, lies inside `kernel.coefs` (the bound [`Kernel::new`] checked).
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-unsafe fn blend<const SLOPE: bool>(kernel: &Kernel, base: usize, f: __m256, w_psi: [__m256; 4]) -> (__m256, __m256) {
+unsafe fn blend<const SLOPE: bool>(kernel: &Kernel, base: usize, frac: __m256, w_psi: [__m256; 4]) -> (__m256, __m256) {
     // [θ weights | F* weights].
-    let w = weights(f);
+    let w = weights(frac);
     // Each ψ plane's 16 floats: F* offsets 0|1, then 2|3, four θ rows each.
     let psi_stride = kernel.stride[0] as usize;
     // SAFETY: the rows read are floats base + i·psi_stride + half ..
     // base + i·psi_stride + half + 8 for i < 4 and half ∈ {0, 8}: at most
     // base + 3·psi_stride + 15, inside `kernel.coefs` by this function's
     // contract on `base` (bounded in `Kernel::new`, cells clamped in `cells`).
-    let (rows01, rows23) = unsafe {
+    let (f01_rows, f23_rows) = unsafe {
         let block = kernel.coefs.as_ptr().add(base);
         let row = |i: usize, half: usize| _mm256_loadu_ps(block.add(i * psi_stride + half));
         (
@@ -292,26 +305,26 @@ unsafe fn blend<const SLOPE: bool>(kernel: &Kernel, base: usize, f: __m256, w_ps
             [row(0, 8), row(1, 8), row(2, 8), row(3, 8)],
         )
     };
-    let (t01, t23) = (psi_sum(&w_psi, rows01), psi_sum(&w_psi, rows23));
+    let (f01_plane, f23_plane) = (psi_sum(&w_psi, f01_rows), psi_sum(&w_psi, f23_rows));
     // The (θ, F*) weights of the two halves, ready before the rows are.
     const F01: [i32; 8] = [4, 4, 4, 4, 5, 5, 5, 5];
     const F23: [i32; 8] = [6, 6, 6, 6, 7, 7, 7, 7];
     let w_theta = pick(w, [0, 1, 2, 3, 0, 1, 2, 3]);
-    let g = _mm256_fmadd_ps(
-        t23,
+    let ln_mu_terms = _mm256_fmadd_ps(
+        f23_plane,
         _mm256_mul_ps(w_theta, pick(w, F23)),
-        _mm256_mul_ps(t01, _mm256_mul_ps(w_theta, pick(w, F01))),
+        _mm256_mul_ps(f01_plane, _mm256_mul_ps(w_theta, pick(w, F01))),
     );
     if !SLOPE {
-        return (g, g);
+        return (ln_mu_terms, ln_mu_terms);
     }
-    let dw = weight_slopes(f);
-    let dg = _mm256_fmadd_ps(
-        t23,
+    let dw = weight_slopes(frac);
+    let slope_terms = _mm256_fmadd_ps(
+        f23_plane,
         _mm256_mul_ps(w_theta, pick(dw, F23)),
-        _mm256_mul_ps(t01, _mm256_mul_ps(w_theta, pick(dw, F01))),
+        _mm256_mul_ps(f01_plane, _mm256_mul_ps(w_theta, pick(dw, F01))),
     );
-    (g, dg)
+    (ln_mu_terms, slope_terms)
 }
 
 /// Σᵢ `w_psi[i]`·`rows[i]` over the four ψ planes, as a tree,
@@ -352,10 +365,10 @@ fn eval<const SLOPE: bool>(kernel: &Kernel, psi: f64, theta: f64, f_star: f64) -
     if _mm256_movemask_pd(inside) != 0b1111 {
         return (f64::NAN, f64::NAN);
     }
-    let x = _mm256_set_m128(_mm_set1_ps(1.0), _mm256_cvtpd_ps(query));
-    let (e, ln_m) = ln8(x);
+    let query_f32 = _mm256_set_m128(_mm_set1_ps(1.0), _mm256_cvtpd_ps(query));
+    let (e, ln_m) = ln8(query_f32);
     let e = _mm256_blend_ps::<0b10>(e, _mm256_setzero_ps());
-    let q = _mm256_blend_ps::<0b10>(ln_m, _mm256_sqrt_ps(x));
+    let q = _mm256_blend_ps::<0b10>(ln_m, _mm256_sqrt_ps(query_f32));
     let map = CellMap {
         k_hi: load_f32x8(&kernel.k_hi),
         k_lo: load_f32x8(&kernel.k_lo),
@@ -368,22 +381,29 @@ fn eval<const SLOPE: bool>(kernel: &Kernel, psi: f64, theta: f64, f_star: f64) -
     let (frac, offsets) = cells(e, q, &map);
     let low = _mm256_castsi256_si128(offsets);
     let base = _mm_cvtsi128_si32(low) + _mm_extract_epi32::<1>(low) + _mm_extract_epi32::<2>(low);
-    let w = weights(pick(frac, [0; 8]));
-    let w_psi = [pick(w, [0; 8]), pick(w, [1; 8]), pick(w, [2; 8]), pick(w, [3; 8])];
+    let psi_weights = weights(pick(frac, [0; 8]));
+    let w_psi = [
+        pick(psi_weights, [0; 8]),
+        pick(psi_weights, [1; 8]),
+        pick(psi_weights, [2; 8]),
+        pick(psi_weights, [3; 8]),
+    ];
+    // [θ offset ×4 | F* offset ×4], as the batch passes them.
+    let frac_theta_f_star = pick(frac, [1, 1, 1, 1, 2, 2, 2, 2]);
     // SAFETY: `base` sums lanes 0..3 of `offsets`, the ψ, θ and F* cells
     // (clamped by `cells`) times the kernel's strides: a block offset the
     // kernel formed, as `blend` requires.
-    let (g, dg) = unsafe { blend::<SLOPE>(kernel, base as usize, pick(frac, [1, 1, 1, 1, 2, 2, 2, 2]), w_psi) };
-    // The batch's sum order: (g0 + g1) + (g2 + g3), plus the same of 4..8.
-    let pairs = _mm256_hadd_ps(g, dg);
+    let (ln_mu_terms, slope_terms) = unsafe { blend::<SLOPE>(kernel, base as usize, frac_theta_f_star, w_psi) };
+    // The batch's sum order: (t0 + t1) + (t2 + t3), plus the same of 4..8.
+    let pairs = _mm256_hadd_ps(ln_mu_terms, slope_terms);
     let pairs = _mm256_hadd_ps(pairs, pairs);
     let sums = _mm_add_ps(_mm256_castps256_ps128(pairs), _mm256_extractf128_ps::<1>(pairs));
     let mu = exp8(_mm256_set1_ps(_mm_cvtss_f32(sums)));
     (_mm256_cvtss_f32(mu) as f64, _mm_cvtss_f32(_mm_movehdup_ps(sums)) as f64)
 }
 
-/// Eight located queries: block offsets, cell offsets on the θ and F*
-/// axes, and the four ψ weights.
+/// Eight located queries: block offsets, offsets in the cell on the θ
+/// and F* axes, and the four ψ weights.
 ///
 /// Invariant: every lane of `base` is a block offset the kernel formed
 /// (see [`blend`]'s contract). [`locate`] writes it from [`cells`], and
@@ -393,8 +413,8 @@ fn eval<const SLOPE: bool>(kernel: &Kernel, psi: f64, theta: f64, f_star: f64) -
 #[repr(C, align(32))]
 struct Located {
     base: [i32; 8],
-    f_theta: [f32; 8],
-    f_f: [f32; 8],
+    frac_theta: [f32; 8],
+    frac_f_star: [f32; 8],
     w_psi: [[f32; 8]; 4],
 }
 
@@ -516,7 +536,7 @@ fn batch_with<const SLOPE: bool>(
 #[inline]
 unsafe fn locate(kernel: &Kernel, maps: &[CellMap; 3], queries: [&[f64]; 3], i: usize, located: &mut Located) -> bool {
     let mut inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    let mut x = [_mm256_setzero_ps(); 3];
+    let mut query_f32 = [_mm256_setzero_ps(); 3];
     for a in 0..3 {
         // SAFETY: the loads read queries[a][i .. i + 8], in bounds by this
         // function's contract.
@@ -528,16 +548,20 @@ unsafe fn locate(kernel: &Kernel, maps: &[CellMap; 3], queries: [&[f64]; 3], i: 
         };
         // Ordered comparisons: NaN fails them.
         let (lo, hi) = (_mm256_set1_pd(kernel.lo[a]), _mm256_set1_pd(kernel.hi[a]));
-        for h in halves {
-            inside = _mm256_and_pd(inside, _mm256_cmp_pd::<_CMP_GE_OQ>(h, lo));
-            inside = _mm256_and_pd(inside, _mm256_cmp_pd::<_CMP_LE_OQ>(h, hi));
+        for half in halves {
+            inside = _mm256_and_pd(inside, _mm256_cmp_pd::<_CMP_GE_OQ>(half, lo));
+            inside = _mm256_and_pd(inside, _mm256_cmp_pd::<_CMP_LE_OQ>(half, hi));
         }
-        x[a] = _mm256_set_m128(_mm256_cvtpd_ps(halves[1]), _mm256_cvtpd_ps(halves[0]));
+        query_f32[a] = _mm256_set_m128(_mm256_cvtpd_ps(halves[1]), _mm256_cvtpd_ps(halves[0]));
     }
     if _mm256_movemask_pd(inside) != 0b1111 {
         return false;
     }
-    let coords = [ln8(x[0]), (_mm256_setzero_ps(), _mm256_sqrt_ps(x[1])), ln8(x[2])];
+    let coords = [
+        ln8(query_f32[0]),
+        (_mm256_setzero_ps(), _mm256_sqrt_ps(query_f32[1])),
+        ln8(query_f32[2]),
+    ];
     let mut base = _mm256_setzero_si256();
     let mut frac = [_mm256_setzero_ps(); 3];
     for a in 0..3 {
@@ -552,10 +576,10 @@ unsafe fn locate(kernel: &Kernel, maps: &[CellMap; 3], queries: [&[f64]; 3], i: 
     // `cells`) keeps `Located`'s invariant.
     unsafe {
         _mm256_store_si256(located.base.as_mut_ptr().cast(), base);
-        _mm256_store_ps(located.f_theta.as_mut_ptr(), frac[1]);
-        _mm256_store_ps(located.f_f.as_mut_ptr(), frac[2]);
+        _mm256_store_ps(located.frac_theta.as_mut_ptr(), frac[1]);
+        _mm256_store_ps(located.frac_f_star.as_mut_ptr(), frac[2]);
     }
-    for (j, out) in located.w_psi.iter_mut().enumerate() {
+    for (j, field) in located.w_psi.iter_mut().enumerate() {
         let coef = |r: usize| _mm256_set1_ps(BASIS[r][j] as f32);
         let (c0, c1, c2, c3) = (coef(0), coef(1), coef(2), coef(3));
         let w = _mm256_fmadd_ps(
@@ -563,9 +587,9 @@ unsafe fn locate(kernel: &Kernel, maps: &[CellMap; 3], queries: [&[f64]; 3], i: 
             frac[0],
             c3,
         );
-        // SAFETY: the aligned store writes `out`, a whole 32-byte field
+        // SAFETY: the aligned store writes `field`, a whole 32-byte field
         // of `located`, 32-byte aligned as above.
-        unsafe { _mm256_store_ps(out.as_mut_ptr(), w) };
+        unsafe { _mm256_store_ps(field.as_mut_ptr(), w) };
     }
     true
 }
@@ -574,7 +598,10 @@ unsafe fn locate(kernel: &Kernel, maps: &[CellMap; 3], queries: [&[f64]; 3], i: 
 #[target_feature(enable = "avx2,fma")]
 #[inline]
 fn blend_query<const SLOPE: bool>(kernel: &Kernel, located: &Located, q: usize) -> (__m256, __m256) {
-    let f = _mm256_set_m128(_mm_set1_ps(located.f_f[q]), _mm_set1_ps(located.f_theta[q]));
+    let frac = _mm256_set_m128(
+        _mm_broadcast_ss(&located.frac_f_star[q]),
+        _mm_broadcast_ss(&located.frac_theta[q]),
+    );
     let w_psi = [
         _mm256_broadcast_ss(&located.w_psi[0][q]),
         _mm256_broadcast_ss(&located.w_psi[1][q]),
@@ -583,18 +610,19 @@ fn blend_query<const SLOPE: bool>(kernel: &Kernel, located: &Located, q: usize) 
     ];
     // SAFETY: `located.base[q]` is a block offset the kernel formed, by
     // `Located`'s invariant (written only by `locate`, from `cells`).
-    unsafe { blend::<SLOPE>(kernel, located.base[q] as usize, f, w_psi) }
+    unsafe { blend::<SLOPE>(kernel, located.base[q] as usize, frac, w_psi) }
 }
 
 /// The lane sums of eight vectors, in the single kernel's order.
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-fn lane_sums(g: &[__m256; 8]) -> __m256 {
-    let h0 = _mm256_hadd_ps(_mm256_hadd_ps(g[0], g[1]), _mm256_hadd_ps(g[2], g[3]));
-    let h1 = _mm256_hadd_ps(_mm256_hadd_ps(g[4], g[5]), _mm256_hadd_ps(g[6], g[7]));
+fn lane_sums(terms: &[__m256; 8]) -> __m256 {
+    let [t0, t1, t2, t3, t4, t5, t6, t7] = *terms;
+    let sums03 = _mm256_hadd_ps(_mm256_hadd_ps(t0, t1), _mm256_hadd_ps(t2, t3));
+    let sums47 = _mm256_hadd_ps(_mm256_hadd_ps(t4, t5), _mm256_hadd_ps(t6, t7));
     _mm256_add_ps(
-        _mm256_permute2f128_ps::<0x20>(h0, h1),
-        _mm256_permute2f128_ps::<0x31>(h0, h1),
+        _mm256_permute2f128_ps::<0x20>(sums03, sums47),
+        _mm256_permute2f128_ps::<0x31>(sums03, sums47),
     )
 }
 
@@ -603,9 +631,9 @@ fn lane_sums(g: &[__m256; 8]) -> __m256 {
 #[target_feature(enable = "avx2,fma")]
 #[inline]
 fn blend_located<const SLOPE: bool>(kernel: &Kernel, located: &Located) -> ([__m256d; 2], [__m256d; 2]) {
-    // (Not `array::from_fn`, `map` or a closure: those are separate
-    // functions, compiled without AVX2 and not always inlined.)
-    let r = [
+    // (Written out, not `array::from_fn` or `map`: those run a closure
+    // inside std functions compiled without AVX2, not always inlined.)
+    let blended = [
         blend_query::<SLOPE>(kernel, located, 0),
         blend_query::<SLOPE>(kernel, located, 1),
         blend_query::<SLOPE>(kernel, located, 2),
@@ -615,13 +643,12 @@ fn blend_located<const SLOPE: bool>(kernel: &Kernel, located: &Located) -> ([__m
         blend_query::<SLOPE>(kernel, located, 6),
         blend_query::<SLOPE>(kernel, located, 7),
     ];
-    let g = [r[0].0, r[1].0, r[2].0, r[3].0, r[4].0, r[5].0, r[6].0, r[7].0];
-    let mu = widen(exp8(lane_sums(&g)));
+    let [b0, b1, b2, b3, b4, b5, b6, b7] = blended;
+    let mu = widen(exp8(lane_sums(&[b0.0, b1.0, b2.0, b3.0, b4.0, b5.0, b6.0, b7.0])));
     if !SLOPE {
         return (mu, mu);
     }
-    let dg = [r[0].1, r[1].1, r[2].1, r[3].1, r[4].1, r[5].1, r[6].1, r[7].1];
-    (mu, widen(lane_sums(&dg)))
+    (mu, widen(lane_sums(&[b0.1, b1.1, b2.1, b3.1, b4.1, b5.1, b6.1, b7.1])))
 }
 
 /// ln x = e·ln 2 + ln m on eight lanes of positive normal numbers: e and
@@ -631,10 +658,11 @@ fn blend_located<const SLOPE: bool>(kernel: &Kernel, located: &Located) -> ([__m
 fn ln8(x: __m256) -> (__m256, __m256) {
     // x = 2^e·m, m in [√½, √2).
     let bits = _mm256_castps_si256(x);
-    let tmp = _mm256_sub_epi32(bits, _mm256_set1_epi32(0x3f35_04f3));
-    let e = _mm256_cvtepi32_ps(_mm256_srai_epi32::<23>(tmp));
-    let top = _mm256_and_si256(tmp, _mm256_set1_epi32(0xff80_0000u32 as i32));
-    let m = _mm256_castsi256_ps(_mm256_sub_epi32(bits, top));
+    // Relative to the bits of √½, the exponent field counts e.
+    let above_sqrt_half = _mm256_sub_epi32(bits, _mm256_set1_epi32(0x3f35_04f3));
+    let e = _mm256_cvtepi32_ps(_mm256_srai_epi32::<23>(above_sqrt_half));
+    let exponent_bits = _mm256_and_si256(above_sqrt_half, _mm256_set1_epi32(0xff80_0000u32 as i32));
+    let m = _mm256_castsi256_ps(_mm256_sub_epi32(bits, exponent_bits));
     let one = _mm256_set1_ps(1.0);
     // |s| ≤ 0.172: 2·atanh(s) = 2s·(1 + z/3 + z²/5 + z³/7 + …), z = s²,
     // and the first term left out, 2|s|·z⁴/9, is below 3e-8.
