@@ -53,10 +53,6 @@ pub enum Corner {
     UpperLeft,
     /// Top right.
     UpperRight,
-    /// Bottom left.
-    LowerLeft,
-    /// Bottom right.
-    LowerRight,
 }
 
 /// A line chart.

@@ -371,21 +371,18 @@ fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_ar
         let glyph = 50 * s;
         let mut text_w = 0;
         let labels = c.series.iter().filter_map(|l| l.label.as_deref());
-        for label in labels.clone() {
+        for label in labels {
             text_w = text_w.max(area.estimate_text_size(label, &font).map_err(err)?.0);
         }
-        // The box's size as plotters lays it out (line height 1.25 em),
-        // so that it can sit a little inside the frame.
-        let lines = labels.count() as f64;
+        // The box's width as plotters lays it out, so that it can sit a
+        // little inside the frame (legends sit at the top: their height
+        // does not matter).
         let w = (text_w + glyph + 2 * pad) as i32;
-        let h = ((lines - 1.0) * 1.25 * f64::from(LEGEND_PX * s) + f64::from(LEGEND_PX * s)) as i32 + 2 * pad as i32;
-        let (aw, ah) = chart.plotting_area().dim_in_pixel();
+        let (aw, _) = chart.plotting_area().dim_in_pixel();
         let inset = (12 * s) as i32;
         let (x, y) = match c.legend {
             Corner::UpperLeft => (inset, inset),
             Corner::UpperRight => (aw as i32 - w - inset, inset),
-            Corner::LowerLeft => (inset, ah as i32 - h - inset),
-            Corner::LowerRight => (aw as i32 - w - inset, ah as i32 - h - inset),
         };
         chart
             .configure_series_labels()
