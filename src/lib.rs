@@ -29,6 +29,8 @@
 //! ```
 #![warn(missing_docs)]
 #![deny(unsafe_op_in_unsafe_fn)]
+// Every unsafe block says why it is sound; every unsafe fn states its contract.
+#![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 
 #[cfg(feature = "builder")]
 pub mod build;

@@ -3,6 +3,9 @@
 //! Thin by design: it parses, calls the library, prints. Bad input exits
 //! with status 2 and a one-line message naming the input and its range.
 
+#![deny(unsafe_op_in_unsafe_fn)]
+#![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
+
 mod args;
 mod build;
 mod eval;
