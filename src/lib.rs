@@ -9,6 +9,8 @@
 //!   CEB-type comparison model.
 //! - [`Table`]: μ(ψ, θ, F*) from a precomputed table (nanoseconds); the
 //!   default table is compiled in.
+//! - [`Curve`]: μ(F*) for one surface pair (fixed ψ, θ) in a few
+//!   nanoseconds, from the model or from a table.
 //! - [`paper`]: the paper's statements, computed from the model.
 //! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
 //!   the table builder and its verification, NumPy export, the figures.
@@ -34,6 +36,7 @@
 
 #[cfg(feature = "builder")]
 pub mod build;
+mod curve;
 #[cfg(feature = "builder")]
 pub mod export;
 #[cfg(feature = "plot")]
@@ -45,6 +48,7 @@ mod params;
 pub mod spline;
 pub mod table;
 
+pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use params::{
     Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,

@@ -34,12 +34,13 @@ pub use format::TableError;
 use format::{Coefs, Payload};
 use layout::Layout;
 
-/// A lookup argument outside the table's domain, or not a number.
+/// A lookup argument outside a table's domain or a curve's range, or not
+/// a number.
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum LookupError {
     /// The argument is NaN or outside `[lo, hi]`.
-    #[error("{name} = {value} is outside the table's range [{lo:e}, {hi:e}]")]
+    #[error("{name} = {value} is outside the range [{lo:e}, {hi:e}]")]
     OutOfDomain {
         /// `"psi"`, `"theta"` or `"f_star"`.
         name: &'static str,
@@ -62,8 +63,16 @@ pub enum LookupError {
         /// Length of `out`.
         out: usize,
     },
+    /// A curve's batch slices of different lengths.
+    #[error("batch slices differ in length: f_star {f_star}, out {out}")]
+    CurveLengthMismatch {
+        /// Length of `f_star`.
+        f_star: usize,
+        /// Length of `out`.
+        out: usize,
+    },
     /// A batch element was NaN or out of the domain; `index` says which.
-    #[error("batch element {index}: {name} = {value} is outside the table's range [{lo:e}, {hi:e}]")]
+    #[error("batch element {index}: {name} = {value} is outside the range [{lo:e}, {hi:e}]")]
     BatchElement {
         /// Position in the slices.
         index: usize,

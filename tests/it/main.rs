@@ -4,6 +4,7 @@
 //! and the tables against direct integration.
 
 mod common;
+mod curve;
 mod hardening_numerics;
 mod paper_statements;
 mod properties;
