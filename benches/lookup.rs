@@ -1,6 +1,7 @@
-//! Table lookups against direct integration, on the same random in-domain queries.
+//! Table lookups against direct integration, on the same random in-domain
+//! queries; and for one surface pair, a `Curve` against the table.
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use ke_friction::{Model, Params, Table};
+use ke_friction::{Curve, Model, Params, Table};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -132,5 +133,97 @@ fn bench_lookup(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_lookup);
+criterion_group!(benches, bench_lookup, bench_curve);
 criterion_main!(benches);
+
+/// One surface pair (ψ, θ fixed), random loads: the curve against the
+/// table at the same (ψ, θ) and the same F*, in one group so that the runs
+/// are made together; and against direct integration on a built model.
+fn bench_curve(c: &mut Criterion) {
+    const PSI: f64 = 2.0;
+    const THETA: f64 = 0.003;
+    let table = Table::embedded();
+    let curve = table.curve(PSI, THETA).unwrap();
+    let (_, _, f) = queries();
+    let hi = curve.range().1;
+    let (p, t) = (vec![PSI; N], vec![THETA; N]);
+    let mut g = c.benchmark_group("surface");
+    g.throughput(Throughput::Elements(N as u64));
+    g.bench_function("table_mu", |b| {
+        b.iter(|| {
+            let mut s = 0.0;
+            for &x in &f {
+                s += table.mu(black_box(PSI), black_box(THETA), black_box(x)).unwrap();
+            }
+            black_box(s)
+        })
+    });
+    g.bench_function("curve_mu", |b| {
+        b.iter(|| {
+            let mut s = 0.0;
+            for &x in &f {
+                s += curve.mu(black_box(x)).unwrap();
+            }
+            black_box(s)
+        })
+    });
+    // Each load depends on the previous μ (as in an implicit update): the
+    // latency of one lookup, not the throughput of many.
+    g.bench_function("table_mu_chain", |b| {
+        b.iter(|| {
+            let mut m = 0.0;
+            for &x in &f {
+                m = table.mu(PSI, THETA, (x + 1e-12 * m).min(hi)).unwrap();
+            }
+            black_box(m)
+        })
+    });
+    g.bench_function("curve_mu_chain", |b| {
+        b.iter(|| {
+            let mut m = 0.0;
+            for &x in &f {
+                m = curve.mu((x + 1e-12 * m).min(hi)).unwrap();
+            }
+            black_box(m)
+        })
+    });
+    let mut out = vec![0.0; N];
+    g.bench_function("table_mu_batch", |b| {
+        b.iter(|| {
+            table
+                .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
+                .unwrap();
+            black_box(&out);
+        })
+    });
+    g.bench_function("curve_mu_batch", |b| {
+        b.iter(|| {
+            curve.mu_batch(black_box(&f), &mut out).unwrap();
+            black_box(&out);
+        })
+    });
+    g.finish();
+
+    // Direct integration on an already-built model, on the first 64 loads.
+    let model = Model::new(Params::new(PSI, THETA)).unwrap();
+    let mut g = c.benchmark_group("surface_direct");
+    g.throughput(Throughput::Elements(64));
+    g.bench_function("model_at_f_star", |b| {
+        b.iter(|| {
+            let mut s = 0.0;
+            for &x in &f[..64] {
+                s += model.at_f_star(black_box(x)).unwrap().mu.unwrap();
+            }
+            black_box(s)
+        })
+    });
+    // Building a curve from the model, and from the table.
+    g.throughput(Throughput::Elements(1));
+    g.bench_function("curve_from_model", |b| {
+        b.iter(|| Curve::from_model(black_box(&model), 1e-5, 0.1).unwrap())
+    });
+    g.bench_function("curve_from_table", |b| {
+        b.iter(|| table.curve(black_box(PSI), black_box(THETA)).unwrap())
+    });
+    g.finish();
+}
