@@ -82,7 +82,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let out = output(&a.out.out)?;
             let model = a.model.model()?;
             let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
-            let page = figures::curve(&model, table.as_deref()).map_err(failure)?;
+            let page = figures::curve_page(&model, table.as_deref()).map_err(failure)?;
             page.save(out).map_err(failure)?;
             wrote(out);
             Ok(())

@@ -174,7 +174,8 @@ pub(super) fn nice_step(x: f64) -> f64 {
     k * p
 }
 
-pub(super) const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+/// The superscript digits 0–9.
+const SUPERSCRIPTS: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
 
 /// 10 to the power `k`, with a superscript exponent: 10⁻³.
 pub(super) fn pow10(k: i32) -> String {

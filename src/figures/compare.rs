@@ -20,7 +20,7 @@ fn constants(p: &Params) -> String {
 /// μ against F* for `model` by direct integration over the paper's range;
 /// with a table, its lookup overlaid (dashed) and, in a lower panel, the
 /// relative difference μ_table/μ − 1 at the loads inside the table's domain.
-pub fn curve(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> {
+pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> {
     let params = *model.params();
     let name = match params.kind {
         Kind::KogutEtsion => "Kogut–Etsion",

@@ -6,10 +6,12 @@
 //! types of `chart.rs`), by `paper.rs` (the paper's figures) or
 //! `compare.rs` (a table against direct integration), then drawn by
 //! `render.rs` ([`Page::save`], [`ErrorMap::save`]), the only part that
-//! knows plotters. Curves follow the paper's
-//! range (its section "Results"): [`H_SAMPLES`] separations equally spaced
-//! over 0 ≤ h* ≤ 3, keeping the loads 0 < F* ≤ 0.1; where F*(h* = 0) > 0.1
-//! the curve is closed exactly at F* = 0.1.
+//! knows plotters.
+//!
+//! Curves follow the paper's range (its section "Results"): [`H_SAMPLES`]
+//! separations equally spaced over 0 ≤ h* ≤ 3, keeping the loads
+//! 0 < F* ≤ 0.1; where F*(h* = 0) > 0.1 the curve is closed exactly at
+//! F* = 0.1 ([`paper_sweep`]).
 //!
 //! ```no_run
 //! use ke_friction::figures::Figure;
@@ -23,7 +25,7 @@ mod paper;
 mod render;
 
 pub use chart::{Chart, ChartAxis, Corner, ErrorMap, Page, Series, BLACK_INDEX, PALETTE};
-pub use compare::{curve, table_error};
+pub use compare::{curve_page, table_error};
 pub use paper::paper_sweep;
 
 use crate::build::BuildError;

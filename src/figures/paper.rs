@@ -2,6 +2,7 @@
 
 use super::chart::{extent, f_axis, log_range, num, zero_to, Chart, ChartAxis, Corner, Series, BLACK_INDEX};
 use super::{FigureError, H_SAMPLES, PAPER_THETA};
+use crate::paper::fits::h_points;
 use crate::paper::PAPER_F_STAR_MAX;
 use crate::{Contact, Kind, Model, Params};
 
@@ -10,7 +11,7 @@ use crate::{Contact, Kind, Model, Params};
 /// at h* = 0, the contact at F* = 0.1 exactly comes first.
 pub fn paper_sweep(model: &Model) -> Result<Vec<Contact>, FigureError> {
     let mut out = Vec::with_capacity(H_SAMPLES + 1);
-    for (i, h) in crate::paper::fits::h_points(H_SAMPLES).enumerate() {
+    for (i, h) in h_points(H_SAMPLES).enumerate() {
         let c = model.at_h_star(h)?;
         if c.f_star > PAPER_F_STAR_MAX {
             continue;

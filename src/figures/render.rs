@@ -150,8 +150,8 @@ fn tick_label(v: f64, step: f64) -> String {
 }
 
 impl ChartAxis {
-    /// Data value → plotting coordinate.
-    fn to(&self, v: f64) -> f64 {
+    /// Data value → plotting coordinate (log10 on a log axis).
+    fn to_plot(&self, v: f64) -> f64 {
         if self.log {
             v.log10()
         } else {
@@ -160,7 +160,7 @@ impl ChartAxis {
     }
 
     /// Plotting coordinate → data value.
-    fn from(&self, u: f64) -> f64 {
+    fn to_data(&self, u: f64) -> f64 {
         if self.log {
             10f64.powf(u)
         } else {
@@ -171,10 +171,10 @@ impl ChartAxis {
     /// The labelled ticks and the light grid lines, in plotting coordinates,
     /// and the step used for labels.
     fn ticks(&self) -> (Vec<f64>, Vec<f64>, f64) {
-        let (a, b) = (self.to(self.range.0), self.to(self.range.1));
+        let (a, b) = (self.to_plot(self.range.0), self.to_plot(self.range.1));
         let eps = 1e-9 * (b - a);
         if let Some(t) = &self.ticks {
-            let major: Vec<f64> = t.iter().map(|&v| self.to(v)).collect();
+            let major: Vec<f64> = t.iter().map(|&v| self.to_plot(v)).collect();
             return (major, Vec::new(), 1.0);
         }
         if self.log {
@@ -212,7 +212,7 @@ impl ChartAxis {
     fn coord(&self) -> Ticked {
         let (major, minor, _) = self.ticks();
         Ticked {
-            inner: (self.to(self.range.0)..self.to(self.range.1)).into(),
+            inner: (self.to_plot(self.range.0)..self.to_plot(self.range.1)).into(),
             major,
             minor,
         }
@@ -221,7 +221,7 @@ impl ChartAxis {
     /// The label of the tick at plotting coordinate `u`.
     fn label(&self, u: f64) -> String {
         if self.ticks.is_some() {
-            return num((self.from(u) * 1e6).round() / 1e6);
+            return num((self.to_data(u) * 1e6).round() / 1e6);
         }
         if self.log {
             let k = u.round();
@@ -342,7 +342,7 @@ fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_ar
             .points
             .iter()
             .filter(|&&(x, y)| (!c.x.log || x > 0.0) && (!c.y.log || y > 0.0))
-            .map(|&(x, y)| (c.x.to(x), c.y.to(y)))
+            .map(|&(x, y)| (c.x.to_plot(x), c.y.to_plot(y)))
             .collect();
         let anno = if line.dashed {
             chart
@@ -487,8 +487,8 @@ impl Render for ErrorMap {
                 let (row, col) = (i / cols, i % cols);
                 Rectangle::new(
                     [
-                        (x.to(self.f_star[col]), y.to(self.psi[row + 1])),
-                        (x.to(self.f_star[col + 1]), y.to(self.psi[row])),
+                        (x.to_plot(self.f_star[col]), y.to_plot(self.psi[row + 1])),
+                        (x.to_plot(self.f_star[col + 1]), y.to_plot(self.psi[row])),
                     ],
                     colour(r).filled(),
                 )
@@ -497,7 +497,11 @@ impl Render for ErrorMap {
         // The largest error, ringed.
         let ring = ShapeStyle::from(&WHITE).stroke_width(3 * s);
         chart
-            .draw_series(std::iter::once(Circle::new((x.to(at_f), y.to(at_psi)), 12 * s, ring)))
+            .draw_series(std::iter::once(Circle::new(
+                (x.to_plot(at_f), y.to_plot(at_psi)),
+                12 * s,
+                ring,
+            )))
             .map_err(err)?;
         border(&chart, s)?;
 

@@ -4,19 +4,19 @@
 //!
 //! [`statements`] gives one [`Statement`] per claim; `kefric validate`
 //! prints them as `docs/validation.md`, and `tests/it/paper_statements.rs`
-//! asserts MODEL.md's numbers with the fitting functions of this module.
-//!
+//! asserts MODEL.md's numbers with the same sweeps and fits.
 //!
 //! The sweeps and fits behind the numbers are in [`fits`], whose docs
 //! define how the power-law exponents are fitted.
 
 pub mod fits;
 
-use crate::{Contact, EvalError, Model, ParamError, Params};
 use fits::{
     adhesion_ratio_crossing, exponent_n, extremes_over_h, friction_peak, ke_over_ceb, max_adhesion_ratio, power_m,
     MIN_FIT_POINTS,
 };
+
+use crate::{Contact, EvalError, Model, ParamError, Params};
 
 /// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
 pub const PAPER_H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
@@ -74,7 +74,8 @@ pub enum Verdict {
 }
 
 impl Verdict {
-    fn from(ok: bool) -> Verdict {
+    /// [`Verdict::Agrees`] if `ok`, else [`Verdict::Differs`].
+    fn of(ok: bool) -> Verdict {
         if ok {
             Verdict::Agrees
         } else {
@@ -160,7 +161,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "0.84 (0.86 with ε* = 0.01)",
         computed: format!("m = {}", sig(m, 4)),
         value: m,
-        verdict: Verdict::from(rounds_to(m, 0.86, 2)),
+        verdict: Verdict::of(rounds_to(m, 0.86, 2)),
         criterion: "m rounds to the printed 0.86",
         note: "ε* is not stated in the paper; ε* = 0.01 gives 0.86 (next row)",
     });
@@ -170,7 +171,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "0.86",
         computed: format!("m = {}", sig(m, 4)),
         value: m,
-        verdict: Verdict::from(rounds_to(m, 0.86, 2)),
+        verdict: Verdict::of(rounds_to(m, 0.86, 2)),
         criterion: "m rounds to the printed 0.86",
         note: "",
     });
@@ -187,7 +188,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             model_md: md,
             computed: format!("n = {} at ψ = {psi}", sig(n, 4)),
             value: n,
-            verdict: Verdict::from((0.09..=0.13).contains(&rounds2(n))),
+            verdict: Verdict::of((0.09..=0.13).contains(&rounds2(n))),
             criterion: "n, rounded to two decimals, lies in [0.09, 0.13]",
             note: "",
         });
@@ -200,7 +201,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "— (implied by m = 0.62 at ψ = 2: n ≈ 1 − m)",
         computed: format!("n = {} at ψ = 0.5, {} at ψ = 2", sig(n05, 4), sig(n2, 4)),
         value: n2,
-        verdict: Verdict::from((0.09..=0.13).contains(&rounds2(n05)) && (0.09..=0.13).contains(&rounds2(n2))),
+        verdict: Verdict::of((0.09..=0.13).contains(&rounds2(n05)) && (0.09..=0.13).contains(&rounds2(n2))),
         criterion: "Both n, rounded to two decimals, lie in [0.09, 0.13]",
         note: "at ψ = 2 Q* levels off near F* ≈ 0.07 (row 9), so μ = Q*/F* falls steeply: n ≈ 1 − m",
     });
@@ -222,7 +223,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             w.h_star
         ),
         value: w.value,
-        verdict: Verdict::from(w.value < 0.11),
+        verdict: Verdict::of(w.value < 0.11),
         criterion: "The largest Fs*/P* is below 0.11",
         note: "",
     });
@@ -234,7 +235,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "crosses 0.1 at F* ≈ 0.009",
         computed: format!("crosses 0.1 at F* = {}", sig(b.lo, 4)),
         value: b.lo,
-        verdict: Verdict::from(b.hi <= 0.01 && b.lo >= 0.008),
+        verdict: Verdict::of(b.hi <= 0.01 && b.lo >= 0.008),
         criterion: "The crossing lies in [0.008, 0.01], so Fs*/P* < 0.1 for every F* > 0.01",
         note: "",
     });
@@ -258,7 +259,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             orders(paper.0.value),
         ),
         value: paper.0.value,
-        verdict: Verdict::from(orders(paper.1.value).round() >= 3.0 && orders(paper.0.value).round() <= 4.0),
+        verdict: Verdict::of(orders(paper.1.value).round() >= 3.0 && orders(paper.0.value).round() <= 4.0),
         criterion: "−log10(Q*/F*) rounds to 3 or 4 everywhere in the paper's range F* ≤ 0.1",
         note: "",
     });
@@ -277,7 +278,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             sig(peak.h_star, 3)
         ),
         value: m2,
-        verdict: Verdict::from(rounds_to(m2, 0.82, 2)),
+        verdict: Verdict::of(rounds_to(m2, 0.82, 2)),
         criterion: "m rounds to the printed 0.82",
         note: "known (MODEL.md §7): Q* peaks inside the paper's load range, so no single power law fits",
     });
@@ -307,7 +308,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
                 sig(hi, 4)
             ),
             value: lo,
-            verdict: Verdict::from(lo > 1.0),
+            verdict: Verdict::of(lo > 1.0),
             criterion: "The CEB-type μ is below Kogut–Etsion's at every load",
             note: "",
         });
