@@ -375,28 +375,17 @@ impl Table {
     }
 }
 
-/// μ and dμ/dF* of `model` at F* = `f`: μ by direct integration, its
-/// slope from a five-point difference in h* over a step that moves F* by
-/// about 0.1%, divided by the analytic dF*/dh*.
+/// μ and dμ/dF* of `model` at F* = `f` ([`Model::mu_with_slope_at_f_star`]),
+/// μ positive.
 fn model_node(model: &Model, f: f64) -> Result<(f64, f64), CurveError> {
-    let err = |error| CurveError::Model { f_star: f, error };
-    let h = model.solve_h(f, 1.0).map_err(err)?;
-    let (force, d_force) = model.force(h);
-    let mu_at = |h: f64| -> Result<f64, CurveError> {
-        let c = model.at_h_star(h).map_err(err)?;
-        match c.mu {
-            Some(mu) if mu > 0.0 => Ok(mu),
-            other => Err(CurveError::NoMu {
-                f_star: c.f_star,
-                mu: other.unwrap_or(f64::NAN),
-            }),
-        }
-    };
-    let mu = mu_at(h)?;
-    let step = 1e-3 * (force / d_force).abs();
-    let d_mu_dh = (-mu_at(h + 2.0 * step)? + 8.0 * mu_at(h + step)? - 8.0 * mu_at(h - step)? + mu_at(h - 2.0 * step)?)
-        / (12.0 * step);
-    Ok((mu, d_mu_dh / d_force))
+    let (mu, slope) = model
+        .mu_with_slope_at_f_star(f)
+        .map_err(|error| CurveError::Model { f_star: f, error })?;
+    if mu > 0.0 {
+        Ok((mu, slope))
+    } else {
+        Err(CurveError::NoMu { f_star: f, mu })
+    }
 }
 
 /// The cubic Hermite interpolant of (μ, dμ/dF*) at `a` and `b`, as a

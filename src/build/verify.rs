@@ -28,6 +28,11 @@ pub struct Verification {
     pub kernel_deviation: f64,
     /// The tolerance the table must meet.
     pub tolerance: f64,
+    /// The largest relative error of the slope ∂μ/∂F* (the exact
+    /// interpolant's, [`Table::mu_with_slope_portable`]) against the
+    /// model's ([`Model::mu_with_slope_at_f_star`]), at the same points.
+    /// Reported, not part of the verdict: the tolerance is μ's.
+    pub slope_max_rel: f64,
 }
 
 impl Verification {
@@ -57,6 +62,37 @@ pub fn verify(
         accuracy: measure(table, samples, seed, progress)?,
         kernel_deviation: kernel_deviation(table, samples, seed),
         tolerance,
+        slope_max_rel: measure_slope(table, samples, seed, progress)?,
+    })
+}
+
+/// The largest relative error of ∂μ/∂F* at the [`sample_points`].
+fn measure_slope(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<f64, BuildError> {
+    let points = sample_points(table, samples, seed);
+    progress.stage("checking the slope against direct integration", points.len() as u64);
+    let errors: Vec<Result<f64, BuildError>> = points
+        .par_iter()
+        .map(|&[psi, theta, f]| {
+            let model = Model::new(table.domain().params(psi, theta))?;
+            let (_, exact) =
+                model
+                    .mu_with_slope_at_f_star(f)
+                    .map_err(|error| BuildError::Eval { psi, theta, error })?;
+            let (_, got) = table
+                .mu_with_slope_portable(psi, theta, f)
+                .unwrap_or((f64::NAN, f64::NAN));
+            progress.advance(1);
+            Ok(((got - exact) / exact).abs())
+        })
+        .collect();
+    errors.into_iter().try_fold(0.0f64, |worst, e| {
+        e.map(|e| {
+            if worst.is_nan() || e.is_nan() {
+                f64::NAN
+            } else {
+                worst.max(e)
+            }
+        })
     })
 }
 

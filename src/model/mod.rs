@@ -133,6 +133,25 @@ impl Model {
         self.at_h_star(h)
     }
 
+    /// μ and dμ/dF* where the external force is `f_star`: μ by direct
+    /// integration ([`at_f_star`](Self::at_f_star)); the slope as dμ/dh*
+    /// from a five-point difference over a step in h* that moves F* by
+    /// about 0.1% (error near 1e-10 relative), divided by the analytic
+    /// dF*/dh*. An error where μ is undefined (F* ≤ 0) at or near `f_star`.
+    pub fn mu_with_slope_at_f_star(&self, f_star: f64) -> Result<(f64, f64), EvalError> {
+        let h = self.solve_h(f_star, 1.0)?;
+        let (force, d_force) = self.force(h);
+        let mu_at = |h: f64| -> Result<f64, EvalError> {
+            let c = self.at_h_star(h)?;
+            c.mu.ok_or(EvalError::FStar(c.f_star))
+        };
+        let step = 1e-3 * (force / d_force).abs();
+        let d_mu_dh = (-mu_at(h + 2.0 * step)? + 8.0 * mu_at(h + step)? - 8.0 * mu_at(h - step)?
+            + mu_at(h - 2.0 * step)?)
+            / (12.0 * step);
+        Ok((mu_at(h)?, d_mu_dh / d_force))
+    }
+
     /// Like [`at_f_star`](Self::at_f_star) but returns only h*, starting the
     /// search at `guess` (a nearby solution makes it faster).
     pub fn solve_h(&self, f_star: f64, guess: f64) -> Result<f64, EvalError> {
