@@ -199,6 +199,20 @@ fn bad_batches_name_the_element_or_the_lengths() {
     let mut pairs = [(0.0, 0.0); 1];
     let e = curve.mu_with_slope_batch(&[0.01, 0.02], &mut pairs).unwrap_err();
     assert_eq!(e, LookupError::CurveLengthMismatch { f_star: 2, out: 1 });
+    // A bad load inside the second group of four (the AVX2 batch takes
+    // loads four at a time): the error names it, the loads before it are
+    // written, bit for bit the single lookups.
+    let mut f = [0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.0, 0.008, 0.009, 0.01];
+    let mut out = [-1.0; 10];
+    let e = curve.mu_batch(&f, &mut out).unwrap_err();
+    assert!(matches!(e, LookupError::BatchElement { index: 6, .. }), "{e:?}");
+    for i in 0..6 {
+        assert_eq!(out[i].to_bits(), curve.mu(f[i]).unwrap().to_bits(), "load {i}");
+    }
+    assert_eq!(out[6..], [-1.0; 4], "nothing written from the bad load on");
+    f[6] = 0.007;
+    curve.mu_batch(&f, &mut out).unwrap();
+    assert_eq!(out[9].to_bits(), curve.mu(0.01).unwrap().to_bits());
     // Empty batches are fine.
     curve.mu_batch(&[], &mut []).unwrap();
 }

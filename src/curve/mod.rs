@@ -22,6 +22,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// The AVX2 batch, or on other targets a stand-in that is never detected.
+#[cfg(target_arch = "x86_64")]
+mod avx2;
+#[cfg(not(target_arch = "x86_64"))]
+#[path = "no_avx2.rs"]
+mod avx2;
+
 use crate::model::{EvalError, Model};
 use crate::table::{LookupError, Table};
 
@@ -117,6 +124,8 @@ pub struct Curve {
     inv_width: Vec<f64>,
     /// The largest relative error of μ measured at build time.
     max_error: f64,
+    /// The AVX2 batch, where the CPU has it.
+    batch: Option<avx2::Batch>,
 }
 
 /// The range, the cells and the measured error (not the coefficients).
@@ -127,6 +136,7 @@ impl std::fmt::Debug for Curve {
             .field("cells", &self.coefs.len())
             .field("cells_per_octave", &(1u32 << self.cell_bits))
             .field("max_error", &self.max_error)
+            .field("avx2_batch", &self.batch.is_some())
             .finish_non_exhaustive()
     }
 }
@@ -220,6 +230,7 @@ impl Curve {
             coefs,
             inv_width,
             max_error: f64::NAN,
+            batch: avx2::Batch::detect(),
         })
     }
 
@@ -300,22 +311,29 @@ impl Curve {
     }
 
     /// μ for many loads, written into `out` (no allocation), bit for bit
-    /// what [`mu`](Self::mu) gives. On a load outside the range the error
-    /// names its index, and `out` is written up to it.
+    /// what [`mu`](Self::mu) gives (four at a time with AVX2 where the CPU
+    /// has it). On a load outside the range the error names its index, and
+    /// `out` is written up to it.
     pub fn mu_batch(&self, f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
-        self.batch(f_star, out, |f| self.mu(f))
+        let done = match self.batch {
+            Some(kernel) if f_star.len() == out.len() => kernel.mu(self, f_star, out),
+            _ => 0,
+        };
+        self.batch_from(done, f_star, out, |f| self.mu(f))
     }
 
     /// (μ, dμ/dF*) for many loads, written into `out`; as
     /// [`mu_batch`](Self::mu_batch).
     pub fn mu_with_slope_batch(&self, f_star: &[f64], out: &mut [(f64, f64)]) -> Result<(), LookupError> {
-        self.batch(f_star, out, |f| self.mu_with_slope(f))
+        self.batch_from(0, f_star, out, |f| self.mu_with_slope(f))
     }
 
-    /// Both batch forms: the lengths, the loop, the index of a bad load.
+    /// Both batch forms: the lengths, the loop from load `start` on (those
+    /// before it are done), the index of a bad load.
     #[inline(always)]
-    fn batch<T>(
+    fn batch_from<T>(
         &self,
+        start: usize,
         f_star: &[f64],
         out: &mut [T],
         one: impl Fn(f64) -> Result<T, LookupError>,
@@ -326,7 +344,7 @@ impl Curve {
                 out: out.len(),
             });
         }
-        for (i, (&f, o)) in f_star.iter().zip(out.iter_mut()).enumerate() {
+        for (i, (&f, o)) in f_star.iter().zip(out.iter_mut()).enumerate().skip(start) {
             match one(f) {
                 Ok(v) => *o = v,
                 Err(_) => return Err(self.batch_error(i, f)),
