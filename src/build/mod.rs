@@ -338,7 +338,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
     let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
     // The record is the exact interpolant's (the same on every machine);
     // the verdict also counts this machine's kernel, as `kefric verify` does.
-    let checked = verify::verify(&draft, o.tolerance, o.samples, o.seed, progress)?;
+    let checked = verify::verify(&draft, o.tolerance, o.samples, o.seed, false, progress)?;
     let accuracy = checked.accuracy;
     if !checked.passes() {
         return Err(BuildError::Tolerance {

@@ -28,11 +28,11 @@ pub struct Verification {
     pub kernel_deviation: f64,
     /// The tolerance the table must meet.
     pub tolerance: f64,
-    /// The largest relative error of the slope ∂μ/∂F* (the exact
-    /// interpolant's, [`Table::mu_with_slope_portable`]) against the
-    /// model's ([`Model::mu_with_slope_at_f_star`]), at the same points.
+    /// If asked for: the largest relative error of the slope ∂μ/∂F* (the
+    /// exact interpolant's, [`Table::mu_with_slope_portable`]) against the
+    /// model's ([`Model::mu_with_slope_at_f_star`]) at the same points.
     /// Reported, not part of the verdict: the tolerance is μ's.
-    pub slope_max_rel: f64,
+    pub slope_max_rel: Option<f64>,
 }
 
 impl Verification {
@@ -48,52 +48,80 @@ impl Verification {
     }
 }
 
-/// Measures `table` at `samples` seeded points (see [`measure`]) and this
-/// machine's kernel at the same points, against `tolerance`.
+/// Measures `table` at `samples` seeded [`sample_points`] against direct
+/// integration, and this machine's kernel against the exact interpolant at
+/// the same points, for the verdict against `tolerance`; with `slope`,
+/// also ∂μ/∂F* (four more model evaluations a point).
 pub fn verify(
     table: &Table,
     tolerance: f64,
     samples: usize,
     seed: u64,
+    slope: bool,
     progress: &dyn Progress,
 ) -> Result<Verification, BuildError> {
     check_samples(samples)?;
+    let points = sample_points(table, samples, seed);
+    progress.stage("checking against direct integration", points.len() as u64);
+    let errors: Vec<Result<(f64, f64), BuildError>> = points
+        .par_iter()
+        .map(|&[psi, theta, f]| {
+            let (mu_err, slope_err) = if slope {
+                let model = Model::new(table.domain().params(psi, theta))?;
+                let (mu, d_mu) =
+                    model
+                        .mu_with_slope_at_f_star(f)
+                        .map_err(|error| BuildError::Eval { psi, theta, error })?;
+                let (got, got_d) = table
+                    .mu_with_slope_portable(psi, theta, f)
+                    .unwrap_or((f64::NAN, f64::NAN));
+                (relative(got, mu), relative(got_d, d_mu))
+            } else {
+                let mu = direct_mu(table, psi, theta, f)?;
+                (relative(table.mu_portable(psi, theta, f).unwrap_or(f64::NAN), mu), 0.0)
+            };
+            progress.advance(1);
+            Ok((mu_err, slope_err))
+        })
+        .collect();
+    let errors = errors.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let mu_errors: Vec<f64> = errors.iter().map(|e| e.0).collect();
     Ok(Verification {
-        accuracy: measure(table, samples, seed, progress)?,
-        kernel_deviation: kernel_deviation(table, samples, seed),
+        accuracy: accuracy(&mu_errors, &points),
+        kernel_deviation: kernel_deviation(table, &points),
         tolerance,
-        slope_max_rel: measure_slope(table, samples, seed, progress)?,
+        slope_max_rel: slope.then(|| worst(errors.iter().map(|e| e.1)).1),
     })
 }
 
-/// The largest relative error of ∂μ/∂F* at the [`sample_points`].
-fn measure_slope(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<f64, BuildError> {
-    let points = sample_points(table, samples, seed);
-    progress.stage("checking the slope against direct integration", points.len() as u64);
-    let errors: Vec<Result<f64, BuildError>> = points
-        .par_iter()
-        .map(|&[psi, theta, f]| {
-            let model = Model::new(table.domain().params(psi, theta))?;
-            let (_, exact) =
-                model
-                    .mu_with_slope_at_f_star(f)
-                    .map_err(|error| BuildError::Eval { psi, theta, error })?;
-            let (_, got) = table
-                .mu_with_slope_portable(psi, theta, f)
-                .unwrap_or((f64::NAN, f64::NAN));
-            progress.advance(1);
-            Ok(((got - exact) / exact).abs())
-        })
-        .collect();
-    errors.into_iter().try_fold(0.0f64, |worst, e| {
-        e.map(|e| {
-            if worst.is_nan() || e.is_nan() {
-                f64::NAN
-            } else {
-                worst.max(e)
-            }
-        })
-    })
+/// |got − want|/|want|.
+fn relative(got: f64, want: f64) -> f64 {
+    ((got - want) / want).abs()
+}
+
+/// The index and value of the largest error; NaN counts as the largest.
+fn worst(errors: impl Iterator<Item = f64>) -> (usize, f64) {
+    let (mut at, mut max) = (0, 0.0f64);
+    for (i, e) in errors.enumerate() {
+        if !max.is_nan() && (e.is_nan() || e > max) {
+            (at, max) = (i, e);
+        }
+    }
+    (at, max)
+}
+
+/// The accuracy record of relative errors of μ at `points`.
+fn accuracy(errors: &[f64], points: &[[f64; 3]]) -> Accuracy {
+    let (at, max_rel) = worst(errors.iter().copied());
+    let mut sorted = errors.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let p99 = sorted[((sorted.len() as f64 * 0.99).ceil() as usize).clamp(1, sorted.len()) - 1];
+    Accuracy {
+        max_rel,
+        p99_rel: p99,
+        samples: errors.len(),
+        worst: points[at],
+    }
 }
 
 /// μ at (ψ, θ, F*) by direct integration, with the table's model constants.
@@ -104,56 +132,21 @@ pub fn direct_mu(table: &Table, psi: f64, theta: f64, f_star: f64) -> Result<f64
     contact.mu.ok_or(eval(EvalError::FStar(contact.f_star)))
 }
 
-/// How far this machine's lookups ([`Table::mu`], which is the f32 kernel
-/// where [`Table::fast_kernel`]) stray from the exact interpolant
-/// ([`Table::mu_portable`]) at the points [`measure`] checks: the largest
-/// relative difference, 0 where the portable kernel runs.
-fn kernel_deviation(table: &Table, samples: usize, seed: u64) -> f64 {
+/// How far this machine's lookups ([`Table::mu`], the f32 kernel where
+/// [`Table::fast_kernel`]) stray from the exact interpolant
+/// ([`Table::mu_portable`]) at `points`: the largest relative difference,
+/// 0 where the portable kernel runs.
+fn kernel_deviation(table: &Table, points: &[[f64; 3]]) -> f64 {
     if !table.fast_kernel() {
         return 0.0;
     }
-    sample_points(table, samples, seed)
+    points
         .iter()
         .map(|&[p, t, f]| match (table.mu(p, t, f), table.mu_portable(p, t, f)) {
             (Ok(fast), Ok(exact)) => (fast / exact - 1.0).abs(),
             _ => f64::INFINITY,
         })
         .fold(0.0, f64::max)
-}
-
-/// Measures a table's μ against direct integration at `samples` points in
-/// its domain (seeded): half uniform in the grid's coordinates, half at the
-/// centres of random cells (the midpoint of the cell in every axis, where
-/// interpolation errs most).
-pub fn measure(table: &Table, samples: usize, seed: u64, progress: &dyn Progress) -> Result<Accuracy, BuildError> {
-    let points = sample_points(table, samples, seed);
-    progress.stage("checking against direct integration", points.len() as u64);
-    let errors: Vec<Result<f64, BuildError>> = points
-        .par_iter()
-        .map(|&[p, t, f]| {
-            let exact = direct_mu(table, p, t, f)?;
-            let got = table.mu_portable(p, t, f).unwrap_or(f64::NAN);
-            progress.advance(1);
-            Ok(((got - exact) / exact).abs())
-        })
-        .collect();
-    let errors = errors.into_iter().collect::<Result<Vec<f64>, _>>()?;
-    let (mut worst, mut max_rel) = (0, 0.0f64);
-    for (i, &e) in errors.iter().enumerate() {
-        if e.is_nan() || e > max_rel {
-            worst = i;
-            max_rel = e;
-        }
-    }
-    let mut sorted = errors.clone();
-    sorted.sort_by(f64::total_cmp);
-    let p99 = sorted[((sorted.len() as f64 * 0.99).ceil() as usize).clamp(1, sorted.len()) - 1];
-    Ok(Accuracy {
-        max_rel,
-        p99_rel: p99,
-        samples: errors.len(),
-        worst: points[worst],
-    })
 }
 
 /// The verification points: in the domain, half uniform in the axes'
