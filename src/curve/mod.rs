@@ -201,23 +201,22 @@ impl Curve {
         if cells > MAX_CELLS {
             return Err(CurveError::TooWide { lo, hi });
         }
-        // The nodes: the cells' ends, cut to [lo, hi].
+        // Node j is the start of cell j, cut to [lo, hi] (so the first
+        // node is lo, and the last hi).
         let start = |j: u64| f64::from_bits((first_cell + j) << shift);
-        let mut xs: Vec<f64> = (0..=cells).map(|j| start(j).clamp(lo, hi)).collect();
-        xs.dedup();
-        let data = xs.iter().map(|&x| node(x)).collect::<Result<Vec<_>, _>>()?;
+        let data = (0..=cells)
+            .map(|j| node(start(j).clamp(lo, hi)))
+            .collect::<Result<Vec<_>, _>>()?;
         let mut coefs = Vec::with_capacity(cells as usize);
         let mut inv_width = Vec::with_capacity(cells as usize);
         for j in 0..cells {
             let (x0, x1) = (start(j), start(j + 1));
             let width = x1 - x0;
+            // b = a only for a last cell that starts exactly at hi, where
+            // only t = 0 is ever evaluated.
             let (a, b) = (x0.max(lo), x1.min(hi));
-            // The node data at a and b (b = a only for a last cell that
-            // starts exactly at hi, where only t = 0 is ever evaluated).
-            let k = xs.partition_point(|&x| x < a);
-            let (mu_a, d_a) = data[k];
-            let (mu_b, d_b) = if b > a { data[k + 1] } else { data[k] };
-            coefs.push(hermite_in_t(a, b, x0, width, (mu_a, d_a), (mu_b, d_b)));
+            let j = j as usize;
+            coefs.push(hermite_in_t(a, b, x0, width, data[j], data[j + 1]));
             inv_width.push(1.0 / width);
         }
         Ok(Curve {

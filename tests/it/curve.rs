@@ -259,3 +259,20 @@ fn curves_are_send_sync_and_clone() {
         assert_eq!(h.join().unwrap(), copy.mu(0.01).unwrap());
     });
 }
+
+#[test]
+fn a_range_ending_on_a_cell_boundary_looks_up_both_ends() {
+    // 2⁻⁴ = 0.0625 starts a cell: the last cell is that one point.
+    let model = Model::new(Params::new(1.5, 0.002)).unwrap();
+    let curve = Curve::from_model(&model, 1e-4, 0.0625).unwrap();
+    for f in [1e-4, 0.0625, 0.0625 * (1.0 - f64::EPSILON)] {
+        let (exact, exact_slope) = model.mu_with_slope_at_f_star(f).unwrap();
+        let (mu, slope) = curve.mu_with_slope(f).unwrap();
+        assert!(rel(mu, exact) <= CURVE_ACCURACY, "F* = {f:e}: {mu} vs {exact}");
+        assert!(
+            rel(slope, exact_slope) <= 1e-3,
+            "F* = {f:e}: slope {slope} vs {exact_slope}"
+        );
+    }
+    assert!(curve.mu(0.0625 * (1.0 + f64::EPSILON)).is_err());
+}
