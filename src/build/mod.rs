@@ -325,15 +325,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             generator: concat!("ke-friction ", env!("CARGO_PKG_VERSION")).to_string(),
         },
         // Measured below, on the decoded draft.
-        accuracy: format::Accuracy::record(
-            o.tolerance,
-            &crate::table::Accuracy {
-                max_rel: 0.0,
-                p99_rel: 0.0,
-                samples: 0,
-                worst: [0.0; 3],
-            },
-        ),
+        accuracy: format::Accuracy::unmeasured(o.tolerance),
     };
     let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
     // The record is the exact interpolant's (the same on every machine);

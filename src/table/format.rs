@@ -263,6 +263,19 @@ impl Accuracy {
         }
     }
 
+    /// The record of a draft table, before it is measured: its tolerance,
+    /// and zeros (the builder measures the draft, then records the result).
+    #[cfg(any(feature = "builder", test))]
+    pub fn unmeasured(tolerance: f64) -> Accuracy {
+        Accuracy {
+            tolerance,
+            max_rel: 0.0,
+            p99_rel: 0.0,
+            samples: 0,
+            worst: [0.0; 3],
+        }
+    }
+
     /// The measured accuracy, as the public API reports it.
     pub fn measured(&self) -> super::Accuracy {
         super::Accuracy {
