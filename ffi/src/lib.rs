@@ -1,0 +1,1 @@
+//! The C ABI of ke-friction (work in progress).
