@@ -72,19 +72,11 @@ pub fn flag_of(field: &str) -> String {
     format!("--{}", field.replace('_', "-"))
 }
 
-/// Fails early (before long work) if `path`, given by `flag`, cannot be
-/// written: a directory where a file is wanted (or a file where a
-/// directory is, with `want_dir`), no file name, or a parent directory
+/// Fails early (before long work) if the file `path`, given by `flag`,
+/// cannot be written: a directory, no file name, or a parent directory
 /// that does not exist.
-pub fn check_writable(flag: &str, path: &std::path::Path, want_dir: bool) -> Result<(), Failure> {
-    if want_dir {
-        if path.exists() && !path.is_dir() {
-            return Err(Failure::input(format!(
-                "{flag}: {} exists and is not a directory",
-                path.display()
-            )));
-        }
-    } else if path.is_dir() {
+pub fn check_writable(flag: &str, path: &std::path::Path) -> Result<(), Failure> {
+    if path.is_dir() {
         return Err(Failure::input(format!("{flag}: {} is a directory", path.display())));
     }
     if path.file_name().is_none() {
@@ -101,6 +93,31 @@ pub fn check_writable(flag: &str, path: &std::path::Path, want_dir: bool) -> Res
         )));
     }
     Ok(())
+}
+
+/// The output directory `path`, given by `flag`, created with its parents
+/// if missing (before long work). A path that exists and is not a
+/// directory, or that has no name of its own (`/`, `..`, empty), is an
+/// error.
+pub fn output_dir(flag: &str, path: &std::path::Path) -> Result<(), Failure> {
+    if path.file_name().is_none() {
+        let what = if path.as_os_str().is_empty() {
+            "empty path".into()
+        } else {
+            format!("{} has no directory name", path.display())
+        };
+        return Err(Failure::input(format!(
+            "{flag}: {what} (name a directory to write into)"
+        )));
+    }
+    if path.exists() && !path.is_dir() {
+        return Err(Failure::input(format!(
+            "{flag}: {} exists and is not a directory",
+            path.display()
+        )));
+    }
+    std::fs::create_dir_all(path)
+        .map_err(|e| Failure::input(format!("{flag}: cannot create directory {}: {e}", path.display())))
 }
 
 /// A progress bar on stderr with rate and ETA; hidden when stderr is not a

@@ -130,7 +130,7 @@ fn option_flag(name: &str) -> String {
 /// Runs `kefric build`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let options = args.options()?;
-    check_writable("--out", &args.out, false)?;
+    check_writable("--out", &args.out)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;

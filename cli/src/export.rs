@@ -1,6 +1,6 @@
 //! `kefric export`: a table's values and its integration grid as NumPy arrays.
 
-use crate::args::{check_writable, load_table, Bar, Failure};
+use crate::args::{check_writable, load_table, output_dir, Bar, Failure};
 use ke_friction::build::BuildError;
 use ke_friction::export::{arrays, write_npy_dir, write_npz};
 use std::path::PathBuf;
@@ -18,8 +18,8 @@ pub struct Args {
     /// Write one .npz file (uncompressed, like numpy.savez).
     #[arg(long, value_name = "FILE")]
     pub npz: Option<PathBuf>,
-    /// Write one NAME.npy per array into this directory (created if
-    /// missing; its parent must exist).
+    /// Write one NAME.npy per array into this directory (created, with its
+    /// parents, if missing).
     #[arg(long, value_name = "DIR")]
     pub npy: Option<PathBuf>,
     /// No progress bar.
@@ -36,7 +36,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     let table = load_table(args.table.as_deref())?;
     let table = &*table;
-    check_writable(flag, path, want_dir)?;
+    if want_dir {
+        output_dir(flag, path)?;
+    } else {
+        check_writable(flag, path)?;
+    }
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let named = arrays(table, &bar).map_err(|e| match (&e, &args.table) {

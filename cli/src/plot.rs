@@ -1,7 +1,7 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map. PNG or SVG by the output file's extension.
 
-use crate::args::{check_writable, flag_of, load_table, parse_f64, Failure, ModelArgs};
+use crate::args::{check_writable, flag_of, load_table, output_dir, parse_f64, Failure, ModelArgs};
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
@@ -63,7 +63,7 @@ struct TableErrorArgs {
 
 #[derive(Debug, clap::Args)]
 struct AllArgs {
-    /// Existing directory for fig3.png … fig6.png.
+    /// Directory for fig3.png … fig6.png (created, with its parents, if missing).
     #[arg(long, value_name = "DIR")]
     out_dir: PathBuf,
 }
@@ -96,12 +96,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             Ok(())
         }
         What::All(a) => {
-            if !a.out_dir.is_dir() {
-                return Err(Failure::input(format!(
-                    "--out-dir: directory {} does not exist",
-                    a.out_dir.display()
-                )));
-            }
+            output_dir("--out-dir", &a.out_dir)?;
             for path in figures::save_all(&a.out_dir).map_err(failure)? {
                 wrote(&path);
             }
@@ -120,7 +115,7 @@ fn figure(fig: Figure, out: &Path) -> Result<(), Failure> {
 /// Checks `--out` before any work: a known extension, a writable place.
 fn output(path: &Path) -> Result<&Path, Failure> {
     Format::from_path(path).map_err(|e| Failure::input(format!("--out: {e}")))?;
-    check_writable("--out", path, false)?;
+    check_writable("--out", path)?;
     Ok(path)
 }
 

@@ -25,11 +25,12 @@ fn assert_png(path: &Path) {
 fn plot_all_writes_four_pngs_of_1000_by_750() {
     let dir = TempDir::new("all");
     let t0 = std::time::Instant::now();
-    let o = kefric(&["plot", "all", "--out-dir", &dir.arg("")]);
+    // A missing directory is created, with its parents.
+    let o = kefric(&["plot", "all", "--out-dir", &dir.arg("new/figures")]);
     assert!(o.status.success(), "{}", stderr(&o));
     eprintln!("plot all: {:.2} s", t0.elapsed().as_secs_f64());
     for name in ["fig3.png", "fig4.png", "fig5.png", "fig6.png"] {
-        assert_png(&dir.join(name));
+        assert_png(&dir.join("new/figures").join(name));
     }
 }
 
@@ -94,8 +95,11 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
     let o = kefric(&["plot", "fig3", "--out", &dir.arg("missing/fig3.png")]);
     assert_bad_input(&o, "--out");
     assert!(stderr(&o).contains("does not exist"), "{}", stderr(&o));
-    let o = kefric(&["plot", "all", "--out-dir", &dir.arg("missing")]);
+    let elsewhere = TempDir::new("bad-out-dir");
+    std::fs::write(elsewhere.join("a_file"), b"x").unwrap();
+    let o = kefric(&["plot", "all", "--out-dir", &elsewhere.arg("a_file")]);
     assert_bad_input(&o, "--out-dir");
+    assert!(stderr(&o).contains("is not a directory"), "{}", stderr(&o));
     let (c_png, e_png, none) = (dir.arg("c.png"), dir.arg("e.png"), dir.arg("none.kft"));
     let cases: [(&[&str], &str); 5] = [
         (
