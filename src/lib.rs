@@ -43,6 +43,7 @@ pub mod export;
 pub mod figures;
 pub mod io;
 mod model;
+pub mod num;
 pub mod paper;
 mod params;
 pub mod spline;

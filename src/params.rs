@@ -267,7 +267,7 @@ pub struct Physical {
 /// An input outside its valid range. The message names the input, its
 /// value and the range, e.g. `theta = -0.2 is out of range: must be >= 0`.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{name} = {value} is out of range: must be {range}")]
+#[error("{name} = {} is out of range: must be {range}", crate::num::Shortest(*.value))]
 pub struct ParamError {
     /// The input's name, as in [`Params`] / [`Physical`].
     pub name: &'static str,

@@ -1,7 +1,9 @@
 //! What the subcommands share: failures and their exit codes, number
 //! parsing, the model's flags, progress bars, tables and output paths.
 
-use ke_friction::{Fit, Kind, Model, Params, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
+use ke_friction::num::Shortest;
+use ke_friction::paper::PAPER_F_STAR_MAX;
+use ke_friction::{Fit, Kind, Model, Params, Physical, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -38,11 +40,14 @@ impl Failure {
 
 /// Parses a finite number, naming the flag on failure.
 pub fn parse_f64(s: &str) -> Result<f64, String> {
-    let v: f64 = s.trim().parse().map_err(|_| format!("'{s}' is not a number"))?;
+    let v: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a number (e.g. 0.5 or 1e-3)"))?;
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(format!("{s} is not a finite number"))
+        Err(format!("'{s}' is not a finite number"))
     }
 }
 
@@ -172,38 +177,142 @@ pub fn load_table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'st
     }
 }
 
+/// `x` to 4 significant digits, for messages (`-28.2`, not `-28.20201007867259`).
+pub fn short(x: f64) -> Shortest {
+    Shortest(format!("{x:.3e}").parse().unwrap_or(x))
+}
+
 /// Prints where a table's measured error of μ is largest.
 pub fn print_worst(acc: &ke_friction::table::Accuracy) {
     println!(
-        "worst at psi = {:.6}, theta = {:.6e}, F* = {:.6e}",
-        acc.worst[0], acc.worst[1], acc.worst[2]
+        "worst at psi = {}, theta = {}, F* = {}",
+        short(acc.worst[0]),
+        short(acc.worst[1]),
+        short(acc.worst[2])
     );
 }
 
-/// The model's parameters, shared by the subcommands that evaluate it.
+/// The model's parameters, shared by the subcommands that evaluate it:
+/// dimensionless (ψ, θ, β, ν, ε*) or SI quantities ([`SiArgs`]).
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModelArgs {
-    /// Plasticity index ψ > 0.
+    /// Plasticity index ψ, in [0.001, 1000] (the paper: 0.5 to 8). Required unless the SI inputs are given.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub psi: f64,
-    /// Adhesion parameter θ ≥ 0.
+    pub psi: Option<f64>,
+    /// Adhesion parameter θ = Δγ/(σH), in [0, 1000] (the paper: 1e-4 to 0.01). Required unless the SI inputs are given.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub theta: f64,
-    /// Roughness parameter β = ηRσ > 0.01928.
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_BETA, allow_hyphen_values = true)]
-    pub beta: f64,
-    /// Poisson's ratio ν of the softer material, in [0, 0.5).
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_NU, allow_hyphen_values = true)]
-    pub nu: f64,
-    /// Intermolecular distance ε* = ε/σ > 0.
-    #[arg(long, value_parser = parse_f64, default_value_t = DEFAULT_EPS_STAR, allow_hyphen_values = true)]
-    pub eps_star: f64,
-    /// Friction row: the self-consistent model, or the literal printed Eq. 18.
+    pub theta: Option<f64>,
+    /// Roughness parameter β = ηRσ, in (0.01928, 100] [default: 0.04].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub beta: Option<f64>,
+    /// Poisson's ratio ν of the softer material, in [0, 0.5) [default: 0.3].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub nu: Option<f64>,
+    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100] [default: 0.004].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub eps_star: Option<f64>,
+    #[command(flatten)]
+    pub si: SiArgs,
+    /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18; negative μ for ψ ≳ 2).
     #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
     pub fit: FitArg,
-    /// Kogut–Etsion, or the CEB-type comparison model (MODEL.md §8).
+    /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model, MODEL.md §8).
     #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
     pub model: ModelKindArg,
+}
+
+/// The SI inputs that give ψ, θ, β, ν and ε* ([`Params::from_physical`]):
+/// all ten together, in place of the dimensionless flags.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "SI inputs (all ten together, in place of --psi, --theta, --beta, --nu, --eps-star)")]
+pub struct SiArgs {
+    /// Young's modulus E₁ of the softer material, Pa (> 0).
+    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub e1: Option<f64>,
+    /// Poisson's ratio ν₁ of the softer material, in [0, 0.5); sets ν and the hardness coefficient K.
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub nu1: Option<f64>,
+    /// Young's modulus E₂ of the other material, Pa (> 0).
+    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub e2: Option<f64>,
+    /// Poisson's ratio ν₂ of the other material, in [-1, 0.5].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub nu2: Option<f64>,
+    /// Hardness H of the softer material, Pa (> 0).
+    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub hardness: Option<f64>,
+    /// Standard deviation σ of the asperity heights, m (> 0).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub sigma: Option<f64>,
+    /// Asperity radius of curvature R, m (> 0).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    /// Areal density η of asperities, 1/m² (> 0; β = ηRσ must exceed 0.01928).
+    #[arg(long, value_name = "PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub density: Option<f64>,
+    /// Energy of adhesion Δγ, J/m² (≥ 0).
+    #[arg(long, value_name = "J_PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub delta_gamma: Option<f64>,
+    /// Intermolecular distance ε, m (> 0).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub epsilon: Option<f64>,
+}
+
+impl SiArgs {
+    /// The flags and values, in the order of [`Physical`]'s documentation.
+    fn given(&self) -> [(&'static str, Option<f64>); 10] {
+        [
+            ("--e1", self.e1),
+            ("--nu1", self.nu1),
+            ("--e2", self.e2),
+            ("--nu2", self.nu2),
+            ("--hardness", self.hardness),
+            ("--sigma", self.sigma),
+            ("--radius", self.radius),
+            ("--density", self.density),
+            ("--delta-gamma", self.delta_gamma),
+            ("--epsilon", self.epsilon),
+        ]
+    }
+
+    /// Whether any SI flag is given.
+    pub fn any(&self) -> bool {
+        self.given().iter().any(|(_, v)| v.is_some())
+    }
+
+    /// The dimensionless parameters of the SI inputs, or a message naming
+    /// the missing or unphysical one.
+    pub fn params(&self) -> Result<Params, Failure> {
+        let given = self.given();
+        if let Some((flag, _)) = given.iter().find(|(_, v)| v.is_none()) {
+            let all: Vec<&str> = given.iter().map(|(f, _)| *f).collect();
+            return Err(Failure::input(format!(
+                "{flag}: missing: the SI inputs go together ({})",
+                all.join(", ")
+            )));
+        }
+        let v = given.map(|(_, v)| v.unwrap_or_default());
+        let phys = Physical {
+            e1: v[0],
+            nu1: v[1],
+            e2: v[2],
+            nu2: v[3],
+            hardness: v[4],
+            sigma: v[5],
+            radius: v[6],
+            density: v[7],
+            delta_gamma: v[8],
+            epsilon: v[9],
+        };
+        Params::from_physical(&phys).map_err(|e| {
+            let flag = match e.name {
+                n if n.starts_with("beta") => "--density".to_string(),
+                "psi" | "theta" | "nu" | "eps_star" => "SI inputs".to_string(),
+                n => flag_of(n),
+            };
+            Failure::input(format!("{flag}: {e}"))
+        })
+    }
 }
 
 /// `--fit` values.
@@ -243,19 +352,154 @@ impl From<ModelKindArg> for Kind {
 }
 
 impl ModelArgs {
+    /// The parameters, dimensionless or from the SI inputs (not both), not
+    /// yet validated.
+    pub fn params(&self) -> Result<Params, Failure> {
+        let params = if self.si.any() {
+            let dimensionless = [
+                ("--psi", self.psi),
+                ("--theta", self.theta),
+                ("--beta", self.beta),
+                ("--nu", self.nu),
+                ("--eps-star", self.eps_star),
+            ];
+            if let Some((flag, _)) = dimensionless.iter().find(|(_, v)| v.is_some()) {
+                return Err(Failure::input(format!(
+                    "{flag}: give either the dimensionless inputs or the SI inputs, not both"
+                )));
+            }
+            self.si.params()?
+        } else {
+            let required = |flag: &str, v: Option<f64>| {
+                v.ok_or_else(|| Failure::input(format!("{flag}: required (or give the SI inputs, see --help)")))
+            };
+            Params::new(required("--psi", self.psi)?, required("--theta", self.theta)?)
+                .beta(self.beta.unwrap_or(DEFAULT_BETA))
+                .nu(self.nu.unwrap_or(DEFAULT_NU))
+                .eps_star(self.eps_star.unwrap_or(DEFAULT_EPS_STAR))
+        };
+        Ok(params.fit(self.fit.into()).kind(self.model.into()))
+    }
+
     /// The validated model, or a message naming the offending flag.
     pub fn model(&self) -> Result<Model, Failure> {
-        let params = Params::new(self.psi, self.theta)
-            .beta(self.beta)
-            .nu(self.nu)
-            .eps_star(self.eps_star)
-            .fit(self.fit.into())
-            .kind(self.model.into());
-        Model::new(params).map_err(|e| Failure::input(format!("{}: {e}", flag_of(e.name))))
+        Model::new(self.params()?).map_err(|e| {
+            let flag = if self.si.any() {
+                "SI inputs".to_string()
+            } else {
+                flag_of(e.name)
+            };
+            Failure::input(format!("{flag}: {e}"))
+        })
     }
 }
 
-/// 17 significant digits: every double round-trips.
-pub fn full(x: f64) -> String {
-    format!("{x:.16e}")
+/// The model's settings as text, with the flags' spellings
+/// (`psi = 1, theta = 0.003, …, fit = consistent, model = ke`).
+pub fn describe(p: &Params) -> String {
+    format!(
+        "psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {}, model = {}",
+        Shortest(p.psi),
+        Shortest(p.theta),
+        Shortest(p.beta),
+        Shortest(p.nu),
+        Shortest(p.eps_star),
+        p.fit.name(),
+        p.kind.name()
+    )
+}
+
+/// A JSON value of [`json_object`].
+pub enum Json<'a> {
+    /// A number ([`ke_friction::num::json`]: shortest round-trip, `null` if not finite).
+    Num(f64),
+    /// A whole number.
+    Int(u64),
+    /// A string (escaped).
+    Str(&'a str),
+    /// `null`.
+    Null,
+    /// Raw JSON text (a nested object or array).
+    Raw(String),
+}
+
+/// One JSON object on one line, keys in the given order.
+pub fn json_object(fields: &[(&str, Json)]) -> String {
+    let body: Vec<String> = fields
+        .iter()
+        .map(|(k, v)| {
+            let v = match v {
+                Json::Num(x) => ke_friction::num::json(*x),
+                Json::Int(n) => n.to_string(),
+                Json::Str(t) => json_string(t),
+                Json::Null => "null".to_string(),
+                Json::Raw(r) => r.clone(),
+            };
+            format!("{}:{v}", json_string(k))
+        })
+        .collect();
+    format!("{{{}}}", body.join(","))
+}
+
+/// A JSON array of numbers.
+pub fn json_numbers(xs: &[f64]) -> String {
+    let v: Vec<String> = xs.iter().map(|&x| ke_friction::num::json(x)).collect();
+    format!("[{}]", v.join(","))
+}
+
+fn json_string(t: &str) -> String {
+    let mut out = String::with_capacity(t.len() + 2);
+    out.push('"');
+    for c in t.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// Where a point lies outside the range the paper covers (F* ≤ 0.1, h* ≥ 0).
+#[derive(Debug, Default)]
+pub struct PaperRange {
+    outside: usize,
+    total: usize,
+    f_star_max: f64,
+    h_star_min: f64,
+}
+
+impl PaperRange {
+    /// Counts the point (F*, h*).
+    pub fn note(&mut self, f_star: f64, h_star: f64) {
+        self.total += 1;
+        if f_star > PAPER_F_STAR_MAX || h_star < 0.0 {
+            if self.outside == 0 {
+                (self.f_star_max, self.h_star_min) = (f_star, h_star);
+            }
+            self.outside += 1;
+            self.f_star_max = self.f_star_max.max(f_star);
+            self.h_star_min = self.h_star_min.min(h_star);
+        }
+    }
+
+    /// Prints one warning line on stderr if any point was outside.
+    pub fn warn(&self) {
+        if self.outside == 0 {
+            return;
+        }
+        let which = if self.total == 1 {
+            "the point lies".to_string()
+        } else {
+            format!("{} of {} points lie", self.outside, self.total)
+        };
+        eprintln!(
+            "warning: {which} outside the range the paper covers (F* <= {}, h* >= 0): F* up to {}, h* down to {}; the model is extrapolated there",
+            Shortest(PAPER_F_STAR_MAX),
+            short(self.f_star_max),
+            short(self.h_star_min)
+        );
+    }
 }

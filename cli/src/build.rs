@@ -3,67 +3,90 @@
 use crate::args::{
     check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, Failure, FitArg, ModelKindArg,
 };
-use ke_friction::build::{build, threads, BuildOptions, Precision};
+use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::io::write_atomic;
+use ke_friction::num::Shortest;
 use std::path::PathBuf;
 use std::time::Instant;
 
 /// Build a table of μ(ψ, θ, F*) by direct integration and verify it.
 ///
-/// The defaults build the default table (tables/default.kft).
+/// The defaults build the default table, tables/default.kft (the table the
+/// library embeds); any other build needs --out.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Output file (written to a temporary name, then renamed).
-    #[arg(long, default_value = "tables/default.kft")]
-    pub out: PathBuf,
-    /// Range of ψ, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "0.5:8", allow_hyphen_values = true)]
+    /// Output file, written to a temporary name and then renamed. Required
+    /// unless every other option is at its default (which rebuilds
+    /// tables/default.kft).
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Range of ψ, LO:HI, within [0.001, 1000] with the ghost nodes.
+    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().psi), allow_hyphen_values = true)]
     pub psi: String,
-    /// Range of θ, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "0:0.01", allow_hyphen_values = true)]
+    /// Range of θ, LO:HI, within [0, 1000] with the ghost nodes.
+    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().theta), allow_hyphen_values = true)]
     pub theta: String,
-    /// Range of F*, LO:HI.
-    #[arg(long, value_name = "LO:HI", default_value = "1e-5:0.1", allow_hyphen_values = true)]
+    /// Range of F*, LO:HI, within (0, 100] with the ghost nodes.
+    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().f_star), allow_hyphen_values = true)]
     pub f_star: String,
-    /// Nodes across the ψ, θ, F* ranges, NP,NT,NF.
-    #[arg(long, value_name = "NP,NT,NF", allow_hyphen_values = true)]
-    pub nodes: Option<String>,
-    /// Ghost nodes beyond each end of the ψ and F* ranges.
-    #[arg(long, allow_hyphen_values = true)]
-    pub ghosts: Option<usize>,
-    /// Integration grid in h*, LO:HI:COUNT.
-    #[arg(long, value_name = "LO:HI:COUNT", allow_hyphen_values = true)]
-    pub h_star: Option<String>,
-    /// Roughness parameter β.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub beta: Option<f64>,
-    /// Poisson's ratio ν.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub nu: Option<f64>,
-    /// Intermolecular distance ε*.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub eps_star: Option<f64>,
-    /// Friction row.
+    /// Nodes across the ψ, θ, F* ranges, NP,NT,NF, each from 5 to 4096.
+    #[arg(long, value_name = "NP,NT,NF", default_value_t = nodes_text(defaults().nodes), allow_hyphen_values = true)]
+    pub nodes: String,
+    /// Ghost nodes beyond each end of the ψ and F* ranges (and above θ's), 0 to 8.
+    #[arg(long, default_value_t = defaults().ghosts, allow_hyphen_values = true)]
+    pub ghosts: usize,
+    /// Integration grid in h*, LO:HI:COUNT (within ±1e6; COUNT from 2 to 100000).
+    #[arg(long, value_name = "LO:HI:COUNT", default_value_t = h_text(defaults().h_star), allow_hyphen_values = true)]
+    pub h_star: String,
+    /// Roughness parameter β = ηRσ, in (0.01928, 100].
+    #[arg(long, value_parser = parse_f64, default_value_t = defaults().beta, allow_hyphen_values = true)]
+    pub beta: f64,
+    /// Poisson's ratio ν of the softer material, in [0, 0.5).
+    #[arg(long, value_parser = parse_f64, default_value_t = defaults().nu, allow_hyphen_values = true)]
+    pub nu: f64,
+    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100].
+    #[arg(long, value_parser = parse_f64, default_value_t = defaults().eps_star, allow_hyphen_values = true)]
+    pub eps_star: f64,
+    /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18).
     #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
     pub fit: FitArg,
-    /// Model.
+    /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model).
     #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
     pub model: ModelKindArg,
     /// Stored precision of the coefficients.
     #[arg(long, value_enum, default_value_t = PrecisionArg::F32)]
     pub precision: PrecisionArg,
-    /// Maximum relative error of μ the table must meet.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub tolerance: Option<f64>,
-    /// Points checked against direct integration.
-    #[arg(long, allow_hyphen_values = true)]
-    pub samples: Option<usize>,
+    /// Maximum relative error of μ the table must meet, in (0, 1]; the build fails otherwise.
+    #[arg(long, value_parser = parse_f64, default_value_t = defaults().tolerance, allow_hyphen_values = true)]
+    pub tolerance: f64,
+    /// Points checked against direct integration (half random, half cell centres), 2 to 10000000.
+    #[arg(long, default_value_t = defaults().samples, allow_hyphen_values = true)]
+    pub samples: usize,
     /// Seed of those points.
-    #[arg(long, allow_hyphen_values = true)]
-    pub seed: Option<u64>,
+    #[arg(long, default_value_t = defaults().seed, allow_hyphen_values = true)]
+    pub seed: u64,
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
+}
+
+/// Where the default build writes (the table the library embeds).
+const DEFAULT_OUT: &str = "tables/default.kft";
+
+fn defaults() -> BuildOptions {
+    BuildOptions::default()
+}
+
+fn range_text((lo, hi): (f64, f64)) -> String {
+    format!("{}:{}", Shortest(lo), Shortest(hi))
+}
+
+fn nodes_text([a, b, c]: [usize; 3]) -> String {
+    format!("{a},{b},{c}")
+}
+
+fn h_text((lo, hi, n): (f64, f64, usize)) -> String {
+    format!("{}:{}:{n}", Shortest(lo), Shortest(hi))
 }
 
 /// `--precision` values.
@@ -84,36 +107,53 @@ fn pair(flag: &str, text: &str) -> Result<(f64, f64), Failure> {
 impl Args {
     /// The build options these flags ask for.
     pub fn options(&self) -> Result<BuildOptions, Failure> {
-        let mut o = BuildOptions {
+        let [np, nt, nf] = fields("--nodes", &self.nodes, ',', "NP,NT,NF (three whole numbers)")?;
+        let [h_lo, h_hi, h_n] = fields("--h-star", &self.h_star, ':', "LO:HI:COUNT")?;
+        let o = BuildOptions {
             psi: pair("--psi", &self.psi)?,
             theta: pair("--theta", &self.theta)?,
             f_star: pair("--f-star", &self.f_star)?,
-            ..BuildOptions::default()
+            nodes: [whole("--nodes", np)?, whole("--nodes", nt)?, whole("--nodes", nf)?],
+            ghosts: self.ghosts,
+            h_star: (
+                number("--h-star", h_lo)?,
+                number("--h-star", h_hi)?,
+                whole("--h-star", h_n)?,
+            ),
+            beta: self.beta,
+            nu: self.nu,
+            eps_star: self.eps_star,
+            fit: self.fit.into(),
+            kind: self.model.into(),
+            precision: match self.precision {
+                PrecisionArg::F32 => Precision::F32,
+                PrecisionArg::F64 => Precision::F64,
+            },
+            tolerance: self.tolerance,
+            samples: self.samples,
+            seed: self.seed,
         };
-        if let Some(nodes) = &self.nodes {
-            let [np, nt, nf] = fields("--nodes", nodes, ',', "NP,NT,NF (three whole numbers)")?;
-            o.nodes = [whole("--nodes", np)?, whole("--nodes", nt)?, whole("--nodes", nf)?];
-        }
-        if let Some(h) = &self.h_star {
-            let [lo, hi, n] = fields("--h-star", h, ':', "LO:HI:COUNT")?;
-            o.h_star = (number("--h-star", lo)?, number("--h-star", hi)?, whole("--h-star", n)?);
-        }
-        o.ghosts = self.ghosts.unwrap_or(o.ghosts);
-        o.beta = self.beta.unwrap_or(o.beta);
-        o.nu = self.nu.unwrap_or(o.nu);
-        o.eps_star = self.eps_star.unwrap_or(o.eps_star);
-        o.fit = self.fit.into();
-        o.kind = self.model.into();
-        o.precision = match self.precision {
-            PrecisionArg::F32 => Precision::F32,
-            PrecisionArg::F64 => Precision::F64,
-        };
-        o.tolerance = self.tolerance.unwrap_or(o.tolerance);
-        o.samples = self.samples.unwrap_or(o.samples);
-        o.seed = self.seed.unwrap_or(o.seed);
-        o.validate()
-            .map_err(|e| Failure::input(format!("{}: {e}", option_flag(e.name))))?;
+        o.validate().map_err(|e| {
+            let name = match &e {
+                BuildError::Option(p) => p.name,
+                BuildError::Range { name, .. } => name,
+                _ => "build",
+            };
+            Failure::input(format!("{}: {e}", option_flag(name)))
+        })?;
         Ok(o)
+    }
+
+    /// Where to write: `--out`, or the default table's path for the default
+    /// build only (so no other build can replace the embedded table).
+    fn out(&self, options: &BuildOptions) -> Result<PathBuf, Failure> {
+        match &self.out {
+            Some(out) => Ok(out.clone()),
+            None if *options == defaults() => Ok(PathBuf::from(DEFAULT_OUT)),
+            None => Err(Failure::input(format!(
+                "--out: required: these options differ from the default build, which alone writes {DEFAULT_OUT} (the table the library embeds); pass --out FILE"
+            ))),
+        }
     }
 }
 
@@ -130,19 +170,20 @@ fn option_flag(name: &str) -> String {
 /// Runs `kefric build`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let options = args.options()?;
-    check_writable("--out", &args.out)?;
+    let out = args.out(&options)?;
+    check_writable("--out", &out)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
     let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;
     bar.done();
-    write_atomic(&args.out, &built.bytes)
-        .map_err(|e| Failure::input(format!("--out: cannot write {}: {e}", args.out.display())))?;
+    write_atomic(&out, &built.bytes)
+        .map_err(|e| Failure::input(format!("--out: cannot write {}: {e}", out.display())))?;
     let secs = started.elapsed().as_secs_f64();
     let t = &built.table;
     let info = t.info();
     let acc = &info.accuracy;
     let axes = t.axes();
-    println!("wrote {} ({} bytes)", args.out.display(), built.bytes.len());
+    println!("wrote {} ({} bytes)", out.display(), built.bytes.len());
     let h_nodes = options.h_star.2;
     println!(
         "F*(h*) guess grid: {} psi x {} theta x {h_nodes} h* = {} force evaluations",
@@ -151,12 +192,19 @@ pub fn run(args: Args) -> Result<(), Failure> {
         axes[0].nodes * axes[1].nodes * h_nodes
     );
     println!(
-        "lookup grid: {} psi x {} theta x {} F* nodes ({} ghost nodes per end on psi and F*), {:?} coefficients",
-        axes[0].nodes, axes[1].nodes, axes[2].nodes, options.ghosts, options.precision
+        "lookup grid: {} psi x {} theta x {} F* nodes ({} ghost nodes per end on psi and F*), {} coefficients",
+        axes[0].nodes,
+        axes[1].nodes,
+        axes[2].nodes,
+        options.ghosts,
+        options.precision.name()
     );
     println!(
-        "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {:.1e}), 99th percentile {:.3e}",
-        acc.samples, acc.max_rel, info.tolerance, acc.p99_rel
+        "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {}), 99th percentile {:.3e}",
+        acc.samples,
+        acc.max_rel,
+        Shortest(info.tolerance),
+        acc.p99_rel
     );
     print_worst(acc);
     println!("build time: {secs:.1} s on {} threads", threads());

@@ -1,6 +1,6 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use crate::args::{full, number, Failure, ModelArgs};
+use crate::args::{describe, json_object, number, Failure, Json, ModelArgs, PaperRange};
 use ke_friction::Contact;
 
 /// Evaluate the model by direct integration at given h* or F*.
@@ -12,13 +12,13 @@ use ke_friction::Contact;
 pub struct Args {
     #[command(flatten)]
     pub model: ModelArgs,
-    /// Separation h* (or START:STOP:COUNT, linear).
+    /// Separation h* = h/σ, within ±1e6 (or START:STOP:COUNT, linear; COUNT up to 1000000).
     #[arg(long, value_name = "H|START:STOP:COUNT", allow_hyphen_values = true)]
     pub h_star: Option<String>,
-    /// External force F* > 0 (or START:STOP:COUNT, logarithmic).
+    /// External force F* = F/(A_n·H) > 0 (or START:STOP:COUNT, logarithmic; COUNT up to 1000000).
     #[arg(long, value_name = "F|START:STOP:COUNT", allow_hyphen_values = true)]
     pub f_star: Option<String>,
-    /// Print one JSON object per point, one per line.
+    /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
 }
@@ -39,7 +39,10 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
     let num = |s: &str| number(flag, s);
     let positive = |v: f64| {
         if spacing == Spacing::Log && v <= 0.0 {
-            Err(bad(format!("{v} is out of range: must be > 0")))
+            Err(bad(format!(
+                "{} is out of range: must be > 0",
+                ke_friction::num::Shortest(v)
+            )))
         } else {
             Ok(v)
         }
@@ -93,20 +96,32 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| Failure::input(format!("{flag}: {e}")))?;
     let p = model.params();
+    let mut paper = PaperRange::default();
     if args.json {
         for c in &contacts {
             println!(
-                "{{\"psi\":{},\"theta\":{},\"beta\":{},\"nu\":{},\"eps_star\":{},\"h_star\":{},\"d_star\":{},\"p_star\":{},\"fs_star\":{},\"q_star\":{},\"f_star\":{},\"mu\":{}}}",
-                full(p.psi), full(p.theta), full(p.beta), full(p.nu), full(p.eps_star),
-                full(c.h_star), full(c.d_star), full(c.p_star), full(c.fs_star), full(c.q_star), full(c.f_star),
-                c.mu.map_or("null".to_string(), full)
+                "{}",
+                json_object(&[
+                    ("psi", Json::Num(p.psi)),
+                    ("theta", Json::Num(p.theta)),
+                    ("beta", Json::Num(p.beta)),
+                    ("nu", Json::Num(p.nu)),
+                    ("eps_star", Json::Num(p.eps_star)),
+                    ("fit", Json::Str(p.fit.name())),
+                    ("model", Json::Str(p.kind.name())),
+                    ("h_star", Json::Num(c.h_star)),
+                    ("d_star", Json::Num(c.d_star)),
+                    ("p_star", Json::Num(c.p_star)),
+                    ("fs_star", Json::Num(c.fs_star)),
+                    ("q_star", Json::Num(c.q_star)),
+                    ("f_star", Json::Num(c.f_star)),
+                    ("mu", c.mu.map_or(Json::Null, Json::Num)),
+                ])
             );
+            paper.note(c.f_star, c.h_star);
         }
     } else {
-        println!(
-            "# psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {:?}, model = {:?}",
-            p.psi, p.theta, p.beta, p.nu, p.eps_star, p.fit, p.kind
-        );
+        println!("# {}", describe(p));
         println!(
             "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
             "h*", "d*", "P*", "Fs*", "Q*", "F*", "mu"
@@ -117,7 +132,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 "{:>10.6} {:>10.6} {:>12.5e} {:>12.5e} {:>12.5e} {:>12.5e} {:>12}",
                 c.h_star, c.d_star, c.p_star, c.fs_star, c.q_star, c.f_star, mu
             );
+            paper.note(c.f_star, c.h_star);
         }
     }
+    paper.warn();
     Ok(())
 }

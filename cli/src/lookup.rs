@@ -1,35 +1,82 @@
-//! `kefric lookup`: μ and ∂μ/∂F* from a table.
+//! `kefric lookup`: μ, ∂μ/∂F* and h* from a table, for one point or for
+//! CSV rows streamed from stdin.
 
-use crate::args::{flag_of, full, load_table, parse_f64, Failure};
-use ke_friction::LookupError;
+use crate::args::{flag_of, json_object, load_table, parse_f64, Failure, Json, PaperRange, SiArgs};
+use ke_friction::num::Shortest;
+use ke_friction::{LookupError, Table};
+use std::fmt::Write as _;
+use std::io::{BufRead, Write};
 use std::path::PathBuf;
 
-/// Look up μ(ψ, θ, F*) and ∂μ/∂F* in a table (the embedded default without --table).
+/// Look up μ(ψ, θ, F*), ∂μ/∂F* and h* in a table (the embedded default
+/// without --table), at one point or, with --csv, at every row of stdin.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Plasticity index ψ.
+    /// Plasticity index ψ, within the table's range (the default table: 0.5 to 8). Required unless --csv or the SI inputs are given.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub psi: f64,
-    /// Adhesion parameter θ.
+    pub psi: Option<f64>,
+    /// Adhesion parameter θ, within the table's range (the default table: 0 to 0.01). Required unless --csv or the SI inputs are given.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub theta: f64,
-    /// External force F*.
+    pub theta: Option<f64>,
+    /// External force F* = F/(A_n·H), within the table's range (the default table: 1e-5 to 0.1). Required unless --csv.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
-    pub f_star: f64,
-    /// Table file.
+    pub f_star: Option<f64>,
+    /// Table file [default: the embedded default table].
     #[arg(long)]
     pub table: Option<PathBuf>,
-    /// Print one JSON object.
-    #[arg(long)]
+    /// Print one JSON object (numbers in shortest round-trip form).
+    #[arg(long, conflicts_with = "csv")]
     pub json: bool,
+    /// Read psi,theta,f_star rows from stdin (a header line is optional);
+    /// write psi,theta,f_star,mu,dmu_df_star,h_star rows to stdout. A bad
+    /// row stops the run with its line number (exit 2); the rows before it
+    /// are complete.
+    #[arg(long, conflicts_with_all = ["psi", "theta", "f_star"])]
+    pub csv: bool,
+    /// Use the portable f64 kernel (the table's exact interpolant) instead
+    /// of the fast f32 one (which may differ by ~1e-7 relative).
+    #[arg(long)]
+    pub exact: bool,
+    #[command(flatten)]
+    pub si: SiArgs,
+}
+
+/// μ, ∂μ/∂F* and h* at one point.
+struct Row {
+    mu: f64,
+    slope: f64,
+    h_star: f64,
+}
+
+fn row(table: &Table, exact: bool, psi: f64, theta: f64, f_star: f64) -> Result<Row, LookupError> {
+    let (mu, slope) = if exact {
+        table.mu_with_slope_portable(psi, theta, f_star)?
+    } else {
+        table.mu_with_slope(psi, theta, f_star)?
+    };
+    let h_star = table.h_star(psi, theta, f_star)?;
+    Ok(Row { mu, slope, h_star })
 }
 
 /// Runs `kefric lookup`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let table = load_table(args.table.as_deref())?;
     let table = &*table;
-    let (mu, slope) = table.mu_with_slope(args.psi, args.theta, args.f_star).map_err(|e| {
+    if args.csv {
+        if args.si.any() {
+            return Err(Failure::input(
+                "--csv: the rows give psi and theta; the SI inputs do not apply",
+            ));
+        }
+        return csv(table, args.exact);
+    }
+    let (psi, theta) = point(&args, table)?;
+    let f_star = args
+        .f_star
+        .ok_or_else(|| Failure::input("--f-star: required (or --csv)"))?;
+    let r = row(table, args.exact, psi, theta, f_star).map_err(|e| {
         let flag = match e {
+            LookupError::OutOfDomain { name, .. } if args.si.any() && name != "f_star" => "SI inputs".into(),
             LookupError::OutOfDomain { name, .. } => flag_of(name),
             _ => "lookup".into(),
         };
@@ -37,16 +84,136 @@ pub fn run(args: Args) -> Result<(), Failure> {
     })?;
     if args.json {
         println!(
-            "{{\"psi\":{},\"theta\":{},\"f_star\":{},\"mu\":{},\"dmu_df_star\":{}}}",
-            full(args.psi),
-            full(args.theta),
-            full(args.f_star),
-            full(mu),
-            full(slope)
+            "{}",
+            json_object(&[
+                ("psi", Json::Num(psi)),
+                ("theta", Json::Num(theta)),
+                ("f_star", Json::Num(f_star)),
+                ("mu", Json::Num(r.mu)),
+                ("dmu_df_star", Json::Num(r.slope)),
+                ("h_star", Json::Num(r.h_star)),
+            ])
         );
     } else {
-        println!("mu = {mu:.8e}");
-        println!("dmu/dF* = {slope:.8e}");
+        if args.si.any() {
+            println!("psi = {}, theta = {}", Shortest(psi), Shortest(theta));
+        }
+        println!("mu = {:.8e}", r.mu);
+        println!("dmu/dF* = {:.8e}", r.slope);
+        println!("h* = {:.6}", r.h_star);
     }
+    let mut paper = PaperRange::default();
+    paper.note(f_star, r.h_star);
+    paper.warn();
     Ok(())
+}
+
+/// ψ and θ from the flags, or from the SI inputs (whose β, ν and ε* must
+/// be the table's).
+fn point(args: &Args, table: &Table) -> Result<(f64, f64), Failure> {
+    if !args.si.any() {
+        let required = |flag: &str, v: Option<f64>| {
+            v.ok_or_else(|| Failure::input(format!("{flag}: required (or --csv, or the SI inputs, see --help)")))
+        };
+        return Ok((required("--psi", args.psi)?, required("--theta", args.theta)?));
+    }
+    if let Some(flag) = [("--psi", args.psi), ("--theta", args.theta)]
+        .iter()
+        .find_map(|(f, v)| v.map(|_| *f))
+    {
+        return Err(Failure::input(format!(
+            "{flag}: give either --psi and --theta or the SI inputs, not both"
+        )));
+    }
+    let p = args.si.params()?;
+    let d = table.domain();
+    for (name, flag, ours, table_value) in [
+        ("beta", "--density", p.beta, d.beta),
+        ("nu", "--nu1", p.nu, d.nu),
+        ("eps_star", "--epsilon", p.eps_star, d.eps_star),
+    ] {
+        if (ours - table_value).abs() > 1e-9 * table_value.abs() {
+            return Err(Failure::input(format!(
+                "{flag}: the SI inputs give {name} = {}, the table holds {name} = {} (use kefric eval, or a table built for it)",
+                Shortest(ours),
+                Shortest(table_value)
+            )));
+        }
+    }
+    Ok((p.psi, p.theta))
+}
+
+/// Streams CSV rows from stdin to stdout.
+fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
+    let stdin = std::io::stdin().lock();
+    let stdout = std::io::stdout().lock();
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
+    let write_failed = |e: std::io::Error| Failure::other(format!("--csv: cannot write stdout: {e}"));
+    out.write_all(b"psi,theta,f_star,mu,dmu_df_star,h_star\n")
+        .map_err(write_failed)?;
+    let mut paper = PaperRange::default();
+    let mut line = String::new();
+    let mut text = String::new();
+    let mut input = stdin;
+    let mut number = 0usize;
+    let result = loop {
+        line.clear();
+        match input.read_line(&mut line) {
+            Ok(0) => break Ok(()),
+            Ok(_) => {}
+            Err(e) => {
+                break Err(Failure::input(format!(
+                    "--csv: line {}: cannot read stdin: {e}",
+                    number + 1
+                )))
+            }
+        }
+        number += 1;
+        let fields: Vec<&str> = line.trim_end_matches(['\n', '\r']).split(',').map(str::trim).collect();
+        if fields.len() == 1 && fields[0].is_empty() {
+            continue;
+        }
+        if number == 1 && fields == ["psi", "theta", "f_star"] {
+            continue;
+        }
+        let bad = |why: String| Failure::input(format!("--csv: line {number}: {why}"));
+        let [psi, theta, f_star] = match fields.as_slice() {
+            [a, b, c] => {
+                let num = |name: &str, t: &str| parse_f64(t).map_err(|e| bad(format!("{name}: {e}")));
+                match (num("psi", a), num("theta", b), num("f_star", c)) {
+                    (Ok(a), Ok(b), Ok(c)) => [a, b, c],
+                    (Err(e), _, _) | (_, Err(e), _) | (_, _, Err(e)) => break Err(e),
+                }
+            }
+            _ => {
+                break Err(bad(format!(
+                    "expected 3 fields psi,theta,f_star, found {}",
+                    fields.len()
+                )))
+            }
+        };
+        let r = match row(table, exact, psi, theta, f_star) {
+            Ok(r) => r,
+            Err(e) => break Err(bad(e.to_string())),
+        };
+        paper.note(f_star, r.h_star);
+        text.clear();
+        let _ = writeln!(
+            text,
+            "{},{},{},{},{},{}",
+            Shortest(psi),
+            Shortest(theta),
+            Shortest(f_star),
+            Shortest(r.mu),
+            Shortest(r.slope),
+            Shortest(r.h_star)
+        );
+        if let Err(e) = out.write_all(text.as_bytes()) {
+            break Err(write_failed(e));
+        }
+    };
+    // The rows before a bad one are complete lines; flush them either way.
+    out.flush().map_err(write_failed)?;
+    paper.warn();
+    result
 }

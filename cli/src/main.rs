@@ -10,7 +10,9 @@ mod args;
 mod build;
 mod eval;
 mod export;
+mod info;
 mod lookup;
+mod params;
 mod plot;
 mod validate;
 mod verify;
@@ -46,6 +48,10 @@ enum Command {
     Validate(validate::Args),
     /// Export a table to NumPy .npz/.npy.
     Export(export::Args),
+    /// Show what a table file holds.
+    Info(info::Args),
+    /// Convert SI inputs to the model's ψ, θ, β, ν, ε*.
+    Params(params::Args),
 }
 
 /// Parses the command line, runs the subcommand, returns the exit status.
@@ -62,6 +68,8 @@ fn run() -> i32 {
         Command::Plot(args) => plot::run(args),
         Command::Validate(args) => validate::run(args),
         Command::Export(args) => export::run(args),
+        Command::Info(args) => info::run(args),
+        Command::Params(args) => params::run(args),
     };
     match result {
         Ok(()) => 0,
@@ -82,6 +90,11 @@ fn clap_exit(err: clap::Error) -> i32 {
                 0
             }
         }
+        ErrorKind::ValueValidation | ErrorKind::InvalidValue => {
+            // The same voice as every other input error: `error: --FLAG: …`.
+            eprintln!("error: {}", value_message(&err));
+            2
+        }
         _ => {
             let text = err.render().to_string();
             let line: Vec<&str> = text
@@ -93,6 +106,28 @@ fn clap_exit(err: clap::Error) -> i32 {
             2
         }
     }
+}
+
+/// `--FLAG: 'VALUE' is not …` for a value clap rejected.
+fn value_message(err: &clap::Error) -> String {
+    use clap::error::{ContextKind, ContextValue};
+    let context = |kind| match err.get(kind) {
+        Some(ContextValue::String(s)) => s.clone(),
+        Some(ContextValue::Strings(v)) => v.join(", "),
+        _ => String::new(),
+    };
+    // "--f-star <F_STAR>" → "--f-star".
+    let arg = context(ContextKind::InvalidArg);
+    let flag = arg.split_whitespace().next().unwrap_or("input").to_string();
+    let why = match std::error::Error::source(err) {
+        Some(source) => source.to_string(),
+        None => format!(
+            "'{}' is not one of: {}",
+            context(ContextKind::InvalidValue),
+            context(ContextKind::ValidValue)
+        ),
+    };
+    format!("{flag}: {why}")
 }
 
 /// Rust ignores SIGPIPE, so `kefric eval … | head -1` would panic on the

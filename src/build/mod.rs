@@ -10,6 +10,7 @@
 pub mod verify;
 
 use crate::model::{EvalError, Model, H_LIMIT};
+use crate::num::Shortest;
 use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
 use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
@@ -87,8 +88,18 @@ pub enum BuildError {
     /// An option is out of range.
     #[error(transparent)]
     Option(#[from] ParamError),
+    /// A range option whose lower end is not below its upper end.
+    #[error("lower end {} must be below upper end {} (the range of {name})", Shortest(*.lo), Shortest(*.hi))]
+    Range {
+        /// The option: `"psi"`, `"theta"`, `"f_star"` or `"h_star"`.
+        name: &'static str,
+        /// The lower end given.
+        lo: f64,
+        /// The upper end given.
+        hi: f64,
+    },
     /// The model could not be evaluated somewhere on the grid.
-    #[error("model evaluation failed at psi = {psi}, theta = {theta}: {error}")]
+    #[error("model evaluation failed at psi = {}, theta = {}: {error}", Shortest(*.psi), Shortest(*.theta))]
     Eval {
         /// ψ of the failing node.
         psi: f64,
@@ -98,7 +109,10 @@ pub enum BuildError {
         error: EvalError,
     },
     /// The finished table misses the tolerance.
-    #[error("the table misses its tolerance: max relative error {max_rel:e} > {tolerance:e} (worst at psi = {}, theta = {}, f_star = {}); use more nodes or f64 precision", worst[0], worst[1], worst[2])]
+    #[error(
+        "the table misses its tolerance: max relative error {:.2e} > {} (worst at psi = {:.4}, theta = {:.4e}, f_star = {:.4e}); {}",
+        .max_rel, Shortest(*.tolerance), .worst[0], .worst[1], .worst[2], tolerance_hint(*.max_rel, *.tolerance, *.nodes, *.precision)
+    )]
     Tolerance {
         /// Measured maximum.
         max_rel: f64,
@@ -106,7 +120,31 @@ pub enum BuildError {
         tolerance: f64,
         /// Where.
         worst: [f64; 3],
+        /// The nodes the table had (ψ, θ, F*, without ghost nodes).
+        nodes: [usize; 3],
+        /// The coefficients' precision.
+        precision: Precision,
     },
+}
+
+/// Below this relative error of μ, rounding the coefficients to f32 (24
+/// significant bits: ~6e-8 of ln μ, times |ln μ| ≤ ~5 over the paper's
+/// range) is no longer small against the interpolation error, so f64
+/// precision can help; above it only more nodes (or a narrower domain) can.
+const F32_FLOOR: f64 = 1e-6;
+
+/// What can actually make a build that missed its tolerance pass.
+fn tolerance_hint(max_rel: f64, tolerance: f64, nodes: [usize; 3], precision: Precision) -> String {
+    if precision == Precision::F32 && max_rel < F32_FLOOR {
+        return "at this level f32 rounding matters: build with f64 precision".into();
+    }
+    // A cubic spline's error falls as the 4th power of the node spacing.
+    let factor = (max_rel / tolerance).powf(0.25) * 1.05;
+    let more = nodes.map(|n| ((n - 1) as f64 * factor).ceil() as usize + 1);
+    format!(
+        "more nodes would help (cubic interpolation's error falls as the 4th power of the node spacing): try nodes = {},{},{}, or a narrower domain, or a looser tolerance",
+        more[0], more[1], more[2]
+    )
 }
 
 /// Progress of long work, for a progress bar (all methods may be called
@@ -147,10 +185,15 @@ impl BuildOptions {
     /// Checks every option, naming the first bad one. Everything that
     /// would make the build fail or run out of memory for reasons known in
     /// advance is caught here, before any work.
-    pub fn validate(&self) -> Result<(), ParamError> {
+    pub fn validate(&self) -> Result<(), BuildError> {
         let range = |name: &'static str, (lo, hi): (f64, f64), low_ok: fn(f64) -> bool, what: &'static str| {
             check(name, lo, what, low_ok)?;
-            check(name, hi, "greater than the lower end", |v| v > lo)
+            check(name, hi, "finite", |_| true)?;
+            if lo < hi {
+                Ok(())
+            } else {
+                Err(BuildError::Range { name, lo, hi })
+            }
         };
         range("psi", self.psi, |v| v > 0.0, "> 0")?;
         range("theta", self.theta, |v| v >= 0.0, ">= 0")?;
@@ -165,10 +208,8 @@ impl BuildOptions {
         count("f_nodes", self.nodes[2], 5)?;
         check("ghosts", self.ghosts as f64, "from 0 to 8", |v| v <= 8.0)?;
         let (h_lo, h_hi, h_n) = self.h_star;
-        check("h_star", h_lo, "within ±1e6", |v| v.abs() <= H_LIMIT)?;
-        check("h_star", h_hi, "greater than the lower end and within ±1e6", |v| {
-            v > h_lo && v <= H_LIMIT
-        })?;
+        range("h_star", (h_lo, h_hi), |v| v.abs() <= H_LIMIT, "within ±1e6")?;
+        check("h_star", h_hi, "within ±1e6", |v| v <= H_LIMIT)?;
         check("h_nodes", h_n as f64, "a whole number from 2 to 100000", |v| {
             (2.0..=1e5).contains(&v)
         })?;
@@ -337,6 +378,8 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             max_rel: checked.max_rel(),
             tolerance: o.tolerance,
             worst: accuracy.worst,
+            nodes: o.nodes,
+            precision: o.precision,
         });
     }
     payload.accuracy = format::Accuracy::record(o.tolerance, &accuracy);

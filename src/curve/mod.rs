@@ -30,6 +30,7 @@ mod avx2;
 mod avx2;
 
 use crate::model::{EvalError, Model};
+use crate::num::Shortest;
 use crate::table::{LookupError, Table};
 
 /// The accuracy [`Curve::from_model`] builds to: the largest relative
@@ -53,7 +54,7 @@ const ONE: u64 = 0x3ff0_0000_0000_0000;
 #[non_exhaustive]
 pub enum CurveError {
     /// The range is not two positive, finite, normal numbers in order.
-    #[error("f_star range [{lo:e}, {hi:e}] is invalid: f_star_min and f_star_max must be positive, finite and normal, with f_star_min < f_star_max")]
+    #[error("f_star range [{}, {}] is invalid: f_star_min and f_star_max must be positive, finite and normal, with f_star_min < f_star_max", Shortest(*.lo), Shortest(*.hi))]
     Range {
         /// `f_star_min`.
         lo: f64,
@@ -61,7 +62,7 @@ pub enum CurveError {
         hi: f64,
     },
     /// The range spans too many cells (more than 64 octaves).
-    #[error("f_star range [{lo:e}, {hi:e}] spans more than 64 octaves")]
+    #[error("f_star range [{}, {}] spans more than 64 octaves", Shortest(*.lo), Shortest(*.hi))]
     TooWide {
         /// `f_star_min`.
         lo: f64,
@@ -69,7 +70,7 @@ pub enum CurveError {
         hi: f64,
     },
     /// The model cannot be solved at a load of the range.
-    #[error("the model cannot be solved at F* = {f_star:e}: {error}")]
+    #[error("the model cannot be solved at F* = {}: {error}", Shortest(*.f_star))]
     Model {
         /// The load.
         f_star: f64,
@@ -77,7 +78,7 @@ pub enum CurveError {
         error: EvalError,
     },
     /// The model has no positive μ at a load of the range.
-    #[error("the model gives no positive friction coefficient at F* = {f_star:e} (mu = {mu:e})")]
+    #[error("the model gives no positive friction coefficient at F* = {} (mu = {})", Shortest(*.f_star), Shortest(*.mu))]
     NoMu {
         /// The load.
         f_star: f64,

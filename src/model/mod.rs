@@ -5,6 +5,7 @@ pub mod asperity;
 mod quadrature;
 mod surface;
 
+use crate::num::Shortest;
 use crate::params::{ParamError, Params};
 use surface::Surface;
 
@@ -34,13 +35,13 @@ pub struct Contact {
 #[non_exhaustive]
 pub enum EvalError {
     /// h* is NaN, infinite or beyond the supported range.
-    #[error("h_star = {0} is out of range: must be finite, within ±{H_LIMIT:e}")]
+    #[error("h_star = {} is out of range: must be finite, within ±{}", Shortest(*.0), Shortest(H_LIMIT))]
     HStar(f64),
     /// F* is NaN, infinite, zero or negative.
-    #[error("f_star = {0} is out of range: must be > 0 and finite")]
+    #[error("f_star = {} is out of range: must be > 0 and finite", Shortest(*.0))]
     FStar(f64),
     /// No separation in the supported range gives this F*.
-    #[error("f_star = {f_star} is out of reach: the largest F* for h_star >= -{H_LIMIT:e} is {f_max:e}")]
+    #[error("f_star = {} is out of reach: the largest F* for h_star >= -{} is {}", Shortest(*.f_star), Shortest(H_LIMIT), Shortest(*.f_max))]
     FStarTooLarge {
         /// The requested F*.
         f_star: f64,
@@ -49,7 +50,7 @@ pub enum EvalError {
     },
     /// The root search did not converge (a bug: please report it with the
     /// parameters).
-    #[error("no convergence solving F*(h*) = {f_star} after {iterations} iterations (last h* = {h_star})")]
+    #[error("no convergence solving F*(h*) = {} after {iterations} iterations (last h* = {})", Shortest(*.f_star), Shortest(*.h_star))]
     NoConvergence {
         /// The requested F*.
         f_star: f64,

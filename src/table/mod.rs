@@ -28,6 +28,7 @@ mod portable;
 #[cfg(test)]
 mod tests;
 
+use crate::num::Shortest;
 use crate::params::{Fit, Kind, Params};
 use crate::spline::Axis;
 pub use format::TableError;
@@ -40,7 +41,7 @@ use layout::Layout;
 #[non_exhaustive]
 pub enum LookupError {
     /// The argument is NaN or outside `[lo, hi]`.
-    #[error("{name} = {value} is outside the range [{lo:e}, {hi:e}]")]
+    #[error("{name} = {} is outside the range [{}, {}]", Shortest(*.value), Shortest(*.lo), Shortest(*.hi))]
     OutOfDomain {
         /// `"psi"`, `"theta"` or `"f_star"`.
         name: &'static str,
@@ -72,7 +73,7 @@ pub enum LookupError {
         out: usize,
     },
     /// A batch element was NaN or out of the domain; `index` says which.
-    #[error("batch element {index}: {name} = {value} is outside the range [{lo:e}, {hi:e}]")]
+    #[error("batch element {index}: {name} = {} is outside the range [{}, {}]", Shortest(*.value), Shortest(*.lo), Shortest(*.hi))]
     BatchElement {
         /// Position in the slices.
         index: usize,
@@ -133,6 +134,16 @@ pub enum Precision {
     F32,
     /// 8 bytes a coefficient.
     F64,
+}
+
+impl Precision {
+    /// The name users type and read: `"f32"` or `"f64"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
 }
 
 /// The accuracy of μ measured against direct integration.

@@ -12,11 +12,72 @@ fn eval_json_at_f_star_matches_model_md() {
     ] {
         assert!(v.get(key).is_some(), "key {key} missing in {text}");
     }
+    assert_eq!(v["fit"], "consistent");
+    assert_eq!(v["model"], "ke");
     // MODEL.md §7: h* = 1.4692414618, μ = 0.52521087083.
     assert!((v["h_star"].as_f64().unwrap() - 1.4692414618).abs() < 1e-10);
     assert!((v["mu"].as_f64().unwrap() / 0.52521087083 - 1.0).abs() < 1e-10);
-    // 17 significant digits.
-    assert!(text.contains("\"mu\":5.252108708"), "{text}");
+    // Shortest round-trip form, still exact: the text parses back to the
+    // very f64 the library computes.
+    let raw = |key: &str| -> f64 {
+        let at = text.find(&format!("\"{key}\":")).unwrap() + key.len() + 3;
+        let end = text[at..].find([',', '}']).unwrap();
+        text[at..at + end].parse().unwrap()
+    };
+    let model = ke_friction::Model::new(ke_friction::Params::new(1.0, 0.001)).unwrap();
+    let c = model.at_f_star(0.01).unwrap();
+    assert_eq!(raw("mu"), c.mu.unwrap());
+    assert_eq!(raw("h_star"), c.h_star);
+    assert!(text.contains("\"psi\":1,\"theta\":0.001,"), "{text}");
+    assert!(text.contains(&format!("\"mu\":{}}}", c.mu.unwrap())), "{text}");
+}
+
+#[test]
+fn text_output_uses_the_flags_spellings_and_warns_outside_the_papers_range() {
+    let o = kefric(&[
+        "eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.01", "--model", "ceb",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        out.starts_with(
+            "# psi = 1, theta = 0.001, beta = 0.04, nu = 0.3, eps_star = 0.004, fit = consistent, model = ceb\n"
+        ),
+        "{out}"
+    );
+    assert!(
+        o.stderr.is_empty(),
+        "no warning inside the paper's range: {}",
+        stderr(&o)
+    );
+    // F* = 5 (h* = -28.2): an answer, exit 0, and one warning line.
+    let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "5"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("warning: the point lies outside the range the paper covers"),
+        "{err}"
+    );
+    assert!(err.contains("F* up to 5, h* down to -28.2;"), "{err}");
+    // A sweep warns once, counting the points outside.
+    let o = kefric(&[
+        "eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.02:2:3", "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("2 of 3 points lie outside"), "{err}");
+    // lookup warns where h* < 0 or F* > 0.1 too; the default table stops at 0.1.
+    let o = kefric(&["lookup", "--psi", "8", "--theta", "0", "--f-star", "0.1"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let h: f64 = String::from_utf8_lossy(&o.stdout)
+        .lines()
+        .find_map(|l| l.strip_prefix("h* = "))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert_eq!(stderr(&o).contains("warning:"), h < 0.0, "h* = {h}: {}", stderr(&o));
 }
 
 #[test]

@@ -8,7 +8,7 @@ fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
     let keys: Vec<&str> = v.as_object().unwrap().keys().map(|k| k.as_str()).collect();
-    assert_eq!(keys.len(), 5, "{keys:?}");
+    assert_eq!(keys, ["dmu_df_star", "f_star", "h_star", "mu", "psi", "theta"]);
     // MODEL.md §7: μ = 0.52521087083 at ψ = 1, θ = 0.001, F* = 0.01; the table is good to 1e-4.
     let mu = v["mu"].as_f64().unwrap();
     assert!((mu / 0.52521087083 - 1.0).abs() < 1e-4, "{mu}");
@@ -16,6 +16,7 @@ fn lookup_json_gives_mu_and_its_slope_from_the_embedded_table() {
     let (m, s) = table.mu_with_slope(1.0, 0.001, 0.01).unwrap();
     assert_eq!(mu, m);
     assert_eq!(v["dmu_df_star"].as_f64().unwrap(), s);
+    assert_eq!(v["h_star"].as_f64().unwrap(), table.h_star(1.0, 0.001, 0.01).unwrap());
     assert!(s < 0.0, "μ falls with F*");
 }
 

@@ -1,0 +1,115 @@
+//! `kefric info`: what a table file holds.
+
+use crate::args::{json_numbers, json_object, load_table, print_worst, Failure, Json};
+use ke_friction::num::Shortest;
+use ke_friction::Table;
+use std::path::PathBuf;
+
+/// Show what a table holds: its domain, model and constants, tolerance and
+/// measured accuracy, nodes, precision, size, format version and checksum.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Table file [default: the embedded default table].
+    #[arg(long)]
+    pub table: Option<PathBuf>,
+    /// Print one JSON object (numbers in shortest round-trip form).
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs `kefric info`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    let table = load_table(args.table.as_deref())?;
+    // The file was read and checked by `load_table`; its last four bytes
+    // are the CRC-32 of the rest.
+    let bytes: std::borrow::Cow<[u8]> = match &args.table {
+        None => Table::embedded_bytes().into(),
+        Some(path) => std::fs::read(path)
+            .map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))?
+            .into(),
+    };
+    let crc = bytes.len().checked_sub(4).map(|at| &bytes[at..]);
+    let checksum = crc.map_or(0, |c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]));
+    let name = args
+        .table
+        .as_ref()
+        .map_or("(embedded default table)".to_string(), |p| p.display().to_string());
+    let info = table.info();
+    let (d, acc, b) = (&info.domain, &info.accuracy, &info.build);
+    if args.json {
+        let range = |(lo, hi): (f64, f64)| Json::Raw(json_numbers(&[lo, hi]));
+        println!(
+            "{}",
+            json_object(&[
+                ("file", Json::Str(&name)),
+                ("bytes", Json::Int(bytes.len() as u64)),
+                ("crc32", Json::Raw(format!("\"{checksum:08x}\""))),
+                ("format_version", Json::Int(info.format_version.into())),
+                ("model", Json::Str(d.kind.name())),
+                ("fit", Json::Str(d.fit.name())),
+                ("psi", range(d.psi)),
+                ("theta", range(d.theta)),
+                ("f_star", range(d.f_star)),
+                ("beta", Json::Num(d.beta)),
+                ("nu", Json::Num(d.nu)),
+                ("eps_star", Json::Num(d.eps_star)),
+                ("tolerance", Json::Num(info.tolerance)),
+                ("max_rel_error", Json::Num(acc.max_rel)),
+                ("p99_rel_error", Json::Num(acc.p99_rel)),
+                ("accuracy_samples", Json::Int(acc.samples as u64)),
+                ("worst", Json::Raw(json_numbers(&acc.worst))),
+                (
+                    "nodes",
+                    Json::Raw(format!("[{},{},{}]", b.nodes[0], b.nodes[1], b.nodes[2])),
+                ),
+                ("ghosts", Json::Int(b.ghosts as u64)),
+                ("precision", Json::Str(info.precision.name())),
+                ("generator", Json::Str(&b.generator)),
+            ])
+        );
+        return Ok(());
+    }
+    let r = |(lo, hi): (f64, f64)| format!("[{}, {}]", Shortest(lo), Shortest(hi));
+    println!("table:      {name}");
+    println!(
+        "file:       {} bytes, format version {}, CRC-32 {checksum:08x}, built by {}",
+        bytes.len(),
+        info.format_version,
+        b.generator
+    );
+    println!("model:      {}, fit = {}", d.kind.name(), d.fit.name());
+    println!("domain:     psi {}, theta {}, F* {}", r(d.psi), r(d.theta), r(d.f_star));
+    println!(
+        "constants:  beta = {}, nu = {}, eps_star = {}",
+        Shortest(d.beta),
+        Shortest(d.nu),
+        Shortest(d.eps_star)
+    );
+    println!(
+        "accuracy:   mu max relative error {:.2e} (tolerance {}), 99th percentile {:.2e}, {} points at build",
+        acc.max_rel,
+        Shortest(info.tolerance),
+        acc.p99_rel,
+        acc.samples
+    );
+    print!("            ");
+    print_worst(acc);
+    println!("            the slope dmu/dF* is not recorded: kefric verify measures it");
+    println!(
+        "nodes:      {} psi x {} theta x {} F* ({} ghost nodes per end), {} coefficients",
+        b.nodes[0],
+        b.nodes[1],
+        b.nodes[2],
+        b.ghosts,
+        info.precision.name()
+    );
+    println!(
+        "interpolant: cubic B-spline of ln mu over (ln psi, sqrt theta, ln F*); lookups {}",
+        if table.fast_kernel() {
+            "use the fast f32 AVX2 kernel on this machine"
+        } else {
+            "use the portable f64 kernel on this machine"
+        }
+    );
+    Ok(())
+}

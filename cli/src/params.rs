@@ -1,0 +1,47 @@
+//! `kefric params`: the dimensionless parameters of SI inputs.
+
+use crate::args::{json_object, Failure, Json, SiArgs};
+use ke_friction::num::Shortest;
+
+/// Convert SI quantities (moduli, Poisson's ratios, hardness, roughness,
+/// adhesion) to the model's ψ, θ, β, ν and ε*.
+///
+/// ψ = (2E'/(πKH))·(σ_s/R)^½ (E' the combined modulus, K = 0.454 + 0.41ν₁,
+/// σ_s/σ from β), θ = Δγ/(σH), β = ηRσ, ε* = ε/σ.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    #[command(flatten)]
+    pub si: SiArgs,
+    /// Print one JSON object (numbers in shortest round-trip form).
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs `kefric params`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    if !args.si.any() {
+        return Err(Failure::input(
+            "--e1: missing: give the ten SI inputs (see kefric params --help)",
+        ));
+    }
+    let p = args.si.params()?;
+    if args.json {
+        println!(
+            "{}",
+            json_object(&[
+                ("psi", Json::Num(p.psi)),
+                ("theta", Json::Num(p.theta)),
+                ("beta", Json::Num(p.beta)),
+                ("nu", Json::Num(p.nu)),
+                ("eps_star", Json::Num(p.eps_star)),
+            ])
+        );
+    } else {
+        println!("psi = {}", Shortest(p.psi));
+        println!("theta = {}", Shortest(p.theta));
+        println!("beta = {}", Shortest(p.beta));
+        println!("nu = {}", Shortest(p.nu));
+        println!("eps_star = {}", Shortest(p.eps_star));
+    }
+    Ok(())
+}
