@@ -9,6 +9,16 @@
 //! | `grid_psi`, `grid_theta`, `grid_h_star` | (mψ), (mθ), (mh) | the build's integration grid (ghost nodes included) |
 //! | `grid_p_star`, `grid_fs_star`, `grid_q_star`, `grid_f_star`, `grid_mu` | (mψ, mθ, mh) | the model on that grid; `grid_mu` is NaN where F* ≤ 0 |
 //! | `beta`, `nu`, `eps_star` | () | the model constants |
+//! | `spline_ln_mu` | (mψ+2, mθ+2, mF+2) | the table's own interpolant: B-spline coefficients of ln μ (ghost nodes included) |
+//! | `knots_psi`, `knots_theta`, `knots_f_star` | (mψ), (mθ), (mF) | its knots in the interpolation coordinates ln ψ, √θ, ln F* |
+//! | `metadata` | (bytes,) `uint8` | UTF-8 JSON describing the table ([`metadata`]) |
+//!
+//! The interpolant: along each axis, with `s = (x − first)/step` in the
+//! axis's coordinate x (ln ψ, √θ, ln F*), cell `i = min(⌊s⌋, nodes − 2)`
+//! and `f = s − i`, ln μ = Σ w_a(f_ψ)·w_b(f_θ)·w_c(f_F)·c[iψ+a, iθ+b, iF+c]
+//! over a, b, c in 0..4, with the uniform cubic B-spline weights
+//! w = ((1−f)³, 3f³−6f²+4, −3f³+3f²+3f+1, f³)/6. `tools/spline_eval.py`
+//! does it in a few lines of NumPy.
 //!
 //! The table file does not store the integration grid: it is recomputed
 //! from the build options the table records ([`BuildOptions::from_table`]).
@@ -18,6 +28,7 @@
 use crate::build::{params_of, BuildError, BuildOptions, Progress};
 use crate::io::write_atomic_with;
 use crate::model::Model;
+use crate::num::{json_numbers, json_object, Json};
 use crate::spline::Axis;
 use crate::table::Table;
 use ndarray::{arr0, ArrayD, IxDyn};
@@ -144,6 +155,9 @@ fn domain_nodes(axis: &Axis, (lo, hi): (f64, f64)) -> Vec<f64> {
 /// Fails if the table's recorded build options are invalid or the model
 /// cannot be evaluated on the grid.
 pub fn arrays(table: &Table, progress: &dyn Progress) -> Result<Vec<Named>, BuildError> {
+    let axes = table.axes();
+    let coef_shape = axes.map(|a| a.nodes + 2);
+    let knots = |k: usize| vector((0..axes[k].nodes).map(|i| axes[k].coord(i)).collect());
     let [psi, theta, f_star] = table_nodes(table);
     let shape = [psi.len(), theta.len(), f_star.len()];
     let mut mu = Vec::with_capacity(shape.iter().product());
@@ -178,6 +192,78 @@ pub fn arrays(table: &Table, progress: &dyn Progress) -> Result<Vec<Named>, Buil
         ("beta", arr0(d.beta).into_dyn()),
         ("nu", arr0(d.nu).into_dyn()),
         ("eps_star", arr0(d.eps_star).into_dyn()),
+        ("spline_ln_mu", cube(coef_shape, table.ln_mu_coefficients().to_vec())),
+        ("knots_psi", knots(0)),
+        ("knots_theta", knots(1)),
+        ("knots_f_star", knots(2)),
+    ])
+}
+
+/// The export's self-description, JSON (stored as the `uint8` array
+/// `metadata`: `json.loads(z["metadata"].tobytes())`). Keys: `model`
+/// (`"ke"`/`"ceb"`), `fit` (`"consistent"`/`"as-printed"`), `beta`, `nu`,
+/// `eps_star`, `domain` (ranges of psi, theta, f_star), `tolerance`,
+/// `max_rel_error` (measured at build), `format_version`, `precision`,
+/// `generator`, and `interpolant`: the quantity (`"ln(mu)"`), its kind,
+/// and per axis its coordinate (`"ln(psi)"`, `"sqrt(theta)"`,
+/// `"ln(f_star)"`), `first`, `step` and `nodes` (numbers exact in
+/// shortest round-trip form).
+pub fn metadata(table: &Table) -> String {
+    let info = table.info();
+    let d = &info.domain;
+    let range = |(lo, hi): (f64, f64)| Json::Raw(json_numbers(&[lo, hi]));
+    let axis = |k: usize, name: &str, coordinate: &str| {
+        let a = table.axes()[k];
+        json_object(&[
+            ("name", Json::Str(name)),
+            ("coordinate", Json::Str(coordinate)),
+            ("first", Json::Num(a.first)),
+            ("step", Json::Num(a.step)),
+            ("nodes", Json::Int(a.nodes as u64)),
+            ("knots", Json::Str(&format!("knots_{name}"))),
+        ])
+    };
+    let axes = format!(
+        "[{},{},{}]",
+        axis(0, "psi", "ln(psi)"),
+        axis(1, "theta", "sqrt(theta)"),
+        axis(2, "f_star", "ln(f_star)")
+    );
+    let interpolant = json_object(&[
+        ("quantity", Json::Str("ln(mu)")),
+        ("kind", Json::Str("tensor-product uniform cubic B-spline")),
+        ("coefficients", Json::Str("spline_ln_mu")),
+        (
+            "cell",
+            Json::Str("s = (x - first)/step, i = min(floor(s), nodes - 2), f = s - i; coefficients i..i+3"),
+        ),
+        ("weights", Json::Str("((1-f)^3, 3f^3-6f^2+4, -3f^3+3f^2+3f+1, f^3)/6")),
+        ("axes", Json::Raw(axes)),
+    ]);
+    json_object(&[
+        ("model", Json::Str(d.kind.name())),
+        ("fit", Json::Str(d.fit.name())),
+        ("beta", Json::Num(d.beta)),
+        ("nu", Json::Num(d.nu)),
+        ("eps_star", Json::Num(d.eps_star)),
+        (
+            "domain",
+            Json::Raw(json_object(&[
+                ("psi", range(d.psi)),
+                ("theta", range(d.theta)),
+                ("f_star", range(d.f_star)),
+            ])),
+        ),
+        ("tolerance", Json::Num(info.tolerance)),
+        ("max_rel_error", Json::Num(info.accuracy.max_rel)),
+        ("format_version", Json::Int(info.format_version.into())),
+        ("precision", Json::Str(info.precision.name())),
+        ("generator", Json::Str(&info.build.generator)),
+        (
+            "node_values",
+            Json::Str("mu and h_star are the table's lookups at its nodes inside the domain"),
+        ),
+        ("interpolant", Json::Raw(interpolant)),
     ])
 }
 
@@ -189,14 +275,17 @@ fn cube(shape: [usize; 3], v: Vec<f64>) -> ArrayD<f64> {
     ArrayD::from_shape_vec(IxDyn(&shape), v).expect("row-major data of the shape")
 }
 
-/// Writes the arrays into one uncompressed `.npz` file (as `numpy.savez`
-/// does), atomically.
-pub fn write_npz(path: &Path, arrays: &[Named]) -> io::Result<()> {
+/// Writes the arrays and the `metadata` (as a `uint8` array of its UTF-8
+/// bytes) into one uncompressed `.npz` file (as `numpy.savez` does),
+/// atomically.
+pub fn write_npz(path: &Path, arrays: &[Named], metadata: &str) -> io::Result<()> {
     write_atomic_with(path, |file| {
         let mut npz = NpzWriter::new(BufWriter::new(file));
         for (name, array) in arrays {
             npz.add_array(*name, array).map_err(io::Error::other)?;
         }
+        npz.add_array("metadata", &metadata_bytes(metadata))
+            .map_err(io::Error::other)?;
         npz.finish()
             .map_err(io::Error::other)?
             .into_inner()
@@ -205,21 +294,30 @@ pub fn write_npz(path: &Path, arrays: &[Named]) -> io::Result<()> {
     })
 }
 
-/// Writes each array to `DIR/NAME.npy`, each file atomically. `dir` is
-/// created if missing (its parent must exist).
-pub fn write_npy_dir(dir: &Path, arrays: &[Named]) -> io::Result<()> {
-    if !dir.is_dir() {
-        std::fs::create_dir(dir)?;
-    }
-    for (name, array) in arrays {
+/// Writes each array to `DIR/NAME.npy`, and the metadata to
+/// `DIR/metadata.npy`, each file atomically. `dir` is created (with its
+/// parents) if missing.
+pub fn write_npy_dir(dir: &Path, arrays: &[Named], metadata: &str) -> io::Result<()> {
+    std::fs::create_dir_all(dir)?;
+    let write = |name: &str, array: &dyn Fn(&mut BufWriter<std::fs::File>) -> io::Result<()>| {
         write_atomic_with(&dir.join(format!("{name}.npy")), |file| {
             let mut out = BufWriter::new(file);
-            array.write_npy(&mut out).map_err(io::Error::other)?;
+            array(&mut out)?;
             out.flush()?;
             out.into_inner().map_err(|e| e.into_error())?.sync_all()
-        })?;
+        })
+    };
+    write("metadata", &|out| {
+        metadata_bytes(metadata).write_npy(out).map_err(io::Error::other)
+    })?;
+    for (name, array) in arrays {
+        write(name, &|out| array.write_npy(out).map_err(io::Error::other))?;
     }
     Ok(())
+}
+
+fn metadata_bytes(metadata: &str) -> ndarray::Array1<u8> {
+    ndarray::Array1::from(metadata.as_bytes().to_vec())
 }
 
 #[cfg(test)]

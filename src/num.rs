@@ -1,5 +1,7 @@
 //! Numbers as people read them: the shortest decimal that parses back to
-//! the same `f64`, in one style everywhere (messages, text output, JSON).
+//! the same `f64`, in one style everywhere (messages, text output, JSON),
+//! and the small JSON writer that prints them (the CLI's `--json` output,
+//! the NumPy export's metadata).
 
 use core::fmt;
 
@@ -49,6 +51,60 @@ pub fn json(x: f64) -> String {
     }
 }
 
+/// A JSON value of [`json_object`].
+pub enum Json<'a> {
+    /// A number ([`json`]: shortest round-trip, `null` if not finite).
+    Num(f64),
+    /// A whole number.
+    Int(u64),
+    /// A string (escaped).
+    Str(&'a str),
+    /// `null`.
+    Null,
+    /// Raw JSON text (a nested object or array).
+    Raw(String),
+}
+
+/// One JSON object on one line, keys in the given order.
+pub fn json_object(fields: &[(&str, Json)]) -> String {
+    let body: Vec<String> = fields
+        .iter()
+        .map(|(k, v)| {
+            let v = match v {
+                Json::Num(x) => json(*x),
+                Json::Int(n) => n.to_string(),
+                Json::Str(t) => json_string(t),
+                Json::Null => "null".to_string(),
+                Json::Raw(r) => r.clone(),
+            };
+            format!("{}:{v}", json_string(k))
+        })
+        .collect();
+    format!("{{{}}}", body.join(","))
+}
+
+/// A JSON array of numbers.
+pub fn json_numbers(xs: &[f64]) -> String {
+    let v: Vec<String> = xs.iter().map(|&x| json(x)).collect();
+    format!("[{}]", v.join(","))
+}
+
+/// A JSON string literal, escaped.
+pub fn json_string(t: &str) -> String {
+    let mut out = String::with_capacity(t.len() + 2);
+    out.push('"');
+    for c in t.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -70,5 +126,20 @@ mod tests {
         assert_eq!(Shortest(-2.5e-7).to_string(), "-2.5e-7");
         assert_eq!(Shortest(0.0).to_string(), "0");
         assert_eq!(json(f64::INFINITY), "null");
+    }
+
+    #[test]
+    fn json_objects_escape_strings_and_keep_order() {
+        let text = json_object(&[
+            ("b", Json::Num(0.5)),
+            ("a", Json::Str("say \"hi\"\n\\")),
+            ("n", Json::Int(3)),
+            ("x", Json::Raw(json_numbers(&[1e-5, f64::NAN]))),
+            ("z", Json::Null),
+        ]);
+        assert_eq!(
+            text,
+            r#"{"b":0.5,"a":"say \"hi\"\u000a\\","n":3,"x":[1e-5,null],"z":null}"#
+        );
     }
 }

@@ -409,59 +409,6 @@ pub fn describe(p: &Params) -> String {
     )
 }
 
-/// A JSON value of [`json_object`].
-pub enum Json<'a> {
-    /// A number ([`ke_friction::num::json`]: shortest round-trip, `null` if not finite).
-    Num(f64),
-    /// A whole number.
-    Int(u64),
-    /// A string (escaped).
-    Str(&'a str),
-    /// `null`.
-    Null,
-    /// Raw JSON text (a nested object or array).
-    Raw(String),
-}
-
-/// One JSON object on one line, keys in the given order.
-pub fn json_object(fields: &[(&str, Json)]) -> String {
-    let body: Vec<String> = fields
-        .iter()
-        .map(|(k, v)| {
-            let v = match v {
-                Json::Num(x) => ke_friction::num::json(*x),
-                Json::Int(n) => n.to_string(),
-                Json::Str(t) => json_string(t),
-                Json::Null => "null".to_string(),
-                Json::Raw(r) => r.clone(),
-            };
-            format!("{}:{v}", json_string(k))
-        })
-        .collect();
-    format!("{{{}}}", body.join(","))
-}
-
-/// A JSON array of numbers.
-pub fn json_numbers(xs: &[f64]) -> String {
-    let v: Vec<String> = xs.iter().map(|&x| ke_friction::num::json(x)).collect();
-    format!("[{}]", v.join(","))
-}
-
-fn json_string(t: &str) -> String {
-    let mut out = String::with_capacity(t.len() + 2);
-    out.push('"');
-    for c in t.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
-
 /// Where a point lies outside the range the paper covers (F* ≤ 0.1, h* ≥ 0).
 #[derive(Debug, Default)]
 pub struct PaperRange {

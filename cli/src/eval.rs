@@ -1,6 +1,7 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use crate::args::{describe, json_object, number, Failure, Json, ModelArgs, PaperRange};
+use crate::args::{describe, number, Failure, ModelArgs, PaperRange};
+use ke_friction::num::{json_object, Json};
 use ke_friction::Contact;
 
 /// Evaluate the model by direct integration at given h* or F*.

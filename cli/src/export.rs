@@ -2,13 +2,15 @@
 
 use crate::args::{check_writable, load_table, output_dir, Bar, Failure};
 use ke_friction::build::BuildError;
-use ke_friction::export::{arrays, write_npy_dir, write_npz};
+use ke_friction::export::{arrays, metadata, write_npy_dir, write_npz};
 use std::path::PathBuf;
 use std::time::Instant;
 
 /// Export a table to NumPy: its nodes (`psi`, `theta`, `f_star`), `mu` and
-/// `h_star` there, the build's integration grid (`grid_*`, recomputed) and
-/// the model constants (`beta`, `nu`, `eps_star`).
+/// `h_star` there, the build's integration grid (`grid_*`, recomputed), the
+/// model constants (`beta`, `nu`, `eps_star`), the table's own interpolant
+/// (`spline_ln_mu`, `knots_*`) and `metadata` (UTF-8 JSON bytes:
+/// `json.loads(z["metadata"].tobytes())`).
 #[derive(Debug, clap::Args)]
 #[command(group(clap::ArgGroup::new("output").required(true).args(["npz", "npy"])))]
 pub struct Args {
@@ -51,10 +53,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
         _ => Failure::other(e.to_string()),
     })?;
     bar.done();
+    let meta = metadata(table);
     let written = if want_dir {
-        write_npy_dir(path, &named)
+        write_npy_dir(path, &named, &meta)
     } else {
-        write_npz(path, &named)
+        write_npz(path, &named, &meta)
     };
     written.map_err(|e| Failure::input(format!("{flag}: cannot write {}: {e}", path.display())))?;
     let shape = |name: &str| {
@@ -67,7 +70,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     println!(
         "wrote {} ({} arrays: mu {}, grid_mu {}) in {:.1} s",
         path.display(),
-        named.len(),
+        named.len() + 1,
         shape("mu"),
         shape("grid_mu"),
         started.elapsed().as_secs_f64()

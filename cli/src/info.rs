@@ -1,7 +1,8 @@
 //! `kefric info`: what a table file holds.
 
-use crate::args::{json_numbers, json_object, load_table, print_worst, Failure, Json};
+use crate::args::{load_table, print_worst, Failure};
 use ke_friction::num::Shortest;
+use ke_friction::num::{json_numbers, json_object, Json};
 use ke_friction::Table;
 use std::path::PathBuf;
 

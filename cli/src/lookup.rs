@@ -1,8 +1,9 @@
 //! `kefric lookup`: μ, ∂μ/∂F* and h* from a table, for one point or for
 //! CSV rows streamed from stdin.
 
-use crate::args::{flag_of, json_object, load_table, parse_f64, Failure, Json, PaperRange, SiArgs};
+use crate::args::{flag_of, load_table, parse_f64, Failure, PaperRange, SiArgs};
 use ke_friction::num::Shortest;
+use ke_friction::num::{json_object, Json};
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
 use std::io::{BufRead, Write};

@@ -1,7 +1,8 @@
 //! `kefric params`: the dimensionless parameters of SI inputs.
 
-use crate::args::{json_object, Failure, Json, SiArgs};
+use crate::args::{Failure, SiArgs};
 use ke_friction::num::Shortest;
+use ke_friction::num::{json_object, Json};
 
 /// Convert SI quantities (moduli, Poisson's ratios, hardness, roughness,
 /// adhesion) to the model's ψ, θ, β, ν and ε*.

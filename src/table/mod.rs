@@ -333,6 +333,13 @@ impl Table {
         &self.layout.axes
     }
 
+    /// The spline coefficients of ln μ, shape (nψ + 2, nθ + 2, nF + 2) of
+    /// [`Table::axes`]' node counts, F* fastest (for the NumPy export).
+    #[cfg(feature = "builder")]
+    pub(crate) fn ln_mu_coefficients(&self) -> &[f64] {
+        &self.ln_mu
+    }
+
     /// The static friction coefficient μ(ψ, θ, F*).
     ///
     /// Arguments outside [`domain`](Self::domain) (or NaN) are errors:

@@ -11,7 +11,7 @@ fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-const NAMES: [&str; 16] = [
+const NAMES: [&str; 21] = [
     "beta",
     "eps_star",
     "f_star",
@@ -24,9 +24,14 @@ const NAMES: [&str; 16] = [
     "grid_q_star",
     "grid_theta",
     "h_star",
+    "knots_f_star",
+    "knots_psi",
+    "knots_theta",
+    "metadata",
     "mu",
     "nu",
     "psi",
+    "spline_ln_mu",
     "theta",
 ];
 
@@ -52,6 +57,25 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     assert_eq!(names, NAMES);
 
     let table = Table::embedded();
+    // The self-description: JSON bytes naming the model, fit and constants.
+    let meta: Array1<u8> = z.by_name("metadata").unwrap();
+    let meta: serde_json::Value = serde_json::from_slice(meta.as_slice().unwrap()).unwrap();
+    assert_eq!(meta["model"], "ke");
+    assert_eq!(meta["fit"], "consistent");
+    assert_eq!(meta["tolerance"].as_f64(), Some(table.info().tolerance));
+    assert_eq!(meta["max_rel_error"].as_f64(), Some(table.info().accuracy.max_rel));
+    assert_eq!(
+        meta["format_version"].as_u64(),
+        Some(table.info().format_version.into())
+    );
+    assert_eq!(meta["interpolant"]["quantity"], "ln(mu)");
+    let coords: Vec<&str> = (0..3)
+        .map(|k| meta["interpolant"]["axes"][k]["coordinate"].as_str().unwrap())
+        .collect();
+    assert_eq!(coords, ["ln(psi)", "sqrt(theta)", "ln(f_star)"]);
+    let spline: Array3<f64> = z.by_name("spline_ln_mu").unwrap();
+    let shape: Vec<usize> = table.axes().iter().map(|a| a.nodes + 2).collect();
+    assert_eq!(spline.shape(), shape.as_slice());
     let d = table.domain();
     let spec = &table.info().build;
     let [np, nt, nf] = spec.nodes;
