@@ -9,6 +9,7 @@ mod support;
 mod cli_eval;
 mod cli_export;
 mod cli_table;
+mod cli_tools;
 mod corrupted_tables;
 mod figures;
 mod hardening_build;

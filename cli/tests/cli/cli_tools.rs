@@ -1,0 +1,359 @@
+//! What a new user meets: the default build's safety, one voice for bad
+//! numbers, `info`, `params` and the SI flags, `lookup --csv`, and the
+//! hints of a failed build.
+use crate::common::TempDir;
+use crate::support::{assert_bad_input, kefric, stderr, SMALL_BUILD};
+use ke_friction::{Params, Physical, Table};
+use std::io::Write;
+use std::process::{Command, Stdio};
+
+fn kefric_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_kefric"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+fn kefric_stdin(args: &[&str], input: &[u8]) -> std::process::Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kefric"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let input = input.to_vec();
+    let writer = std::thread::spawn(move || {
+        let _ = stdin.write_all(&input);
+    });
+    let o = child.wait_with_output().unwrap();
+    writer.join().unwrap();
+    o
+}
+
+#[test]
+fn only_the_default_build_may_write_the_embedded_table() {
+    // A scratch copy of the repository's table folder.
+    let dir = TempDir::new("safe-build");
+    std::fs::create_dir(dir.join("tables")).unwrap();
+    let committed = dir.join("tables/default.kft");
+    std::fs::write(&committed, Table::embedded_bytes()).unwrap();
+    let o = kefric_in(
+        &dir.0,
+        &[
+            "build",
+            "--psi",
+            "1:2",
+            "--theta",
+            "0:0.003",
+            "--f-star",
+            "1e-4:1e-2",
+            "--nodes",
+            "12,8,12",
+            "--tolerance",
+            "1e-3",
+            "--quiet",
+        ],
+    );
+    assert_bad_input(&o, "--out");
+    assert!(stderr(&o).contains("tables/default.kft"), "{}", stderr(&o));
+    // Any single option off its default is enough.
+    let o = kefric_in(&dir.0, &["build", "--seed", "7", "--quiet"]);
+    assert_bad_input(&o, "--out");
+    assert_eq!(std::fs::read(&committed).unwrap(), Table::embedded_bytes());
+    assert_eq!(dir.names("tables"), ["default.kft"]);
+    // With --out the same build goes where it is told.
+    let mut args = SMALL_BUILD.to_vec();
+    args.extend(["--out", "small.kft"]);
+    let o = kefric_in(&dir.0, &args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(dir.join("small.kft").is_file());
+    assert_eq!(std::fs::read(&committed).unwrap(), Table::embedded_bytes());
+    // The default build alone writes tables/default.kft: the same bytes.
+    std::fs::write(&committed, b"stale").unwrap();
+    let o = kefric_in(&dir.0, &["build", "--quiet"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read(&committed).unwrap(), Table::embedded_bytes());
+}
+
+#[test]
+fn every_subcommand_words_a_bad_number_alike() {
+    let want = |flag: &str| format!("error: {flag}: 'abc' is not a number (e.g. 0.5 or 1e-3)\n");
+    let cases: [(&[&str], &str); 7] = [
+        (
+            &["eval", "--psi", "1", "--theta", "0.001", "--f-star", "abc"],
+            "--f-star",
+        ),
+        (
+            &["eval", "--psi", "abc", "--theta", "0.001", "--f-star", "0.01"],
+            "--psi",
+        ),
+        (
+            &["lookup", "--psi", "1", "--theta", "0.001", "--f-star", "abc"],
+            "--f-star",
+        ),
+        (&["build", "--beta", "abc"], "--beta"),
+        (&["build", "--psi", "abc:2"], "--psi"),
+        (&["params", "--e1", "abc"], "--e1"),
+        (&["plot", "table-error", "--theta", "abc", "--out", "x.png"], "--theta"),
+    ];
+    for (args, flag) in cases {
+        let o = kefric(args);
+        assert_bad_input(&o, flag);
+        assert_eq!(stderr(&o), want(flag), "{args:?}");
+    }
+    // Ranges say what is wrong, in shortest round-trip numbers.
+    let o = kefric(&["build", "--psi", "8:0.5", "--out", "x.kft"]);
+    assert_bad_input(&o, "--psi");
+    assert!(
+        stderr(&o).contains("--psi: lower end 8 must be below upper end 0.5"),
+        "{}",
+        stderr(&o)
+    );
+    let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.000001:-1:3"]);
+    assert_bad_input(&o, "--f-star");
+    assert!(stderr(&o).contains("-1 is out of range: must be > 0"), "{}", stderr(&o));
+    let o = kefric(&["lookup", "--psi", "1", "--theta", "0.001", "--f-star", "0.000001"]);
+    assert_bad_input(&o, "--f-star");
+    assert!(
+        stderr(&o).contains("f_star = 1e-6 is outside the range [1e-5, 0.1]"),
+        "{}",
+        stderr(&o)
+    );
+    let o = kefric(&[
+        "eval", "--fit", "bogus", "--psi", "1", "--theta", "0", "--f-star", "0.01",
+    ]);
+    assert_bad_input(&o, "--fit");
+    assert!(
+        stderr(&o).contains("'bogus' is not one of: consistent, as-printed"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn a_build_that_misses_its_tolerance_suggests_what_can_help() {
+    let dir = TempDir::new("hint");
+    let mut args: Vec<&str> = SMALL_BUILD.iter().map(|a| if *a == "1" { "1e-5" } else { a }).collect();
+    let out = dir.arg("t.kft");
+    args.extend(["--out", out.as_str()]);
+    let o = kefric(&args);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    let err = stderr(&o);
+    // Far above the f32 floor: more nodes (by the 4th-power rule), not f64.
+    assert!(err.contains("try nodes = "), "{err}");
+    assert!(!err.contains("f64"), "{err}");
+    let nodes: Vec<usize> = err
+        .split("try nodes = ")
+        .nth(1)
+        .unwrap()
+        .split(|c: char| !(c.is_ascii_digit() || c == ','))
+        .next()
+        .unwrap()
+        .trim_end_matches(',')
+        .split(',')
+        .map(|n| n.parse().unwrap())
+        .collect();
+    assert_eq!(nodes.len(), 3);
+    assert!(nodes.iter().all(|&n| n > 9), "{nodes:?}");
+}
+
+#[test]
+fn info_shows_what_a_table_holds() {
+    let o = kefric(&["info", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let info = Table::embedded().info();
+    assert_eq!(v["model"], "ke");
+    assert_eq!(v["fit"], "consistent");
+    assert_eq!(v["bytes"].as_u64(), Some(Table::embedded_bytes().len() as u64));
+    assert_eq!(v["max_rel_error"].as_f64(), Some(info.accuracy.max_rel));
+    assert_eq!(v["tolerance"].as_f64(), Some(info.tolerance));
+    assert_eq!(v["psi"][0].as_f64(), Some(0.5));
+    assert_eq!(v["psi"][1].as_f64(), Some(8.0));
+    assert_eq!(v["nodes"], serde_json::json!([33, 33, 33]));
+    assert_eq!(v["precision"], "f32");
+    let bytes = Table::embedded_bytes();
+    let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap());
+    assert_eq!(v["crc32"], format!("{stored:08x}"));
+    assert_eq!(stored, crc32fast::hash(&bytes[..bytes.len() - 4]));
+    let o = kefric(&["info"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("model:      ke, fit = consistent"), "{text}");
+    assert!(
+        text.contains("domain:     psi [0.5, 8], theta [0, 0.01], F* [1e-5, 0.1]"),
+        "{text}"
+    );
+    let o = kefric(&["info", "--table", "/no/such/file.kft"]);
+    assert_bad_input(&o, "--table");
+}
+
+/// Steel on steel (the README's worked example).
+const SI: [&str; 20] = [
+    "--e1",
+    "200e9",
+    "--nu1",
+    "0.3",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.3",
+    "--hardness",
+    "2e9",
+    "--sigma",
+    "100e-9",
+    "--radius",
+    "10e-6",
+    "--density",
+    "4e10",
+    "--delta-gamma",
+    "0.3",
+    "--epsilon",
+    "0.4e-9",
+];
+
+#[test]
+fn params_and_the_si_flags_give_the_librarys_numbers() {
+    let phys = Physical {
+        e1: 200e9,
+        nu1: 0.3,
+        e2: 200e9,
+        nu2: 0.3,
+        hardness: 2e9,
+        sigma: 100e-9,
+        radius: 10e-6,
+        density: 4e10,
+        delta_gamma: 0.3,
+        epsilon: 0.4e-9,
+    };
+    let p = Params::from_physical(&phys).unwrap();
+    let o = kefric(&[&["params", "--json"][..], &SI].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    for (key, want) in [
+        ("psi", p.psi),
+        ("theta", p.theta),
+        ("beta", p.beta),
+        ("nu", p.nu),
+        ("eps_star", p.eps_star),
+    ] {
+        assert_eq!(v[key].as_f64(), Some(want), "{key}");
+    }
+    // eval with the SI flags is eval at those ψ, θ, β, ν, ε*.
+    let o = kefric(&[&["eval", "--json", "--f-star", "0.01"][..], &SI].concat());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let model = ke_friction::Model::new(p).unwrap();
+    assert_eq!(v["psi"].as_f64(), Some(p.psi));
+    assert!((v["mu"].as_f64().unwrap() / model.at_f_star(0.01).unwrap().mu.unwrap() - 1.0).abs() < 1e-15);
+    // lookup: the SI inputs' β, ν, ε* are the default table's.
+    let o = kefric(&[&["lookup", "--json", "--f-star", "0.01"][..], &SI].concat());
+    // ψ = 5.66 and θ = 0.0015 lie in the table.
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(
+        v["mu"].as_f64(),
+        Some(Table::embedded().mu(p.psi, p.theta, 0.01).unwrap())
+    );
+    // Errors name the flag: one missing, an unphysical one, a mix.
+    let o = kefric(&["params", "--e1", "70e9"]);
+    assert_bad_input(&o, "--nu1");
+    let mut bad = SI.to_vec();
+    bad[9] = "-1e9";
+    let o = kefric(&[&["params"][..], &bad].concat());
+    assert_bad_input(&o, "--hardness");
+    let mut low = SI.to_vec();
+    low[15] = "1e9";
+    let o = kefric(&[&["params"][..], &low].concat());
+    assert_bad_input(&o, "--density");
+    let o = kefric(&[&["eval", "--psi", "1", "--f-star", "0.01"][..], &SI].concat());
+    assert_bad_input(&o, "--psi");
+    let mut other = SI.to_vec();
+    other[15] = "5e10";
+    let o = kefric(&[&["lookup", "--f-star", "0.01"][..], &other].concat());
+    assert_bad_input(&o, "--density");
+}
+
+#[test]
+fn lookup_csv_streams_rows_and_stops_at_a_bad_one() {
+    let table = Table::embedded();
+    let input = "psi,theta,f_star\n1,0.001,0.01\n\n2,0,1e-4\n";
+    let o = kefric_stdin(&["lookup", "--csv"], input.as_bytes());
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], "psi,theta,f_star,mu,dmu_df_star,h_star");
+    assert_eq!(lines.len(), 3, "{out}");
+    for (line, (p, t, f)) in lines[1..].iter().zip([(1.0, 0.001, 0.01), (2.0, 0.0, 1e-4)]) {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        let (mu, slope) = table.mu_with_slope(p, t, f).unwrap();
+        assert_eq!(v, [p, t, f, mu, slope, table.h_star(p, t, f).unwrap()], "{line}");
+    }
+    // Without a header, the same rows.
+    let o = kefric_stdin(&["lookup", "--csv"], b"1,0.001,0.01\n");
+    assert_eq!(String::from_utf8(o.stdout).unwrap().lines().nth(1), Some(lines[1]));
+    // A bad row: its line number, exit 2, the rows before it whole, nothing after.
+    for (input, needle) in [
+        (
+            "1,0.001,0.01\n2,abc,0.01\n3,0,0.01\n",
+            "line 2: theta: 'abc' is not a number",
+        ),
+        ("1,0.001,0.01\n2,0,0.01,4\n", "line 2: expected 3 fields"),
+        (
+            "1,0.001,0.01\n9,0,0.01\n",
+            "line 2: psi = 9 is outside the range [0.5, 8]",
+        ),
+    ] {
+        let o = kefric_stdin(&["lookup", "--csv"], input.as_bytes());
+        assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+        assert!(stderr(&o).contains(needle), "{}", stderr(&o));
+        assert_eq!(stderr(&o).lines().count(), 1);
+        let out = String::from_utf8(o.stdout).unwrap();
+        assert!(out.ends_with('\n'), "{out:?}");
+        assert_eq!(out.lines().count(), 2, "{out}");
+        assert_eq!(out.lines().nth(1), Some(lines[1]));
+    }
+    let o = kefric(&["lookup", "--csv", "--psi", "1"]);
+    assert_bad_input(&o, "--csv");
+}
+
+#[test]
+fn help_states_defaults_and_ranges() {
+    let help = |args: &[&str]| String::from_utf8(kefric(args).stdout).unwrap();
+    let build = help(&["build", "--help"]);
+    for needle in [
+        "[default: 33,33,33]",
+        "[default: 0.0001]",
+        "[default: 10000]",
+        "[default: 2]",
+        "[default: -1:6:141]",
+        "[default: 0.5:8]",
+        "[default: 1e-5:0.1]",
+    ] {
+        assert!(build.contains(needle), "build --help lacks {needle}");
+    }
+    let eval = help(&["eval", "--help"]);
+    for needle in [
+        "[0.001, 1000]",
+        "(0.01928, 100]",
+        "[default: 0.04]",
+        "--delta-gamma",
+        "J/m²",
+    ] {
+        assert!(eval.contains(needle), "eval --help lacks {needle}");
+    }
+    for sub in ["build", "verify", "export", "lookup", "eval", "info", "params"] {
+        let text = help(&[sub, "--help"]);
+        // Every flag has a description.
+        for line in text.lines().filter(|l| l.trim_start().starts_with("--")) {
+            let described = line.split("  ").filter(|s| !s.trim().is_empty()).count() > 1;
+            let next_line_describes = text.contains(&format!("{line}\n          "));
+            assert!(
+                described || next_line_describes,
+                "{sub} --help: {line:?} has no description"
+            );
+        }
+    }
+}
