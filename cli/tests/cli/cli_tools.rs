@@ -357,3 +357,67 @@ fn help_states_defaults_and_ranges() {
         }
     }
 }
+
+/// Flags the README mentions that belong to other programs (cargo, pip,
+/// farm-bench, the compilers), not to kefric.
+const NOT_KEFRIC: &[&str] = &[
+    "--release",
+    "--path",
+    "--profile",
+    "--bench",
+    "--benches",
+    "--vs",
+    "--root",
+    "--target-dir",
+    "--locked",
+    "--lib",
+    "--all-features",
+    "--no-deps",
+    "--features",
+    "--example",
+    "--crate-type",
+    "--print",
+    "--upgrade",
+];
+
+#[test]
+fn every_flag_in_the_readme_is_in_some_help() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    let mut help = String::new();
+    let subs: &[&[&str]] = &[
+        &["eval"],
+        &["build"],
+        &["verify"],
+        &["lookup"],
+        &["info"],
+        &["params"],
+        &["export"],
+        &["validate"],
+        &["plot", "fig3"],
+        &["plot", "curve"],
+        &["plot", "table-error"],
+        &["plot", "all"],
+    ];
+    for sub in subs {
+        let o = kefric(&[*sub, &["--help"][..]].concat());
+        assert!(o.status.success(), "{sub:?} --help");
+        help.push_str(&String::from_utf8(o.stdout).unwrap());
+    }
+    let mut missing = vec![];
+    for (i, _) in readme.match_indices("--") {
+        let flag: String = readme[i + 2..]
+            .chars()
+            .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '-')
+            .collect();
+        let flag = format!("--{}", flag.trim_end_matches('-'));
+        let starts_with_letter = flag.chars().nth(2).is_some_and(|c| c.is_ascii_lowercase());
+        if !starts_with_letter || NOT_KEFRIC.contains(&flag.as_str()) {
+            continue;
+        }
+        let in_help = help.lines().any(|l| l.split([' ', ',', '=']).any(|w| w == flag));
+        if !in_help && !missing.contains(&flag) {
+            missing.push(flag);
+        }
+    }
+    assert!(missing.is_empty(), "README flags that no --help lists: {missing:?}");
+}
