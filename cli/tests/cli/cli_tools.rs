@@ -175,6 +175,9 @@ fn info_shows_what_a_table_holds() {
     assert_eq!(v["psi"][1].as_f64(), Some(8.0));
     assert_eq!(v["nodes"], serde_json::json!([33, 33, 33]));
     assert_eq!(v["precision"], "f32");
+    // The slope's error, measured now: positive, and far below 1.
+    let slope = v["slope_max_rel_error"].as_f64().unwrap();
+    assert!(slope > 0.0 && slope < 1e-2, "{slope}");
     let bytes = Table::embedded_bytes();
     let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap());
     assert_eq!(v["crc32"], format!("{stored:08x}"));
