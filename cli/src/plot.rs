@@ -14,6 +14,8 @@ pub struct Args {
 }
 
 #[derive(Debug, clap::Subcommand)]
+// Parsed once per run: the size of the curve's flags does not matter.
+#[allow(clippy::large_enum_variant)]
 enum What {
     /// Fig. 3: Fs*/P* against F* for ψ = 0.5, 1, 2, 4, 8 (θ = 0.003).
     Fig3(Out),

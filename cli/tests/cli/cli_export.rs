@@ -206,3 +206,22 @@ fn export_bad_input_exits_2_with_one_line() {
     // Nothing was written.
     assert_eq!(tmp.names(""), ["corrupt.kft", "file", "truncated.kft"]);
 }
+
+#[test]
+fn a_ceb_tables_export_says_so() {
+    let tmp = TempDir::new("ceb");
+    let table = tmp.join("ceb.kft");
+    let mut args = crate::support::SMALL_BUILD.to_vec();
+    args.extend(["--model", "ceb", "--fit", "as-printed", "--out", s(&table)]);
+    let o = kefric(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let npz = tmp.join("ceb.npz");
+    let o = kefric(&["export", "--quiet", "--table", s(&table), "--npz", s(&npz)]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut z = NpzReader::new(std::fs::File::open(&npz).unwrap()).unwrap();
+    let meta: Array1<u8> = z.by_name("metadata").unwrap();
+    let meta: serde_json::Value = serde_json::from_slice(meta.as_slice().unwrap()).unwrap();
+    assert_eq!(meta["model"], "ceb");
+    assert_eq!(meta["fit"], "as-printed");
+    assert_eq!(meta["tolerance"].as_f64(), Some(1.0));
+}
