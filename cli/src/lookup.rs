@@ -99,9 +99,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         if args.si.any() {
             println!("psi = {}, theta = {}", Shortest(psi), Shortest(theta));
         }
-        println!("mu = {:.8e}", r.mu);
-        println!("dmu/dF* = {:.8e}", r.slope);
-        println!("h* = {:.6}", r.h_star);
+        println!("mu = {}", Shortest(r.mu));
+        println!("dmu/dF* = {}", Shortest(r.slope));
+        println!("h* = {}", Shortest(r.h_star));
     }
     let mut paper = PaperRange::default();
     paper.note(f_star, r.h_star);
