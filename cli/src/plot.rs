@@ -1,12 +1,14 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map. PNG or SVG by the output file's extension.
 
-use crate::args::{check_writable, flag_of, load_table, output_dir, parse_f64, Failure, ModelArgs};
+use crate::args::{check_writable, flag_of, load_table, output_dir, parse_f64, whole, Failure, ModelArgs};
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
 
-/// Draw the paper's figures, a curve, or a table's error map.
+/// Draw the paper's figures, a curve, or a table's error map, as PNG or SVG
+/// (by the output's extension). Images are 1000 × 750 pixels times
+/// --scale (default 2: 2000 × 1500), fonts, lines and markers scaled alike.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     #[command(subcommand)]
@@ -29,22 +31,41 @@ enum What {
     Curve(CurveArgs),
     /// A heat map of a table's relative error of μ over (ψ, F*) at one θ, against direct integration.
     TableError(TableErrorArgs),
-    /// Write fig3.png … fig6.png into a directory.
+    /// Write fig3.png … fig6.png (PNG) into a directory.
     All(AllArgs),
 }
 
 #[derive(Debug, clap::Args)]
 struct Out {
-    /// Output file: .png or .svg.
+    /// Output file; its extension, .png or .svg (any case), picks the format. Its folder must exist.
     #[arg(long, value_name = "FILE")]
     out: PathBuf,
+    #[command(flatten)]
+    scale: Scale,
+}
+
+#[derive(Debug, clap::Args)]
+struct Scale {
+    /// Image size: 1000 × 750 pixels times N, with fonts, lines and markers scaled alike; N is 1, 2 or 3.
+    #[arg(long = "scale", value_name = "N", default_value = "2", allow_hyphen_values = true)]
+    text: String,
+}
+
+impl Scale {
+    /// The scale, checked: 1 … MAX_SCALE.
+    fn get(&self) -> Result<u32, Failure> {
+        let n = whole("--scale", &self.text)?;
+        let n = u32::try_from(n).unwrap_or(u32::MAX);
+        figures::size_at(n).map_err(|e| Failure::input(format!("--scale: {e}")))?;
+        Ok(n)
+    }
 }
 
 #[derive(Debug, clap::Args)]
 struct CurveArgs {
     #[command(flatten)]
     model: ModelArgs,
-    /// Overlay a table's lookup: the embedded default table, or the file PATH.
+    /// Overlay a table's lookup: `--table` alone for the embedded default table, `--table PATH` for a file. The table must hold --psi and --theta and have been built with the same --beta, --nu, --eps-star, --fit and --model. Without it, direct integration only.
     #[arg(long, value_name = "PATH", num_args = 0..=1)]
     table: Option<Option<PathBuf>>,
     #[command(flatten)]
@@ -53,10 +74,10 @@ struct CurveArgs {
 
 #[derive(Debug, clap::Args)]
 struct TableErrorArgs {
-    /// Table file (default: the embedded default table).
+    /// Table file [default: the embedded default table].
     #[arg(long, value_name = "PATH")]
     table: Option<PathBuf>,
-    /// Adhesion parameter θ of the map.
+    /// Adhesion parameter θ of the map; must lie in the table's θ range (the embedded table's: 0 to 0.01). The map covers the table's whole ψ and F* ranges (embedded: ψ 0.5 to 8, F* 1e-5 to 0.1) in 64 × 96 cells.
     #[arg(long, value_parser = parse_f64, default_value_t = figures::PAPER_THETA, allow_hyphen_values = true)]
     theta: f64,
     #[command(flatten)]
@@ -65,9 +86,11 @@ struct TableErrorArgs {
 
 #[derive(Debug, clap::Args)]
 struct AllArgs {
-    /// Directory for fig3.png … fig6.png (created, with its parents, if missing).
+    /// Directory for fig3.png … fig6.png (created, with its parents, if missing; existing files are replaced).
     #[arg(long, value_name = "DIR")]
     out_dir: PathBuf,
+    #[command(flatten)]
+    scale: Scale,
 }
 
 /// Cells of the error map along ψ and F*.
@@ -76,30 +99,31 @@ const MAP_CELLS: (usize, usize) = (64, 96);
 /// Runs `kefric plot`.
 pub fn run(args: Args) -> Result<(), Failure> {
     match args.what {
-        What::Fig3(o) => figure(Figure::Fig3, &o.out),
-        What::Fig4(o) => figure(Figure::Fig4, &o.out),
-        What::Fig5(o) => figure(Figure::Fig5, &o.out),
-        What::Fig6(o) => figure(Figure::Fig6, &o.out),
+        What::Fig3(o) => figure(Figure::Fig3, &o),
+        What::Fig4(o) => figure(Figure::Fig4, &o),
+        What::Fig5(o) => figure(Figure::Fig5, &o),
+        What::Fig6(o) => figure(Figure::Fig6, &o),
         What::Curve(a) => {
-            let out = output(&a.out.out)?;
+            let (out, scale) = output(&a.out)?;
             let model = a.model.model()?;
             let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
             let page = figures::curve_page(&model, table.as_deref()).map_err(failure)?;
-            page.save(out).map_err(failure)?;
+            page.save_scaled(out, scale).map_err(failure)?;
             wrote(out);
             Ok(())
         }
         What::TableError(a) => {
-            let out = output(&a.out.out)?;
+            let (out, scale) = output(&a.out)?;
             let table = load_table(a.table.as_deref())?;
             let map = figures::table_error(&table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
-            map.save(out).map_err(failure)?;
+            map.save_scaled(out, scale).map_err(failure)?;
             wrote(out);
             Ok(())
         }
         What::All(a) => {
+            let scale = a.scale.get()?;
             output_dir("--out-dir", &a.out_dir)?;
-            for path in figures::save_all(&a.out_dir).map_err(failure)? {
+            for path in figures::save_all(&a.out_dir, scale).map_err(failure)? {
                 wrote(&path);
             }
             Ok(())
@@ -107,18 +131,20 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
 }
 
-fn figure(fig: Figure, out: &Path) -> Result<(), Failure> {
-    let out = output(out)?;
-    fig.page().and_then(|p| p.save(out)).map_err(failure)?;
+fn figure(fig: Figure, o: &Out) -> Result<(), Failure> {
+    let (out, scale) = output(o)?;
+    fig.page().and_then(|p| p.save_scaled(out, scale)).map_err(failure)?;
     wrote(out);
     Ok(())
 }
 
-/// Checks `--out` before any work: a known extension, a writable place.
-fn output(path: &Path) -> Result<&Path, Failure> {
-    Format::from_path(path).map_err(|e| Failure::input(format!("--out: {e}")))?;
-    check_writable("--out", path)?;
-    Ok(path)
+/// Checks `--out` and `--scale` before any work: a known extension, a
+/// writable place, a valid scale.
+fn output(o: &Out) -> Result<(&Path, u32), Failure> {
+    let scale = o.scale.get()?;
+    Format::from_path(&o.out).map_err(|e| Failure::input(format!("--out: {e}")))?;
+    check_writable("--out", &o.out)?;
+    Ok((&o.out, scale))
 }
 
 fn wrote(path: &Path) {
@@ -129,6 +155,7 @@ fn wrote(path: &Path) {
 fn failure(e: FigureError) -> Failure {
     match &e {
         FigureError::Format { .. } => Failure::input(format!("--out: {e}")),
+        FigureError::Scale { .. } => Failure::input(format!("--scale: {e}")),
         FigureError::Params(p) => Failure::input(format!("{}: {e}", flag_of(p.name))),
         FigureError::Lookup(LookupError::OutOfDomain { name, .. }) => Failure::input(format!("{}: {e}", flag_of(name))),
         FigureError::TableMismatch { .. } => Failure::input(format!("--table: {e}")),

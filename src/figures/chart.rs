@@ -19,6 +19,49 @@ pub const PALETTE: [(u8, u8, u8); 8] = [
 /// The palette index of black, for legend entries that explain a line style.
 pub const BLACK_INDEX: usize = 7;
 
+/// How a line is stroked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineStyle {
+    /// A continuous line.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Short dashes, close together.
+    Dotted,
+}
+
+/// The shape of the markers along a line (filled, in the line's colour).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shape {
+    /// ●
+    Circle,
+    /// ■
+    Square,
+    /// ▲
+    Triangle,
+    /// ◆
+    Diamond,
+    /// ▼
+    TriangleDown,
+}
+
+/// Markers along a line, so that lines that run together stay apart: they
+/// sit on a grid of [`Markers::PER_AXIS`] positions across the whole x axis,
+/// shifted by `phase` of a grid step, so that lines with different phases
+/// never put markers at the same x.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Markers {
+    /// The shape.
+    pub shape: Shape,
+    /// Shift of the grid, in grid steps, in [0, 1).
+    pub phase: f64,
+}
+
+impl Markers {
+    /// Marker positions across the width of the x axis.
+    pub const PER_AXIS: usize = 12;
+}
+
 /// One line of a chart, in data units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Series {
@@ -28,8 +71,23 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Index into [`PALETTE`].
     pub color: usize,
-    /// Dashed instead of solid.
-    pub dashed: bool,
+    /// Solid, dashed or dotted.
+    pub style: LineStyle,
+    /// Markers along the line (and on its legend entry), if any.
+    pub markers: Option<Markers>,
+}
+
+impl Series {
+    /// A solid line without markers.
+    pub fn line(label: Option<String>, points: Vec<(f64, f64)>, color: usize) -> Series {
+        Series {
+            label,
+            points,
+            color,
+            style: LineStyle::Solid,
+            markers: None,
+        }
+    }
 }
 
 /// An axis of a chart (a plotting axis; [`crate::spline::Axis`] is a table's).
@@ -78,6 +136,13 @@ pub struct Page {
     pub top: Chart,
     /// An optional lower panel (2/5 of the height).
     pub bottom: Option<Chart>,
+}
+
+impl Page {
+    /// A page of one chart.
+    pub fn single(top: Chart) -> Page {
+        Page { top, bottom: None }
+    }
 }
 
 /// The table's relative error of μ over (ψ, F*) at one θ, against direct

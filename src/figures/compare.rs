@@ -2,7 +2,8 @@
 //! the lookup overlaid, and a table's error map.
 
 use super::chart::{
-    extent, f_axis, log_range, nice_step, num, pow10, zero_to, Chart, ChartAxis, Corner, ErrorMap, Page, Series,
+    extent, f_axis, log_range, nice_step, num, pow10, zero_to, Chart, ChartAxis, Corner, ErrorMap, LineStyle, Page,
+    Series,
 };
 use super::paper::mu_points;
 use super::FigureError;
@@ -33,12 +34,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureEr
             params.psi, params.theta
         )));
     }
-    let mut series = vec![Series {
-        label: Some(format!("{name}, direct integration")),
-        points: direct,
-        color: 0,
-        dashed: false,
-    }];
+    let mut series = vec![Series::line(Some(format!("{name}, direct integration")), direct, 0)];
     // The lower panel's y axis and curve (its x axis is the upper one's).
     let mut bottom = None;
     if let Some(table) = table {
@@ -68,10 +64,8 @@ pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureEr
             )));
         }
         series.push(Series {
-            label: Some("table lookup".into()),
-            points: looked,
-            color: 1,
-            dashed: true,
+            style: LineStyle::Dashed,
+            ..Series::line(Some("table lookup".into()), looked, 1)
         });
         // Drawn in units of 10^k so that the tick labels stay short.
         let worst = rel.iter().map(|p| p.1.abs()).fold(0.0, f64::max).max(1e-15);
@@ -86,12 +80,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureEr
                 range: (-span, span),
                 ticks: None,
             },
-            Series {
-                label: None,
-                points: rel.iter().map(|&(f, r)| (f, r / unit)).collect(),
-                color: 1,
-                dashed: false,
-            },
+            Series::line(None, rel.iter().map(|&(f, r)| (f, r / unit)).collect(), 1),
         ));
     }
     let (_, (ylo, yhi)) = extent(&series);

@@ -24,7 +24,7 @@ mod compare;
 mod paper;
 mod render;
 
-pub use chart::{Chart, ChartAxis, Corner, ErrorMap, Page, Series, BLACK_INDEX, PALETTE};
+pub use chart::{Chart, ChartAxis, Corner, ErrorMap, LineStyle, Markers, Page, Series, Shape, BLACK_INDEX, PALETTE};
 pub use compare::{curve_page, table_error};
 pub use paper::paper_sweep;
 
@@ -32,8 +32,27 @@ use crate::build::BuildError;
 use crate::{EvalError, LookupError, ParamError};
 use std::path::{Path, PathBuf};
 
-/// Width and height of every image, in pixels (readable at 100%).
-pub const SIZE: (u32, u32) = (1000, 750);
+/// Width and height of an image at scale 1, in pixels: the size every
+/// length (fonts, lines, markers, margins) is designed for.
+pub const BASE_SIZE: (u32, u32) = (1000, 750);
+/// The scale [`Page::save`] and [`ErrorMap::save`] draw at.
+pub const DEFAULT_SCALE: u32 = 2;
+/// The largest scale: 3000 × 2250 pixels.
+pub const MAX_SCALE: u32 = 3;
+/// Width and height of an image at the default scale, in pixels:
+/// [`BASE_SIZE`] × [`DEFAULT_SCALE`], 2000 × 1500.
+pub const SIZE: (u32, u32) = (BASE_SIZE.0 * DEFAULT_SCALE, BASE_SIZE.1 * DEFAULT_SCALE);
+
+/// The pixel size of an image at `scale` (1 to [`MAX_SCALE`]): every
+/// length of [`BASE_SIZE`]'s design times `scale`, so fonts, lines and
+/// markers grow with the canvas.
+pub fn size_at(scale: u32) -> Result<(u32, u32), FigureError> {
+    if (1..=MAX_SCALE).contains(&scale) {
+        Ok((BASE_SIZE.0 * scale, BASE_SIZE.1 * scale))
+    } else {
+        Err(FigureError::Scale { scale })
+    }
+}
 /// Separations sampled per curve over 0 ≤ h* ≤ 3.
 pub const H_SAMPLES: usize = 200;
 /// θ of the paper's figures 3–5.
@@ -74,6 +93,12 @@ pub enum FigureError {
     /// Direct integration at a point of the table failed.
     #[error(transparent)]
     Direct(#[from] BuildError),
+    /// The scale is not one of 1 … [`MAX_SCALE`].
+    #[error("scale = {scale} is out of range: must be 1, 2 or 3 (1000 × 750 pixels times the scale)")]
+    Scale {
+        /// The scale asked for.
+        scale: u32,
+    },
     /// The drawing or the writing of the file failed.
     #[error("cannot draw {path}: {message}")]
     Draw {
@@ -140,25 +165,23 @@ impl Figure {
 
     /// The figure as data.
     pub fn page(self) -> Result<Page, FigureError> {
-        Ok(Page {
-            top: match self {
-                Figure::Fig3 => paper::fig3()?,
-                Figure::Fig4 => paper::fig4()?,
-                Figure::Fig5 => paper::fig5()?,
-                Figure::Fig6 => paper::fig6()?,
-            },
-            bottom: None,
+        Ok(match self {
+            Figure::Fig3 => Page::single(paper::fig3()?),
+            Figure::Fig4 => Page::single(paper::fig4()?),
+            Figure::Fig5 => paper::fig5()?,
+            Figure::Fig6 => Page::single(paper::fig6()?),
         })
     }
 }
 
-/// Writes fig3.png … fig6.png into `dir` (which must exist); returns the
-/// paths written.
-pub fn save_all(dir: &Path) -> Result<Vec<PathBuf>, FigureError> {
+/// Writes fig3.png … fig6.png into `dir` (which must exist) at `scale`
+/// (see [`size_at`]); returns the paths written.
+pub fn save_all(dir: &Path, scale: u32) -> Result<Vec<PathBuf>, FigureError> {
+    size_at(scale)?;
     let mut out = Vec::new();
     for fig in Figure::ALL {
         let path = dir.join(format!("{}.png", fig.name()));
-        fig.page()?.save(&path)?;
+        fig.page()?.save_scaled(&path, scale)?;
         out.push(path);
     }
     Ok(out)
@@ -174,5 +197,14 @@ mod tests {
         assert_eq!(Format::from_path("a/b.svg".as_ref()), Ok(Format::Svg));
         assert!(Format::from_path("a.jpg".as_ref()).is_err());
         assert!(Format::from_path("a".as_ref()).is_err());
+    }
+
+    #[test]
+    fn sizes_are_the_base_size_times_the_scale() {
+        assert_eq!(SIZE, (2000, 1500));
+        assert_eq!(size_at(1), Ok((1000, 750)));
+        assert_eq!(size_at(3), Ok((3000, 2250)));
+        assert_eq!(size_at(0), Err(FigureError::Scale { scale: 0 }));
+        assert_eq!(size_at(4), Err(FigureError::Scale { scale: 4 }));
     }
 }

@@ -1,6 +1,9 @@
 //! The paper's figures 3–6 as data.
 
-use super::chart::{extent, f_axis, log_range, num, zero_to, Chart, ChartAxis, Corner, Series, BLACK_INDEX};
+use super::chart::{
+    extent, f_axis, log_range, num, zero_to, Chart, ChartAxis, Corner, LineStyle, Markers, Page, Series, Shape,
+    BLACK_INDEX,
+};
 use super::{FigureError, H_SAMPLES, PAPER_THETA};
 use crate::paper::fits::h_points;
 use crate::paper::PAPER_F_STAR_MAX;
@@ -35,6 +38,27 @@ fn psi_label(psi: f64) -> String {
     format!("ψ = {}", num(psi))
 }
 
+/// The ψ of Figs. 3 and 4; Fig. 5 uses the first three. Each keeps its
+/// colour and marker shape in every figure.
+const PSIS: [f64; 5] = [0.5, 1.0, 2.0, 4.0, 8.0];
+/// The marker shape of `PSIS[k]` (Figs. 3–5) and of the k-th θ (Fig. 6).
+const SHAPES: [Shape; 5] = [
+    Shape::Circle,
+    Shape::Square,
+    Shape::Triangle,
+    Shape::Diamond,
+    Shape::TriangleDown,
+];
+
+/// Markers of shape `k`, the `i`-th of `of` lines whose markers must not
+/// sit at the same x.
+fn markers(k: usize, i: usize, of: usize) -> Option<Markers> {
+    Some(Markers {
+        shape: SHAPES[k % SHAPES.len()],
+        phase: i as f64 / of as f64,
+    })
+}
+
 /// A chart against F* (log) with a linear y axis from zero, its legend
 /// upper right.
 fn linear_chart(title: &str, y_title: &str, series: Vec<Series>) -> Chart {
@@ -56,13 +80,15 @@ fn linear_chart(title: &str, y_title: &str, series: Vec<Series>) -> Chart {
 /// One curve `(F*, y)` per ψ = 0.5, 1, 2, 4, 8 at θ = 0.003 (Figs. 3 and 4).
 fn psi_series(y: impl Fn(&Contact) -> f64) -> Result<Vec<Series>, FigureError> {
     let mut series = Vec::new();
-    for (k, psi) in [0.5, 1.0, 2.0, 4.0, 8.0].into_iter().enumerate() {
+    for (k, psi) in PSIS.into_iter().enumerate() {
         let m = model(psi, PAPER_THETA, Kind::KogutEtsion)?;
         series.push(Series {
-            label: Some(psi_label(psi)),
-            points: paper_sweep(&m)?.iter().map(|c| (c.f_star, y(c))).collect(),
-            color: k,
-            dashed: false,
+            markers: markers(k, k, PSIS.len()),
+            ..Series::line(
+                Some(psi_label(psi)),
+                paper_sweep(&m)?.iter().map(|c| (c.f_star, y(c))).collect(),
+                k,
+            )
         });
     }
     Ok(series)
@@ -103,57 +129,85 @@ pub(super) fn mu_points(model: &Model) -> Result<Vec<(f64, f64)>, FigureError> {
         .collect())
 }
 
-/// Legend entries that explain line styles.
-fn style_entry(label: &str, dashed: bool) -> Series {
+/// A legend entry that explains a line style (black, no points).
+fn style_entry(label: &str, style: LineStyle) -> Series {
     Series {
-        label: Some(label.into()),
-        points: Vec::new(),
-        color: BLACK_INDEX,
-        dashed,
+        style,
+        ..Series::line(Some(label.into()), Vec::new(), BLACK_INDEX)
     }
 }
 
 /// Fig. 5: μ against F*, ψ = 0.5, 1, 2, θ = 0.003; Kogut–Etsion solid,
-/// CEB-type (MODEL.md §8) dashed.
-pub(super) fn fig5() -> Result<Chart, FigureError> {
+/// CEB-type (MODEL.md §8) dashed; colour and marker shape by ψ. The upper
+/// panel has the paper's linear μ axis; the lower one shows the same lines
+/// on a logarithmic μ axis, where the CEB-type line of ψ = 2 (μ ≈ 0.002–0.02,
+/// flat against zero above) is readable. The CEB-type line of ψ = 1 runs
+/// along the Kogut–Etsion line of ψ = 2: their markers (■ and ▲) tell them
+/// apart.
+pub(super) fn fig5() -> Result<Page, FigureError> {
     let mut series = Vec::new();
-    for (k, psi) in [0.5, 1.0, 2.0].into_iter().enumerate() {
-        for kind in [Kind::KogutEtsion, Kind::CebType] {
+    let psis = &PSIS[..3];
+    for (k, &psi) in psis.iter().enumerate() {
+        for (j, kind) in [Kind::KogutEtsion, Kind::CebType].into_iter().enumerate() {
             let m = model(psi, PAPER_THETA, kind)?;
             series.push(Series {
                 label: (kind == Kind::KogutEtsion).then(|| psi_label(psi)),
                 points: mu_points(&m)?,
                 color: k,
-                dashed: kind == Kind::CebType,
+                style: if j == 0 { LineStyle::Solid } else { LineStyle::Dashed },
+                // Six lines, six phases: no two markers at the same F*.
+                markers: markers(k, 2 * k + j, 2 * psis.len()),
             });
         }
     }
-    series.push(style_entry("Kogut–Etsion", false));
-    series.push(style_entry("CEB-type (approx.)", true));
-    Ok(linear_chart(
-        "Fig. 5: static friction coefficient μ, θ = 0.003",
-        "μ",
-        series,
-    ))
+    let (_, (ylo, yhi)) = extent(&series);
+    series.push(style_entry("Kogut–Etsion", LineStyle::Solid));
+    series.push(style_entry("CEB-type (approx.)", LineStyle::Dashed));
+    let mut top = linear_chart("Fig. 5: static friction coefficient μ, θ = 0.003", "μ", series);
+    let mut bottom = Chart {
+        title: None,
+        x: top.x.clone(),
+        y: ChartAxis {
+            title: "μ (log scale)".into(),
+            log: true,
+            range: log_range(ylo, yhi),
+            ticks: None,
+        },
+        series: top.series.iter().filter(|s| !s.points.is_empty()).cloned().collect(),
+        legend: Corner::UpperRight,
+    };
+    for s in &mut bottom.series {
+        s.label = None;
+    }
+    // One F* title, under the lower panel.
+    top.x.title.clear();
+    Ok(Page {
+        top,
+        bottom: Some(bottom),
+    })
 }
 
 /// Fig. 6: μ against F*, ψ = 0.5 (solid) and 2 (dashed), θ = 1e-4, 1e-3,
-/// 3e-3 (colours).
+/// 3e-3 (colour and marker shape). At ψ = 2 the three θ give the same μ
+/// to within the line width (the paper's point: adhesion is negligible
+/// there); their markers, staggered along F*, show all three.
 pub(super) fn fig6() -> Result<Chart, FigureError> {
     let mut series = Vec::new();
+    let thetas = [1e-4, 1e-3, 3e-3];
     for (j, psi) in [0.5, 2.0].into_iter().enumerate() {
-        for (k, theta) in [1e-4, 1e-3, 3e-3].into_iter().enumerate() {
+        for (k, theta) in thetas.into_iter().enumerate() {
             let m = model(psi, theta, Kind::KogutEtsion)?;
             series.push(Series {
                 label: (j == 0).then(|| format!("θ = {}", num(theta))),
                 points: mu_points(&m)?,
                 color: k,
-                dashed: j == 1,
+                style: if j == 0 { LineStyle::Solid } else { LineStyle::Dashed },
+                markers: markers(k, k, thetas.len()),
             });
         }
     }
-    series.push(style_entry("ψ = 0.5", false));
-    series.push(style_entry("ψ = 2", true));
+    series.push(style_entry("ψ = 0.5", LineStyle::Solid));
+    series.push(style_entry("ψ = 2 (the three θ coincide)", LineStyle::Dashed));
     Ok(linear_chart(
         "Fig. 6: effect of the adhesion parameter θ on μ",
         "μ",

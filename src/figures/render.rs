@@ -1,12 +1,15 @@
 //! Drawing charts with plotters, to PNG (supersampled) or SVG.
 
-use super::chart::{nice_step, num, pow10, Chart, ChartAxis, Corner, ErrorMap, Page, PALETTE};
-use super::{FigureError, Format, SIZE};
+use super::chart::{
+    nice_step, num, pow10, Chart, ChartAxis, Corner, ErrorMap, LineStyle, Markers, Page, Shape, PALETTE,
+};
+use super::{size_at, FigureError, Format, BASE_SIZE, DEFAULT_SCALE};
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 /// DejaVu Sans (assets/DejaVuSans-LICENSE.txt), so that no system font is
@@ -34,30 +37,38 @@ trait Render {
 
 /// PNGs are drawn this many times larger and averaged down: plotters does
 /// not anti-alias lines, and thick polylines drawn at the final size look
-/// jagged.
-const SUPERSAMPLE: u32 = 3;
+/// jagged. At scale 3 the factor is 2 (a 6000 × 4500 canvas, 81 MB),
+/// which the thicker lines need less.
+fn supersample(scale: u32) -> u32 {
+    if scale <= 2 {
+        3
+    } else {
+        2
+    }
+}
 
-/// Draws `what` into `path`, PNG or SVG by its extension.
-fn save(path: &Path, what: &impl Render) -> Result<(), FigureError> {
+/// Draws `what` into `path` at `scale`, PNG or SVG by its extension.
+fn save(path: &Path, what: &impl Render, scale: u32) -> Result<(), FigureError> {
     let format = Format::from_path(path)?;
+    let size = size_at(scale)?;
     let result = fonts().and_then(|()| match format {
         Format::Png => {
-            let k = SUPERSAMPLE;
-            let big = (SIZE.0 * k, SIZE.1 * k);
+            let k = supersample(scale);
+            let big = (size.0 * k, size.1 * k);
             let mut buf = vec![0u8; big.0 as usize * big.1 as usize * 3];
             {
                 let root = BitMapBackend::with_buffer(&mut buf, big).into_drawing_area();
-                what.render(&root, k)?;
+                what.render(&root, scale * k)?;
                 root.present().map_err(err)?;
             }
             let small = downsample(&buf, big, k);
-            let mut png = BitMapBackend::new(path, SIZE);
-            png.blit_bitmap((0, 0), SIZE, &small).map_err(err)?;
+            let mut png = BitMapBackend::new(path, size);
+            png.blit_bitmap((0, 0), size, &small).map_err(err)?;
             png.present().map_err(err)
         }
         Format::Svg => {
-            let root = SVGBackend::new(path, SIZE).into_drawing_area();
-            what.render(&root, 1)?;
+            let root = SVGBackend::new(path, size).into_drawing_area();
+            what.render(&root, scale)?;
             root.present().map_err(err)
         }
     });
@@ -93,18 +104,28 @@ fn downsample(buf: &[u8], big: (u32, u32), k: u32) -> Vec<u8> {
 }
 
 impl Page {
-    /// Draws the page into `path` ([`SIZE`] pixels; PNG or SVG by the
-    /// extension).
+    /// Draws the page into `path` ([`super::SIZE`] pixels; PNG or SVG by
+    /// the extension).
     pub fn save(&self, path: &Path) -> Result<(), FigureError> {
-        save(path, self)
+        save(path, self, DEFAULT_SCALE)
+    }
+
+    /// Draws the page into `path` at `scale` ([`size_at`]).
+    pub fn save_scaled(&self, path: &Path, scale: u32) -> Result<(), FigureError> {
+        save(path, self, scale)
     }
 }
 
 impl ErrorMap {
-    /// Draws the map and its colour bar into `path` ([`SIZE`] pixels; PNG
-    /// or SVG by the extension).
+    /// Draws the map and its colour bar into `path` ([`super::SIZE`]
+    /// pixels; PNG or SVG by the extension).
     pub fn save(&self, path: &Path) -> Result<(), FigureError> {
-        save(path, self)
+        save(path, self, DEFAULT_SCALE)
+    }
+
+    /// Draws the map into `path` at `scale` ([`size_at`]).
+    pub fn save_scaled(&self, path: &Path, scale: u32) -> Result<(), FigureError> {
+        save(path, self, scale)
     }
 }
 
@@ -117,7 +138,8 @@ fn rgb(i: usize) -> RGBColor {
     RGBColor(r, g, b)
 }
 
-// Sizes in pixels of the final image.
+// Sizes in pixels of an image at scale 1 (BASE_SIZE); every one is
+// multiplied by the scale (and the supersampling).
 const CAPTION_PX: u32 = 30;
 const DESC_PX: u32 = 26;
 const LABEL_PX: u32 = 22;
@@ -130,6 +152,15 @@ const MARGIN_PX: u32 = 16;
 const MARGIN_RIGHT_PX: u32 = 40;
 const TICK_PX: u32 = 6;
 const COLOUR_BAR_PX: u32 = 170;
+/// Half the width of a line's marker.
+const MARKER_PX: u32 = 7;
+/// The white rim around a marker, which keeps it apart from lines.
+const MARKER_RIM_PX: u32 = 2;
+/// The radius of the ring around the error map's largest error.
+const RING_PX: u32 = 12;
+/// Dash and gap of a dashed line; of a dotted one.
+const DASH_PX: (u32, u32) = (14, 9);
+const DOT_PX: (u32, u32) = (3, 6);
 
 /// A tick label: a decade as 10ᵏ, a small or large number as m×10ᵏ,
 /// others in plain decimals suited to the step.
@@ -332,67 +363,185 @@ fn y_area<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, y: &ChartAxis, s: u
     Ok((Y_AREA_PX * s).max(widest + (DESC_PX + TICK_PX + 34) * s))
 }
 
+/// The outline of `shape` of half-width `r` around the origin, in pixels
+/// (a circle as a 24-gon). Triangles are a little larger, so that all
+/// shapes look alike in weight.
+fn outline(shape: Shape, r: i32) -> Vec<(i32, i32)> {
+    let rf = f64::from(r);
+    let t = rf * 1.3;
+    let pts: Vec<(f64, f64)> = match shape {
+        Shape::Circle => (0..24)
+            .map(|k| {
+                let a = std::f64::consts::TAU * f64::from(k) / 24.0;
+                (rf * a.cos(), rf * a.sin())
+            })
+            .collect(),
+        Shape::Square => vec![(-rf, -rf), (rf, -rf), (rf, rf), (-rf, rf)],
+        Shape::Diamond => {
+            let d = rf * 1.4;
+            vec![(0.0, -d), (d, 0.0), (0.0, d), (-d, 0.0)]
+        }
+        Shape::Triangle => vec![(0.0, -t), (t * 1.15, t * 0.6), (-t * 1.15, t * 0.6)],
+        Shape::TriangleDown => vec![(0.0, t), (t * 1.15, -t * 0.6), (-t * 1.15, -t * 0.6)],
+    };
+    pts.into_iter()
+        .map(|(x, y)| (x.round() as i32, y.round() as i32))
+        .collect()
+}
+
+/// A marker at the pixel `at` of `area`: `shape` filled in `colour` on a
+/// white rim, which keeps it apart from the lines it sits on.
+fn draw_marker<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    (x, y): (i32, i32),
+    shape: Shape,
+    colour: RGBColor,
+    s: u32,
+) -> Result<(), String> {
+    let r = (MARKER_PX * s) as i32;
+    let at = |v: Vec<(i32, i32)>| v.into_iter().map(|(dx, dy)| (x + dx, y + dy)).collect::<Vec<_>>();
+    area.draw(&Polygon::new(
+        at(outline(shape, r + (MARKER_RIM_PX * s) as i32)),
+        WHITE.filled(),
+    ))
+    .map_err(err)?;
+    area.draw(&Polygon::new(at(outline(shape, r)), colour.filled()))
+        .map_err(err)
+}
+
+/// The pixel of the data point `(u, v)` (plotting coordinates) in the
+/// plotting area of `chart`, counted from its upper left corner.
+fn pixel<DB: DrawingBackend>(chart: &Plot<'_, DB>, u: f64, v: f64) -> (i32, i32) {
+    let plot = chart.plotting_area();
+    let base = plot.get_base_pixel();
+    let (a, b) = plot.map_coordinate(&(u, v));
+    (a - base.0, b - base.1)
+}
+
+/// Where the markers of a line go, in plotting coordinates: the x of the
+/// grid of [`Markers::PER_AXIS`] steps across the axis `x_range`, shifted by
+/// the phase, that fall inside the line's extent; y interpolated linearly
+/// between the line's points.
+fn marker_positions(pts: &[(f64, f64)], m: Markers, x_range: (f64, f64)) -> Vec<(f64, f64)> {
+    let mut pts = pts.to_vec();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (Some(first), Some(last)) = (pts.first(), pts.last()) else {
+        return Vec::new();
+    };
+    let (lo, hi) = (first.0, last.0);
+    let step = (x_range.1 - x_range.0) / Markers::PER_AXIS as f64;
+    let mut out = Vec::new();
+    for k in 0..=Markers::PER_AXIS {
+        let u = x_range.0 + (k as f64 + m.phase + 0.5) * step;
+        // Not within a quarter step of the frame, where a marker would
+        // cross it.
+        let from_frame = (u - x_range.0).min(x_range.1 - u) / step;
+        if u < lo || u > hi || from_frame < 0.25 {
+            continue;
+        }
+        let j = pts.partition_point(|p| p.0 < u).clamp(1, pts.len() - 1);
+        let ((x0, y0), (x1, y1)) = (pts[j - 1], pts[j]);
+        let t = if x1 > x0 { (u - x0) / (x1 - x0) } else { 0.0 };
+        out.push((u, y0 + t * (y1 - y0)));
+    }
+    out
+}
+
 fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_area: u32, s: u32) -> Result<(), String> {
     let mut chart = frame(area, c.title.as_deref(), &c.x, &c.y, true, y_area, s)?;
     let si = s as i32;
-    let mut labelled = false;
+    let x_range = (c.x.to_plot(c.x.range.0), c.x.to_plot(c.x.range.1));
     for line in &c.series {
-        let style = rgb(line.color).stroke_width(LINE_PX * s);
+        let colour = rgb(line.color);
+        let style = colour.stroke_width(LINE_PX * s);
         let pts: Vec<(f64, f64)> = line
             .points
             .iter()
             .filter(|&&(x, y)| (!c.x.log || x > 0.0) && (!c.y.log || y > 0.0))
             .map(|&(x, y)| (c.x.to_plot(x), c.y.to_plot(y)))
             .collect();
-        let anno = if line.dashed {
-            chart
-                .draw_series(DashedLineSeries::new(pts, 14 * si, 9 * si, style))
-                .map_err(err)?
-        } else {
-            chart.draw_series(LineSeries::new(pts, style)).map_err(err)?
-        };
-        if let Some(label) = &line.label {
-            labelled = true;
-            let dashed = line.dashed;
-            anno.label(label.as_str()).legend(move |(x, y)| {
-                let pts = vec![(x - 4 * si, y), (x + 36 * si, y)];
-                if dashed {
-                    DashedPathElement::new(pts, 10 * si, 6 * si, style).into_dyn()
-                } else {
-                    PathElement::new(pts, style).into_dyn()
-                }
-            });
+        match line.style {
+            LineStyle::Solid => chart.draw_series(LineSeries::new(pts.clone(), style)),
+            LineStyle::Dashed => chart.draw_series(DashedLineSeries::new(
+                pts.clone(),
+                DASH_PX.0 as i32 * si,
+                DASH_PX.1 as i32 * si,
+                style,
+            )),
+            LineStyle::Dotted => chart.draw_series(DashedLineSeries::new(
+                pts.clone(),
+                DOT_PX.0 as i32 * si,
+                DOT_PX.1 as i32 * si,
+                style,
+            )),
+        }
+        .map_err(err)?;
+        if let Some(m) = line.markers {
+            let area = chart.plotting_area().strip_coord_spec();
+            for (u, v) in marker_positions(&pts, m, x_range) {
+                draw_marker(&area, pixel(&chart, u, v), m.shape, colour, s)?;
+            }
         }
     }
     border(&chart, s)?;
-    if labelled {
-        let font: TextStyle = (FAMILY, LEGEND_PX * s).into_font().into();
-        let pad = 10 * s;
-        let glyph = 50 * s;
-        let mut text_w = 0;
-        let labels = c.series.iter().filter_map(|l| l.label.as_deref());
-        for label in labels {
-            text_w = text_w.max(area.estimate_text_size(label, &font).map_err(err)?.0);
+    legend(&chart, c, s)
+}
+
+/// The legend: a box in the chart's upper corner with, per labelled line,
+/// a sample of its stroke and marker and its label. Drawn here rather than
+/// by plotters so that the samples carry the markers.
+fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result<(), String> {
+    let entries: Vec<_> = c.series.iter().filter(|l| l.label.is_some()).collect();
+    if entries.is_empty() {
+        return Ok(());
+    }
+    let si = s as i32;
+    let area = chart.plotting_area().strip_coord_spec();
+    let font: TextStyle = (FAMILY, LEGEND_PX * s).into_font().into();
+    let font = font.pos(Pos::new(HPos::Left, VPos::Center));
+    let (pad, sample, gap, row) = (10 * si, 40 * si, 10 * si, 31 * si);
+    let mut text_w = 0;
+    for l in &entries {
+        let label = l.label.as_deref().unwrap_or_default();
+        text_w = text_w.max(area.estimate_text_size(label, &font).map_err(err)?.0 as i32);
+    }
+    let w = pad + sample + gap + text_w + pad;
+    let h = 2 * pad + row * entries.len() as i32 - (row - LEGEND_PX as i32 * si);
+    let (aw, _) = area.dim_in_pixel();
+    let inset = 12 * si;
+    let (x, y) = match c.legend {
+        Corner::UpperLeft => (inset, inset),
+        Corner::UpperRight => (aw as i32 - w - inset, inset),
+    };
+    area.draw(&Rectangle::new([(x, y), (x + w, y + h)], WHITE.mix(0.92).filled()))
+        .map_err(err)?;
+    area.draw(&Rectangle::new(
+        [(x, y), (x + w, y + h)],
+        BLACK.mix(0.5).stroke_width(s),
+    ))
+    .map_err(err)?;
+    for (k, l) in entries.iter().enumerate() {
+        let cy = y + pad + LEGEND_PX as i32 * si / 2 + row * k as i32;
+        let (x0, x1) = (x + pad, x + pad + sample);
+        let colour = rgb(l.color);
+        let style = colour.stroke_width(LINE_PX * s);
+        let seg = vec![(x0, cy), (x1, cy)];
+        match l.style {
+            LineStyle::Solid => area.draw(&PathElement::new(seg, style)),
+            LineStyle::Dashed => area.draw(&DashedPathElement::new(seg, 10 * si, 6 * si, style)),
+            LineStyle::Dotted => area.draw(&DashedPathElement::new(
+                seg,
+                DOT_PX.0 as i32 * si,
+                DOT_PX.1 as i32 * si,
+                style,
+            )),
         }
-        // The box's width as plotters lays it out, so that it can sit a
-        // little inside the frame (legends sit at the top: their height
-        // does not matter).
-        let w = (text_w + glyph + 2 * pad) as i32;
-        let (aw, _) = chart.plotting_area().dim_in_pixel();
-        let inset = (12 * s) as i32;
-        let (x, y) = match c.legend {
-            Corner::UpperLeft => (inset, inset),
-            Corner::UpperRight => (aw as i32 - w - inset, inset),
-        };
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::Coordinate(x, y))
-            .margin(pad)
-            .legend_area_size(glyph)
-            .label_font(font)
-            .background_style(WHITE.mix(0.92))
-            .border_style(BLACK.mix(0.5).stroke_width(s))
-            .draw()
+        .map_err(err)?;
+        if let Some(m) = l.markers {
+            draw_marker(&area, ((x0 + x1) / 2, cy), m.shape, colour, s)?;
+        }
+        let label = l.label.as_deref().unwrap_or_default();
+        area.draw(&Text::new(label, (x1 + gap, cy), font.clone()))
             .map_err(err)?;
     }
     Ok(())
@@ -407,12 +556,20 @@ impl Render for Page {
             Some(bottom) => {
                 // The same label width in both panels keeps their F* axes aligned.
                 width = width.max(y_area(root, &bottom.y, s)?);
-                let (upper, lower) = root.split_vertically(SIZE.1 * 3 / 5 * s);
+                let (upper, lower) = root.split_vertically(BASE_SIZE.1 * 3 / 5 * s);
                 draw_chart(&upper, &self.top, width, s)?;
                 draw_chart(&lower, bottom, width, s)
             }
         }
     }
+}
+
+/// The centre of a ring of outer radius `r` around the pixel `(x, y)`,
+/// moved just enough to keep the whole ring inside a plotting area of
+/// `(w, h)` pixels.
+fn ring_centre((x, y): (i32, i32), (w, h): (u32, u32), r: i32) -> (i32, i32) {
+    let inside = |v: i32, n: u32| v.clamp(r, (n as i32 - 1 - r).max(r));
+    (inside(x, w), inside(y, h))
 }
 
 /// Viridis, sampled at five points and interpolated linearly.
@@ -453,7 +610,7 @@ impl ErrorMap {
 impl Render for ErrorMap {
     fn render<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, s: u32) -> Result<(), String> {
         root.fill(&WHITE).map_err(err)?;
-        let (main, bar) = root.split_horizontally((SIZE.0 - COLOUR_BAR_PX) * s);
+        let (main, bar) = root.split_horizontally((BASE_SIZE.0 - COLOUR_BAR_PX) * s);
         let (lo, hi) = self.scale();
         let colour = |r: f64| viridis((r.max(1e-300).log10() - lo) / (hi - lo));
         let (psi_lo, psi_hi) = (self.psi[0], self.psi[self.psi.len() - 1]);
@@ -475,7 +632,7 @@ impl Render for ErrorMap {
         };
         let (max, at_psi, at_f) = self.max();
         let title = format!(
-            "Table error, θ = {} (max {} at ○)",
+            "Table error, θ = {} (max {}, ringed)",
             num(self.theta),
             tick_label(max, max)
         );
@@ -494,15 +651,22 @@ impl Render for ErrorMap {
                 )
             }))
             .map_err(err)?;
-        // The largest error, ringed.
+        // The largest error: its cell outlined and a ring around it, moved
+        // inside the frame where the cell lies at an edge.
+        let (r, c) = {
+            let at = self.rel.iter().position(|&v| v == max).unwrap_or(0);
+            (at / cols, at % cols)
+        };
         let ring = ShapeStyle::from(&WHITE).stroke_width(3 * s);
-        chart
-            .draw_series(std::iter::once(Circle::new(
-                (x.to_plot(at_f), y.to_plot(at_psi)),
-                12 * s,
-                ring,
-            )))
+        let (w, h) = chart.plotting_area().dim_in_pixel();
+        let px = |f: f64, p: f64| pixel(&chart, x.to_plot(f), y.to_plot(p));
+        let pixels = chart.plotting_area().strip_coord_spec();
+        let (c0, c1) = (px(self.f_star[c], self.psi[r + 1]), px(self.f_star[c + 1], self.psi[r]));
+        pixels
+            .draw(&Rectangle::new([c0, c1], ShapeStyle::from(&WHITE).stroke_width(2 * s)))
             .map_err(err)?;
+        let centre = ring_centre(px(at_f, at_psi), (w, h), ((RING_PX + 2) * s) as i32);
+        pixels.draw(&Circle::new(centre, RING_PX * s, ring)).map_err(err)?;
         border(&chart, s)?;
 
         // The colour bar: the same caption and x-label space as the map,
@@ -564,6 +728,38 @@ impl Render for ErrorMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn rings_stay_inside_the_frame() {
+        // A cell at the right edge (the default table's largest error at
+        // θ = 0.003 sits there) and one in a corner.
+        assert_eq!(ring_centre((1299, 500), (1300, 1100), 28), (1271, 500));
+        assert_eq!(ring_centre((2, 1098), (1300, 1100), 28), (28, 1071));
+        assert_eq!(ring_centre((600, 500), (1300, 1100), 28), (600, 500));
+    }
+
+    #[test]
+    fn markers_of_different_phases_never_share_an_x() {
+        let line: Vec<(f64, f64)> = (0..=100).map(|i| (i as f64 / 100.0, 2.0)).collect();
+        let at = |phase| {
+            marker_positions(
+                &line,
+                Markers {
+                    shape: Shape::Circle,
+                    phase,
+                },
+                (0.0, 1.0),
+            )
+        };
+        let (a, b, c) = (at(0.0), at(1.0 / 3.0), at(2.0 / 3.0));
+        assert_eq!(a.len(), Markers::PER_AXIS);
+        for p in a.iter().chain(&b).chain(&c) {
+            assert!((p.1 - 2.0).abs() < 1e-12 && (0.0..=1.0).contains(&p.0), "{p:?}");
+        }
+        for (p, q) in a.iter().zip(&b).chain(b.iter().zip(&c)) {
+            assert!(q.0 - p.0 > 0.02, "{p:?} {q:?}");
+        }
+    }
 
     #[test]
     fn tick_labels_suit_the_step() {
