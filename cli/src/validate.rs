@@ -1,10 +1,12 @@
 //! `kefric validate`: the paper's statements against this model, as Markdown.
 
 use crate::args::Failure;
-use ke_friction::paper::{statements, Statement, Verdict};
+use ke_friction::paper::{statements, stretches, Statement, Verdict, RULES};
 
 /// Compare this model with the statements of the paper (MODEL.md §7, §8)
 /// and print a Markdown table (`kefric validate > docs/validation.md`).
+/// Takes no options: the model's defaults (β = 0.04, ν = 0.3, ε* = 0.004)
+/// and the paper's θ and ψ, over the loads the paper plots.
 #[derive(Debug, clap::Args)]
 pub struct Args {}
 
@@ -27,13 +29,27 @@ fn markdown(rows: &[Statement]) -> String {
          ε* = 0.004 unless a row says otherwise); the column \"MODEL.md\" quotes \
          MODEL.md §7–§8, whose numbers `tests/it/paper_statements.rs` asserts with \
          stated tolerances. Exponents are least-squares slopes in log–log \
-         coordinates over h* = 0, 0.01, …, 3 with F* ≤ 0.1 (see `src/paper/fits.rs`).\n\n",
+         coordinates over h* = 0, 0.01, …, 3 with F* ≤ 0.1 (see `src/paper/fits.rs`).\n\n\
+         Each row is tested over the loads the paper plots: every curve from F* at \
+         h* = 3 (its lower end in the figure) up to F* = 0.1 or F* at h* = 0, \
+         whichever is less; a ratio of two curves over the loads both span. \
+         Statements about a range of loads are tested at 20 loads per decade, and \
+         the ends of the stretches where they hold are found by bisection. \
+         **partly** means the statement holds over part of that range only; the \
+         row says which part.\n\n\
+         **Tolerances.** ",
     );
+    out.push_str(RULES);
+    out.push_str("\n\n");
     out.push_str("| # | The paper says | MODEL.md | This model | Verdict |\n");
     out.push_str("|---|---|---|---|---|\n");
     for (i, r) in rows.iter().enumerate() {
         let verdict = match r.verdict {
             Verdict::Agrees => "agrees".to_string(),
+            Verdict::Partly => match &r.holds_for {
+                Some(c) => format!("**partly**: only for {}", stretches(c)),
+                None => "**partly**".to_string(),
+            },
             Verdict::Differs if r.note.is_empty() => "**differs**".to_string(),
             Verdict::Differs => format!("**differs**: {}", cell(r.note)),
         };
@@ -46,10 +62,13 @@ fn markdown(rows: &[Statement]) -> String {
             verdict
         ));
     }
-    let agree = rows.iter().filter(|r| r.verdict == Verdict::Agrees).count();
+    let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
     out.push_str(&format!(
-        "\n{agree} of {} statements agree.\n\n## Criteria\n\n",
-        rows.len()
+        "\n{} of {} statements agree, {} partly, {} differ.\n\n## Criteria\n\n",
+        count(Verdict::Agrees),
+        rows.len(),
+        count(Verdict::Partly),
+        count(Verdict::Differs)
     ));
     for (i, r) in rows.iter().enumerate() {
         out.push_str(&format!("{}. {}.\n", i + 1, r.criterion));

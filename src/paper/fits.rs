@@ -234,3 +234,121 @@ pub fn ke_over_ceb(psi: f64, theta: f64, loads: &[f64]) -> Result<Vec<f64>, Pape
         })
         .collect()
 }
+
+/// The loads a curve of the paper's figures spans: F* at h* = 3 (its lower
+/// end) up to F* at h* = 0 or 0.1, whichever is less (MODEL.md §1; the
+/// curves of `kefric plot` span the same). For several models (the two
+/// lines of a ratio), the loads all of them span.
+pub fn plotted_loads(models: &[&Model]) -> Result<(f64, f64), PaperError> {
+    let (h0, h1) = PAPER_H_STAR_RANGE;
+    let (mut lo, mut hi) = (0.0_f64, PAPER_F_STAR_MAX);
+    for m in models {
+        lo = lo.max(m.at_h_star(h1)?.f_star);
+        hi = hi.min(m.at_h_star(h0)?.f_star);
+    }
+    Ok((lo, hi))
+}
+
+/// Samples per decade of F* at which [`holds_where`] tests a criterion
+/// before it refines the ends of each stretch.
+pub const SAMPLES_PER_DECADE: usize = 20;
+
+/// Where a criterion holds over a range of loads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Coverage {
+    /// The range tested: the loads the paper plots.
+    pub range: (f64, f64),
+    /// The stretches of F* where the criterion holds, in increasing order;
+    /// their inner ends found to 1e-6 relative by bisection in ln F*.
+    pub holds: Vec<(f64, f64)>,
+    /// The value at the lower and at the upper end of the range.
+    pub ends: (f64, f64),
+    /// The smallest and the largest value on the samples.
+    pub extremes: ((f64, f64), (f64, f64)),
+}
+
+impl Coverage {
+    /// The criterion holds at every sampled load of the range.
+    pub fn everywhere(&self) -> bool {
+        self.holds.len() == 1 && self.holds[0] == self.range
+    }
+
+    /// The criterion holds at no sampled load.
+    pub fn nowhere(&self) -> bool {
+        self.holds.is_empty()
+    }
+}
+
+/// Tests `ok(y(F*))` at [`SAMPLES_PER_DECADE`] loads per decade, equally
+/// spaced in ln F* over `range` (both ends included), and returns where it
+/// holds. Between two samples that disagree the switch is located by
+/// bisection in ln F* (one switch between neighbours is assumed: the
+/// quantities tested are smooth and cross a band edge once).
+pub fn holds_where(
+    range: (f64, f64),
+    y: impl Fn(f64) -> Result<f64, PaperError>,
+    ok: impl Fn(f64) -> bool,
+) -> Result<Coverage, PaperError> {
+    let (lo, hi) = range;
+    let n = ((hi / lo).log10() * SAMPLES_PER_DECADE as f64).ceil().max(1.0) as usize;
+    let f = |i: usize| {
+        if i == n {
+            hi
+        } else {
+            lo * (hi / lo).powf(i as f64 / n as f64)
+        }
+    };
+    let mut samples = Vec::with_capacity(n + 1);
+    for i in 0..=n {
+        let x = f(i);
+        samples.push((x, y(x)?));
+    }
+    // The load where ok() switches between a and b (a's state on the left).
+    let switch = |mut a: f64, mut b: f64| -> Result<f64, PaperError> {
+        let left = ok(y(a)?);
+        while b / a - 1.0 > 1e-6 {
+            let mid = (a * b).sqrt();
+            if ok(y(mid)?) == left {
+                a = mid;
+            } else {
+                b = mid;
+            }
+        }
+        Ok((a * b).sqrt())
+    };
+    let mut holds = Vec::new();
+    let mut start = ok(samples[0].1).then_some(lo);
+    for w in samples.windows(2) {
+        let ((a, ya), (b, yb)) = (w[0], w[1]);
+        match (ok(ya), ok(yb)) {
+            (true, false) => holds.push((start.take().unwrap_or(a), switch(a, b)?)),
+            (false, true) => start = Some(switch(a, b)?),
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        holds.push((s, hi));
+    }
+    let min = samples
+        .iter()
+        .copied()
+        .fold(samples[0], |m, p| if p.1 < m.1 { p } else { m });
+    let max = samples
+        .iter()
+        .copied()
+        .fold(samples[0], |m, p| if p.1 > m.1 { p } else { m });
+    Ok(Coverage {
+        range,
+        holds,
+        ends: (samples[0].1, samples[n].1),
+        extremes: (min, max),
+    })
+}
+
+/// μ_KE / μ_CEB at the load F* (default β, ν, ε*; MODEL.md §8), for
+/// models built once.
+pub fn ke_over_ceb_at(ke: &Model, ceb: &Model, f_star: f64) -> Result<f64, PaperError> {
+    let a = ke.at_f_star(f_star)?;
+    let b = ceb.at_f_star(f_star)?;
+    Ok(a.q_star / a.f_star / (b.q_star / b.f_star))
+}

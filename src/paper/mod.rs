@@ -8,15 +8,103 @@
 //!
 //! The sweeps and fits behind the numbers are in [`fits`], whose docs
 //! define how the power-law exponents are fitted.
+//!
+//! # How a row is judged
+//!
+//! Every criterion tests the number or band the paper states (or, for the
+//! CEB-type comparison, the factors MODEL.md §8 reads off the paper's
+//! Fig. 5: the text itself gives none), over the loads the paper plots:
+//! each curve from F* at h* = 3 up to F* = 0.1 or F* at h* = 0, whichever
+//! is less ([`fits::plotted_loads`]). A statement about a range of loads
+//! is tested at [`fits::SAMPLES_PER_DECADE`] loads per decade over it;
+//! where it holds on only part, the row gives that part
+//! ([`Verdict::Partly`]). The tolerances are [`RULES`], in one place.
+
+/// The tolerances every row applies, printed once on the validation page.
+pub const RULES: &str = "\
+A number the paper prints is matched when this model's number rounds to it \
+at the printed precision: m = 0.86 means 0.855 ≤ m < 0.865; a band is \
+widened by half a unit of its last digit at either end (n between 0.09 and \
+0.13 means 0.085 ≤ n < 0.135; \"3 to 4 orders\" means 2.5 to 4.5 orders; \
+\"3–4×\" means 2.5× to 4.5×; \"about 1.5×\" means 1.45× to 1.55×; \
+\"10× or more\" means at least 9.5×). The paper's numbers are its authors' \
+readings of their own curves, printed to those digits; rounding is the \
+reading error they admit to, and no further allowance is made. A bound \
+(\"less than 0.11\") is tested as printed. One exception: a load read off \
+the logarithmic F* axis (the threshold F* = 0.01 of Fig. 3) is matched \
+within ±0.05 decade (a factor 1.12), because decimal rounding means nothing \
+on a log axis and 0.05 decade is about 1 mm on the printed figure, whose \
+four decades (1e-5 to 0.1) span about 7 cm of a journal column.";
+
+/// The log-axis reading tolerance of [`RULES`], in decades.
+pub const LOG_AXIS_READING: f64 = 0.05;
+
+/// The interval of values that match a printed statement ([`RULES`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Band {
+    /// Smallest matching value (inclusive).
+    pub lo: f64,
+    /// Values must be below this (exclusive; `f64::INFINITY` for none).
+    pub hi: f64,
+}
+
+impl Band {
+    /// The values that round to the printed band `[lo, hi]` printed with
+    /// `decimals` decimals: half a unit of the last digit wider at each end.
+    pub fn printed(lo: f64, hi: f64, decimals: i32) -> Band {
+        let half = 0.5 * 10f64.powi(-decimals);
+        Band {
+            lo: lo - half,
+            hi: hi + half,
+        }
+    }
+
+    /// "`lo` or more", printed with `decimals` decimals.
+    pub fn at_least(lo: f64, decimals: i32) -> Band {
+        Band {
+            lo: lo - 0.5 * 10f64.powi(-decimals),
+            hi: f64::INFINITY,
+        }
+    }
+
+    /// A load read off the log axis: `x` within ±[`LOG_AXIS_READING`] decade.
+    pub fn log_axis(x: f64) -> Band {
+        let k = 10f64.powf(LOG_AXIS_READING);
+        Band { lo: x / k, hi: x * k }
+    }
+
+    /// Does `v` match?
+    pub fn contains(&self, v: f64) -> bool {
+        v >= self.lo && v < self.hi
+    }
+
+    /// "[1.45, 1.55)" or "≥ 9.5", 4 significant digits.
+    pub fn text(&self) -> String {
+        if self.hi.is_infinite() {
+            format!("≥ {}", short(self.lo))
+        } else {
+            format!("[{}, {})", short(self.lo), short(self.hi))
+        }
+    }
+}
+
+/// Up to 4 significant digits, trailing zeros dropped.
+fn short(x: f64) -> String {
+    let s = sig(x, 4);
+    if s.contains('e') || !s.contains('.') {
+        return s;
+    }
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
 
 pub mod fits;
 
 use fits::{
-    adhesion_ratio_crossing, exponent_n, extremes_over_h, friction_peak, ke_over_ceb, max_adhesion_ratio, power_m,
-    MIN_FIT_POINTS,
+    adhesion_ratio_at, adhesion_ratio_crossing, exponent_n, friction_peak, holds_where, ke_over_ceb_at, plotted_loads,
+    power_m, Coverage, MIN_FIT_POINTS,
 };
 
-use crate::{Contact, EvalError, Model, ParamError, Params};
+use crate::{EvalError, Kind, Model, ParamError, Params};
 
 /// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
 pub const PAPER_H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
@@ -67,8 +155,10 @@ pub enum PaperError {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Verdict {
     /// The model reproduces the statement (the criterion is in
-    /// [`Statement::criterion`]).
+    /// [`Statement::criterion`]) over the whole range the paper plots.
     Agrees,
+    /// Over part of that range only: [`Statement::holds_for`] says which.
+    Partly,
     /// It does not.
     Differs,
 }
@@ -88,6 +178,7 @@ impl std::fmt::Display for Verdict {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(match self {
             Verdict::Agrees => "agrees",
+            Verdict::Partly => "partly",
             Verdict::Differs => "differs",
         })
     }
@@ -110,6 +201,56 @@ pub struct Statement {
     pub criterion: &'static str,
     /// Why this model differs, where it does (empty otherwise).
     pub note: &'static str,
+    /// For a statement over a range of loads, where it holds (`None` for
+    /// the fitted exponents, which are one number over the whole range).
+    pub holds_for: Option<Coverage>,
+}
+
+impl Verdict {
+    /// The verdict of a statement over a range of loads: everywhere,
+    /// somewhere, nowhere.
+    fn over(c: &Coverage) -> Verdict {
+        if c.everywhere() {
+            Verdict::Agrees
+        } else if c.nowhere() {
+            Verdict::Differs
+        } else {
+            Verdict::Partly
+        }
+    }
+}
+
+/// "F* in [1.2e-4, 3.4e-3]" for each stretch of `c`, joined by "and".
+pub fn stretches(c: &Coverage) -> String {
+    c.holds
+        .iter()
+        .map(|&(a, b)| format!("F* in [{}, {}]", sig(a, 2), sig(b, 2)))
+        .collect::<Vec<_>>()
+        .join(" and ")
+}
+
+/// What a coverage found, in words: where it holds over the plotted range,
+/// and the values at the ends.
+fn coverage_text(c: &Coverage, what: &str, unit: &str, band: &str) -> String {
+    let ((fmin, vmin), (fmax, vmax)) = c.extremes;
+    let span = format!(
+        "{what} = {}{unit} … {}{unit} over the plotted F* in [{}, {}] ({}{unit} at F* = {}, {}{unit} at F* = {})",
+        sig(vmin, 3),
+        sig(vmax, 3),
+        sig(c.range.0, 2),
+        sig(c.range.1, 2),
+        sig(vmin, 3),
+        sig(fmin, 2),
+        sig(vmax, 3),
+        sig(fmax, 2)
+    );
+    if c.everywhere() {
+        format!("{span}; within {band} everywhere")
+    } else if c.nowhere() {
+        format!("{span}; within {band} nowhere")
+    } else {
+        format!("{span}; within {band} only for {}", stretches(c))
+    }
 }
 
 /// `x` with `digits` significant digits: fixed notation for
@@ -142,17 +283,14 @@ fn model(psi: f64, theta: f64) -> Result<Model, PaperError> {
     Ok(Model::new(Params::new(psi, theta))?)
 }
 
-/// Does `x` round to `printed` at the printed number of decimals?
-fn rounds_to(x: f64, printed: f64, decimals: i32) -> bool {
-    let scale = 10f64.powi(decimals);
-    (x * scale).round() == (printed * scale).round()
-}
-
 /// Every statement of MODEL.md §7 and the CEB-type comparison of §8,
 /// computed now with the default β = 0.04, ν = 0.3, ε* = 0.004 (except
-/// where a row says otherwise). Takes about a tenth of a second.
+/// where a row says otherwise), judged by [`RULES`]. Takes a few
+/// hundredths of a second.
 pub fn statements() -> Result<Vec<Statement>, PaperError> {
     let mut rows = Vec::new();
+    let m_band = Band::printed(0.86, 0.86, 2);
+    let n_band = Band::printed(0.09, 0.13, 2);
 
     // Fig. 4, Eq. 22: m at ψ = 0.5, θ = 0.003.
     let m = power_m(&model(0.5, 0.003)?)?.exponent;
@@ -161,9 +299,10 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "0.84 (0.86 with ε* = 0.01)",
         computed: format!("m = {}", sig(m, 4)),
         value: m,
-        verdict: Verdict::of(rounds_to(m, 0.86, 2)),
-        criterion: "m rounds to the printed 0.86",
+        verdict: Verdict::of(m_band.contains(m)),
+        criterion: "m, fitted over the plotted range, rounds to the printed 0.86: in [0.855, 0.865)",
         note: "ε* is not stated in the paper; ε* = 0.01 gives 0.86 (next row)",
+        holds_for: None,
     });
     let m = power_m(&Model::new(Params::new(0.5, 0.003).eps_star(0.01))?)?.exponent;
     rows.push(Statement {
@@ -171,9 +310,10 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "0.86",
         computed: format!("m = {}", sig(m, 4)),
         value: m,
-        verdict: Verdict::of(rounds_to(m, 0.86, 2)),
-        criterion: "m rounds to the printed 0.86",
+        verdict: Verdict::of(m_band.contains(m)),
+        criterion: "m rounds to the printed 0.86: in [0.855, 0.865)",
         note: "",
+        holds_for: None,
     });
 
     // Fig. 5, Eq. 23: n at θ = 0.001.
@@ -188,9 +328,10 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             model_md: md,
             computed: format!("n = {} at ψ = {psi}", sig(n, 4)),
             value: n,
-            verdict: Verdict::of((0.09..=0.13).contains(&rounds2(n))),
-            criterion: "n, rounded to two decimals, lies in [0.09, 0.13]",
+            verdict: Verdict::of(n_band.contains(n)),
+            criterion: "n, fitted over the plotted range, lies in the printed band 0.09–0.13: in [0.085, 0.135)",
             note: "",
+            holds_for: None,
         });
     }
     // The ends of the paper's ψ range for n (not in MODEL.md).
@@ -201,67 +342,87 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         model_md: "— (implied by m = 0.62 at ψ = 2: n ≈ 1 − m)",
         computed: format!("n = {} at ψ = 0.5, {} at ψ = 2", sig(n05, 4), sig(n2, 4)),
         value: n2,
-        verdict: Verdict::of((0.09..=0.13).contains(&rounds2(n05)) && (0.09..=0.13).contains(&rounds2(n2))),
-        criterion: "Both n, rounded to two decimals, lie in [0.09, 0.13]",
-        note: "at ψ = 2 Q* levels off near F* ≈ 0.07 (row 9), so μ = Q*/F* falls steeply: n ≈ 1 − m",
+        verdict: Verdict::of(n_band.contains(n05) && n_band.contains(n2)),
+        criterion: "Both n lie in [0.085, 0.135): the paper states the band for the whole range 0.5 ≤ ψ ≤ 2",
+        note: "n is in the band at ψ = 0.5, not at ψ = 2: there Q* levels off near F* ≈ 0.07 (row 9), so μ = Q*/F* falls steeply: n ≈ 1 − m",
+        holds_for: None,
     });
 
-    // Fig. 3: Fs*/P* < 0.11 for ψ ≥ 2.
-    let (mut psi_w, mut w) = (2.0, max_adhesion_ratio(&model(2.0, 0.003)?));
-    for psi in [2.5, 3.0, 4.0, 5.0, 6.0, 8.0] {
-        let r = max_adhesion_ratio(&model(psi, 0.003)?);
-        if r.value > w.value {
-            (psi_w, w) = (psi, r);
+    // Fig. 3: Fs*/P* < 0.11 for ψ ≥ 2, over the plotted loads of each ψ.
+    let bound = 0.11;
+    // The ψ with the largest ratio: if the bound fails anywhere, it fails there.
+    let mut worst: Option<(f64, Coverage)> = None;
+    for psi in [2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0] {
+        let m = model(psi, 0.003)?;
+        let c = holds_where(plotted_loads(&[&m])?, |f| adhesion_ratio_at(&m, f), |r| r < bound)?;
+        if worst.as_ref().is_none_or(|w| c.extremes.1 .1 > w.1.extremes.1 .1) {
+            worst = Some((psi, c));
         }
     }
+    let (psi_w, w) = worst.expect("seven values of ψ");
     rows.push(Statement {
-        paper: "Fs*/P* < 0.11 over the whole range for ψ ≥ 2 (θ = 0.003; Fig. 3)",
+        paper: "Fs*/P* < 0.11 over the whole range of F* for ψ ≥ 2 (θ = 0.003; Fig. 3)",
         model_md: "max 0.104 at ψ = 2",
         computed: format!(
-            "max {} at ψ = {psi_w} (h* = {}); ψ = 2, 2.5, 3, 4, 5, 6, 8 scanned over 0 ≤ h* ≤ 3",
-            sig(w.value, 4),
-            w.h_star
+            "max {} at ψ = {psi_w}, F* = {}{}; ψ = 2, 2.5, 3, 4, 5, 6, 8 scanned over their plotted loads",
+            sig(w.extremes.1 .1, 4),
+            sig(w.extremes.1 .0, 3),
+            if w.extremes.1 .0 == w.range.0 {
+                " (the lower end of its plotted range)"
+            } else {
+                ""
+            },
         ),
-        value: w.value,
-        verdict: Verdict::of(w.value < 0.11),
-        criterion: "The largest Fs*/P* is below 0.11",
+        value: w.extremes.1 .1,
+        verdict: Verdict::over(&w),
+        criterion: "Fs*/P* < 0.11 (a bound, as printed) at every plotted load of every ψ scanned",
         note: "",
+        holds_for: Some(w),
     });
 
     // Fig. 3: ψ = 1 threshold.
-    let b = adhesion_ratio_crossing(&model(1.0, 0.003)?, 0.1, (1e-4, 0.05))?;
+    let m1 = model(1.0, 0.003)?;
+    let b = adhesion_ratio_crossing(&m1, 0.1, (1e-4, 0.05))?;
+    let read = Band::log_axis(0.01);
+    let range = plotted_loads(&[&m1])?;
+    let above = holds_where((0.01, range.1), |f| adhesion_ratio_at(&m1, f), |r| r < 0.1)?;
     rows.push(Statement {
         paper: "ψ = 1: Fs*/P* < 0.1 for F* above a threshold of 0.01 (θ = 0.003; Fig. 3)",
         model_md: "crosses 0.1 at F* ≈ 0.009",
-        computed: format!("crosses 0.1 at F* = {}", sig(b.lo, 4)),
+        computed: format!(
+            "crosses 0.1 at F* = {} ({} decade from 0.01); below 0.1 {} over the plotted F* in [0.01, {}]",
+            sig(b.lo, 4),
+            format!("{:+.3}", (b.lo / 0.01).log10()).replace('-', "−"),
+            if above.everywhere() { "everywhere" } else { "not everywhere" },
+            sig(range.1, 2)
+        ),
         value: b.lo,
-        verdict: Verdict::of(b.hi <= 0.01 && b.lo >= 0.008),
-        criterion: "The crossing lies in [0.008, 0.01], so Fs*/P* < 0.1 for every F* > 0.01",
+        verdict: Verdict::of(read.contains(b.lo) && above.everywhere()),
+        criterion: "The crossing lies within ±0.05 decade of 0.01 (log-axis reading: [0.008913, 0.01122)), and Fs*/P* < 0.1 at every plotted F* above 0.01",
         note: "",
+        holds_for: Some(above),
     });
 
-    // Fig. 4: ψ = 8.
-    let psi8 = model(8.0, 0.003)?;
-    let ratio = |c: &Contact| c.q_star / c.f_star;
-    let all = extremes_over_h(&psi8, f64::INFINITY, ratio).expect("F* > 0 at ψ = 8");
-    let paper = extremes_over_h(&psi8, PAPER_F_STAR_MAX, ratio).expect("F* ≤ 0.1 at ψ = 8");
-    let orders = |x: f64| -x.log10();
+    // Fig. 4: ψ = 8, Q* three to four orders of magnitude below F*.
+    let m8 = model(8.0, 0.003)?;
+    let orders = Band::printed(3.0, 4.0, 0);
+    let c = holds_where(
+        plotted_loads(&[&m8])?,
+        |f| {
+            let c = m8.at_f_star(f)?;
+            Ok(-(c.q_star / c.f_star).log10())
+        },
+        |o| orders.contains(o),
+    )?;
     rows.push(Statement {
         paper: "ψ = 8: Q* three to four orders of magnitude below F* (θ = 0.003; Fig. 4)",
         model_md: "Q*/F* ≈ 1.8e-5 … 1.2e-3",
-        computed: format!(
-            "Q*/F* = {:.3e} … {:.3e} over 0 ≤ h* ≤ 3; {:.3e} … {:.3e} where F* ≤ 0.1 ({:.1}–{:.1} orders)",
-            all.0.value,
-            all.1.value,
-            paper.0.value,
-            paper.1.value,
-            orders(paper.1.value),
-            orders(paper.0.value),
-        ),
-        value: paper.0.value,
-        verdict: Verdict::of(orders(paper.1.value).round() >= 3.0 && orders(paper.0.value).round() <= 4.0),
-        criterion: "−log10(Q*/F*) rounds to 3 or 4 everywhere in the paper's range F* ≤ 0.1",
+        computed: coverage_text(&c, "−log10(Q*/F*)", "", "2.5–4.5 orders"),
+        value: c.extremes.0 .1,
+        verdict: Verdict::over(&c),
+        criterion: "−log10(Q*/F*) rounds to 3 or 4 (in [2.5, 4.5)) at every plotted load",
         note: "",
+        holds_for: Some(c),
     });
 
     // Fig. 4: m at ψ = 2, the known difference.
@@ -278,46 +439,53 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
             sig(peak.h_star, 3)
         ),
         value: m2,
-        verdict: Verdict::of(rounds_to(m2, 0.82, 2)),
-        criterion: "m rounds to the printed 0.82",
+        verdict: Verdict::of(Band::printed(0.82, 0.82, 2).contains(m2)),
+        criterion: "m, fitted over the plotted range, rounds to the printed 0.82: in [0.815, 0.825)",
         note: "known (MODEL.md §7): Q* peaks inside the paper's load range, so no single power law fits",
+        holds_for: None,
     });
 
-    // Fig. 5 (dashed): the CEB-type model.
-    for (psi, md) in [
-        (0.5, "about 1.5× below"),
-        (1.0, "3–4× below"),
-        (2.0, "10× or more below"),
+    // Fig. 5 (dashed): the CEB-type model, against the factors MODEL.md §8
+    // reads off the figure.
+    for (psi, md, band, words) in [
+        (0.5, "about 1.5× below", Band::printed(1.5, 1.5, 1), "1.45–1.55×"),
+        (1.0, "3–4× below", Band::printed(3.0, 4.0, 0), "2.5–4.5× (“3–4×”)"),
+        (
+            2.0,
+            "10× or more below",
+            Band::at_least(10.0, 0),
+            "≥ 9.5× (“10× or more”)",
+        ),
     ] {
-        let r = ke_over_ceb(psi, 0.003, &CEB_LOADS)?;
-        let (lo, hi) = r
-            .iter()
-            .fold((f64::INFINITY, 0.0_f64), |(a, b), &x| (a.min(x), b.max(x)));
+        let ke = model(psi, 0.003)?;
+        let ceb = Model::new(Params::new(psi, 0.003).kind(Kind::CebType))?;
+        let c = holds_where(
+            plotted_loads(&[&ke, &ceb])?,
+            |f| ke_over_ceb_at(&ke, &ceb, f),
+            |r| band.contains(r),
+        )?;
         rows.push(Statement {
             paper: if psi == 0.5 {
-                "the CEB model (Fig. 5, dashed) substantially underestimates μ, even at ψ = 0.5 (θ = 0.003)"
+                "the CEB model (Fig. 5, dashed) substantially underestimates μ, even at ψ = 0.5 (θ = 0.003); the text gives no factor, MODEL.md §8 reads about 1.5× off the figure"
             } else if psi == 1.0 {
-                "the same at ψ = 1"
+                "the same at ψ = 1 (MODEL.md §8 reads 3–4×)"
             } else {
-                "the same at ψ = 2, where CEB predicts unrealistically small μ"
+                "the same at ψ = 2, where CEB predicts unrealistically small μ (MODEL.md §8 reads 10× or more)"
             },
             model_md: md,
-            computed: format!(
-                "μ_KE/μ_CEB = {} … {} for 1e-4 ≤ F* ≤ 0.05 (growing with F*)",
-                sig(lo, 4),
-                sig(hi, 4)
-            ),
-            value: lo,
-            verdict: Verdict::of(lo > 1.0),
-            criterion: "The CEB-type μ is below Kogut–Etsion's at every load",
+            computed: coverage_text(&c, "μ_KE/μ_CEB", "×", words),
+            value: c.extremes.0 .1,
+            verdict: Verdict::over(&c),
+            criterion: match psi {
+                _ if psi == 0.5 => "μ_KE/μ_CEB rounds to 1.5: in [1.45, 1.55) at every plotted load",
+                _ if psi == 1.0 => "μ_KE/μ_CEB rounds into 3–4: in [2.5, 4.5) at every plotted load",
+                _ => "μ_KE/μ_CEB rounds to 10 or more: ≥ 9.5 at every plotted load",
+            },
             note: "",
+            holds_for: Some(c),
         });
     }
     Ok(rows)
-}
-
-fn rounds2(x: f64) -> f64 {
-    (x * 100.0).round() / 100.0
 }
 
 #[cfg(test)]
@@ -335,9 +503,20 @@ mod tests {
     }
 
     #[test]
-    fn rounding_rules_follow_the_printed_digits() {
-        assert!(rounds_to(0.8564, 0.86, 2));
-        assert!(!rounds_to(0.841, 0.86, 2));
-        assert_eq!(rounds2(0.1276), 0.13);
+    fn printed_bands_admit_rounding_and_nothing_more() {
+        let m = Band::printed(0.86, 0.86, 2);
+        assert!(m.contains(0.8564) && m.contains(0.855));
+        assert!(!m.contains(0.841) && !m.contains(0.865));
+        let n = Band::printed(0.09, 0.13, 2);
+        assert!(n.contains(0.1276) && n.contains(0.085) && !n.contains(0.135) && !n.contains(0.3716));
+        let f = Band::printed(3.0, 4.0, 0);
+        assert!(f.contains(3.43) && f.contains(2.5) && !f.contains(2.49) && !f.contains(4.5));
+        assert!(!f.contains(2.366) && !f.contains(8.331));
+        let at_least = Band::at_least(10.0, 0);
+        assert!(at_least.contains(9.5) && at_least.contains(1e9) && !at_least.contains(9.49));
+        let read = Band::log_axis(0.01);
+        assert!(read.contains(0.009092) && !read.contains(0.0089) && !read.contains(0.0113));
+        assert_eq!(f.text(), "[2.5, 4.5)");
+        assert_eq!(at_least.text(), "≥ 9.5");
     }
 }

@@ -189,21 +189,103 @@ fn ceb_type_mu_is_1_5x_3_to_4x_and_10x_below_ke_at_psi_0_5_1_2() {
     }
 }
 
-/// `validate::statements` (what `kefric validate` prints) reports the
+/// `paper::statements` (what `kefric validate` prints) reports the
 /// verdicts MODEL.md §7 leads one to expect: the two known differences
 /// (m at ψ = 0.5 with the default ε*, and m = 0.62 instead of 0.82 at
-/// ψ = 2) and n at ψ = 2, which follows from the latter (n ≈ 1 − m).
+/// ψ = 2) and n at ψ = 2, which follows from the latter (n ≈ 1 − m); and,
+/// now that the CEB-type rows test MODEL.md §8's factors over the plotted
+/// loads rather than only "below", two of them hold over part of the range
+/// only (ψ = 0.5: 1.54–1.72×, ψ = 1: 2.49–10.7×).
 #[test]
 fn statements_differ_from_the_paper_only_where_model_md_says_so() {
     use ke_friction::paper::{statements, Verdict};
     let rows = statements().unwrap();
-    let differ: Vec<&str> = rows
-        .iter()
-        .filter(|r| r.verdict == Verdict::Differs)
-        .map(|r| r.paper)
-        .collect();
+    let with = |v: Verdict| -> Vec<&str> { rows.iter().filter(|r| r.verdict == v).map(|r| r.paper).collect() };
+    let differ = with(Verdict::Differs);
     assert_eq!(differ.len(), 3, "{differ:#?}");
     assert!(differ[0].contains("m = 0.86 at ψ = 0.5"), "{differ:#?}");
     assert!(differ[1].contains("ψ = 0.5 and ψ = 2"), "{differ:#?}");
     assert!(differ[2].contains("m = 0.82 at ψ = 2"), "{differ:#?}");
+    let partly = with(Verdict::Partly);
+    assert_eq!(partly.len(), 2, "{partly:#?}");
+    assert!(partly[0].contains("even at ψ = 0.5"), "{partly:#?}");
+    assert!(partly[1].contains("at ψ = 1"), "{partly:#?}");
+    assert_eq!(with(Verdict::Agrees).len(), 7);
+}
+
+/// The CEB-type row at ψ = 1 tests MODEL.md §8's "3–4×" (read off Fig. 5)
+/// over the plotted loads, F* at h* = 3 (2.0e-4, where the CEB-type line
+/// starts) to 0.073 (h* = 0 of the Kogut–Etsion line): the ratio runs from
+/// 2.49 to 10.7, so it lies in [2.5, 4.5) (the band, rounded) for
+/// 2.1e-4 ≤ F* ≤ 0.011 only, and the row says so instead of "agrees".
+/// Measured ends 2.0967e-4 and 1.0592e-2; tolerance 1% on each.
+#[test]
+fn ceb_row_at_psi_1_holds_for_part_of_the_plotted_loads_and_says_which() {
+    use ke_friction::paper::{statements, Verdict};
+    let rows = statements().unwrap();
+    let row = rows.iter().find(|r| r.paper.contains("the same at ψ = 1")).unwrap();
+    assert_eq!(row.verdict, Verdict::Partly);
+    assert_eq!(row.verdict.to_string(), "partly");
+    let c = row.holds_for.as_ref().unwrap();
+    assert_eq!(c.holds.len(), 1, "{c:?}");
+    let (a, b) = c.holds[0];
+    assert!(c.range.0 < a && b < c.range.1, "{c:?}");
+    assert!(
+        rel(a, 2.0967e-4) < 0.01 && rel(b, 1.0592e-2) < 0.01,
+        "holds for [{a:e}, {b:e}]"
+    );
+    // Outside the stretch the ratio is outside the band, at both ends.
+    let ((_, lo), (_, hi)) = c.extremes;
+    assert!(lo < 2.5 && hi >= 4.5, "{lo} … {hi}");
+    assert!(
+        row.computed.contains("only for F* in [2.1e-4, 0.011]"),
+        "{}",
+        row.computed
+    );
+    assert!(row.computed.contains("2.49× at F* = 2.0e-4"), "{}", row.computed);
+    // ψ = 2: ≥ 9.5 at every plotted load (measured 11.0 to 20.7).
+    let row2 = rows.iter().find(|r| r.paper.contains("the same at ψ = 2")).unwrap();
+    assert_eq!(row2.verdict, Verdict::Agrees);
+    assert!(row2.holds_for.as_ref().unwrap().everywhere());
+}
+
+/// `holds_where` finds the stretch where a criterion holds and its ends:
+/// y = log10 F* over [1e-5, 0.1] lies in [−3.5, −2) for
+/// F* in [10^−3.5, 1e-2) (ends to the 1e-6 relative of the bisection); a
+/// band nowhere met gives no stretch; one met everywhere the whole range.
+#[test]
+fn holds_where_finds_the_stretch_and_fails_outside_the_band() {
+    use ke_friction::paper::fits::holds_where;
+    use ke_friction::paper::Band;
+    let y = |f: f64| Ok(f.log10());
+    let band = Band { lo: -3.5, hi: -2.0 };
+    let c = holds_where((1e-5, 0.1), y, |v| band.contains(v)).unwrap();
+    assert_eq!(c.holds.len(), 1, "{c:?}");
+    let (a, b) = c.holds[0];
+    assert!(rel(a, 10f64.powf(-3.5)) < 2e-6 && rel(b, 1e-2) < 2e-6, "[{a:e}, {b:e}]");
+    assert!(!c.everywhere() && !c.nowhere());
+    assert!(!band.contains(-2.0) && !band.contains(-3.6) && band.contains(-3.5));
+    let never = holds_where((1e-5, 0.1), y, |v| v > 0.0).unwrap();
+    assert!(never.nowhere());
+    let always = holds_where((1e-5, 0.1), y, |v| v < 0.0).unwrap();
+    assert!(always.everywhere() && always.holds == vec![(1e-5, 0.1)]);
+    // Two stretches: outside (−4, −2).
+    let two = holds_where((1e-5, 0.1), y, |v| !(-4.0..-2.0).contains(&v)).unwrap();
+    assert_eq!(two.holds.len(), 2, "{two:?}");
+    assert!(rel(two.holds[0].1, 1e-4) < 2e-6 && rel(two.holds[1].0, 1e-2) < 2e-6);
+}
+
+/// The plotted loads are those of the figures' curves: at ψ = 1,
+/// θ = 0.003 from F*(h* = 3) to F*(h* = 0) < 0.1; at ψ = 2 up to 0.1
+/// (F*(h* = 0) = 0.13 there).
+#[test]
+fn plotted_loads_run_from_h_star_3_to_0_1_or_h_star_0() {
+    use ke_friction::paper::fits::plotted_loads;
+    let m1 = model(1.0, 0.003);
+    let (lo, hi) = plotted_loads(&[&m1]).unwrap();
+    assert_eq!(lo, m1.at_h_star(3.0).unwrap().f_star);
+    assert_eq!(hi, m1.at_h_star(0.0).unwrap().f_star);
+    assert!(hi < 0.1);
+    let m2 = model(2.0, 0.003);
+    assert_eq!(plotted_loads(&[&m2]).unwrap().1, 0.1);
 }

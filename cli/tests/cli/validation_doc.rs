@@ -28,3 +28,19 @@ fn validation_doc_is_the_output_of_kefric_validate() {
         );
     }
 }
+
+/// The page states its tolerances once, and the CEB-type row at ψ = 1 is
+/// no longer a plain "agrees": it says where it holds.
+#[test]
+fn validation_doc_says_where_the_ceb_row_at_psi_1_holds() {
+    let doc_path = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/validation.md");
+    let doc = std::fs::read_to_string(doc_path).expect("docs/validation.md exists");
+    assert_eq!(doc.matches("**Tolerances.**").count(), 1);
+    let row = doc
+        .lines()
+        .find(|l| l.starts_with("| 11 |") && l.contains("the same at ψ = 1"))
+        .expect("the CEB row at ψ = 1");
+    let verdict = row.trim_end_matches('|').rsplit('|').next().unwrap().trim();
+    assert!(verdict.starts_with("**partly**: only for F* in ["), "{verdict}");
+    assert!(row.contains("within 2.5–4.5×"), "{row}");
+}
