@@ -140,7 +140,7 @@ fn style_entry(label: &str, style: LineStyle) -> Series {
 /// Fig. 5: μ against F*, ψ = 0.5, 1, 2, θ = 0.003; Kogut–Etsion solid,
 /// CEB-type (MODEL.md §8) dashed; colour and marker shape by ψ. The upper
 /// panel has the paper's linear μ axis; the lower one shows the same lines
-/// on a logarithmic μ axis, where the CEB-type line of ψ = 2 (μ ≈ 0.002–0.02,
+/// on a logarithmic μ axis, where the CEB-type line of ψ = 2 (μ = 0.0013–0.022,
 /// flat against zero above) is readable. The CEB-type line of ψ = 1 runs
 /// along the Kogut–Etsion line of ψ = 2: their markers (■ and ▲) tell them
 /// apart.
