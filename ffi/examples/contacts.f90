@@ -1,0 +1,60 @@
+! Many contacts of one surface pair from Fortran: a curve built once,
+! looked up in the inner loop; prints a few mu values and the time per lookup.
+!
+!   gfortran -O2 -I build ffi/fortran/ke_friction.f90 ffi/examples/contacts.f90 \
+!       -L target/release -lkefriction -Wl,-rpath,target/release -o contacts_f
+program contacts
+  use ke_friction
+  implicit none
+  integer, parameter :: n = 100000, rounds = 21
+  real(c_double), parameter :: psi = 1.0d0, theta = 0.003d0
+  real(c_double) :: loads(4) = [1d-4, 1d-3, 1d-2, 5d-2]
+  real(c_double), allocatable :: f(:), mu(:)
+  real(c_double) :: m, slope, times(rounds), t
+  type(c_ptr) :: curve
+  integer :: i, r
+  integer(8) :: t0, t1, rate
+
+  curve = kef_curve_from_table(kef_table_default(), psi, theta)
+  if (.not. c_associated(curve)) then
+    print '(a)', 'kef_curve_from_table: ' // kef_error_message()
+    stop 1
+  end if
+  do i = 1, 4
+    if (kef_curve_mu_with_slope(curve, loads(i), m, slope) /= KEF_OK) then
+      print '(a)', kef_error_message()
+      stop 1
+    end if
+    print '(a, es24.17, a, es24.17)', 'mu f_star=', loads(i), ' mu=', m
+  end do
+  if (kef_curve_mu(curve, 0.5d0, m) /= KEF_ERR_DOMAIN) stop 2
+  print '(a)', 'expected error: ' // kef_error_message()
+
+  allocate(f(n), mu(n))
+  do i = 1, n
+    f(i) = 1d-5 * 1d4 ** (real(i - 1, c_double) / n)
+  end do
+  call system_clock(count_rate=rate)
+  do r = 1, rounds
+    call system_clock(t0)
+    do i = 1, n
+      if (kef_curve_mu(curve, f(i), mu(i)) /= KEF_OK) stop 3
+    end do
+    call system_clock(t1)
+    times(r) = real(t1 - t0, c_double) / rate / n * 1d9
+  end do
+  ! Median by insertion sort.
+  do r = 2, rounds
+    t = times(r)
+    i = r - 1
+    do while (i >= 1)
+      if (times(i) <= t) exit
+      times(i + 1) = times(i)
+      i = i - 1
+    end do
+    times(i + 1) = t
+  end do
+  print '(a, i0, a, f6.2, a)', 'time per lookup (median of ', rounds, ' rounds): kef_curve_mu ', &
+      times((rounds + 1) / 2), ' ns'
+  call kef_curve_free(curve)
+end program contacts

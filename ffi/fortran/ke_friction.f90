@@ -1,0 +1,163 @@
+! ke_friction: Fortran interfaces to the C API of ke-friction
+! (ffi/include/kefriction.h). Same names as the C functions; handles are
+! type(c_ptr); scalars are passed by value, outputs by reference.
+! Link with -lkefriction (or libkefriction.a -lpthread -ldl -lm).
+!
+! Every function returns KEF_OK or a KEF_ERR_* code (or c_null_ptr for a
+! handle); kef_error_message() returns this thread's last message.
+module ke_friction
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_char, c_null_char, c_associated, c_f_pointer
+  implicit none
+  private
+  public :: kef_table_default, kef_table_load, kef_table_free, kef_table_mu, kef_table_mu_with_slope, &
+            kef_table_mu_batch, kef_curve_from_table, kef_curve_from_model, kef_curve_mu, &
+            kef_curve_mu_with_slope, kef_curve_mu_batch, kef_curve_range, kef_curve_free, kef_model_mu, &
+            kef_last_error, kef_error_message, kef_c_string
+  public :: c_int, c_double, c_size_t, c_ptr, c_associated
+
+  integer(c_int), parameter, public :: KEF_OK = 0
+  integer(c_int), parameter, public :: KEF_ERR_DOMAIN = 1
+  integer(c_int), parameter, public :: KEF_ERR_ARGUMENT = 2
+  integer(c_int), parameter, public :: KEF_ERR_IO = 3
+  integer(c_int), parameter, public :: KEF_ERR_TABLE = 4
+  integer(c_int), parameter, public :: KEF_ERR_INTERNAL = 5
+
+  interface
+    function kef_last_error() bind(c, name="kef_last_error")
+      import :: c_ptr
+      type(c_ptr) :: kef_last_error
+    end function
+
+    function kef_table_default() bind(c, name="kef_table_default")
+      import :: c_ptr
+      type(c_ptr) :: kef_table_default
+    end function
+
+    ! path: a NUL-terminated string, e.g. kef_c_string("table.kft").
+    function kef_table_load(path) bind(c, name="kef_table_load")
+      import :: c_ptr, c_char
+      character(kind=c_char), dimension(*), intent(in) :: path
+      type(c_ptr) :: kef_table_load
+    end function
+
+    subroutine kef_table_free(table) bind(c, name="kef_table_free")
+      import :: c_ptr
+      type(c_ptr), value :: table
+    end subroutine
+
+    function kef_table_mu(table, psi, theta, f_star, mu) bind(c, name="kef_table_mu")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_table_mu
+    end function
+
+    function kef_table_mu_with_slope(table, psi, theta, f_star, mu, dmu_df_star) &
+        bind(c, name="kef_table_mu_with_slope")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: mu, dmu_df_star
+      integer(c_int) :: kef_table_mu_with_slope
+    end function
+
+    function kef_table_mu_batch(table, n, psi, theta, f_star, mu) bind(c, name="kef_table_mu_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_int) :: kef_table_mu_batch
+    end function
+
+    function kef_curve_from_table(table, psi, theta) bind(c, name="kef_curve_from_table")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: table
+      real(c_double), value :: psi, theta
+      type(c_ptr) :: kef_curve_from_table
+    end function
+
+    function kef_curve_from_model(psi, theta, beta, nu, eps_star, f_star_min, f_star_max) &
+        bind(c, name="kef_curve_from_model")
+      import :: c_ptr, c_double
+      real(c_double), value :: psi, theta, beta, nu, eps_star, f_star_min, f_star_max
+      type(c_ptr) :: kef_curve_from_model
+    end function
+
+    function kef_curve_mu(curve, f_star, mu) bind(c, name="kef_curve_mu")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: curve
+      real(c_double), value :: f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_curve_mu
+    end function
+
+    function kef_curve_mu_with_slope(curve, f_star, mu, dmu_df_star) bind(c, name="kef_curve_mu_with_slope")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: curve
+      real(c_double), value :: f_star
+      real(c_double), intent(out) :: mu, dmu_df_star
+      integer(c_int) :: kef_curve_mu_with_slope
+    end function
+
+    function kef_curve_mu_batch(curve, n, f_star, mu) bind(c, name="kef_curve_mu_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_int) :: kef_curve_mu_batch
+    end function
+
+    function kef_curve_range(curve, f_star_min, f_star_max) bind(c, name="kef_curve_range")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: curve
+      real(c_double), intent(out) :: f_star_min, f_star_max
+      integer(c_int) :: kef_curve_range
+    end function
+
+    subroutine kef_curve_free(curve) bind(c, name="kef_curve_free")
+      import :: c_ptr
+      type(c_ptr), value :: curve
+    end subroutine
+
+    function kef_model_mu(psi, theta, beta, nu, eps_star, f_star, mu) bind(c, name="kef_model_mu")
+      import :: c_double, c_int
+      real(c_double), value :: psi, theta, beta, nu, eps_star, f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_model_mu
+    end function
+
+    function c_strlen(s) bind(c, name="strlen")
+      import :: c_ptr, c_size_t
+      type(c_ptr), value :: s
+      integer(c_size_t) :: c_strlen
+    end function
+  end interface
+
+contains
+
+  ! This thread's last failure message, as a Fortran string ("" if none).
+  function kef_error_message() result(message)
+    character(len=:), allocatable :: message
+    type(c_ptr) :: p
+    character(kind=c_char), pointer :: chars(:)
+    integer :: i, n
+    p = kef_last_error()
+    n = int(c_strlen(p))
+    allocate(character(len=n) :: message)
+    if (n == 0) return
+    call c_f_pointer(p, chars, [n])
+    do i = 1, n
+      message(i:i) = chars(i)
+    end do
+  end function
+
+  ! A Fortran string as a NUL-terminated C string (for kef_table_load).
+  function kef_c_string(text) result(c_text)
+    character(len=*), intent(in) :: text
+    character(kind=c_char, len=len_trim(text) + 1) :: c_text
+    c_text = trim(text) // c_null_char
+  end function
+end module ke_friction
