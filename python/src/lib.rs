@@ -1,1 +1,357 @@
-//! Python bindings of ke-friction (work in progress).
+//! The native half of the Python package `ke_friction` (`ke_friction._core`):
+//! tables, curves and the model over contiguous float64 arrays, with the
+//! GIL released. `pysrc/ke_friction/__init__.py` adds NumPy broadcasting,
+//! argument checks and the documented Python API on top.
+
+use ke_friction::{Curve, Fit, Kind, LookupError, Model, Params, Physical, Table};
+use numpy::{PyReadonlyArray1, PyReadwriteArray1};
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::borrow::Cow;
+
+/// A failed element: its index in the flat input and the message.
+type Bad = Option<(usize, String)>;
+
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+fn slice<'a>(name: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
+    a.as_slice()
+        .map_err(|_| value_error(format!("{name} must be contiguous")))
+}
+
+/// Fills `out` by `batch` over the whole input; at a bad element, either
+/// stops (its index and message) or writes NaN there and goes on.
+fn fill_batch(
+    n: usize,
+    nan: bool,
+    out: &mut [f64],
+    batch: impl Fn(usize, usize, &mut [f64]) -> Result<(), LookupError>,
+) -> Bad {
+    let mut start = 0;
+    while start < n {
+        match batch(start, n, &mut out[start..n]) {
+            Ok(()) => return None,
+            Err(e) => {
+                let index = match e {
+                    LookupError::BatchElement { index, .. } => start + index,
+                    _ => start,
+                };
+                let message = match e {
+                    LookupError::BatchElement {
+                        name, value, lo, hi, ..
+                    } => LookupError::OutOfDomain { name, value, lo, hi }.to_string(),
+                    other => other.to_string(),
+                };
+                if !nan {
+                    return Some((index, message));
+                }
+                out[index] = f64::NAN;
+                start = index + 1;
+            }
+        }
+    }
+    None
+}
+
+/// Fills `out` (and `slope`) element by element with `one`; bad elements
+/// as in [`fill_batch`].
+fn fill_each(
+    n: usize,
+    nan: bool,
+    mu: &mut [f64],
+    slope: &mut [f64],
+    one: impl Fn(usize) -> Result<(f64, f64), LookupError>,
+) -> Bad {
+    for i in 0..n {
+        match one(i) {
+            Ok((m, s)) => (mu[i], slope[i]) = (m, s),
+            Err(e) if nan => {
+                let _ = e;
+                (mu[i], slope[i]) = (f64::NAN, f64::NAN);
+            }
+            Err(e) => return Some((i, e.to_string())),
+        }
+    }
+    None
+}
+
+/// A table of μ(ψ, θ, F*).
+#[pyclass(frozen, module = "ke_friction._core")]
+struct TableCore(Cow<'static, Table>);
+
+#[pymethods]
+impl TableCore {
+    #[staticmethod]
+    fn default() -> TableCore {
+        TableCore(Cow::Borrowed(Table::embedded()))
+    }
+
+    #[staticmethod]
+    fn load(path: std::path::PathBuf) -> PyResult<TableCore> {
+        match Table::load(&path) {
+            Ok(t) => Ok(TableCore(Cow::Owned(t))),
+            Err(e @ ke_friction::TableError::Io { .. }) => Err(PyOSError::new_err(e.to_string())),
+            Err(e) => Err(value_error(format!("{}: {e}", path.display()))),
+        }
+    }
+
+    fn mu_scalar(&self, psi: f64, theta: f64, f_star: f64) -> PyResult<f64> {
+        self.0.mu(psi, theta, f_star).map_err(value_error)
+    }
+
+    fn mu_with_slope_scalar(&self, psi: f64, theta: f64, f_star: f64) -> PyResult<(f64, f64)> {
+        self.0.mu_with_slope(psi, theta, f_star).map_err(value_error)
+    }
+
+    /// μ into `out`; returns None, or (index, message) of the first bad
+    /// element (with nan=False).
+    fn mu_into(
+        &self,
+        py: Python<'_>,
+        psi: PyReadonlyArray1<'_, f64>,
+        theta: PyReadonlyArray1<'_, f64>,
+        f_star: PyReadonlyArray1<'_, f64>,
+        mut out: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+    ) -> PyResult<Bad> {
+        let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
+        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
+        let n = out.len();
+        let table = &*self.0;
+        Ok(py.detach(|| fill_batch(n, nan, out, |a, b, o| table.mu_batch(&p[a..b], &t[a..b], &f[a..b], o))))
+    }
+
+    /// μ and ∂μ/∂F* into `mu` and `slope`.
+    #[allow(clippy::too_many_arguments)]
+    fn mu_with_slope_into(
+        &self,
+        py: Python<'_>,
+        psi: PyReadonlyArray1<'_, f64>,
+        theta: PyReadonlyArray1<'_, f64>,
+        f_star: PyReadonlyArray1<'_, f64>,
+        mut mu: PyReadwriteArray1<'_, f64>,
+        mut slope: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+    ) -> PyResult<Bad> {
+        let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
+        let mu = mu.as_slice_mut().map_err(|_| value_error("mu must be contiguous"))?;
+        let slope = slope
+            .as_slice_mut()
+            .map_err(|_| value_error("slope must be contiguous"))?;
+        let table = &*self.0;
+        Ok(py.detach(|| fill_each(mu.len(), nan, mu, slope, |i| table.mu_with_slope(p[i], t[i], f[i]))))
+    }
+
+    fn curve(&self, psi: f64, theta: f64) -> PyResult<CurveCore> {
+        self.0.curve(psi, theta).map(CurveCore).map_err(value_error)
+    }
+
+    fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let info = self.0.info();
+        let d = &info.domain;
+        let dict = PyDict::new(py);
+        dict.set_item("psi", d.psi)?;
+        dict.set_item("theta", d.theta)?;
+        dict.set_item("f_star", d.f_star)?;
+        dict.set_item("beta", d.beta)?;
+        dict.set_item("nu", d.nu)?;
+        dict.set_item("eps_star", d.eps_star)?;
+        dict.set_item("model", d.kind.name())?;
+        dict.set_item("fit", d.fit.name())?;
+        dict.set_item("tolerance", info.tolerance)?;
+        dict.set_item("max_rel_error", info.accuracy.max_rel)?;
+        dict.set_item("p99_rel_error", info.accuracy.p99_rel)?;
+        dict.set_item("nodes", info.build.nodes)?;
+        dict.set_item("precision", info.precision.name())?;
+        dict.set_item("format_version", info.format_version)?;
+        dict.set_item("generator", info.build.generator.as_str())?;
+        Ok(dict)
+    }
+}
+
+/// μ(F*) of one surface pair.
+#[pyclass(frozen, module = "ke_friction._core")]
+struct CurveCore(Curve);
+
+#[pymethods]
+impl CurveCore {
+    #[staticmethod]
+    fn from_model(model: &ModelCore, f_star_min: f64, f_star_max: f64) -> PyResult<CurveCore> {
+        Curve::from_model(&model.0, f_star_min, f_star_max)
+            .map(CurveCore)
+            .map_err(value_error)
+    }
+
+    fn range(&self) -> (f64, f64) {
+        self.0.range()
+    }
+
+    fn max_error(&self) -> f64 {
+        self.0.max_error()
+    }
+
+    fn mu_scalar(&self, f_star: f64) -> PyResult<f64> {
+        self.0.mu(f_star).map_err(value_error)
+    }
+
+    fn mu_with_slope_scalar(&self, f_star: f64) -> PyResult<(f64, f64)> {
+        self.0.mu_with_slope(f_star).map_err(value_error)
+    }
+
+    fn mu_into(
+        &self,
+        py: Python<'_>,
+        f_star: PyReadonlyArray1<'_, f64>,
+        mut out: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+    ) -> PyResult<Bad> {
+        let f = slice("f_star", &f_star)?;
+        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
+        let n = out.len();
+        let curve = &self.0;
+        Ok(py.detach(|| fill_batch(n, nan, out, |a, b, o| curve.mu_batch(&f[a..b], o))))
+    }
+
+    fn mu_with_slope_into(
+        &self,
+        py: Python<'_>,
+        f_star: PyReadonlyArray1<'_, f64>,
+        mut mu: PyReadwriteArray1<'_, f64>,
+        mut slope: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+    ) -> PyResult<Bad> {
+        let f = slice("f_star", &f_star)?;
+        let mu = mu.as_slice_mut().map_err(|_| value_error("mu must be contiguous"))?;
+        let slope = slope
+            .as_slice_mut()
+            .map_err(|_| value_error("slope must be contiguous"))?;
+        let curve = &self.0;
+        Ok(py.detach(|| fill_each(mu.len(), nan, mu, slope, |i| curve.mu_with_slope(f[i]))))
+    }
+}
+
+/// The model by direct integration.
+#[pyclass(frozen, module = "ke_friction._core")]
+struct ModelCore(Model);
+
+#[pymethods]
+impl ModelCore {
+    #[new]
+    fn new(psi: f64, theta: f64, beta: f64, nu: f64, eps_star: f64, fit: &str, model: &str) -> PyResult<ModelCore> {
+        let fit = Fit::from_name(fit)
+            .ok_or_else(|| value_error(format!("fit = {fit:?}: must be \"consistent\" or \"as-printed\"")))?;
+        let kind = Kind::from_name(model)
+            .ok_or_else(|| value_error(format!("model = {model:?}: must be \"ke\" or \"ceb\"")))?;
+        let params = Params::new(psi, theta)
+            .beta(beta)
+            .nu(nu)
+            .eps_star(eps_star)
+            .fit(fit)
+            .kind(kind);
+        Model::new(params).map(ModelCore).map_err(value_error)
+    }
+
+    /// The contacts at `x` (F* if `at_f_star`, else h*) into the seven
+    /// output arrays (h*, d*, P*, Fs*, Q*, F*, μ); bad elements as above.
+    #[allow(clippy::too_many_arguments)]
+    fn contacts_into(
+        &self,
+        py: Python<'_>,
+        x: PyReadonlyArray1<'_, f64>,
+        at_f_star: bool,
+        mut out: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+    ) -> PyResult<Bad> {
+        let x = slice("x", &x)?;
+        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
+        let model = &self.0;
+        Ok(py.detach(|| {
+            for (i, &v) in x.iter().enumerate() {
+                let c = if at_f_star {
+                    model.at_f_star(v)
+                } else {
+                    model.at_h_star(v)
+                };
+                let row = &mut out[7 * i..7 * i + 7];
+                match c {
+                    Ok(c) => row.copy_from_slice(&[
+                        c.h_star,
+                        c.d_star,
+                        c.p_star,
+                        c.fs_star,
+                        c.q_star,
+                        c.f_star,
+                        c.mu.unwrap_or(f64::NAN),
+                    ]),
+                    Err(_) if nan => row.fill(f64::NAN),
+                    Err(e) => return Some((i, e.to_string())),
+                }
+            }
+            None
+        }))
+    }
+
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let p = self.0.params();
+        let dict = PyDict::new(py);
+        dict.set_item("psi", p.psi)?;
+        dict.set_item("theta", p.theta)?;
+        dict.set_item("beta", p.beta)?;
+        dict.set_item("nu", p.nu)?;
+        dict.set_item("eps_star", p.eps_star)?;
+        dict.set_item("fit", p.fit.name())?;
+        dict.set_item("model", p.kind.name())?;
+        Ok(dict)
+    }
+}
+
+/// ψ, θ, β, ν, ε* of SI inputs ([`Params::from_physical`]).
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn params_from_physical<'py>(
+    py: Python<'py>,
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    sigma: f64,
+    radius: f64,
+    density: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let phys = Physical {
+        e1,
+        nu1,
+        e2,
+        nu2,
+        hardness,
+        sigma,
+        radius,
+        density,
+        delta_gamma,
+        epsilon,
+    };
+    let p = Params::from_physical(&phys).map_err(value_error)?;
+    let dict = PyDict::new(py);
+    dict.set_item("psi", p.psi)?;
+    dict.set_item("theta", p.theta)?;
+    dict.set_item("beta", p.beta)?;
+    dict.set_item("nu", p.nu)?;
+    dict.set_item("eps_star", p.eps_star)?;
+    Ok(dict)
+}
+
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<TableCore>()?;
+    m.add_class::<CurveCore>()?;
+    m.add_class::<ModelCore>()?;
+    m.add_function(wrap_pyfunction!(params_from_physical, m)?)?;
+    m.add("CURVE_ACCURACY", ke_friction::CURVE_ACCURACY)?;
+    Ok(())
+}

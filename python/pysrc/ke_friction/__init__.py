@@ -1,0 +1,336 @@
+"""The Kogut-Etsion (2004) static friction model of rough surfaces.
+
+The static friction coefficient mu of two rough surfaces as a function of
+the load F* = F/(A_n H), the plasticity index psi, the adhesion parameter
+theta = dgamma/(sigma H) and the roughness (beta, nu, eps_star):
+
+* :class:`Table` -- mu(psi, theta, F*) from a precomputed table
+  (nanoseconds per point; the default table is built in);
+* :class:`Curve` -- mu(F*) of one surface pair (fixed psi and theta);
+* :class:`Model` -- the model by direct integration (microseconds);
+* :func:`params_from_physical` -- psi, theta, beta, nu, eps_star from SI inputs.
+
+Lookups take Python floats (and return a float) or array-likes, which
+broadcast by NumPy's rules (and return float64 arrays). Arguments outside
+the table's or curve's range, or NaN, raise ValueError naming the argument,
+its value, its index and the range; ``out_of_domain="nan"`` gives NaN there
+instead. Array work runs with the GIL released.
+
+>>> import ke_friction as kf
+>>> t = kf.Table.default()
+>>> round(t.mu(1.0, 0.001, 0.01), 4)
+0.5252
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import numbers
+import os
+from typing import Any, Dict, Tuple, Union
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["Table", "Curve", "Model", "Contact", "params_from_physical", "CURVE_ACCURACY"]
+
+#: The relative accuracy of :meth:`Curve.from_model` against the model.
+CURVE_ACCURACY: float = _core.CURVE_ACCURACY
+
+ArrayLike = Union[float, "np.typing.ArrayLike"]
+_MODES = ("raise", "nan")
+
+
+def _is_scalar(x: Any) -> bool:
+    return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
+
+
+def _mode(out_of_domain: str) -> bool:
+    if out_of_domain not in _MODES:
+        raise ValueError(f'out_of_domain = {out_of_domain!r}: must be "raise" or "nan"')
+    return out_of_domain == "nan"
+
+
+def _arrays(**named: Any) -> Tuple[Tuple[int, ...], list]:
+    """Broadcast the named inputs; flat contiguous float64 views where possible."""
+    arrays = []
+    for name, value in named.items():
+        a = np.asarray(value)
+        if a.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a real number or an array of real numbers, not {type(value).__name__}"
+                            + (f" of {a.dtype}" if isinstance(value, np.ndarray) else ""))
+        arrays.append(a)
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrays))
+    except ValueError:
+        shapes = ", ".join(f"{n} {a.shape}" for n, a in zip(named, arrays))
+        raise ValueError(f"the shapes do not broadcast: {shapes}") from None
+    flat = []
+    for a in arrays:
+        if a.shape == shape and a.dtype == np.float64 and a.flags.c_contiguous:
+            flat.append(a.reshape(-1))  # a view: no copy
+        else:
+            flat.append(np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1))
+    return shape, flat
+
+
+def _raise(bad: Any, shape: Tuple[int, ...]) -> None:
+    if bad is not None:
+        index, message = bad
+        where = np.unravel_index(index, shape) if shape else ()
+        raise ValueError(f"{message} (at index {tuple(int(i) for i in where)})" if shape else message)
+
+
+class Table:
+    """A table of mu(psi, theta, F*): a cubic B-spline of ln(mu) over
+    (ln psi, sqrt theta, ln F*), within its recorded tolerance of direct
+    integration. Immutable; share it freely across threads.
+
+    Use :meth:`Table.default` (the table built into the library: psi in
+    [0.5, 8], theta in [0, 0.01], F* in [1e-5, 0.1], mu within 1e-4) or
+    :meth:`Table.load` (a file from ``kefric build``).
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(self, core: Any) -> None:
+        self._core = core
+
+    @staticmethod
+    def default() -> "Table":
+        """The table built into the library."""
+        return Table(_core.TableCore.default())
+
+    @staticmethod
+    def load(path: Union[str, "os.PathLike[str]"]) -> "Table":
+        """Load a table file written by ``kefric build``.
+
+        Raises OSError if the file cannot be read and ValueError if it is
+        damaged or not a table.
+        """
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
+        return Table(_core.TableCore.load(os.fspath(path)))
+
+    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Any:
+        """The static friction coefficient mu(psi, theta, F*).
+
+        psi: plasticity index; theta: adhesion parameter; f_star: external
+        force F/(A_n H). Python numbers give a float; array-likes broadcast
+        (NumPy rules) and give a float64 array of the broadcast shape.
+        A value outside the table's range, or NaN, raises ValueError (the
+        argument, value, index and range), or gives NaN with
+        ``out_of_domain="nan"``.
+        """
+        nan = _mode(out_of_domain)
+        if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
+            try:
+                return self._core.mu_scalar(float(psi), float(theta), float(f_star))
+            except ValueError:
+                if nan:
+                    return float("nan")
+                raise
+        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
+        out = np.empty(p.size)
+        _raise(self._core.mu_into(p, t, f, out, nan), shape)
+        return out.reshape(shape)
+
+    def mu_with_slope(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
+                      out_of_domain: str = "raise") -> Tuple[Any, Any]:
+        """(mu, dmu/dF*) at (psi, theta, F*); inputs, outputs and errors as :meth:`mu`."""
+        nan = _mode(out_of_domain)
+        if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
+            try:
+                return self._core.mu_with_slope_scalar(float(psi), float(theta), float(f_star))
+            except ValueError:
+                if nan:
+                    return (float("nan"), float("nan"))
+                raise
+        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
+        mu, slope = np.empty(p.size), np.empty(p.size)
+        _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan), shape)
+        return mu.reshape(shape), slope.reshape(shape)
+
+    @property
+    def info(self) -> Dict[str, Any]:
+        """What the table holds: the ranges ``psi``, ``theta``, ``f_star``
+        (lo, hi); ``beta``, ``nu``, ``eps_star``; ``model`` ("ke"/"ceb");
+        ``fit`` ("consistent"/"as-printed"); ``tolerance``;
+        ``max_rel_error`` and ``p99_rel_error`` (measured at build);
+        ``nodes``, ``precision``, ``format_version``, ``generator``."""
+        return self._core.info()
+
+    def curve(self, psi: float, theta: float) -> "Curve":
+        """mu(F*) of the surface pair (psi, theta) over the table's F* range:
+        a :class:`Curve`, several times faster than :meth:`mu` per point."""
+        _check_real(psi=psi, theta=theta)
+        return Curve(self._core.curve(float(psi), float(theta)))
+
+    def __repr__(self) -> str:
+        i = self.info
+        return (f"Table(model={i['model']!r}, fit={i['fit']!r}, psi={i['psi']}, theta={i['theta']}, "
+                f"f_star={i['f_star']}, tolerance={i['tolerance']})")
+
+
+def _check_real(**named: Any) -> None:
+    for name, value in named.items():
+        if not _is_scalar(value):
+            raise TypeError(f"{name} must be a real number, not {type(value).__name__}")
+
+
+class Curve:
+    """mu(F*) of one surface pair (fixed psi and theta): Hermite cubics in
+    ln F* through mu and dmu/dF*, C1-smooth. From :meth:`Table.curve` or
+    :meth:`Curve.from_model`. Immutable; share it freely across threads."""
+
+    __slots__ = ("_core",)
+
+    def __init__(self, core: Any) -> None:
+        self._core = core
+
+    @staticmethod
+    def from_model(model: "Model", f_star_min: float, f_star_max: float) -> "Curve":
+        """A curve of ``model`` for F* in [f_star_min, f_star_max], within
+        CURVE_ACCURACY (1e-6 relative) of direct integration."""
+        if not isinstance(model, Model):
+            raise TypeError(f"model must be a Model, not {type(model).__name__}")
+        _check_real(f_star_min=f_star_min, f_star_max=f_star_max)
+        return Curve(_core.CurveCore.from_model(model._core, float(f_star_min), float(f_star_max)))
+
+    @property
+    def range(self) -> Tuple[float, float]:
+        """The F* range (lo, hi)."""
+        return self._core.range()
+
+    @property
+    def max_error(self) -> float:
+        """The largest relative error of mu measured when the curve was built."""
+        return self._core.max_error()
+
+    def mu(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Any:
+        """mu at f_star: a float for a Python number, a float64 array for an
+        array-like. Outside the range, or NaN: ValueError, or NaN with
+        ``out_of_domain="nan"``."""
+        nan = _mode(out_of_domain)
+        if _is_scalar(f_star):
+            try:
+                return self._core.mu_scalar(float(f_star))
+            except ValueError:
+                if nan:
+                    return float("nan")
+                raise
+        shape, (f,) = _arrays(f_star=f_star)
+        out = np.empty(f.size)
+        _raise(self._core.mu_into(f, out, nan), shape)
+        return out.reshape(shape)
+
+    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Tuple[Any, Any]:
+        """(mu, dmu/dF*) at f_star; as :meth:`mu`."""
+        nan = _mode(out_of_domain)
+        if _is_scalar(f_star):
+            try:
+                return self._core.mu_with_slope_scalar(float(f_star))
+            except ValueError:
+                if nan:
+                    return (float("nan"), float("nan"))
+                raise
+        shape, (f,) = _arrays(f_star=f_star)
+        mu, slope = np.empty(f.size), np.empty(f.size)
+        _raise(self._core.mu_with_slope_into(f, mu, slope, nan), shape)
+        return mu.reshape(shape), slope.reshape(shape)
+
+    def __repr__(self) -> str:
+        return f"Curve(range={self.range})"
+
+
+@dataclasses.dataclass(frozen=True)
+class Contact:
+    """The model at one separation or force (floats) or many (arrays):
+    separation h* = h/sigma, d* = d/sigma, the contact load P*, the adhesion
+    force Fs*, the tangential capacity Q*, the external force F* = P* - Fs*,
+    and mu = Q*/F* (NaN where F* <= 0)."""
+
+    h_star: Any
+    d_star: Any
+    p_star: Any
+    fs_star: Any
+    q_star: Any
+    f_star: Any
+    mu: Any
+
+
+class Model:
+    """The Kogut-Etsion model by direct integration (microseconds a point).
+
+    psi: plasticity index, in [1e-3, 1e3]; theta: adhesion parameter, in
+    [0, 1e3]; beta: roughness parameter eta*R*sigma, in (0.01928, 100];
+    nu: Poisson's ratio of the softer material, in [0, 0.5); eps_star:
+    intermolecular distance eps/sigma, in [1e-9, 100]; fit: "consistent"
+    (MODEL.md section 4) or "as-printed" (the literal printed Eq. 18);
+    model: "ke" (Kogut-Etsion) or "ceb" (the CEB-type comparison model).
+    Invalid values raise ValueError naming the parameter and its range.
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(self, psi: float, theta: float, beta: float = 0.04, nu: float = 0.3, eps_star: float = 0.004,
+                 fit: str = "consistent", model: str = "ke") -> None:
+        _check_real(psi=psi, theta=theta, beta=beta, nu=nu, eps_star=eps_star)
+        for name, value in (("fit", fit), ("model", model)):
+            if not isinstance(value, str):
+                raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+        self._core = _core.ModelCore(float(psi), float(theta), float(beta), float(nu), float(eps_star), fit, model)
+
+    @property
+    def params(self) -> Dict[str, Any]:
+        """psi, theta, beta, nu, eps_star, fit and model."""
+        return self._core.params()
+
+    def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: str) -> Contact:
+        nan = _mode(out_of_domain)
+        scalar = _is_scalar(x)
+        shape, (flat,) = _arrays(**{name: x})
+        out = np.empty((flat.size, 7))
+        _raise(self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan), shape)
+        cols = [out[:, k].reshape(shape) for k in range(7)]
+        return Contact(*(float(c) for c in cols)) if scalar else Contact(*cols)
+
+    def at_f_star(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Contact:
+        """The model at external force F* > 0 (solving F*(h*) = F*): a
+        :class:`Contact` of floats for a number, of arrays for an array-like.
+        F* <= 0, NaN or beyond the model's reach raises ValueError (or gives
+        NaN with ``out_of_domain="nan"``)."""
+        return self._at(f_star, True, "f_star", out_of_domain)
+
+    def at_h_star(self, h_star: ArrayLike, *, out_of_domain: str = "raise") -> Contact:
+        """The model at separation h* (|h*| <= 1e6): a :class:`Contact`; mu is
+        NaN where F* <= 0."""
+        return self._at(h_star, False, "h_star", out_of_domain)
+
+    def __repr__(self) -> str:
+        p = self.params
+        return "Model(" + ", ".join(f"{k}={v!r}" for k, v in p.items()) + ")"
+
+
+def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,
+                         radius: float, density: float, delta_gamma: float, epsilon: float) -> Dict[str, float]:
+    """The model's dimensionless parameters of SI inputs.
+
+    e1, e2: Young's moduli (Pa) of the softer material and the other;
+    nu1, nu2: their Poisson's ratios; hardness: H of the softer material
+    (Pa); sigma: standard deviation of the asperity heights (m); radius:
+    asperity radius R (m); density: areal density eta of asperities (1/m^2);
+    delta_gamma: energy of adhesion (J/m^2); epsilon: intermolecular
+    distance (m). Returns {"psi", "theta", "beta", "nu", "eps_star"}, ready
+    for ``Model(**p)``. Unphysical input raises ValueError naming it.
+
+    >>> p = params_from_physical(e1=200e9, nu1=0.3, e2=200e9, nu2=0.3, hardness=2e9, sigma=100e-9,
+    ...                          radius=10e-6, density=4e10, delta_gamma=0.3, epsilon=0.4e-9)
+    >>> round(p["psi"], 4), p["theta"], round(p["beta"], 12)
+    (5.6745, 0.0015, 0.04)
+    """
+    values = dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, sigma=sigma, radius=radius,
+                  density=density, delta_gamma=delta_gamma, epsilon=epsilon)
+    _check_real(**values)
+    return _core.params_from_physical(**{k: float(v) for k, v in values.items()})
