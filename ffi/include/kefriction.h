@@ -101,7 +101,7 @@ int kef_table_mu_with_slope(const kef_table *table,
                             double *mu,
                             double *dmu_df_star);
 
-// μ at `n` points (ψ[i], θ[i], F*[i]) into `mu[i]`, vectorised (AVX2
+// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`, vectorised (AVX2
 // where the CPU has it). On a point outside the table, KEF_ERR_DOMAIN
 // with its index in the message; `mu` is written before that index and
 // not from it on. Pointers may be NULL only when n is 0; `mu` must not

@@ -283,7 +283,7 @@ fn first_bad(table: &Table, psi: &[f64], theta: &[f64], f_star: &[f64]) -> Optio
     Some((i, table.mu(psi[i], theta[i], f_star[i]).err()?))
 }
 
-/// μ at `n` points (ψ[i], θ[i], F*[i]) into `mu[i]`, vectorised (AVX2
+/// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`, vectorised (AVX2
 /// where the CPU has it). On a point outside the table, KEF_ERR_DOMAIN
 /// with its index in the message; `mu` is written before that index and
 /// not from it on. Pointers may be NULL only when n is 0; `mu` must not
