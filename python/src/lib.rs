@@ -9,9 +9,14 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
+use std::ops::Range;
 
 /// A failed element: its index in the flat input and the message.
 type Bad = Option<(usize, String)>;
+
+/// Results a slope lookup writes per chunk (a stack buffer of pairs,
+/// scattered into the two output arrays).
+const CHUNK: usize = 256;
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -22,58 +27,100 @@ fn slice<'a>(name: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]
         .map_err(|_| value_error(format!("{name} must be contiguous")))
 }
 
-/// Fills `out` by `batch` over the whole input; at a bad element, either
-/// stops (its index and message) or writes NaN there and goes on.
-fn fill_batch(
-    n: usize,
+fn slice_mut<'a>(name: &str, a: &'a mut PyReadwriteArray1<'_, f64>) -> PyResult<&'a mut [f64]> {
+    a.as_slice_mut()
+        .map_err(|_| value_error(format!("{name} must be contiguous")))
+}
+
+/// A `ValueError` unless every named length is `n` (the Python layer
+/// always passes equal lengths; this keeps a direct call of `_core` from
+/// panicking).
+fn same_len(n: usize, named: &[(&str, usize)]) -> PyResult<()> {
+    match named.iter().find(|(_, len)| *len != n) {
+        None => Ok(()),
+        Some((name, len)) => Err(value_error(format!("{name} has {len} elements, not {n}"))),
+    }
+}
+
+/// The index (in the slices passed) and message of a batch's error, and
+/// whether it is one element's (the others, mismatched lengths, cannot be
+/// skipped). An element's message is the scalar lookup's ("psi = 9 is
+/// outside the range [0.5, 8]"); the Python layer adds the index in its
+/// shape.
+fn element(e: LookupError) -> (usize, String, bool) {
+    match e {
+        LookupError::BatchElement {
+            index,
+            name,
+            value,
+            lo,
+            hi,
+        } => (
+            index,
+            LookupError::OutOfDomain { name, value, lo, hi }.to_string(),
+            true,
+        ),
+        other => (0, other.to_string(), false),
+    }
+}
+
+/// Fills `out` by `batch` (which takes an index range of the inputs and
+/// the matching part of `out`). At a bad element either stops (its index
+/// and message) or, with `nan`, writes `bad` there and goes on after it.
+fn fill_batch<T: Copy>(
     nan: bool,
-    out: &mut [f64],
-    batch: impl Fn(usize, usize, &mut [f64]) -> Result<(), LookupError>,
+    out: &mut [T],
+    bad: T,
+    batch: impl Fn(Range<usize>, &mut [T]) -> Result<(), LookupError>,
 ) -> Bad {
+    let n = out.len();
     let mut start = 0;
     while start < n {
-        match batch(start, n, &mut out[start..n]) {
-            Ok(()) => return None,
-            Err(e) => {
-                let index = match e {
-                    LookupError::BatchElement { index, .. } => start + index,
-                    _ => start,
-                };
-                let message = match e {
-                    LookupError::BatchElement {
-                        name, value, lo, hi, ..
-                    } => LookupError::OutOfDomain { name, value, lo, hi }.to_string(),
-                    other => other.to_string(),
-                };
-                if !nan {
-                    return Some((index, message));
-                }
-                out[index] = f64::NAN;
-                start = index + 1;
+        let Err(e) = batch(start..n, &mut out[start..]) else {
+            return None;
+        };
+        let (k, message, skip) = element(e);
+        let i = start + k;
+        if !(nan && skip) || i >= n {
+            return Some((i, message));
+        }
+        // A failed batch promises only that `out` is partly written, so
+        // the elements before the bad one (all in the domain) run again.
+        if k > 0 {
+            if let Err(e) = batch(start..i, &mut out[start..i]) {
+                let (k, message, _) = element(e);
+                return Some((start + k, message));
             }
         }
+        out[i] = bad;
+        start = i + 1;
     }
     None
 }
 
-/// Fills `out` (and `slope`) element by element with `one`; bad elements
-/// as in [`fill_batch`].
-fn fill_each(
-    n: usize,
+/// μ and the slope into `mu` and `slope` through a batch of pairs, a chunk
+/// at a time; bad elements as in [`fill_batch`].
+fn fill_pairs(
     nan: bool,
     mu: &mut [f64],
     slope: &mut [f64],
-    one: impl Fn(usize) -> Result<(f64, f64), LookupError>,
+    batch: impl Fn(Range<usize>, &mut [(f64, f64)]) -> Result<(), LookupError>,
 ) -> Bad {
-    for i in 0..n {
-        match one(i) {
-            Ok((m, s)) => (mu[i], slope[i]) = (m, s),
-            Err(e) if nan => {
-                let _ = e;
-                (mu[i], slope[i]) = (f64::NAN, f64::NAN);
-            }
-            Err(e) => return Some((i, e.to_string())),
+    let mut pairs = [(0.0, 0.0); CHUNK];
+    let mut a = 0;
+    while a < mu.len() {
+        let b = (a + CHUNK).min(mu.len());
+        let chunk = &mut pairs[..b - a];
+        let failed = fill_batch(nan, chunk, (f64::NAN, f64::NAN), |r, o| {
+            batch(a + r.start..a + r.end, o)
+        });
+        if let Some((k, message)) = failed {
+            return Some((a + k, message));
         }
+        for (i, &(m, s)) in chunk.iter().enumerate() {
+            (mu[a + i], slope[a + i]) = (m, s);
+        }
+        a = b;
     }
     None
 }
@@ -118,13 +165,17 @@ impl TableCore {
         nan: bool,
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
-        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
-        let n = out.len();
+        let out = slice_mut("out", &mut out)?;
+        same_len(out.len(), &[("psi", p.len()), ("theta", t.len()), ("f_star", f.len())])?;
         let table = &*self.0;
-        Ok(py.detach(|| fill_batch(n, nan, out, |a, b, o| table.mu_batch(&p[a..b], &t[a..b], &f[a..b], o))))
+        Ok(py.detach(|| {
+            fill_batch(nan, out, f64::NAN, |r, o| {
+                table.mu_batch(&p[r.clone()], &t[r.clone()], &f[r], o)
+            })
+        }))
     }
 
-    /// μ and ∂μ/∂F* into `mu` and `slope`.
+    /// μ and ∂μ/∂F* into `mu` and `slope`; as `mu_into`.
     #[allow(clippy::too_many_arguments)]
     fn mu_with_slope_into(
         &self,
@@ -137,12 +188,22 @@ impl TableCore {
         nan: bool,
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
-        let mu = mu.as_slice_mut().map_err(|_| value_error("mu must be contiguous"))?;
-        let slope = slope
-            .as_slice_mut()
-            .map_err(|_| value_error("slope must be contiguous"))?;
+        let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
+        same_len(
+            mu.len(),
+            &[
+                ("psi", p.len()),
+                ("theta", t.len()),
+                ("f_star", f.len()),
+                ("slope", slope.len()),
+            ],
+        )?;
         let table = &*self.0;
-        Ok(py.detach(|| fill_each(mu.len(), nan, mu, slope, |i| table.mu_with_slope(p[i], t[i], f[i]))))
+        Ok(py.detach(|| {
+            fill_pairs(nan, mu, slope, |r, o| {
+                table.mu_with_slope_batch(&p[r.clone()], &t[r.clone()], &f[r], o)
+            })
+        }))
     }
 
     fn curve(&self, psi: f64, theta: f64) -> PyResult<CurveCore> {
@@ -164,6 +225,9 @@ impl TableCore {
         dict.set_item("tolerance", info.tolerance)?;
         dict.set_item("max_rel_error", info.accuracy.max_rel)?;
         dict.set_item("p99_rel_error", info.accuracy.p99_rel)?;
+        dict.set_item("error_samples", info.accuracy.samples)?;
+        dict.set_item("worst_point", info.accuracy.worst)?;
+        dict.set_item("fast_kernel", self.0.fast_kernel())?;
         dict.set_item("nodes", info.build.nodes)?;
         dict.set_item("precision", info.precision.name())?;
         dict.set_item("format_version", info.format_version)?;
@@ -209,10 +273,10 @@ impl CurveCore {
         nan: bool,
     ) -> PyResult<Bad> {
         let f = slice("f_star", &f_star)?;
-        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
-        let n = out.len();
+        let out = slice_mut("out", &mut out)?;
+        same_len(out.len(), &[("f_star", f.len())])?;
         let curve = &self.0;
-        Ok(py.detach(|| fill_batch(n, nan, out, |a, b, o| curve.mu_batch(&f[a..b], o))))
+        Ok(py.detach(|| fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[r], o))))
     }
 
     fn mu_with_slope_into(
@@ -224,12 +288,10 @@ impl CurveCore {
         nan: bool,
     ) -> PyResult<Bad> {
         let f = slice("f_star", &f_star)?;
-        let mu = mu.as_slice_mut().map_err(|_| value_error("mu must be contiguous"))?;
-        let slope = slope
-            .as_slice_mut()
-            .map_err(|_| value_error("slope must be contiguous"))?;
+        let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
+        same_len(mu.len(), &[("f_star", f.len()), ("slope", slope.len())])?;
         let curve = &self.0;
-        Ok(py.detach(|| fill_each(mu.len(), nan, mu, slope, |i| curve.mu_with_slope(f[i]))))
+        Ok(py.detach(|| fill_pairs(nan, mu, slope, |r, o| curve.mu_with_slope_batch(&f[r], o))))
     }
 }
 
@@ -266,16 +328,16 @@ impl ModelCore {
         nan: bool,
     ) -> PyResult<Bad> {
         let x = slice("x", &x)?;
-        let out = out.as_slice_mut().map_err(|_| value_error("out must be contiguous"))?;
+        let out = slice_mut("out", &mut out)?;
+        same_len(7 * x.len(), &[("out", out.len())])?;
         let model = &self.0;
         Ok(py.detach(|| {
-            for (i, &v) in x.iter().enumerate() {
+            for (i, (&v, row)) in x.iter().zip(out.chunks_exact_mut(7)).enumerate() {
                 let c = if at_f_star {
                     model.at_f_star(v)
                 } else {
                     model.at_h_star(v)
                 };
-                let row = &mut out[7 * i..7 * i + 7];
                 match c {
                     Ok(c) => row.copy_from_slice(&[
                         c.h_star,

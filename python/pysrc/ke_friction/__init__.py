@@ -27,9 +27,10 @@ from __future__ import annotations
 import dataclasses
 import numbers
 import os
-from typing import Any, Dict, Tuple, Union
+from typing import Any, Dict, Literal, Tuple, Union, overload
 
 import numpy as np
+import numpy.typing as npt
 
 from . import _core
 
@@ -38,11 +39,21 @@ __all__ = ["Table", "Curve", "Model", "Contact", "params_from_physical", "CURVE_
 #: The relative accuracy of :meth:`Curve.from_model` against the model.
 CURVE_ACCURACY: float = _core.CURVE_ACCURACY
 
-ArrayLike = Union[float, "np.typing.ArrayLike"]
+#: What lookups take: a number or anything :func:`numpy.asarray` turns into
+#: an array of real numbers.
+ArrayLike = npt.ArrayLike
+#: What lookups give for array input: float64 arrays of the broadcast shape.
+FloatArray = npt.NDArray[np.float64]
+#: ``out_of_domain``: raise ValueError, or give NaN at those elements.
+OutOfDomain = Literal["raise", "nan"]
 _MODES = ("raise", "nan")
 
 
 def _is_scalar(x: Any) -> bool:
+    """A real number that is not an array (bool excluded, as NumPy's
+    ``isreal`` would let it through silently)."""
+    if type(x) is float:  # the common case first: isinstance on an ABC is slow
+        return True
     return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
 
 
@@ -113,15 +124,60 @@ class Table:
             raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
         return Table(_core.TableCore.load(os.fspath(path)))
 
-    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Any:
-        """The static friction coefficient mu(psi, theta, F*).
+    @overload
+    def mu(self, psi: float, theta: float, f_star: float, *, out_of_domain: OutOfDomain = ...) -> float: ...
+    @overload
+    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
+           out_of_domain: OutOfDomain = ...) -> FloatArray: ...
 
-        psi: plasticity index; theta: adhesion parameter; f_star: external
-        force F/(A_n H). Python numbers give a float; array-likes broadcast
-        (NumPy rules) and give a float64 array of the broadcast shape.
-        A value outside the table's range, or NaN, raises ValueError (the
-        argument, value, index and range), or gives NaN with
-        ``out_of_domain="nan"``.
+    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Any:
+        """The static friction coefficient mu(psi, theta, F*), interpolated.
+
+        Parameters
+        ----------
+        psi : float or array_like
+            Plasticity index, within ``info["psi"]`` ([0.5, 8] for the
+            default table).
+        theta : float or array_like
+            Adhesion parameter dgamma/(sigma H), within ``info["theta"]``
+            ([0, 0.01]).
+        f_star : float or array_like
+            External force F/(A_n H), within ``info["f_star"]`` ([1e-5, 0.1]).
+        out_of_domain : {"raise", "nan"}
+            What a value outside its range, or NaN, does: raise ValueError
+            (the default), or give NaN at that element.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            A float if all three are Python (or NumPy scalar) numbers; else
+            a float64 array of the arguments' broadcast shape (NumPy's
+            rules; 0-d arrays give a NumPy float64 scalar, as ufuncs do).
+            The table's error is within ``info["tolerance"]`` relative to
+            direct integration.
+
+        Raises
+        ------
+        ValueError
+            An argument outside its range or NaN, naming it, its value, its
+            index in the broadcast shape and the range, e.g. ``f_star = 0.2
+            is outside the range [1e-5, 0.1] (at index (1, 0))``; or shapes
+            that do not broadcast.
+        TypeError
+            An argument that is not a real number or array of them (str,
+            None, bool, complex, object arrays).
+
+        Array input runs in one call with the GIL released; contiguous
+        float64 arrays of the broadcast shape are read in place, other
+        dtypes, orders and shapes are converted first.
+
+        Examples
+        --------
+        >>> t = Table.default()
+        >>> round(t.mu(1.0, 0.001, 0.01), 6)
+        0.525211
+        >>> t.mu([0.5, 1.0, 2.0], 0.003, [[1e-4], [1e-2]]).shape
+        (2, 3)
         """
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
@@ -134,11 +190,26 @@ class Table:
         shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
         out = np.empty(p.size)
         _raise(self._core.mu_into(p, t, f, out, nan), shape)
-        return out.reshape(shape)
+        return out.reshape(shape)[()]
+
+    @overload
+    def mu_with_slope(self, psi: float, theta: float, f_star: float, *,
+                      out_of_domain: OutOfDomain = ...) -> Tuple[float, float]: ...
+    @overload
+    def mu_with_slope(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
+                      out_of_domain: OutOfDomain = ...) -> Tuple[FloatArray, FloatArray]: ...
 
     def mu_with_slope(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
-                      out_of_domain: str = "raise") -> Tuple[Any, Any]:
-        """(mu, dmu/dF*) at (psi, theta, F*); inputs, outputs and errors as :meth:`mu`."""
+                      out_of_domain: OutOfDomain = "raise") -> Tuple[Any, Any]:
+        """mu and its slope dmu/dF* at (psi, theta, F*), for Newton-type
+        solvers: a pair of floats, or of float64 arrays of the broadcast
+        shape. Arguments, ``out_of_domain`` and errors as :meth:`mu`
+        (NaN in both at a bad element with ``out_of_domain="nan"``).
+
+        >>> mu, slope = Table.default().mu_with_slope(2.0, 0.003, [1e-3, 1e-2])
+        >>> bool((slope < 0).all())   # mu falls as the load rises
+        True
+        """
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
             try:
@@ -150,15 +221,25 @@ class Table:
         shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
         mu, slope = np.empty(p.size), np.empty(p.size)
         _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan), shape)
-        return mu.reshape(shape), slope.reshape(shape)
+        return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     @property
     def info(self) -> Dict[str, Any]:
-        """What the table holds: the ranges ``psi``, ``theta``, ``f_star``
-        (lo, hi); ``beta``, ``nu``, ``eps_star``; ``model`` ("ke"/"ceb");
-        ``fit`` ("consistent"/"as-printed"); ``tolerance``;
-        ``max_rel_error`` and ``p99_rel_error`` (measured at build);
-        ``nodes``, ``precision``, ``format_version``, ``generator``."""
+        """What the table holds, a new dict each time:
+
+        * ``psi``, ``theta``, ``f_star``: the ranges (lo, hi) lookups accept;
+        * ``beta``, ``nu``, ``eps_star``: the model constants it was built with;
+        * ``model``: ``"ke"`` (Kogut-Etsion) or ``"ceb"`` (CEB-type);
+          ``fit``: ``"consistent"`` or ``"as-printed"`` (see :class:`Model`);
+        * ``tolerance``: the largest relative error of mu it promises;
+        * ``max_rel_error``, ``p99_rel_error``: its error against direct
+          integration measured at build time at ``error_samples`` random
+          points, the largest at ``worst_point`` (psi, theta, F*);
+        * ``nodes`` (psi, theta, F*), ``precision`` (``"f32"``/``"f64"``),
+          ``format_version``, ``generator`` (the program that built it);
+        * ``fast_kernel``: whether this CPU runs the AVX2 kernel (else the
+          portable f64 one).
+        """
         return self._core.info()
 
     def curve(self, psi: float, theta: float) -> "Curve":
@@ -208,7 +289,12 @@ class Curve:
         """The largest relative error of mu measured when the curve was built."""
         return self._core.max_error()
 
-    def mu(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Any:
+    @overload
+    def mu(self, f_star: float, *, out_of_domain: OutOfDomain = ...) -> float: ...
+    @overload
+    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = ...) -> FloatArray: ...
+
+    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Any:
         """mu at f_star: a float for a Python number, a float64 array for an
         array-like. Outside the range, or NaN: ValueError, or NaN with
         ``out_of_domain="nan"``."""
@@ -223,9 +309,15 @@ class Curve:
         shape, (f,) = _arrays(f_star=f_star)
         out = np.empty(f.size)
         _raise(self._core.mu_into(f, out, nan), shape)
-        return out.reshape(shape)
+        return out.reshape(shape)[()]
 
-    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Tuple[Any, Any]:
+    @overload
+    def mu_with_slope(self, f_star: float, *, out_of_domain: OutOfDomain = ...) -> Tuple[float, float]: ...
+    @overload
+    def mu_with_slope(self, f_star: ArrayLike, *,
+                      out_of_domain: OutOfDomain = ...) -> Tuple[FloatArray, FloatArray]: ...
+
+    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Tuple[Any, Any]:
         """(mu, dmu/dF*) at f_star; as :meth:`mu`."""
         nan = _mode(out_of_domain)
         if _is_scalar(f_star):
@@ -238,7 +330,7 @@ class Curve:
         shape, (f,) = _arrays(f_star=f_star)
         mu, slope = np.empty(f.size), np.empty(f.size)
         _raise(self._core.mu_with_slope_into(f, mu, slope, nan), shape)
-        return mu.reshape(shape), slope.reshape(shape)
+        return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     def __repr__(self) -> str:
         return f"Curve(range={self.range})"
@@ -287,23 +379,23 @@ class Model:
         """psi, theta, beta, nu, eps_star, fit and model."""
         return self._core.params()
 
-    def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: str) -> Contact:
+    def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain) -> Contact:
         nan = _mode(out_of_domain)
         scalar = _is_scalar(x)
         shape, (flat,) = _arrays(**{name: x})
         out = np.empty((flat.size, 7))
         _raise(self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan), shape)
-        cols = [out[:, k].reshape(shape) for k in range(7)]
+        cols = [np.ascontiguousarray(out[:, k]).reshape(shape)[()] for k in range(7)]
         return Contact(*(float(c) for c in cols)) if scalar else Contact(*cols)
 
-    def at_f_star(self, f_star: ArrayLike, *, out_of_domain: str = "raise") -> Contact:
+    def at_f_star(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Contact:
         """The model at external force F* > 0 (solving F*(h*) = F*): a
         :class:`Contact` of floats for a number, of arrays for an array-like.
         F* <= 0, NaN or beyond the model's reach raises ValueError (or gives
         NaN with ``out_of_domain="nan"``)."""
         return self._at(f_star, True, "f_star", out_of_domain)
 
-    def at_h_star(self, h_star: ArrayLike, *, out_of_domain: str = "raise") -> Contact:
+    def at_h_star(self, h_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Contact:
         """The model at separation h* (|h*| <= 1e6): a :class:`Contact`; mu is
         NaN where F* <= 0."""
         return self._at(h_star, False, "h_star", out_of_domain)
