@@ -42,6 +42,69 @@ fn same_len(n: usize, named: &[(&str, usize)]) -> PyResult<()> {
     }
 }
 
+/// Checks the lengths of a table lookup's inputs: each `n`, or 1 for an
+/// argument the same for every element (broadcast here, a chunk at a time,
+/// rather than copied `n` times by NumPy).
+fn table_inputs(n: usize, named: [(&str, &[f64]); 3]) -> PyResult<bool> {
+    for (name, x) in named {
+        if x.len() != n && x.len() != 1 {
+            return Err(value_error(format!("{name} has {} elements, not {n} or 1", x.len())));
+        }
+    }
+    Ok(n > 1 && named.iter().any(|(_, x)| x.len() == 1))
+}
+
+/// A chunk of [`CHUNK`] copies of `x[0]` if `x` is one value (else unused).
+fn repeated(x: &[f64]) -> [f64; CHUNK] {
+    [if x.len() == 1 { x[0] } else { 0.0 }; CHUNK]
+}
+
+/// The inputs of the elements `r` (at most [`CHUNK`] of them where `x` is
+/// one value): `x[r]`, or that many copies of the one value.
+fn part<'a>(x: &'a [f64], copies: &'a [f64; CHUNK], r: Range<usize>) -> &'a [f64] {
+    if x.len() == 1 {
+        &copies[..r.len()]
+    } else {
+        &x[r]
+    }
+}
+
+/// Runs `batch` over `r` in pieces of at most [`CHUNK`] elements if
+/// `chunked`, else at once; a bad element's index is relative to `r`.
+fn in_chunks<T>(
+    chunked: bool,
+    r: Range<usize>,
+    out: &mut [T],
+    batch: impl Fn(Range<usize>, &mut [T]) -> Result<(), LookupError>,
+) -> Result<(), LookupError> {
+    if !chunked {
+        return batch(r, out);
+    }
+    let mut a = r.start;
+    while a < r.end {
+        let b = (a + CHUNK).min(r.end);
+        let k = a - r.start;
+        batch(a..b, &mut out[k..k + (b - a)]).map_err(|e| match e {
+            LookupError::BatchElement {
+                index,
+                name,
+                value,
+                lo,
+                hi,
+            } => LookupError::BatchElement {
+                index: index + k,
+                name,
+                value,
+                lo,
+                hi,
+            },
+            other => other,
+        })?;
+        a = b;
+    }
+    Ok(())
+}
+
 /// The index (in the slices passed) and message of a batch's error, and
 /// whether it is one element's (the others, mismatched lengths, cannot be
 /// skipped). An element's message is the scalar lookup's ("psi = 9 is
@@ -154,7 +217,8 @@ impl TableCore {
     }
 
     /// μ into `out`; returns None, or (index, message) of the first bad
-    /// element (with nan=False).
+    /// element (with nan=False). Each input has `out`'s length or is one
+    /// value for all.
     fn mu_into(
         &self,
         py: Python<'_>,
@@ -166,11 +230,15 @@ impl TableCore {
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let out = slice_mut("out", &mut out)?;
-        same_len(out.len(), &[("psi", p.len()), ("theta", t.len()), ("f_star", f.len())])?;
+        let chunked = table_inputs(out.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
+        let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
         Ok(py.detach(|| {
             fill_batch(nan, out, f64::NAN, |r, o| {
-                table.mu_batch(&p[r.clone()], &t[r.clone()], &f[r], o)
+                in_chunks(chunked, r, o, |r, o| {
+                    let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                    table.mu_batch(p, t, f, o)
+                })
             })
         }))
     }
@@ -189,19 +257,15 @@ impl TableCore {
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
-        same_len(
-            mu.len(),
-            &[
-                ("psi", p.len()),
-                ("theta", t.len()),
-                ("f_star", f.len()),
-                ("slope", slope.len()),
-            ],
-        )?;
+        same_len(mu.len(), &[("slope", slope.len())])?;
+        table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
+        let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
+        // fill_pairs hands out at most CHUNK elements at a time.
         Ok(py.detach(|| {
             fill_pairs(nan, mu, slope, |r, o| {
-                table.mu_with_slope_batch(&p[r.clone()], &t[r.clone()], &f[r], o)
+                let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                table.mu_with_slope_batch(p, t, f, o)
             })
         }))
     }

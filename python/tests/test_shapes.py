@@ -82,6 +82,26 @@ def test_contiguous_float64_input_is_not_copied():
     assert not np.shares_memory(other, a) and other.shape == (6,)
     _, (copied,) = _arrays(psi=a[:, ::2])
     assert not np.shares_memory(copied, a) and copied.flags.c_contiguous
+    # Lookups pass one value for a scalar argument; the native layer repeats it.
+    shape, (flat, one, row) = _arrays(psi=a, theta=[[0.001]], f_star=[0.01, 0.02, 0.03], _scalars=True)
+    assert shape == (2, 3) and np.shares_memory(flat, a) and one.shape == (1,) and row.shape == (6,)
+
+
+def test_scalar_arguments_repeated_natively_match_full_arrays(table, points):
+    psi, theta, f = points
+    for args in [(psi, 0.003, f), (2.0, theta, f), (2.0, 0.003, f), (psi, [0.003], [[0.01]])]:
+        full = [np.ascontiguousarray(np.broadcast_to(np.asarray(x, float), np.broadcast_shapes(
+            *(np.shape(y) for y in args)))) for x in args]
+        assert np.array_equal(table.mu(*args), table.mu(*full))
+        assert all(np.array_equal(x, y) for x, y in zip(table.mu_with_slope(*args), table.mu_with_slope(*full)))
+    bad = f.copy()
+    bad[[3, 300, 301]] = [1.0, np.nan, 0.0]
+    with pytest.raises(ValueError, match=r"f_star = 1 .*\(at index \(3,\)\)"):
+        table.mu(2.0, 0.003, bad)
+    mu = table.mu(2.0, 0.003, bad, out_of_domain="nan")
+    assert np.isnan(mu).sum() == 3 and np.isnan(mu[[3, 300, 301]]).all()
+    with pytest.raises(ValueError, match=r"^psi = 9 .*\(at index \(0,\)\)"):
+        table.mu(9.0, 0.003, f)
 
 
 def test_outputs_are_new_writable_arrays(table):

@@ -64,7 +64,11 @@ def _mode(out_of_domain: str) -> bool:
 
 
 def _arrays(**named: Any) -> Tuple[Tuple[int, ...], list]:
-    """Broadcast the named inputs; flat contiguous float64 views where possible."""
+    """Broadcast the named inputs: their shape, and each as a flat
+    contiguous float64 array of that shape's size (a view, not a copy, of
+    an array that already is one) or, with ``scalars``, of size 1 where it
+    is one value (the native layer repeats it)."""
+    scalars = named.pop("_scalars", False)
     arrays = []
     for name, value in named.items():
         a = np.asarray(value)
@@ -81,6 +85,8 @@ def _arrays(**named: Any) -> Tuple[Tuple[int, ...], list]:
     for a in arrays:
         if a.shape == shape and a.dtype == np.float64 and a.flags.c_contiguous:
             flat.append(a.reshape(-1))  # a view: no copy
+        elif scalars and a.size == 1:
+            flat.append(np.ascontiguousarray(a, dtype=np.float64).reshape(1))
         else:
             flat.append(np.ascontiguousarray(np.broadcast_to(a, shape), dtype=np.float64).reshape(-1))
     return shape, flat
@@ -179,6 +185,8 @@ class Table:
         >>> t.mu([0.5, 1.0, 2.0], 0.003, [[1e-4], [1e-2]]).shape
         (2, 3)
         """
+        if type(psi) is float and type(theta) is float and type(f_star) is float and out_of_domain == "raise":
+            return self._core.mu_scalar(psi, theta, f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
             try:
@@ -187,8 +195,8 @@ class Table:
                 if nan:
                     return float("nan")
                 raise
-        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
-        out = np.empty(p.size)
+        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star, _scalars=True)
+        out = np.empty(int(np.prod(shape)))
         _raise(self._core.mu_into(p, t, f, out, nan), shape)
         return out.reshape(shape)[()]
 
@@ -210,6 +218,8 @@ class Table:
         >>> bool((slope < 0).all())   # mu falls as the load rises
         True
         """
+        if type(psi) is float and type(theta) is float and type(f_star) is float and out_of_domain == "raise":
+            return self._core.mu_with_slope_scalar(psi, theta, f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
             try:
@@ -218,8 +228,9 @@ class Table:
                 if nan:
                     return (float("nan"), float("nan"))
                 raise
-        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star)
-        mu, slope = np.empty(p.size), np.empty(p.size)
+        shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star, _scalars=True)
+        size = int(np.prod(shape))
+        mu, slope = np.empty(size), np.empty(size)
         _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan), shape)
         return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
@@ -298,6 +309,8 @@ class Curve:
         """mu at f_star: a float for a Python number, a float64 array for an
         array-like. Outside the range, or NaN: ValueError, or NaN with
         ``out_of_domain="nan"``."""
+        if type(f_star) is float and out_of_domain == "raise":
+            return self._core.mu_scalar(f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(f_star):
             try:
@@ -319,6 +332,8 @@ class Curve:
 
     def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Tuple[Any, Any]:
         """(mu, dmu/dF*) at f_star; as :meth:`mu`."""
+        if type(f_star) is float and out_of_domain == "raise":
+            return self._core.mu_with_slope_scalar(f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(f_star):
             try:
