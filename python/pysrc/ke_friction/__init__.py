@@ -274,7 +274,16 @@ def _check_real(**named: Any) -> None:
 class Curve:
     """mu(F*) of one surface pair (fixed psi and theta): Hermite cubics in
     ln F* through mu and dmu/dF*, C1-smooth. From :meth:`Table.curve` or
-    :meth:`Curve.from_model`. Immutable; share it freely across threads."""
+    :meth:`Curve.from_model`. Immutable; share it freely across threads.
+    A lookup takes about a nanosecond per load in arrays: the fastest way to
+    evaluate mu where psi and theta stay fixed (a simulation's inner loop).
+
+    >>> c = Curve.from_model(Model(1.0, 0.001), 1e-5, 0.1)   # ~30 ms
+    >>> c.range
+    (1e-05, 0.1)
+    >>> abs(c.mu(0.01) / Model(1.0, 0.001).at_f_star(0.01).mu - 1) < CURVE_ACCURACY
+    True
+    """
 
     __slots__ = ("_core",)
 
@@ -377,6 +386,13 @@ class Model:
     (MODEL.md section 4) or "as-printed" (the literal printed Eq. 18);
     model: "ke" (Kogut-Etsion) or "ceb" (the CEB-type comparison model).
     Invalid values raise ValueError naming the parameter and its range.
+    Wrong types raise TypeError. Array work runs with the GIL released.
+
+    >>> c = Model(1.0, 0.001).at_f_star(0.01)      # solve F*(h*) = 0.01
+    >>> round(c.h_star, 6), round(c.mu, 6)
+    (1.469241, 0.525211)
+    >>> Model(1.0, 0.001).at_h_star([0.0, 1.0, 2.0]).mu.shape
+    (3,)
     """
 
     __slots__ = ("_core",)
