@@ -120,7 +120,7 @@ def main(argv):
     print()
     print(f"| {'contender':<24} | {'ns/query':>8} | {'Table.mu faster by':>18} | {'max rel. error':>14} "
           f"| {'Table.mu more accurate by':>25} |")
-    print(f"|{'-' * 26}|{'-' * 10}:|{'-' * 20}:|{'-' * 16}:|{'-' * 27}:|")
+    print(f"|{'-' * 26}|{'-' * 9}:|{'-' * 19}:|{'-' * 15}:|{'-' * 26}:|")
     for k in shown:
         faster = "" if k in ("Table.mu", "native call alone") else f"{ns[k] / base_ns:.1f}x"
         better = "" if k in ("Table.mu", "native call alone") else f"{errors[k] / base_err:.0f}x"
