@@ -1,20 +1,20 @@
 //! Table lookups against direct integration, on the same random in-domain
 //! queries; and for one surface pair, a `Curve` against the table.
-use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
+use criterion::{black_box, criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use ke_friction::{Curve, Model, Params, Table};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 const N: usize = 4096;
 
-fn queries() -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+fn queries(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let d = Table::embedded().domain();
     let mut rng = ChaCha8Rng::seed_from_u64(42);
     let log = |(lo, hi): (f64, f64), u: f64| (lo.ln() + (hi.ln() - lo.ln()) * u).exp();
     let mut p = vec![];
     let mut t = vec![];
     let mut f = vec![];
-    for _ in 0..N {
+    for _ in 0..n {
         p.push(log(d.psi, rng.gen()));
         t.push(d.theta.0 + (d.theta.1 - d.theta.0) * rng.gen::<f64>());
         f.push(log(d.f_star, rng.gen()));
@@ -24,7 +24,7 @@ fn queries() -> (Vec<f64>, Vec<f64>, Vec<f64>) {
 
 fn bench_lookup(c: &mut Criterion) {
     let table = Table::embedded();
-    let (p, t, f) = queries();
+    let (p, t, f) = queries(N);
     let mut g = c.benchmark_group("lookup");
     // Single calls, as a simulator's inner loop makes them: one call per
     // query over all N queries, so the time per call is the reported time / N.
@@ -133,7 +133,43 @@ fn bench_lookup(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_lookup, bench_curve);
+/// A large batch (10⁵ random queries, one call), on warm caches and after
+/// other work has swept them: a 64 MB buffer written and freed before
+/// every call (not timed), as a caller's own work between batches would.
+/// The cold call is where the kernel's sequential pass over the
+/// coefficients (for batches of about 12,900 queries or more) pays.
+fn bench_large_batch(c: &mut Criterion) {
+    const LARGE: usize = 100_000;
+    let table = Table::embedded();
+    let (p, t, f) = queries(LARGE);
+    let mut out = vec![0.0; LARGE];
+    let mut g = c.benchmark_group("large_batch");
+    g.throughput(Throughput::Elements(LARGE as u64));
+    g.sample_size(30);
+    g.bench_function("mu_batch_warm", |b| {
+        b.iter(|| {
+            table
+                .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
+                .unwrap();
+            black_box(&out);
+        })
+    });
+    g.bench_function("mu_batch_cold", |b| {
+        b.iter_batched(
+            || black_box(vec![1u8; 64 << 20]).len(),
+            |_| {
+                table
+                    .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
+                    .unwrap();
+                black_box(&out);
+            },
+            BatchSize::PerIteration,
+        )
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_lookup, bench_curve, bench_large_batch);
 criterion_main!(benches);
 
 /// One surface pair (ψ, θ fixed), random loads: the curve against the
@@ -144,7 +180,7 @@ fn bench_curve(c: &mut Criterion) {
     const THETA: f64 = 0.003;
     let table = Table::embedded();
     let curve = table.curve(PSI, THETA).unwrap();
-    let (_, _, f) = queries();
+    let (_, _, f) = queries(N);
     let hi = curve.range().1;
     let (p, t) = (vec![PSI; N], vec![THETA; N]);
     let mut g = c.benchmark_group("surface");

@@ -216,16 +216,18 @@ fn the_fast_kernel_stays_within_3e_6_of_the_exact_interpolant() {
 
 /// A batch form checked against its scalar form (`key` gives a result's
 /// bits): equal bit for bit on random queries and on lengths that are not
-/// a multiple of the fast kernel's eight; a length mismatch is an error;
-/// a bad element in the first block, a later one or the tail is reported
-/// by index, with the elements before it written as if it were not there.
+/// a multiple of the fast kernel's eight, and on a batch large enough
+/// (20,000) for the fast kernel to read the coefficients through first; a
+/// length mismatch is an error; a bad element in the first block, a later
+/// one or the tail is reported by index, with the elements before it
+/// written as if it were not there.
 fn check_batch<T: Copy + Default>(
     batch: impl Fn(&[f64], &[f64], &[f64], &mut [T]) -> Result<(), LookupError>,
     single: impl Fn(f64, f64, f64) -> T,
     key: impl Fn(T) -> (u64, u64),
 ) {
     let mut rng = ChaCha8Rng::seed_from_u64(3);
-    let q: Vec<(f64, f64, f64)> = (0..1003).map(|_| query(&mut rng)).collect();
+    let q: Vec<(f64, f64, f64)> = (0..20_000).map(|_| query(&mut rng)).collect();
     let psi: Vec<f64> = q.iter().map(|x| x.0).collect();
     let theta: Vec<f64> = q.iter().map(|x| x.1).collect();
     let f: Vec<f64> = q.iter().map(|x| x.2).collect();
@@ -234,7 +236,7 @@ fn check_batch<T: Copy + Default>(
             assert_eq!(key(out[j]), key(single(psi[j], theta[j], f[j])), "element {j}");
         }
     };
-    for len in [0, 1, 7, 9, 17, 1001, 1003] {
+    for len in [0, 1, 7, 9, 17, 1001, 1003, 20_000] {
         let mut out = vec![T::default(); len];
         batch(&psi[..len], &theta[..len], &f[..len], &mut out).unwrap();
         same(&out, len);
@@ -242,7 +244,7 @@ fn check_batch<T: Copy + Default>(
     let mut out = vec![T::default(); q.len()];
     let err = batch(&psi, &theta, &f[..10], &mut out).unwrap_err();
     assert!(matches!(err, LookupError::LengthMismatch { f_star: 10, .. }));
-    for (len, at) in [(1000, 7), (1000, 500), (1003, 1001), (13, 12)] {
+    for (len, at) in [(1000, 7), (1000, 500), (1003, 1001), (13, 12), (20_000, 15_001)] {
         let mut bad = f[..len].to_vec();
         bad[at] = f64::NAN;
         let mut out = vec![T::default(); len];
