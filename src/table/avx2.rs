@@ -557,14 +557,16 @@ const LINE_FLOATS: usize = 16;
 /// It is for the caller whose caches other work has swept between
 /// batches: the queries' scattered reads would find the table in memory,
 /// one line at a time, and a sequential pass is far cheaper than those
-/// misses. Measured on this 2-core VM (2026-11-23), without → with it:
-/// criterion's `large_batch/mu_batch_cold` (10⁵ queries after 64 MB of
-/// other writes) 12.1–13.3 → 10.6–12.4 ns a query, warm unchanged
-/// (8.0–8.5); 10⁵ queries from Python right after SciPy's interpolator
-/// (`python/bench.py`, 4 A/B runs) 13.6–14.2 → 11.7–13.9 ns; 22,000
-/// queries 14–19 → 10.6–10.9 ns. On warm caches the pass costs about
-/// 10 µs (~0.8 ns a query at the threshold, less above it), which is why
-/// smaller batches skip it.
+/// misses. Measured on this 2-core VM (2026-11-23), without → with it,
+/// medians of 101–301 rounds with both interleaved in one process: 10⁵
+/// queries after 64 MB of other writes 10.6 → 10.3 ns a query, on warm
+/// caches 8.5 → 8.6 ns; 20,000 queries 15.0 → 13.7 ns cold, 8.5 → 9.0
+/// warm. From Python right after SciPy's interpolator, where more of the
+/// table has gone (`python/bench.py`, 4 A/B runs of two builds), 10⁵
+/// queries 13.6–14.2 → 11.7–13.9 ns. Prefetching a few lines per block
+/// of queries instead, spread over the batch, saved nothing. On warm
+/// caches the pass costs about 10 µs, which is why smaller batches skip
+/// it.
 #[inline(always)]
 fn prefetch_coefficients(kernel: &Kernel) {
     for line in kernel.coefs.chunks(LINE_FLOATS) {
