@@ -15,13 +15,18 @@ ln F*), linear and cubic; its rows are timed with the coordinates given
 integration (kf.Model) at 2,000 of the points.
 
 Ablation rows: the native call alone (`_core.mu_into` on the same arrays,
-without the Python layer's checks and allocation); Table.mu on warm
-caches (run back to back, not interleaved with SciPy, which sweeps the
-caches between rounds); and Table.mu right after linear RGI and an untimed
-warm-up call on 20,000 copies of one point, which touches no new memory
-but lets the core settle into running 256-bit FMA code (what is left of
-the gap to the warm row is then memory; the rest is that warm-up). Then Curve.mu and Table.mu on 10^6 loads of one
-surface pair, and one call with Python floats.
+without the Python layer's checks and allocation). Then a second table:
+Table.mu timed right after each of several things (interleaved, medians),
+to see which part of the cache and CPU state that SciPy's call leaves
+behind costs what: nothing (warm caches); linear RGI; linear RGI and a
+5 ms Python spin (were it the core's clock or the 256-bit units waking
+up, waiting would help); linear RGI and an untimed call on 12,000 copies
+of one point (the kernel's code and the core warmed, one cell of the
+table read); the same on 20,000 copies, which also runs the batch's
+read-through of the table's coefficients into L2 (from 12,900 queries);
+a 64 MB NumPy fill (the caches swept, no SciPy); a 5 ms sleep (the core
+left to this shared VM's other work). Then Curve.mu and Table.mu on
+10^6 loads of one surface pair, and one call with Python floats.
 
 --quick (CI) runs 3 rounds and exits 1 unless Table.mu is within the table's
 tolerance and linear RGI's error is at least 100x Table.mu's. Speed ratios
@@ -68,6 +73,37 @@ def cpu_name():
         return platform.processor() or "unknown CPU"
 
 
+def spin(seconds):
+    t0 = time.perf_counter()
+    while time.perf_counter() - t0 < seconds:
+        pass
+
+
+def ablation_before(table, rgi_linear, coords, points, rounds):
+    """Table.mu's times right after each of several things (see the module docstring)."""
+    one_point = {n: [np.full(n, a[0]) for a in points] for n in (12_000, 20_000)}
+    sweep = np.empty(8_000_000)
+
+    def rgi():
+        np.exp(rgi_linear(coords))
+
+    before = {
+        "nothing (warm caches)": lambda: None,
+        "linear RGI": rgi,
+        "linear RGI, then a 5 ms spin": lambda: (rgi(), spin(0.005)),
+        "linear RGI, then 12,000 queries of one point": lambda: (rgi(), table.mu(*one_point[12_000])),
+        "linear RGI, then 20,000 (table read through)": lambda: (rgi(), table.mu(*one_point[20_000])),
+        "a 64 MB fill": lambda: sweep.fill(1.0),
+        "a 5 ms sleep": lambda: time.sleep(0.005),
+    }
+    times = {k: [] for k in before}
+    for _ in range(rounds):
+        for name, run in before.items():
+            run()
+            times[name].append(timed(lambda: table.mu(*points))[0])
+    return times
+
+
 def main(argv):
     quick = "--quick" in argv
     rounds = int(argv[argv.index("--rounds") + 1]) if "--rounds" in argv else (3 if quick else 15)
@@ -109,13 +145,7 @@ def main(argv):
         for name, run in contenders.items():
             t, results[name] = timed(run)
             times[name].append(t)
-    warm = [timed(lambda: table.mu(psi, theta, f))[0] for _ in range(rounds)]
-    one_point = [np.full(20_000, a[0]) for a in (psi, theta, f)]
-    settled = []
-    for _ in range(rounds):
-        np.exp(rgi["linear"](coords))
-        table.mu(*one_point)
-        settled.append(timed(lambda: table.mu(psi, theta, f))[0])
+    before = ablation_before(table, rgi["linear"], coords, (psi, theta, f), rounds)
 
     exact = np.array([kf.Model(psi[i], theta[i]).at_f_star(f[i]).mu for i in range(ERROR_SAMPLES)])
     errors = {k: float(np.max(np.abs(r[:ERROR_SAMPLES] / exact - 1))) for k, r in results.items()}
@@ -134,8 +164,12 @@ def main(argv):
         faster = "" if k in ("Table.mu", "native call alone") else f"{ns[k] / base_ns:.1f}x"
         better = "" if k in ("Table.mu", "native call alone") else f"{errors[k] / base_err:.0f}x"
         print(f"| {k:<24} | {ns[k]:>8.1f} | {faster:>18} | {errors[k]:>14.2e} | {better:>25} |")
-    print(f"| {'Table.mu, warm caches':<24} | {median_ns(warm, N):>8.1f} | {'':>18} | {'':>14} | {'':>25} |")
-    print(f"| {'Table.mu, core settled':<24} | {median_ns(settled, N):>8.1f} | {'':>18} | {'':>14} | {'':>25} |")
+    print()
+    print(f"Table.mu on the same points, timed right after (median of {rounds} interleaved rounds):")
+    print(f"| {'what ran just before':<44} | {'ns/query':>8} | {'linear RGI slower by':>20} |")
+    print(f"|{'-' * 46}|{'-' * 9}:|{'-' * 21}:|")
+    for k, v in before.items():
+        print(f"| {k:<44} | {median_ns(v, N):>8.1f} | {ns['RGI linear'] / median_ns(v, N):>19.1f}x |")
 
     # One surface pair: a curve against the table on the same 10^6 loads.
     p0, t0 = 1.0, 0.003
