@@ -146,23 +146,17 @@ fn bench_large_batch(c: &mut Criterion) {
     let mut g = c.benchmark_group("large_batch");
     g.throughput(Throughput::Elements(LARGE as u64));
     g.sample_size(30);
-    g.bench_function("mu_batch_warm", |b| {
-        b.iter(|| {
-            table
-                .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
-                .unwrap();
-            black_box(&out);
-        })
-    });
+    let mut run = || {
+        table
+            .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
+            .unwrap();
+        black_box(&out);
+    };
+    g.bench_function("mu_batch_warm", |b| b.iter(&mut run));
     g.bench_function("mu_batch_cold", |b| {
         b.iter_batched(
             || black_box(vec![1u8; 64 << 20]).len(),
-            |_| {
-                table
-                    .mu_batch(black_box(&p), black_box(&t), black_box(&f), &mut out)
-                    .unwrap();
-                black_box(&out);
-            },
+            |_| run(),
             BatchSize::PerIteration,
         )
     });
