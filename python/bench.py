@@ -25,7 +25,10 @@ of one point (the kernel's code and the core warmed, one cell of the
 table read); the same on 20,000 copies, which also runs the batch's
 read-through of the table's coefficients into L2 (from 12,900 queries);
 a 64 MB NumPy fill (the caches swept, no SciPy); a 5 ms sleep (the core
-left to this shared VM's other work). Then Curve.mu and Table.mu on
+left to this shared VM's other work); and Table.mu_with_slope, which
+works in pieces of 256 and reads the table through once first
+(Table::prepare_batch), warm and after the 64 MB fill. Then Curve.mu and
+Table.mu on
 10^6 loads of one surface pair, and one call with Python floats.
 
 --quick (CI) runs 3 rounds and exits 1 unless Table.mu is within the table's
@@ -80,12 +83,16 @@ def spin(seconds):
 
 
 def ablation_before(table, rgi_linear, coords, points, rounds):
-    """Table.mu's times right after each of several things (see the module docstring)."""
+    """Table.mu's (or mu_with_slope's) times right after each of several
+    things (see the module docstring): {(what ran before, lookup): times}."""
     one_point = {n: [np.full(n, a[0]) for a in points] for n in (12_000, 20_000)}
     sweep = np.empty(8_000_000)
 
     def rgi():
         np.exp(rgi_linear(coords))
+
+    def fill():
+        sweep.fill(1.0)
 
     before = {
         "nothing (warm caches)": lambda: None,
@@ -93,14 +100,19 @@ def ablation_before(table, rgi_linear, coords, points, rounds):
         "linear RGI, then a 5 ms spin": lambda: (rgi(), spin(0.005)),
         "linear RGI, then 12,000 queries of one point": lambda: (rgi(), table.mu(*one_point[12_000])),
         "linear RGI, then 20,000 (table read through)": lambda: (rgi(), table.mu(*one_point[20_000])),
-        "a 64 MB fill": lambda: sweep.fill(1.0),
+        "a 64 MB fill": fill,
         "a 5 ms sleep": lambda: time.sleep(0.005),
     }
-    times = {k: [] for k in before}
+    runs = [((name, "mu"), run, table.mu) for name, run in before.items()]
+    # mu_with_slope works in pieces and reads the table through itself
+    # first (Table::prepare_batch): warm against swept caches.
+    runs += [(("nothing (warm caches)", "mu_with_slope"), lambda: None, table.mu_with_slope),
+             (("a 64 MB fill", "mu_with_slope"), fill, table.mu_with_slope)]
+    times = {key: [] for key, _, _ in runs}
     for _ in range(rounds):
-        for name, run in before.items():
+        for key, run, lookup in runs:
             run()
-            times[name].append(timed(lambda: table.mu(*points))[0])
+            times[key].append(timed(lambda: lookup(*points))[0])
     return times
 
 
@@ -165,11 +177,12 @@ def main(argv):
         better = "" if k in ("Table.mu", "native call alone") else f"{errors[k] / base_err:.0f}x"
         print(f"| {k:<24} | {ns[k]:>8.1f} | {faster:>18} | {errors[k]:>14.2e} | {better:>25} |")
     print()
-    print(f"Table.mu on the same points, timed right after (median of {rounds} interleaved rounds):")
-    print(f"| {'what ran just before':<44} | {'ns/query':>8} | {'linear RGI slower by':>20} |")
-    print(f"|{'-' * 46}|{'-' * 9}:|{'-' * 21}:|")
-    for k, v in before.items():
-        print(f"| {k:<44} | {median_ns(v, N):>8.1f} | {ns['RGI linear'] / median_ns(v, N):>19.1f}x |")
+    print(f"Table.mu (or mu_with_slope) on the same points, timed right after (median of {rounds} "
+          f"interleaved rounds):")
+    print(f"| {'what ran just before':<44} | {'timed':<13} | {'ns/query':>8} | {'linear RGI slower by':>20} |")
+    print(f"|{'-' * 46}|{'-' * 15}|{'-' * 9}:|{'-' * 21}:|")
+    for (k, lookup), v in before.items():
+        print(f"| {k:<44} | {lookup:<13} | {median_ns(v, N):>8.1f} | {ns['RGI linear'] / median_ns(v, N):>19.1f}x |")
 
     # One surface pair: a curve against the table on the same 10^6 loads.
     p0, t0 = 1.0, 0.003

@@ -258,11 +258,16 @@ impl TableCore {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         same_len(mu.len(), &[("slope", slope.len())])?;
-        table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
+        let chunked = table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        // fill_pairs hands out at most CHUNK elements at a time.
+        // fill_pairs hands out at most CHUNK elements at a time, so the
+        // batch's read-through of the table runs here, once, where the
+        // queries spread over it (no one value for all, as in mu_into).
         Ok(py.detach(|| {
+            if !chunked {
+                table.prepare_batch(mu.len());
+            }
             fill_pairs(nan, mu, slope, |r, o| {
                 let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
                 table.mu_with_slope_batch(p, t, f, o)

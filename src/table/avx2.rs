@@ -178,6 +178,18 @@ impl Kernel {
         unsafe { eval::<SLOPE>(self, psi, theta, f_star) }
     }
 
+    /// Readies the coefficients for `n` queries to come: reads them
+    /// through into the L2 cache ([`prefetch_coefficients`]) if `n` is at
+    /// least one query per 64-byte line of them (about 12,900 for the
+    /// default table), where the queries would read every line several
+    /// times over. Every batch does it first; a caller that splits a batch
+    /// into smaller ones does it once for the whole.
+    pub(super) fn prepare(&self, n: usize) {
+        if n >= self.coefs.len() / LINE_FLOATS {
+            prefetch_coefficients(self);
+        }
+    }
+
     /// Many lookups (see [`batch`]); the slices must all have `out`'s
     /// length. Returns the index of the first query outside the domain.
     pub(super) fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
@@ -488,9 +500,7 @@ unsafe fn batch_with<const SLOPE: bool>(
     };
     let maps = [map(0), map(1), map(2)];
     let queries = [psi, theta, f_star];
-    if n >= kernel.coefs.len() / LINE_FLOATS {
-        prefetch_coefficients(kernel);
-    }
+    kernel.prepare(n);
     // Software pipelined: block i + 8 is located while block i is blended,
     // two independent chains the CPU overlaps. A block with a query
     // outside the domain ends the loop; the single-query kernel then
@@ -562,9 +572,8 @@ unsafe fn batch_with<const SLOPE: bool>(
 const LINE_FLOATS: usize = 16;
 
 /// Reads the coefficients through into the L2 cache, in order: one
-/// software prefetch per 64-byte line. [`batch_with`] does it first for
-/// a batch of at least one query per line (about 12,900 for the default
-/// table's 0.83 MB), where the queries would read every line several times over.
+/// software prefetch per 64-byte line (for large batches, see
+/// [`Kernel::prepare`]).
 ///
 /// It is for the caller whose caches other work has swept between
 /// batches: the queries' scattered reads would find the table in memory,

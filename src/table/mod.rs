@@ -482,6 +482,35 @@ impl Table {
         self.batch(psi, theta, f_star, BatchOutput::WithSlope(out))
     }
 
+    /// Readies the table for `n` lookups made in smaller batches: what a
+    /// batch of `n` queries does first by itself. On the fast kernel (see
+    /// [`fast_kernel`](Self::fast_kernel)) a batch of at least one query
+    /// per 64-byte line of coefficients (about 12,900 for the default
+    /// table) reads them through into the L2 cache in order, far cheaper
+    /// than the queries' scattered misses where other work has swept the
+    /// caches; a smaller one, and the portable kernel, do nothing. Call it
+    /// before a large batch split into pieces (as the Python package's
+    /// `mu_with_slope` splits its work), so the pass runs once for the
+    /// whole.
+    ///
+    /// ```
+    /// # use ke_friction::Table;
+    /// let table = Table::embedded();
+    /// let (psi, theta, f_star) = (vec![1.0; 20_000], vec![0.001; 20_000], vec![0.01; 20_000]);
+    /// let mut out = vec![(0.0, 0.0); 20_000];
+    /// table.prepare_batch(out.len());
+    /// for ((p, t), (f, o)) in psi.chunks(256).zip(theta.chunks(256)).zip(f_star.chunks(256).zip(out.chunks_mut(256))) {
+    ///     table.mu_with_slope_batch(p, t, f, o)?;
+    /// }
+    /// assert_eq!(out[19_999], table.mu_with_slope(1.0, 0.001, 0.01)?);
+    /// # Ok::<(), ke_friction::LookupError>(())
+    /// ```
+    pub fn prepare_batch(&self, n: usize) {
+        if let Some(kernel) = &self.avx2 {
+            kernel.prepare(n);
+        }
+    }
+
     /// Both batch forms: checks the lengths, runs the kernel, and turns
     /// the index of the first query outside the domain into the error.
     fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Result<(), LookupError> {
