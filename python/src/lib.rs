@@ -188,6 +188,75 @@ fn fill_pairs(
     None
 }
 
+/// The fewest table lookups worth a thread of their own: about 130 µs of
+/// work at 8 ns a query, against some 30 µs to start a thread (and each
+/// piece of at least ~12,900 queries reads the table through into its
+/// core's L2 cache, see `Table::prepare_batch`).
+const TABLE_PIECE: usize = 16_384;
+/// The same for curve lookups (about 1 ns each).
+const CURVE_PIECE: usize = 131_072;
+/// The same for the model (microseconds to milliseconds each).
+const MODEL_PIECE: usize = 4;
+
+/// The number of threads `threads` asks for: itself, or with 0 (the
+/// Python layer's None) one per core this process may use.
+fn thread_count(threads: usize) -> usize {
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    match threads {
+        0 => *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
+        t => t,
+    }
+}
+
+/// `n` elements in near-equal consecutive ranges: one per thread, at most
+/// `threads` (0: one per core) and at least `min_piece` elements each.
+fn pieces(n: usize, threads: usize, min_piece: usize) -> Vec<Range<usize>> {
+    let k = if n < 2 * min_piece {
+        1
+    } else {
+        thread_count(threads).min(n / min_piece).max(1)
+    };
+    (0..k).map(|i| i * n / k..(i + 1) * n / k).collect()
+}
+
+/// `out` cut into consecutive parts of `per` elements per element of each
+/// range of `ranges` (which run consecutively from 0).
+fn cut<'a, T>(mut out: &'a mut [T], per: usize, ranges: &[Range<usize>]) -> Vec<&'a mut [T]> {
+    let mut parts = Vec::with_capacity(ranges.len());
+    for r in ranges {
+        let (part, rest) = std::mem::take(&mut out).split_at_mut(r.len() * per);
+        parts.push(part);
+        out = rest;
+    }
+    parts
+}
+
+/// Runs `work` on each range and its part of the output, the first on the
+/// calling thread and each other on a thread of its own; the first bad
+/// element of all (each range's index is relative to its start), so the
+/// result does not depend on how the work was split.
+fn run_pieces<O: Send>(ranges: Vec<Range<usize>>, parts: Vec<O>, work: impl Fn(Range<usize>, O) -> Bad + Sync) -> Bad {
+    let work = &work;
+    let run = move |r: Range<usize>, o: O| work(r.clone(), o).map(|(i, message)| (r.start + i, message));
+    let mut jobs = ranges.into_iter().zip(parts);
+    let (r0, o0) = jobs.next()?;
+    std::thread::scope(|s| {
+        let others: Vec<_> = jobs.map(|(r, o)| s.spawn(move || run(r, o))).collect();
+        let first = run(r0, o0);
+        let rest = others
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)));
+        // The ranges run in order, so the first piece with a bad element
+        // has the lowest index.
+        std::iter::once(first).chain(rest).flatten().next()
+    })
+}
+
+/// `r` moved up by `by`.
+fn shift(r: Range<usize>, by: usize) -> Range<usize> {
+    r.start + by..r.end + by
+}
+
 /// A table of μ(ψ, θ, F*).
 #[pyclass(frozen, module = "ke_friction._core")]
 struct TableCore(Cow<'static, Table>);
@@ -218,7 +287,9 @@ impl TableCore {
 
     /// μ into `out`; returns None, or (index, message) of the first bad
     /// element (with nan=False). Each input has `out`'s length or is one
-    /// value for all.
+    /// value for all. `threads`: the most threads to use, 0 for one per
+    /// core (large arrays only, see [`TABLE_PIECE`]).
+    #[allow(clippy::too_many_arguments)]
     fn mu_into(
         &self,
         py: Python<'_>,
@@ -227,17 +298,22 @@ impl TableCore {
         f_star: PyReadonlyArray1<'_, f64>,
         mut out: PyReadwriteArray1<'_, f64>,
         nan: bool,
+        threads: usize,
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let out = slice_mut("out", &mut out)?;
         let chunked = table_inputs(out.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
+        let ranges = pieces(out.len(), threads, TABLE_PIECE);
+        let parts = cut(out, 1, &ranges);
         Ok(py.detach(|| {
-            fill_batch(nan, out, f64::NAN, |r, o| {
-                in_chunks(chunked, r, o, |r, o| {
-                    let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
-                    table.mu_batch(p, t, f, o)
+            run_pieces(ranges, parts, |piece, out| {
+                fill_batch(nan, out, f64::NAN, |r, o| {
+                    in_chunks(chunked, shift(r, piece.start), o, |r, o| {
+                        let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                        table.mu_batch(p, t, f, o)
+                    })
                 })
             })
         }))
@@ -254,6 +330,7 @@ impl TableCore {
         mut mu: PyReadwriteArray1<'_, f64>,
         mut slope: PyReadwriteArray1<'_, f64>,
         nan: bool,
+        threads: usize,
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
@@ -261,16 +338,22 @@ impl TableCore {
         let chunked = table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        // fill_pairs hands out at most CHUNK elements at a time, so the
-        // batch's read-through of the table runs here, once, where the
-        // queries spread over it (no one value for all, as in mu_into).
+        let ranges = pieces(mu.len(), threads, TABLE_PIECE);
+        let parts = cut(mu, 1, &ranges).into_iter().zip(cut(slope, 1, &ranges)).collect();
         Ok(py.detach(|| {
-            if !chunked {
-                table.prepare_batch(mu.len());
-            }
-            fill_pairs(nan, mu, slope, |r, o| {
-                let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
-                table.mu_with_slope_batch(p, t, f, o)
+            run_pieces(ranges, parts, |piece, (mu, slope)| {
+                // fill_pairs hands out at most CHUNK elements at a time, so
+                // the batch's read-through of the table runs here, once per
+                // piece (on its thread's core), where the queries spread
+                // over it (no one value for all, as in mu_into).
+                if !chunked {
+                    table.prepare_batch(piece.len());
+                }
+                fill_pairs(nan, mu, slope, |r, o| {
+                    let r = shift(r, piece.start);
+                    let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                    table.mu_with_slope_batch(p, t, f, o)
+                })
             })
         }))
     }
@@ -340,14 +423,22 @@ impl CurveCore {
         f_star: PyReadonlyArray1<'_, f64>,
         mut out: PyReadwriteArray1<'_, f64>,
         nan: bool,
+        threads: usize,
     ) -> PyResult<Bad> {
         let f = slice("f_star", &f_star)?;
         let out = slice_mut("out", &mut out)?;
         same_len(out.len(), &[("f_star", f.len())])?;
         let curve = &self.0;
-        Ok(py.detach(|| fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[r], o))))
+        let ranges = pieces(out.len(), threads, CURVE_PIECE);
+        let parts = cut(out, 1, &ranges);
+        Ok(py.detach(|| {
+            run_pieces(ranges, parts, |piece, out| {
+                fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[shift(r, piece.start)], o))
+            })
+        }))
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn mu_with_slope_into(
         &self,
         py: Python<'_>,
@@ -355,12 +446,21 @@ impl CurveCore {
         mut mu: PyReadwriteArray1<'_, f64>,
         mut slope: PyReadwriteArray1<'_, f64>,
         nan: bool,
+        threads: usize,
     ) -> PyResult<Bad> {
         let f = slice("f_star", &f_star)?;
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         same_len(mu.len(), &[("f_star", f.len()), ("slope", slope.len())])?;
         let curve = &self.0;
-        Ok(py.detach(|| fill_pairs(nan, mu, slope, |r, o| curve.mu_with_slope_batch(&f[r], o))))
+        let ranges = pieces(mu.len(), threads, CURVE_PIECE);
+        let parts = cut(mu, 1, &ranges).into_iter().zip(cut(slope, 1, &ranges)).collect();
+        Ok(py.detach(|| {
+            run_pieces(ranges, parts, |piece, (mu, slope)| {
+                fill_pairs(nan, mu, slope, |r, o| {
+                    curve.mu_with_slope_batch(&f[shift(r, piece.start)], o)
+                })
+            })
+        }))
     }
 }
 
@@ -386,7 +486,8 @@ impl ModelCore {
     }
 
     /// The contacts at `x` (F* if `at_f_star`, else h*) into the seven
-    /// output arrays (h*, d*, P*, Fs*, Q*, F*, μ); bad elements as above.
+    /// output arrays (h*, d*, P*, Fs*, Q*, F*, μ); bad elements and
+    /// `threads` as above.
     #[allow(clippy::too_many_arguments)]
     fn contacts_into(
         &self,
@@ -395,33 +496,38 @@ impl ModelCore {
         at_f_star: bool,
         mut out: PyReadwriteArray1<'_, f64>,
         nan: bool,
+        threads: usize,
     ) -> PyResult<Bad> {
         let x = slice("x", &x)?;
         let out = slice_mut("out", &mut out)?;
         same_len(7 * x.len(), &[("out", out.len())])?;
         let model = &self.0;
+        let ranges = pieces(x.len(), threads, MODEL_PIECE);
+        let parts = cut(out, 7, &ranges);
         Ok(py.detach(|| {
-            for (i, (&v, row)) in x.iter().zip(out.chunks_exact_mut(7)).enumerate() {
-                let c = if at_f_star {
-                    model.at_f_star(v)
-                } else {
-                    model.at_h_star(v)
-                };
-                match c {
-                    Ok(c) => row.copy_from_slice(&[
-                        c.h_star,
-                        c.d_star,
-                        c.p_star,
-                        c.fs_star,
-                        c.q_star,
-                        c.f_star,
-                        c.mu.unwrap_or(f64::NAN),
-                    ]),
-                    Err(_) if nan => row.fill(f64::NAN),
-                    Err(e) => return Some((i, e.to_string())),
+            run_pieces(ranges, parts, |piece, out| {
+                for (i, (&v, row)) in x[piece].iter().zip(out.chunks_exact_mut(7)).enumerate() {
+                    let c = if at_f_star {
+                        model.at_f_star(v)
+                    } else {
+                        model.at_h_star(v)
+                    };
+                    match c {
+                        Ok(c) => row.copy_from_slice(&[
+                            c.h_star,
+                            c.d_star,
+                            c.p_star,
+                            c.fs_star,
+                            c.q_star,
+                            c.f_star,
+                            c.mu.unwrap_or(f64::NAN),
+                        ]),
+                        Err(_) if nan => row.fill(f64::NAN),
+                        Err(e) => return Some((i, e.to_string())),
+                    }
                 }
-            }
-            None
+                None
+            })
         }))
     }
 

@@ -138,17 +138,17 @@ def test_the_native_layer_rejects_mismatched_arrays_without_panicking(table):
     core = table._core
     a, b = np.ones(3), np.ones(4)
     with pytest.raises(ValueError, match="theta has 4 elements, not 3 or 1"):
-        core.mu_into(a, b, a, np.empty(3), False)
+        core.mu_into(a, b, a, np.empty(3), False, 0)
     with pytest.raises(ValueError, match="slope has 4 elements, not 3"):
-        core.mu_with_slope_into(a, a, a, np.empty(3), np.empty(4), False)
+        core.mu_with_slope_into(a, a, a, np.empty(3), np.empty(4), False, 0)
     with pytest.raises(ValueError, match="psi has 4 elements, not 3 or 1"):
-        core.mu_with_slope_into(b, a, a, np.empty(3), np.empty(3), False)
+        core.mu_with_slope_into(b, a, a, np.empty(3), np.empty(3), False, 0)
     with pytest.raises(ValueError, match="must be contiguous"):
-        core.mu_into(np.ones(6)[::2], a, a, np.empty(3), False)
+        core.mu_into(np.ones(6)[::2], a, a, np.empty(3), False, 0)
     with pytest.raises(ValueError, match="out has 3 elements, not 14"):
-        kf.Model(1.0, 0.001)._core.contacts_into(np.ones(2), False, np.empty(3), False)
+        kf.Model(1.0, 0.001)._core.contacts_into(np.ones(2), False, np.empty(3), False, 0)
     with pytest.raises(TypeError):
-        core.mu_into(a.astype(np.float32), a, a, np.empty(3), False)
+        core.mu_into(a.astype(np.float32), a, a, np.empty(3), False, 0)
 
 
 def test_loading_tables(tmp_path):

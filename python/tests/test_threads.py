@@ -86,9 +86,9 @@ def test_batch_work_releases_the_gil(table):
     # One native call each (what runs without the GIL: the Python layer's
     # conversions hold it), long enough to tell: 10-60 ms.
     calls = {
-        "Table.mu_with_slope": lambda: table._core.mu_with_slope_into(psi, theta, f, mu, slope, False),
-        "Curve.mu_with_slope": lambda: curve._core.mu_with_slope_into(f, mu, slope, False),
-        "Model.at_f_star": lambda: model._core.contacts_into(f[:2000], True, np.empty(14000), False),
+        "Table.mu_with_slope": lambda: table._core.mu_with_slope_into(psi, theta, f, mu, slope, False, 1),
+        "Curve.mu_with_slope": lambda: curve._core.mu_with_slope_into(f, mu, slope, False, 1),
+        "Model.at_f_star": lambda: model._core.contacts_into(f[:2000], True, np.empty(14000), False, 1),
     }
     for name, call in calls.items():
         # The best of three, so that a busy machine pausing this thread once

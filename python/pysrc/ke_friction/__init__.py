@@ -14,7 +14,8 @@ Lookups take Python floats (and return a float) or array-likes, which
 broadcast by NumPy's rules (and return float64 arrays). Arguments outside
 the table's or curve's range, or NaN, raise ValueError naming the argument,
 its value, its index and the range; ``out_of_domain="nan"`` gives NaN there
-instead. Array work runs with the GIL released.
+instead. Array work runs with the GIL released and, for large arrays, on
+several threads (``threads=``, default one per core).
 
 >>> import ke_friction as kf
 >>> t = kf.Table.default()
@@ -25,9 +26,10 @@ instead. Array work runs with the GIL released.
 from __future__ import annotations
 
 import dataclasses
+import math
 import numbers
 import os
-from typing import Any, Dict, Literal, Tuple, Union, overload
+from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -47,13 +49,16 @@ FloatArray = npt.NDArray[np.float64]
 #: ``out_of_domain``: raise ValueError, or give NaN at those elements.
 OutOfDomain = Literal["raise", "nan"]
 _MODES = ("raise", "nan")
+_F64 = np.dtype(np.float64)
 
 
 def _is_scalar(x: Any) -> bool:
     """A real number that is not an array (bool excluded, as NumPy's
     ``isreal`` would let it through silently)."""
-    if type(x) is float:  # the common case first: isinstance on an ABC is slow
+    if type(x) is float:  # the common cases first: isinstance on an ABC is slow
         return True
+    if type(x) is np.ndarray:
+        return False
     return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
 
 
@@ -63,12 +68,34 @@ def _mode(out_of_domain: str) -> bool:
     return out_of_domain == "nan"
 
 
+def _threads(threads: Optional[int]) -> int:
+    """``threads`` for the native layer: 0 for None (one per core)."""
+    if threads is None:
+        return 0
+    if type(threads) is int and threads >= 1:  # before isinstance on an ABC, which is slow
+        return threads
+    if not isinstance(threads, numbers.Integral) or isinstance(threads, (bool, np.bool_)):
+        raise TypeError(f"threads must be an int or None, not {type(threads).__name__}")
+    if threads < 1:
+        raise ValueError(f"threads = {threads}: must be at least 1 (or None for one per core)")
+    return int(threads)
+
+
 def _arrays(**named: Any) -> Tuple[Tuple[int, ...], list]:
     """Broadcast the named inputs: their shape, and each as a flat
     contiguous float64 array of that shape's size (a view, not a copy, of
     an array that already is one) or, with ``scalars``, of size 1 where it
     is one value (the native layer repeats it)."""
     scalars = named.pop("_scalars", False)
+    given = list(named.values())
+    first = given[0]
+    # The common case first, in few steps (they count: after other work
+    # has swept the caches, each step of this layer costs microseconds):
+    # float64 arrays of one shape, flattened (a view where C-contiguous,
+    # else a contiguous copy).
+    if (type(first) is np.ndarray and first.dtype == _F64
+            and all(type(a) is np.ndarray and a.dtype == _F64 and a.shape == first.shape for a in given)):
+        return first.shape, [a.ravel() for a in given]
     arrays = []
     for name, value in named.items():
         a = np.asarray(value)
@@ -83,7 +110,7 @@ def _arrays(**named: Any) -> Tuple[Tuple[int, ...], list]:
         raise ValueError(f"the shapes do not broadcast: {shapes}") from None
     flat = []
     for a in arrays:
-        if a.shape == shape and a.dtype == np.float64 and a.flags.c_contiguous:
+        if a.shape == shape and a.dtype == _F64 and a.flags.c_contiguous:
             flat.append(a.reshape(-1))  # a view: no copy
         elif scalars and a.size == 1:
             flat.append(np.ascontiguousarray(a, dtype=np.float64).reshape(1))
@@ -131,12 +158,14 @@ class Table:
         return Table(_core.TableCore.load(os.fspath(path)))
 
     @overload
-    def mu(self, psi: float, theta: float, f_star: float, *, out_of_domain: OutOfDomain = ...) -> float: ...
+    def mu(self, psi: float, theta: float, f_star: float, *, out_of_domain: OutOfDomain = ...,
+           threads: Optional[int] = ...) -> float: ...
     @overload
     def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
-           out_of_domain: OutOfDomain = ...) -> FloatArray: ...
+           out_of_domain: OutOfDomain = ..., threads: Optional[int] = ...) -> FloatArray: ...
 
-    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Any:
+    def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
+           threads: Optional[int] = None) -> Any:
         """The static friction coefficient mu(psi, theta, F*), interpolated.
 
         Parameters
@@ -152,6 +181,13 @@ class Table:
         out_of_domain : {"raise", "nan"}
             What a value outside its range, or NaN, does: raise ValueError
             (the default), or give NaN at that element.
+        threads : int or None
+            The most threads an array lookup runs on (the calling one and
+            others it starts); None (the default): one per core this
+            process may use. Arrays of fewer than 32,768 elements run on
+            the calling thread alone (about 16,000 lookups are worth a
+            thread); pass ``threads=1`` where you run lookups on several
+            threads or processes yourself. The results do not depend on it.
 
         Returns
         -------
@@ -171,7 +207,7 @@ class Table:
             that do not broadcast.
         TypeError
             An argument that is not a real number or array of them (str,
-            None, bool, complex, object arrays).
+            None, bool, complex, object arrays); ``threads`` not an int.
 
         Array input runs in one call with the GIL released; contiguous
         float64 arrays of the broadcast shape are read in place, other
@@ -195,23 +231,25 @@ class Table:
                 if nan:
                     return float("nan")
                 raise
+        workers = _threads(threads)
         shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star, _scalars=True)
-        out = np.empty(int(np.prod(shape)))
-        _raise(self._core.mu_into(p, t, f, out, nan), shape)
+        out = np.empty(math.prod(shape))
+        _raise(self._core.mu_into(p, t, f, out, nan, workers), shape)
         return out.reshape(shape)[()]
 
     @overload
     def mu_with_slope(self, psi: float, theta: float, f_star: float, *,
-                      out_of_domain: OutOfDomain = ...) -> Tuple[float, float]: ...
+                      out_of_domain: OutOfDomain = ..., threads: Optional[int] = ...) -> Tuple[float, float]: ...
     @overload
     def mu_with_slope(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
-                      out_of_domain: OutOfDomain = ...) -> Tuple[FloatArray, FloatArray]: ...
+                      out_of_domain: OutOfDomain = ...,
+                      threads: Optional[int] = ...) -> Tuple[FloatArray, FloatArray]: ...
 
     def mu_with_slope(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *,
-                      out_of_domain: OutOfDomain = "raise") -> Tuple[Any, Any]:
+                      out_of_domain: OutOfDomain = "raise", threads: Optional[int] = None) -> Tuple[Any, Any]:
         """mu and its slope dmu/dF* at (psi, theta, F*), for Newton-type
         solvers: a pair of floats, or of float64 arrays of the broadcast
-        shape. Arguments, ``out_of_domain`` and errors as :meth:`mu`
+        shape. Arguments, ``out_of_domain``, ``threads`` and errors as :meth:`mu`
         (NaN in both at a bad element with ``out_of_domain="nan"``).
 
         >>> mu, slope = Table.default().mu_with_slope(2.0, 0.003, [1e-3, 1e-2])
@@ -228,10 +266,11 @@ class Table:
                 if nan:
                     return (float("nan"), float("nan"))
                 raise
+        workers = _threads(threads)
         shape, (p, t, f) = _arrays(psi=psi, theta=theta, f_star=f_star, _scalars=True)
-        size = int(np.prod(shape))
+        size = math.prod(shape)
         mu, slope = np.empty(size), np.empty(size)
-        _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan), shape)
+        _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan, workers), shape)
         return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     @property
@@ -310,14 +349,16 @@ class Curve:
         return self._core.max_error()
 
     @overload
-    def mu(self, f_star: float, *, out_of_domain: OutOfDomain = ...) -> float: ...
+    def mu(self, f_star: float, *, out_of_domain: OutOfDomain = ..., threads: Optional[int] = ...) -> float: ...
     @overload
-    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = ...) -> FloatArray: ...
+    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = ...,
+           threads: Optional[int] = ...) -> FloatArray: ...
 
-    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Any:
+    def mu(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise", threads: Optional[int] = None) -> Any:
         """mu at f_star: a float for a Python number, a float64 array for an
         array-like. Outside the range, or NaN: ValueError, or NaN with
-        ``out_of_domain="nan"``."""
+        ``out_of_domain="nan"``. ``threads``: as :meth:`Table.mu`, but
+        only arrays of at least 262,144 loads use more than one."""
         if type(f_star) is float and out_of_domain == "raise":
             return self._core.mu_scalar(f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
@@ -328,18 +369,21 @@ class Curve:
                 if nan:
                     return float("nan")
                 raise
+        workers = _threads(threads)
         shape, (f,) = _arrays(f_star=f_star)
         out = np.empty(f.size)
-        _raise(self._core.mu_into(f, out, nan), shape)
+        _raise(self._core.mu_into(f, out, nan, workers), shape)
         return out.reshape(shape)[()]
 
     @overload
-    def mu_with_slope(self, f_star: float, *, out_of_domain: OutOfDomain = ...) -> Tuple[float, float]: ...
+    def mu_with_slope(self, f_star: float, *, out_of_domain: OutOfDomain = ...,
+                      threads: Optional[int] = ...) -> Tuple[float, float]: ...
     @overload
-    def mu_with_slope(self, f_star: ArrayLike, *,
-                      out_of_domain: OutOfDomain = ...) -> Tuple[FloatArray, FloatArray]: ...
+    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = ...,
+                      threads: Optional[int] = ...) -> Tuple[FloatArray, FloatArray]: ...
 
-    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Tuple[Any, Any]:
+    def mu_with_slope(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
+                      threads: Optional[int] = None) -> Tuple[Any, Any]:
         """(mu, dmu/dF*) at f_star; as :meth:`mu`."""
         if type(f_star) is float and out_of_domain == "raise":
             return self._core.mu_with_slope_scalar(f_star)  # the fast path of a call in a loop
@@ -351,9 +395,10 @@ class Curve:
                 if nan:
                     return (float("nan"), float("nan"))
                 raise
+        workers = _threads(threads)
         shape, (f,) = _arrays(f_star=f_star)
         mu, slope = np.empty(f.size), np.empty(f.size)
-        _raise(self._core.mu_with_slope_into(f, mu, slope, nan), shape)
+        _raise(self._core.mu_with_slope_into(f, mu, slope, nan, workers), shape)
         return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     def __repr__(self) -> str:
@@ -386,7 +431,8 @@ class Model:
     (MODEL.md section 4) or "as-printed" (the literal printed Eq. 18);
     model: "ke" (Kogut-Etsion) or "ceb" (the CEB-type comparison model).
     Invalid values raise ValueError naming the parameter and its range.
-    Wrong types raise TypeError. Array work runs with the GIL released.
+    Wrong types raise TypeError. Array work runs with the GIL released,
+    on several threads from 8 points (``threads=`` as in :meth:`Table.mu`).
 
     >>> c = Model(1.0, 0.001).at_f_star(0.01)      # solve F*(h*) = 0.01
     >>> round(c.h_star, 6), round(c.mu, 6)
@@ -410,26 +456,31 @@ class Model:
         """psi, theta, beta, nu, eps_star, fit and model."""
         return self._core.params()
 
-    def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain) -> Contact:
+    def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain,
+            threads: Optional[int]) -> Contact:
         nan = _mode(out_of_domain)
+        workers = _threads(threads)
         scalar = _is_scalar(x)
         shape, (flat,) = _arrays(**{name: x})
         out = np.empty((flat.size, 7))
-        _raise(self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan), shape)
+        _raise(self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan, workers), shape)
         cols = [np.ascontiguousarray(out[:, k]).reshape(shape)[()] for k in range(7)]
         return Contact(*(float(c) for c in cols)) if scalar else Contact(*cols)
 
-    def at_f_star(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Contact:
+    def at_f_star(self, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
+                  threads: Optional[int] = None) -> Contact:
         """The model at external force F* > 0 (solving F*(h*) = F*): a
         :class:`Contact` of floats for a number, of arrays for an array-like.
         F* <= 0, NaN or beyond the model's reach raises ValueError (or gives
-        NaN with ``out_of_domain="nan"``)."""
-        return self._at(f_star, True, "f_star", out_of_domain)
+        NaN with ``out_of_domain="nan"``). ``threads``: as :meth:`Table.mu`,
+        from 8 points."""
+        return self._at(f_star, True, "f_star", out_of_domain, threads)
 
-    def at_h_star(self, h_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise") -> Contact:
+    def at_h_star(self, h_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
+                  threads: Optional[int] = None) -> Contact:
         """The model at separation h* (|h*| <= 1e6): a :class:`Contact`; mu is
-        NaN where F* <= 0."""
-        return self._at(h_star, False, "h_star", out_of_domain)
+        NaN where F* <= 0. ``out_of_domain`` and ``threads`` as :meth:`at_f_star`."""
+        return self._at(h_star, False, "h_star", out_of_domain, threads)
 
     def __repr__(self) -> str:
         p = self.params
