@@ -10,6 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
 use std::ops::Range;
+use std::sync::{Mutex, PoisonError};
 
 /// A failed element: its index in the flat input and the message.
 type Bad = Option<(usize, String)>;
@@ -44,7 +45,7 @@ fn same_len(n: usize, named: &[(&str, usize)]) -> PyResult<()> {
 
 /// Checks the lengths of a table lookup's inputs: each `n`, or 1 for an
 /// argument the same for every element (broadcast here, a chunk at a time,
-/// rather than copied `n` times by NumPy).
+/// rather than copied `n` times by NumPy). True if one is (`repeats`).
 fn table_inputs(n: usize, named: [(&str, &[f64]); 3]) -> PyResult<bool> {
     for (name, x) in named {
         if x.len() != n && x.len() != 1 {
@@ -70,14 +71,15 @@ fn part<'a>(x: &'a [f64], copies: &'a [f64; CHUNK], r: Range<usize>) -> &'a [f64
 }
 
 /// Runs `batch` over `r` in pieces of at most [`CHUNK`] elements if
-/// `chunked`, else at once; a bad element's index is relative to `r`.
+/// `repeats` (an input is one value, repeated), else at once; a bad
+/// element's index is relative to `r`.
 fn in_chunks<T>(
-    chunked: bool,
+    repeats: bool,
     r: Range<usize>,
     out: &mut [T],
     batch: impl Fn(Range<usize>, &mut [T]) -> Result<(), LookupError>,
 ) -> Result<(), LookupError> {
-    if !chunked {
+    if !repeats {
         return batch(r, out);
     }
     let mut a = r.start;
@@ -188,35 +190,48 @@ fn fill_pairs(
     None
 }
 
-/// The fewest table lookups worth a thread of their own: about 130 µs of
-/// work at 8 ns a query, against some 30 µs to start a thread (and each
-/// piece of at least ~12,900 queries reads the table through into its
-/// core's L2 cache, see `Table::prepare_batch`).
-const TABLE_PIECE: usize = 16_384;
-/// The same for curve lookups (about 1 ns each).
-const CURVE_PIECE: usize = 131_072;
-/// The same for the model (microseconds to milliseconds each).
-const MODEL_PIECE: usize = 4;
-
-/// The number of threads `threads` asks for: itself, or with 0 (the
-/// Python layer's None) one per core this process may use.
-fn thread_count(threads: usize) -> usize {
-    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
-    match threads {
-        0 => *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
-        t => t,
-    }
+/// How a kind of array work is shared out among threads.
+struct Sharing {
+    /// The fewest elements worth a thread of their own.
+    per_thread: usize,
+    /// The elements a thread takes at a time: small enough that a thread
+    /// that starts late (waking an idle core of a VM takes up to ~80 µs)
+    /// takes fewer, large enough that taking them costs nothing that shows.
+    chunk: usize,
 }
 
-/// `n` elements in near-equal consecutive ranges: one per thread, at most
-/// `threads` (0: one per core) and at least `min_piece` elements each.
-fn pieces(n: usize, threads: usize, min_piece: usize) -> Vec<Range<usize>> {
-    let k = if n < 2 * min_piece {
-        1
-    } else {
-        thread_count(threads).min(n / min_piece).max(1)
-    };
-    (0..k).map(|i| i * n / k..(i + 1) * n / k).collect()
+/// Table lookups: about 130 µs of work (at 8 ns a query) a thread, 35 µs
+/// a chunk.
+const TABLE_WORK: Sharing = Sharing {
+    per_thread: 16_384,
+    chunk: 4_096,
+};
+/// Curve lookups (about 1 ns each).
+const CURVE_WORK: Sharing = Sharing {
+    per_thread: 131_072,
+    chunk: 32_768,
+};
+/// The model (microseconds to milliseconds a point).
+const MODEL_WORK: Sharing = Sharing {
+    per_thread: 4,
+    chunk: 1,
+};
+
+impl Sharing {
+    /// The threads for `n` elements when `threads` are asked for (0: one
+    /// per core this process may use), and the chunks of the work.
+    fn split(&self, n: usize, threads: usize) -> (usize, Vec<Range<usize>>) {
+        static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+        let k = match (n / self.per_thread, threads) {
+            (0 | 1, _) => 1,
+            (most, 0) => most.min(*CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))),
+            (most, t) => most.min(t),
+        };
+        let chunks = (0..n.div_ceil(self.chunk))
+            .map(|i| i * self.chunk..((i + 1) * self.chunk).min(n))
+            .collect();
+        (k, chunks)
+    }
 }
 
 /// `out` cut into consecutive parts of `per` elements per element of each
@@ -231,25 +246,61 @@ fn cut<'a, T>(mut out: &'a mut [T], per: usize, ranges: &[Range<usize>]) -> Vec<
     parts
 }
 
-/// Runs `work` on each range and its part of the output, the first on the
-/// calling thread and each other on a thread of its own; the first bad
-/// element of all (each range's index is relative to its start), so the
-/// result does not depend on how the work was split.
-fn run_pieces<O: Send>(ranges: Vec<Range<usize>>, parts: Vec<O>, work: impl Fn(Range<usize>, O) -> Bad + Sync) -> Bad {
-    let work = &work;
-    let run = move |r: Range<usize>, o: O| work(r.clone(), o).map(|(i, message)| (r.start + i, message));
-    let mut jobs = ranges.into_iter().zip(parts);
-    let (r0, o0) = jobs.next()?;
+/// Runs `work` on each chunk (a range of elements and its part of the
+/// output) on `threads` threads: the calling one and `threads - 1` started
+/// here, each taking the next chunk in order until none is left, after
+/// `prepare` (told the elements a thread is to do). Returns the first bad
+/// element of all (each chunk's index is relative to its start), so the
+/// result does not depend on the threads; after a bad element the chunks
+/// not yet taken are dropped (they come after it). A thread the system
+/// refuses to start is done without.
+fn share<O: Send>(
+    threads: usize,
+    chunks: Vec<Range<usize>>,
+    parts: Vec<O>,
+    prepare: impl Fn(usize) + Sync,
+    work: impl Fn(Range<usize>, O) -> Bad + Sync,
+) -> Bad {
+    let n = chunks.last().map_or(0, |r| r.end);
+    let queue = Mutex::new(chunks.into_iter().zip(parts));
+    let take = || queue.lock().unwrap_or_else(PoisonError::into_inner);
+    let worker = || {
+        prepare(n / threads);
+        // Each thread takes chunks in order, so its first bad element is
+        // its lowest.
+        loop {
+            // (A statement of its own: the lock is not held while working.)
+            let next = take().next();
+            let (r, o) = next?;
+            if let Some((i, message)) = work(r.clone(), o) {
+                take().by_ref().for_each(drop);
+                return Some((r.start + i, message));
+            }
+        }
+    };
+    if threads <= 1 {
+        return worker();
+    }
     std::thread::scope(|s| {
-        let others: Vec<_> = jobs.map(|(r, o)| s.spawn(move || run(r, o))).collect();
-        let first = run(r0, o0);
-        let rest = others
+        let others: Vec<_> = (1..threads)
+            .map_while(|_| std::thread::Builder::new().spawn_scoped(s, worker).ok())
+            .collect();
+        let mine = worker();
+        let theirs = others
             .into_iter()
             .map(|h| h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)));
-        // The ranges run in order, so the first piece with a bad element
-        // has the lowest index.
-        std::iter::once(first).chain(rest).flatten().next()
+        std::iter::once(mine).chain(theirs).flatten().min_by_key(|(i, _)| *i)
     })
+}
+
+/// Readies `table` for `n` lookups by this thread (its coefficients read
+/// through into this core's cache, see [`Table::prepare_batch`]), unless
+/// an argument is one value for all (`repeats`: the queries then touch few
+/// of them).
+fn read_through(table: &Table, repeats: bool, n: usize) {
+    if !repeats {
+        table.prepare_batch(n);
+    }
 }
 
 /// `r` moved up by `by`.
@@ -302,20 +353,26 @@ impl TableCore {
     ) -> PyResult<Bad> {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let out = slice_mut("out", &mut out)?;
-        let chunked = table_inputs(out.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
+        let repeats = table_inputs(out.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        let ranges = pieces(out.len(), threads, TABLE_PIECE);
-        let parts = cut(out, 1, &ranges);
+        let (k, chunks) = TABLE_WORK.split(out.len(), threads);
+        let parts = cut(out, 1, &chunks);
         Ok(py.detach(|| {
-            run_pieces(ranges, parts, |piece, out| {
-                fill_batch(nan, out, f64::NAN, |r, o| {
-                    in_chunks(chunked, shift(r, piece.start), o, |r, o| {
-                        let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
-                        table.mu_batch(p, t, f, o)
+            share(
+                k,
+                chunks,
+                parts,
+                |m| read_through(table, repeats, m),
+                |chunk, out| {
+                    fill_batch(nan, out, f64::NAN, |r, o| {
+                        in_chunks(repeats, shift(r, chunk.start), o, |r, o| {
+                            let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                            table.mu_batch(p, t, f, o)
+                        })
                     })
-                })
-            })
+                },
+            )
         }))
     }
 
@@ -335,26 +392,25 @@ impl TableCore {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         same_len(mu.len(), &[("slope", slope.len())])?;
-        let chunked = table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
+        let repeats = table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        let ranges = pieces(mu.len(), threads, TABLE_PIECE);
-        let parts = cut(mu, 1, &ranges).into_iter().zip(cut(slope, 1, &ranges)).collect();
+        let (k, chunks) = TABLE_WORK.split(mu.len(), threads);
+        let parts = cut(mu, 1, &chunks).into_iter().zip(cut(slope, 1, &chunks)).collect();
         Ok(py.detach(|| {
-            run_pieces(ranges, parts, |piece, (mu, slope)| {
-                // fill_pairs hands out at most CHUNK elements at a time, so
-                // the batch's read-through of the table runs here, once per
-                // piece (on its thread's core), where the queries spread
-                // over it (no one value for all, as in mu_into).
-                if !chunked {
-                    table.prepare_batch(piece.len());
-                }
-                fill_pairs(nan, mu, slope, |r, o| {
-                    let r = shift(r, piece.start);
-                    let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
-                    table.mu_with_slope_batch(p, t, f, o)
-                })
-            })
+            share(
+                k,
+                chunks,
+                parts,
+                |m| read_through(table, repeats, m),
+                |chunk, (mu, slope)| {
+                    fill_pairs(nan, mu, slope, |r, o| {
+                        let r = shift(r, chunk.start);
+                        let (p, t, f) = (part(p, &cp, r.clone()), part(t, &ct, r.clone()), part(f, &cf, r));
+                        table.mu_with_slope_batch(p, t, f, o)
+                    })
+                },
+            )
         }))
     }
 
@@ -429,12 +485,16 @@ impl CurveCore {
         let out = slice_mut("out", &mut out)?;
         same_len(out.len(), &[("f_star", f.len())])?;
         let curve = &self.0;
-        let ranges = pieces(out.len(), threads, CURVE_PIECE);
-        let parts = cut(out, 1, &ranges);
+        let (k, chunks) = CURVE_WORK.split(out.len(), threads);
+        let parts = cut(out, 1, &chunks);
         Ok(py.detach(|| {
-            run_pieces(ranges, parts, |piece, out| {
-                fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[shift(r, piece.start)], o))
-            })
+            share(
+                k,
+                chunks,
+                parts,
+                |_| (),
+                |chunk, out| fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[shift(r, chunk.start)], o)),
+            )
         }))
     }
 
@@ -452,14 +512,20 @@ impl CurveCore {
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         same_len(mu.len(), &[("f_star", f.len()), ("slope", slope.len())])?;
         let curve = &self.0;
-        let ranges = pieces(mu.len(), threads, CURVE_PIECE);
-        let parts = cut(mu, 1, &ranges).into_iter().zip(cut(slope, 1, &ranges)).collect();
+        let (k, chunks) = CURVE_WORK.split(mu.len(), threads);
+        let parts = cut(mu, 1, &chunks).into_iter().zip(cut(slope, 1, &chunks)).collect();
         Ok(py.detach(|| {
-            run_pieces(ranges, parts, |piece, (mu, slope)| {
-                fill_pairs(nan, mu, slope, |r, o| {
-                    curve.mu_with_slope_batch(&f[shift(r, piece.start)], o)
-                })
-            })
+            share(
+                k,
+                chunks,
+                parts,
+                |_| (),
+                |chunk, (mu, slope)| {
+                    fill_pairs(nan, mu, slope, |r, o| {
+                        curve.mu_with_slope_batch(&f[shift(r, chunk.start)], o)
+                    })
+                },
+            )
         }))
     }
 }
@@ -502,32 +568,38 @@ impl ModelCore {
         let out = slice_mut("out", &mut out)?;
         same_len(7 * x.len(), &[("out", out.len())])?;
         let model = &self.0;
-        let ranges = pieces(x.len(), threads, MODEL_PIECE);
-        let parts = cut(out, 7, &ranges);
+        let (k, chunks) = MODEL_WORK.split(x.len(), threads);
+        let parts = cut(out, 7, &chunks);
         Ok(py.detach(|| {
-            run_pieces(ranges, parts, |piece, out| {
-                for (i, (&v, row)) in x[piece].iter().zip(out.chunks_exact_mut(7)).enumerate() {
-                    let c = if at_f_star {
-                        model.at_f_star(v)
-                    } else {
-                        model.at_h_star(v)
-                    };
-                    match c {
-                        Ok(c) => row.copy_from_slice(&[
-                            c.h_star,
-                            c.d_star,
-                            c.p_star,
-                            c.fs_star,
-                            c.q_star,
-                            c.f_star,
-                            c.mu.unwrap_or(f64::NAN),
-                        ]),
-                        Err(_) if nan => row.fill(f64::NAN),
-                        Err(e) => return Some((i, e.to_string())),
+            share(
+                k,
+                chunks,
+                parts,
+                |_| (),
+                |chunk, out| {
+                    for (i, (&v, row)) in x[chunk].iter().zip(out.chunks_exact_mut(7)).enumerate() {
+                        let c = if at_f_star {
+                            model.at_f_star(v)
+                        } else {
+                            model.at_h_star(v)
+                        };
+                        match c {
+                            Ok(c) => row.copy_from_slice(&[
+                                c.h_star,
+                                c.d_star,
+                                c.p_star,
+                                c.fs_star,
+                                c.q_star,
+                                c.f_star,
+                                c.mu.unwrap_or(f64::NAN),
+                            ]),
+                            Err(_) if nan => row.fill(f64::NAN),
+                            Err(e) => return Some((i, e.to_string())),
+                        }
                     }
-                }
-                None
-            })
+                    None
+                },
+            )
         }))
     }
 

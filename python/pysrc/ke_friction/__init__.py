@@ -186,8 +186,10 @@ class Table:
             others it starts); None (the default): one per core this
             process may use. Arrays of fewer than 32,768 elements run on
             the calling thread alone (about 16,000 lookups are worth a
-            thread); pass ``threads=1`` where you run lookups on several
-            threads or processes yourself. The results do not depend on it.
+            thread); the threads take the work 4,096 elements at a time, so
+            one that starts late does less. Pass ``threads=1`` where you run
+            lookups on several threads or processes yourself. The results,
+            and which bad element an error names, do not depend on it.
 
         Returns
         -------
