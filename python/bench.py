@@ -14,9 +14,11 @@ ln F*), linear and cubic; its rows are timed with the coordinates given
 (psi, theta, F*) pays. Errors are the largest relative error against direct
 integration (kf.Model) at 2,000 of the points.
 
-Ablation rows: the native call alone (`_core.mu_into` on the same arrays,
-without the Python layer's checks and allocation). Then a second table:
-Table.mu timed right after each of several things (interleaved, medians),
+Table.mu runs with its default threads (one per core) and with threads=1;
+RGI has one. Ablation rows: the native call alone on one thread
+(`_core.mu_into` on the same arrays into a preallocated output, without the
+Python layer's checks and allocation). Then a second table: Table.mu
+(threads=1) timed right after each of several things (interleaved, medians),
 to see which part of the cache and CPU state that SciPy's call leaves
 behind costs what: nothing (warm caches); linear RGI; linear RGI and a
 5 ms Python spin (were it the core's clock or the 256-bit units waking
@@ -27,9 +29,9 @@ read-through of the table's coefficients into L2 (from 12,900 queries);
 a 64 MB NumPy fill (the caches swept, no SciPy); a 5 ms sleep (the core
 left to this shared VM's other work); and Table.mu_with_slope, which
 works in pieces of 256 and reads the table through once first
-(Table::prepare_batch), warm and after the 64 MB fill. Then Curve.mu and
-Table.mu on
-10^6 loads of one surface pair, and one call with Python floats.
+(Table::prepare_batch), warm and after the 64 MB fill. Then Curve.mu
+(default threads and threads=1) and Table.mu on 10^6 loads of one surface
+pair, and one call with Python floats.
 
 --quick (CI) runs 3 rounds and exits 1 unless Table.mu is within the table's
 tolerance and linear RGI's error is at least 100x Table.mu's. Speed ratios
@@ -157,7 +159,8 @@ def main(argv):
     ours = {
         "Table.mu": lambda: table.mu(psi, theta, f),
         "Table.mu, threads=1": lambda: table.mu(psi, theta, f, threads=1),
-        "native call, 1 thread": lambda: (table._core.mu_into(psi, theta, f, out, False, 1), out.copy())[1],
+        # Into one preallocated array (the same values every time).
+        "native call, 1 thread": lambda: (table._core.mu_into(psi, theta, f, out, False, 1), out)[1],
     }
     theirs = {
         "RGI linear": lambda: np.exp(rgi["linear"](coords)),

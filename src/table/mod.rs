@@ -489,9 +489,10 @@ impl Table {
     /// table) reads them through into the L2 cache in order, far cheaper
     /// than the queries' scattered misses where other work has swept the
     /// caches; a smaller one, and the portable kernel, do nothing. Call it
-    /// before a large batch split into pieces (as the Python package's
-    /// `mu_with_slope` splits its work), so the pass runs once for the
-    /// whole.
+    /// before a large batch split into pieces (as the Python package
+    /// splits its work into chunks for its threads), so the pass runs once
+    /// for the whole; on each thread that shares the work, since each
+    /// core has its own L2 cache.
     ///
     /// ```
     /// # use ke_friction::Table;
