@@ -339,7 +339,7 @@ impl TableCore {
     /// μ into `out`; returns None, or (index, message) of the first bad
     /// element (with nan=False). Each input has `out`'s length or is one
     /// value for all. `threads`: the most threads to use, 0 for one per
-    /// core (large arrays only, see [`TABLE_PIECE`]).
+    /// core (large arrays only, see [`TABLE_WORK`]).
     #[allow(clippy::too_many_arguments)]
     fn mu_into(
         &self,
