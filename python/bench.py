@@ -14,11 +14,11 @@ ln F*), linear and cubic; its rows are timed with the coordinates given
 (psi, theta, F*) pays. Errors are the largest relative error against direct
 integration (kf.Model) at 2,000 of the points.
 
-Table.mu runs with its default threads (one per core) and with threads=1;
-RGI has one. Ablation rows: the native call alone on one thread
+Table.mu runs on one thread (its default, and RGI's) and with
+threads=None (one per core). Ablation rows: the native call alone on one thread
 (`_core.mu_into` on the same arrays into a preallocated output, without the
 Python layer's checks and allocation). Then a second table: Table.mu
-(threads=1) timed right after each of several things (interleaved, medians),
+timed right after each of several things (interleaved, medians),
 to see which part of the cache and CPU state that SciPy's call leaves
 behind costs what: nothing (warm caches); linear RGI; linear RGI and a
 5 ms Python spin (were it the core's clock or the 256-bit units waking
@@ -30,7 +30,7 @@ a 64 MB NumPy fill (the caches swept, no SciPy); a 5 ms sleep (the core
 left to this shared VM's other work); and Table.mu_with_slope, which
 works in pieces of 256 and reads the table through once first
 (Table::prepare_batch), warm and after the 64 MB fill. Then Curve.mu
-(default threads and threads=1) and Table.mu on 10^6 loads of one surface
+(one thread and threads=None) and Table.mu on 10^6 loads of one surface
 pair, and one call with Python floats.
 
 --quick (CI) runs 3 rounds and exits 1 unless Table.mu is within the table's
@@ -105,22 +105,16 @@ def ablation_before(table, rgi_linear, coords, points, rounds):
         "nothing (warm caches)": lambda: None,
         "linear RGI": rgi,
         "linear RGI, then a 5 ms spin": lambda: (rgi(), spin(0.005)),
-        "linear RGI, then 12,000 queries of one point": lambda: (rgi(), table.mu(*one_point[12_000], threads=1)),
-        "linear RGI, then 20,000 (table read through)": lambda: (rgi(), table.mu(*one_point[20_000], threads=1)),
+        "linear RGI, then 12,000 queries of one point": lambda: (rgi(), table.mu(*one_point[12_000])),
+        "linear RGI, then 20,000 (table read through)": lambda: (rgi(), table.mu(*one_point[20_000])),
         "a 64 MB fill": fill,
         "a 5 ms sleep": lambda: time.sleep(0.005),
     }
-    def mu(*args):
-        return table.mu(*args, threads=1)
-
-    def mu_with_slope(*args):
-        return table.mu_with_slope(*args, threads=1)
-
-    runs = [((name, "mu"), run, mu) for name, run in before.items()]
+    runs = [((name, "mu"), run, table.mu) for name, run in before.items()]
     # mu_with_slope works in pieces and reads the table through itself
     # first (Table::prepare_batch): warm against swept caches.
-    runs += [(("nothing (warm caches)", "mu_with_slope"), lambda: None, mu_with_slope),
-             (("a 64 MB fill", "mu_with_slope"), fill, mu_with_slope)]
+    runs += [(("nothing (warm caches)", "mu_with_slope"), lambda: None, table.mu_with_slope),
+             (("a 64 MB fill", "mu_with_slope"), fill, table.mu_with_slope)]
     times = {key: [] for key, _, _ in runs}
     for _ in range(rounds):
         for key, run, lookup in runs:
@@ -158,7 +152,7 @@ def main(argv):
     # every round, so that none always follows the same one.
     ours = {
         "Table.mu": lambda: table.mu(psi, theta, f),
-        "Table.mu, threads=1": lambda: table.mu(psi, theta, f, threads=1),
+        "Table.mu, threads=None": lambda: table.mu(psi, theta, f, threads=None),
         # Into one preallocated array (the same values every time).
         "native call, 1 thread": lambda: (table._core.mu_into(psi, theta, f, out, False, 1), out)[1],
     }
@@ -168,7 +162,7 @@ def main(argv):
         "RGI linear + maps": rgi_with_maps("linear"),
         "RGI cubic + maps": rgi_with_maps("cubic"),
     }
-    shown = ["Table.mu", "Table.mu, threads=1", "native call, 1 thread", "RGI linear", "RGI linear + maps",
+    shown = ["Table.mu", "Table.mu, threads=None", "native call, 1 thread", "RGI linear", "RGI linear + maps",
              "RGI cubic", "RGI cubic + maps"]
     times = {k: [] for k in shown}
     results = {}
@@ -189,7 +183,7 @@ def main(argv):
           f"interleaved rounds; max relative error against direct integration at {ERROR_SAMPLES:,} of them.")
     print(f"NumPy {np.__version__}, SciPy {scipy.__version__}, Python {platform.python_version()}, {cpu_name()}, "
           f"{os.cpu_count()} CPUs; table kernel: {'AVX2 (f32)' if info['fast_kernel'] else 'portable (f64)'}; "
-          f"Table.mu's default threads: {cores()} (RGI runs on one).")
+          f"Table.mu on one thread (as RGI) and with threads=None on {cores()}.")
     print()
     print(f"| {'contender':<24} | {'ns/query':>8} | {'Table.mu faster by':>18} | {'max rel. error':>14} "
           f"| {'Table.mu more accurate by':>25} |")
@@ -199,7 +193,7 @@ def main(argv):
         better = "" if k in ours else f"{errors[k] / base_err:.0f}x"
         print(f"| {k:<24} | {ns[k]:>8.1f} | {faster:>18} | {errors[k]:>14.2e} | {better:>25} |")
     print()
-    print(f"Table.mu (or mu_with_slope) with threads=1 on the same points, timed right after (median of "
+    print(f"Table.mu (or mu_with_slope), one thread, on the same points, timed right after (median of "
           f"{rounds} interleaved rounds):")
     print(f"| {'what ran just before':<44} | {'timed':<13} | {'ns/query':>8} | {'linear RGI slower by':>20} |")
     print(f"|{'-' * 46}|{'-' * 15}|{'-' * 9}:|{'-' * 21}:|")
@@ -210,10 +204,10 @@ def main(argv):
     p0, t0 = 1.0, 0.003
     curve = table.curve(p0, t0)
     loads = np.exp(rng.uniform(*np.log(info["f_star"]), 1_000_000)).clip(*info["f_star"])
-    ct, c1, tt = [], [], []
+    ct, cn, tt = [], [], []
     for _ in range(rounds):
         ct.append(timed(lambda: curve.mu(loads))[0])
-        c1.append(timed(lambda: curve.mu(loads, threads=1))[0])
+        cn.append(timed(lambda: curve.mu(loads, threads=None))[0])
         tt.append(timed(lambda: table.mu(p0, t0, loads))[0])
     few = loads[:ERROR_SAMPLES]
     curve_err = float(np.max(np.abs(curve.mu(few) / kf.Model(p0, t0).at_f_star(few).mu - 1)))
@@ -224,15 +218,15 @@ def main(argv):
     print()
     print(f"One surface pair (psi = {p0}, theta = {t0}), 10^6 random loads, median of {rounds} rounds:")
     print(f"| {'Curve.mu':<24} | {median_ns(ct, loads.size):>8.2f} ns/query | max rel. error {curve_err:.2e} |")
-    print(f"| {'Curve.mu, threads=1':<24} | {median_ns(c1, loads.size):>8.2f} ns/query | |")
+    print(f"| {'Curve.mu, threads=None':<24} | {median_ns(cn, loads.size):>8.2f} ns/query | |")
     print(f"| {'Table.mu, same loads':<24} | {median_ns(tt, loads.size):>8.2f} ns/query | |")
     print(f"| {'Table.mu, Python floats':<24} | {median_ns(single, 10_000):>8.0f} ns/call | |")
 
     ratio = errors["RGI linear"] / base_err
     speedup = ns["RGI linear"] / base_ns
     print()
-    print(f"targets: >= 20x faster than linear RGI: {speedup:.1f}x ({cores()} threads), "
-          f"{ns['RGI linear'] / ns['Table.mu, threads=1']:.1f}x (threads=1); "
+    print(f"targets: >= 20x faster than linear RGI: {speedup:.1f}x "
+          f"({ns['RGI linear'] / ns['Table.mu, threads=None']:.1f}x with threads=None); "
           f">= 100x smaller max error: {ratio:.0f}x")
     if quick:
         ok = ratio >= 100 and base_err <= info["tolerance"]

@@ -77,14 +77,28 @@ def test_other_dtypes_orders_and_strides_are_converted(table):
 
 def test_contiguous_float64_input_is_not_copied():
     a = np.linspace(0.5, 8, 6).reshape(2, 3)
-    shape, (flat, other) = _arrays(psi=a, theta=0.001)
+    shape, (flat, other) = _arrays(("psi", "theta"), (a, 0.001))
     assert shape == (2, 3) and np.shares_memory(flat, a)
     assert not np.shares_memory(other, a) and other.shape == (6,)
-    _, (copied,) = _arrays(psi=a[:, ::2])
+    _, (copied,) = _arrays(("psi",), (a[:, ::2],))
     assert not np.shares_memory(copied, a) and copied.flags.c_contiguous
     # Lookups pass one value for a scalar argument; the native layer repeats it.
-    shape, (flat, one, row) = _arrays(psi=a, theta=[[0.001]], f_star=[0.01, 0.02, 0.03], _scalars=True)
+    shape, (flat, one, row) = _arrays(("psi", "theta", "f_star"), (a, [[0.001]], [0.01, 0.02, 0.03]), scalars=True)
     assert shape == (2, 3) and np.shares_memory(flat, a) and one.shape == (1,) and row.shape == (6,)
+
+
+def test_float64_arrays_of_one_shape_take_the_short_path_in_c_order():
+    a = np.linspace(0.5, 8, 6).reshape(2, 3)
+    fortran, reversed_ = np.asfortranarray(a), a.reshape(-1)[::-1]
+    shape, (same, f_order, back) = _arrays(("psi", "theta", "f_star"), (a.reshape(-1), fortran.reshape(-1), reversed_))
+    assert shape == (6,) and np.shares_memory(same, a)
+    assert np.array_equal(back, a.reshape(-1)[::-1]) and back.flags.c_contiguous
+    shape, (c, f) = _arrays(("psi", "theta"), (a, fortran))
+    assert shape == (2, 3) and np.array_equal(c, f) and not np.shares_memory(f, fortran)
+    # Another byte order is not float64 here: converted on the general path.
+    big = a.astype(">f8")
+    _, (flat,) = _arrays(("psi",), (big,))
+    assert flat.dtype == np.float64 and np.array_equal(flat, a.reshape(-1))
 
 
 def test_scalar_arguments_repeated_natively_match_full_arrays(table, points):
