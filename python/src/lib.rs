@@ -195,7 +195,7 @@ struct Sharing {
     /// The fewest elements worth a thread of their own.
     per_thread: usize,
     /// The elements a thread takes at a time: small enough that a thread
-    /// that starts late (waking an idle core of a VM takes up to ~80 µs)
+    /// that starts late (waking an idle core of this VM took 80–260 µs)
     /// takes fewer, large enough that taking them costs nothing that shows.
     chunk: usize,
 }
@@ -261,7 +261,7 @@ fn share<O: Send>(
     prepare: impl Fn(usize) + Sync,
     work: impl Fn(Range<usize>, O) -> Bad + Sync,
 ) -> Bad {
-    let n = chunks.last().map_or(0, |r| r.end);
+    let (n, threads) = (chunks.last().map_or(0, |r| r.end), threads.max(1));
     let queue = Mutex::new(chunks.into_iter().zip(parts));
     let take = || queue.lock().unwrap_or_else(PoisonError::into_inner);
     let worker = || {
@@ -278,7 +278,7 @@ fn share<O: Send>(
             }
         }
     };
-    if threads <= 1 {
+    if threads == 1 {
         return worker();
     }
     std::thread::scope(|s| {
