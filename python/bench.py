@@ -79,7 +79,7 @@ def cpu_name():
 
 
 def cores():
-    """The threads Table.mu uses by default: the cores this process may use."""
+    """The threads Table.mu uses with threads=None: the cores this process may use."""
     return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
 
 
@@ -168,7 +168,9 @@ def main(argv):
     results = {}
     for r in range(rounds):
         names = list(ours)[r % len(ours):] + list(ours)[:r % len(ours)]
-        order = [k for pair in zip(theirs, names + [None]) for k in pair if k is not None]
+        order = []
+        for i, name in enumerate(theirs):  # RGI, ours, RGI, ours, ...
+            order += [name] + names[i:i + 1]
         for name in order:
             t, results[name] = timed(ours.get(name) or theirs[name])
             times[name].append(t)

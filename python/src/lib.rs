@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::borrow::Cow;
 use std::ops::Range;
-use std::sync::{Mutex, PoisonError};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// A failed element: its index in the flat input and the message.
 type Bad = Option<(usize, String)>;
@@ -218,19 +218,64 @@ const MODEL_WORK: Sharing = Sharing {
 };
 
 impl Sharing {
-    /// The threads for `n` elements when `threads` are asked for (0: one
-    /// per core this process may use), and the chunks of the work.
-    fn split(&self, n: usize, threads: usize) -> (usize, Vec<Range<usize>>) {
-        static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
-        let k = match (n / self.per_thread, threads) {
+    /// Runs `work` on `n` elements in chunks (a range of elements and its
+    /// part of the output, from `parts`, which cuts the output for the
+    /// chunks in order) on up to `threads` threads (0: one per core this
+    /// process may use; 1 unless `n` is at least two threads' worth): the
+    /// calling one and the others started here, each taking the next chunk
+    /// until none is left, after `prepare` (told the elements a thread is
+    /// to do). Returns the first bad element of all (each chunk's index is
+    /// relative to its start), so the result does not depend on the
+    /// threads; after a bad element the chunks not yet taken are dropped
+    /// (they come after it). A thread the system refuses to start is done
+    /// without.
+    fn run<O: Send>(
+        &self,
+        n: usize,
+        threads: usize,
+        parts: impl FnOnce(&[Range<usize>]) -> Vec<O>,
+        prepare: impl Fn(usize) + Sync,
+        work: impl Fn(Range<usize>, O) -> Bad + Sync,
+    ) -> Bad {
+        static CORES: OnceLock<usize> = OnceLock::new();
+        let threads = match (n / self.per_thread, threads) {
             (0 | 1, _) => 1,
             (most, 0) => most.min(*CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))),
             (most, t) => most.min(t),
         };
-        let chunks = (0..n.div_ceil(self.chunk))
+        let chunks: Vec<_> = (0..n.div_ceil(self.chunk))
             .map(|i| i * self.chunk..((i + 1) * self.chunk).min(n))
             .collect();
-        (k, chunks)
+        let parts = parts(&chunks);
+        let queue = Mutex::new(chunks.into_iter().zip(parts));
+        let take = || queue.lock().unwrap_or_else(PoisonError::into_inner);
+        let worker = || {
+            prepare(n / threads);
+            // Each thread takes chunks in order, so its first bad element
+            // is its lowest.
+            loop {
+                // (A statement of its own: the lock is not held while working.)
+                let next = take().next();
+                let (r, o) = next?;
+                if let Some((i, message)) = work(r.clone(), o) {
+                    take().by_ref().for_each(drop);
+                    return Some((r.start + i, message));
+                }
+            }
+        };
+        if threads == 1 {
+            return worker();
+        }
+        std::thread::scope(|s| {
+            let others: Vec<_> = (1..threads)
+                .map_while(|_| std::thread::Builder::new().spawn_scoped(s, worker).ok())
+                .collect();
+            let mine = worker();
+            let theirs = others
+                .into_iter()
+                .map(|h| h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)));
+            std::iter::once(mine).chain(theirs).flatten().min_by_key(|(i, _)| *i)
+        })
     }
 }
 
@@ -246,51 +291,13 @@ fn cut<'a, T>(mut out: &'a mut [T], per: usize, ranges: &[Range<usize>]) -> Vec<
     parts
 }
 
-/// Runs `work` on each chunk (a range of elements and its part of the
-/// output) on `threads` threads: the calling one and `threads - 1` started
-/// here, each taking the next chunk in order until none is left, after
-/// `prepare` (told the elements a thread is to do). Returns the first bad
-/// element of all (each chunk's index is relative to its start), so the
-/// result does not depend on the threads; after a bad element the chunks
-/// not yet taken are dropped (they come after it). A thread the system
-/// refuses to start is done without.
-fn share<O: Send>(
-    threads: usize,
-    chunks: Vec<Range<usize>>,
-    parts: Vec<O>,
-    prepare: impl Fn(usize) + Sync,
-    work: impl Fn(Range<usize>, O) -> Bad + Sync,
-) -> Bad {
-    let (n, threads) = (chunks.last().map_or(0, |r| r.end), threads.max(1));
-    let queue = Mutex::new(chunks.into_iter().zip(parts));
-    let take = || queue.lock().unwrap_or_else(PoisonError::into_inner);
-    let worker = || {
-        prepare(n / threads);
-        // Each thread takes chunks in order, so its first bad element is
-        // its lowest.
-        loop {
-            // (A statement of its own: the lock is not held while working.)
-            let next = take().next();
-            let (r, o) = next?;
-            if let Some((i, message)) = work(r.clone(), o) {
-                take().by_ref().for_each(drop);
-                return Some((r.start + i, message));
-            }
-        }
-    };
-    if threads == 1 {
-        return worker();
-    }
-    std::thread::scope(|s| {
-        let others: Vec<_> = (1..threads)
-            .map_while(|_| std::thread::Builder::new().spawn_scoped(s, worker).ok())
-            .collect();
-        let mine = worker();
-        let theirs = others
-            .into_iter()
-            .map(|h| h.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)));
-        std::iter::once(mine).chain(theirs).flatten().min_by_key(|(i, _)| *i)
-    })
+/// `mu` and `slope` cut alike (see [`cut`]), in pairs.
+fn cut_pairs<'a>(
+    mu: &'a mut [f64],
+    slope: &'a mut [f64],
+    ranges: &[Range<usize>],
+) -> Vec<(&'a mut [f64], &'a mut [f64])> {
+    cut(mu, 1, ranges).into_iter().zip(cut(slope, 1, ranges)).collect()
 }
 
 /// Readies `table` for `n` lookups by this thread (its coefficients read
@@ -356,13 +363,12 @@ impl TableCore {
         let repeats = table_inputs(out.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        let (k, chunks) = TABLE_WORK.split(out.len(), threads);
-        let parts = cut(out, 1, &chunks);
+        let n = out.len();
         Ok(py.detach(|| {
-            share(
-                k,
-                chunks,
-                parts,
+            TABLE_WORK.run(
+                n,
+                threads,
+                |chunks| cut(out, 1, chunks),
                 |m| read_through(table, repeats, m),
                 |chunk, out| {
                     fill_batch(nan, out, f64::NAN, |r, o| {
@@ -395,13 +401,12 @@ impl TableCore {
         let repeats = table_inputs(mu.len(), [("psi", p), ("theta", t), ("f_star", f)])?;
         let (cp, ct, cf) = (repeated(p), repeated(t), repeated(f));
         let table = &*self.0;
-        let (k, chunks) = TABLE_WORK.split(mu.len(), threads);
-        let parts = cut(mu, 1, &chunks).into_iter().zip(cut(slope, 1, &chunks)).collect();
+        let n = mu.len();
         Ok(py.detach(|| {
-            share(
-                k,
-                chunks,
-                parts,
+            TABLE_WORK.run(
+                n,
+                threads,
+                |chunks| cut_pairs(mu, slope, chunks),
                 |m| read_through(table, repeats, m),
                 |chunk, (mu, slope)| {
                     fill_pairs(nan, mu, slope, |r, o| {
@@ -485,13 +490,12 @@ impl CurveCore {
         let out = slice_mut("out", &mut out)?;
         same_len(out.len(), &[("f_star", f.len())])?;
         let curve = &self.0;
-        let (k, chunks) = CURVE_WORK.split(out.len(), threads);
-        let parts = cut(out, 1, &chunks);
+        let n = out.len();
         Ok(py.detach(|| {
-            share(
-                k,
-                chunks,
-                parts,
+            CURVE_WORK.run(
+                n,
+                threads,
+                |chunks| cut(out, 1, chunks),
                 |_| (),
                 |chunk, out| fill_batch(nan, out, f64::NAN, |r, o| curve.mu_batch(&f[shift(r, chunk.start)], o)),
             )
@@ -512,13 +516,12 @@ impl CurveCore {
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         same_len(mu.len(), &[("f_star", f.len()), ("slope", slope.len())])?;
         let curve = &self.0;
-        let (k, chunks) = CURVE_WORK.split(mu.len(), threads);
-        let parts = cut(mu, 1, &chunks).into_iter().zip(cut(slope, 1, &chunks)).collect();
+        let n = mu.len();
         Ok(py.detach(|| {
-            share(
-                k,
-                chunks,
-                parts,
+            CURVE_WORK.run(
+                n,
+                threads,
+                |chunks| cut_pairs(mu, slope, chunks),
                 |_| (),
                 |chunk, (mu, slope)| {
                     fill_pairs(nan, mu, slope, |r, o| {
@@ -568,13 +571,11 @@ impl ModelCore {
         let out = slice_mut("out", &mut out)?;
         same_len(7 * x.len(), &[("out", out.len())])?;
         let model = &self.0;
-        let (k, chunks) = MODEL_WORK.split(x.len(), threads);
-        let parts = cut(out, 7, &chunks);
         Ok(py.detach(|| {
-            share(
-                k,
-                chunks,
-                parts,
+            MODEL_WORK.run(
+                x.len(),
+                threads,
+                |chunks| cut(out, 7, chunks),
                 |_| (),
                 |chunk, out| {
                     for (i, (&v, row)) in x[chunk].iter().zip(out.chunks_exact_mut(7)).enumerate() {
