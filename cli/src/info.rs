@@ -24,14 +24,18 @@ pub struct Args {
 
 /// Runs `kefric info`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    let table = load_table(args.table.as_deref())?;
-    // The file was read and checked by `load_table`; its last four bytes
-    // are the CRC-32 of the rest.
-    let bytes: std::borrow::Cow<[u8]> = match &args.table {
-        None => Table::embedded_bytes().into(),
-        Some(path) => std::fs::read(path)
-            .map_err(|e| Failure::input(format!("--table {}: {e}", path.display())))?
-            .into(),
+    // Read once (bounded) and checked; the last four bytes are the CRC-32
+    // of the rest.
+    let (table, bytes): (std::borrow::Cow<Table>, std::borrow::Cow<[u8]>) = match &args.table {
+        None => (load_table(None)?, Table::embedded_bytes().into()),
+        Some(path) => {
+            let bad = |e: ke_friction::TableError| Failure::input(format!("--table {}: {e}", path.display()));
+            let bytes = Table::read_file(path).map_err(bad)?;
+            (
+                std::borrow::Cow::Owned(Table::from_bytes(&bytes).map_err(bad)?),
+                bytes.into(),
+            )
+        }
     };
     let crc = bytes.len().checked_sub(4).map(|at| &bytes[at..]);
     let checksum = crc.map_or(0, |c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]));

@@ -125,7 +125,17 @@ impl Kernel {
         let len = nodes[0] * stride[0];
         // The block of the last cell must end inside the coefficients.
         let last_block = (0..3).map(|a| layout.last_cell[a] * stride[a]).sum::<usize>() + 3 * stride[0] + 15;
+        // The cell coordinate e·K + o (e the binary exponent of a query,
+        // K = ln 2/step) is exact in f32 while K, |o| and the sum stay
+        // below 2^12, as `k_hi` and `o_hi` carry 12 fractional bits; on the
+        // ln axes |ln m|/step, m in [√½, √2), is then below 2048·0.35 and
+        // the sum below 2^12. A table that loads may have finer steps or
+        // farther offsets: the portable kernel looks it up.
+        let ln_axes_fit = [0, 2].iter().all(|&a| layout.inv_step[a] < 2048.0);
+        let offsets_fit = layout.offset.iter().all(|o| o.abs() < 4096.0);
         if nodes[0] * s0 != coefs.len()
+            || !ln_axes_fit
+            || !offsets_fit
             || nodes.iter().any(|&m| m >= 2048)
             || last_block >= len
             || len >= i32::MAX as usize

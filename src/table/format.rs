@@ -13,8 +13,41 @@
 //! specified (floats little-endian IEEE 754, lengths as varints); bincode is
 //! not used because it is unmaintained. Decoding checks, in order: the
 //! magic, the version, the length, the checksum, the payload's structure,
-//! and then every value (finite coefficients, sane axes, valid model
-//! constants); any failure is a [`TableError`], never a panic.
+//! and then every value; any failure is a [`TableError`] naming the field
+//! and the bound, never a panic.
+//!
+//! # What a table that loads guarantees
+//!
+//! A file is untrusted input: its checksum proves only that it was not
+//! damaged, not that its author meant well. The loader (`Table::from_payload`
+//! and `Layout::new`) proves what the lookup kernels assume:
+//!
+//! 1. **Axes.** Each has 5 to 2^20 nodes, a finite first coordinate, a
+//!    finite step > 0 of at least [`MIN_RELATIVE_STEP`](super::layout::MIN_RELATIVE_STEP)
+//!    times max(1, its largest |node coordinate|) (so a query's cell
+//!    coordinate is accurate to about 1e-4 of a cell), the maps ln ψ, √θ,
+//!    ln F*, and a finite domain inside its nodes.
+//! 2. **Sizes.** Both coefficient arrays hold exactly (nψ+2)(nθ+2)(nF+2)
+//!    values, at most 2^28. With the cell index clamped to
+//!    `0..=last_cell` on every axis (in every kernel), every 4×4×4 block
+//!    lies inside them.
+//! 3. **Coefficients.** ln μ coefficients are finite and within
+//!    ±[`LN_MU_MAX_F32`] (f32 tables) or ±[`LN_MU_MAX_F64`] (f64 tables),
+//!    the ranges of the kernels' exponentials; h* coefficients within
+//!    ±[`H_STAR_MAX`]. The B-spline weights are convex (up to the rounding
+//!    of the cell offset), so a blend is bounded by its coefficients:
+//!    μ is finite and > 0.
+//! 4. **Slopes.** The bound on |∂μ/∂F*| that the coefficients, the F*
+//!    step and the lowest F* imply stays below e^[`LN_SLOPE_MAX`]: slopes
+//!    are finite.
+//! 5. **Records.** The model constants are valid (`Params::validate`), the
+//!    accuracy record and the h* range are finite, the generator string is
+//!    at most [`GENERATOR_MAX`] bytes (it is data: front ends print it
+//!    escaped).
+//!
+//! So every in-domain query of a table that loads has a finite μ > 0 and a
+//! finite slope, from every kernel; `src/table/tests.rs` and the fuzz
+//! targets in `fuzz/` check each point with crafted files.
 
 use crate::params::{Fit, Kind, Params};
 use serde::de::{self, EnumAccess, VariantAccess, Visitor};
@@ -25,6 +58,23 @@ pub const MAGIC: [u8; 8] = *b"KEFRICTB";
 /// The format version this crate writes and reads.
 pub const VERSION: u32 = 1;
 const HEADER: usize = 20;
+
+/// The largest |ln μ| coefficient of an f32 table: the fast kernel's f32
+/// exponential is accurate for |x| < 87.
+pub const LN_MU_MAX_F32: f64 = 80.0;
+/// The largest |ln μ| coefficient of an f64 table: the portable kernel's
+/// exponential is accurate for |x| < 708.
+pub const LN_MU_MAX_F64: f64 = 700.0;
+/// The largest |h*| coefficient (separations are a few σ).
+pub const H_STAR_MAX: f64 = 1e6;
+/// The largest ln of the bound on |∂μ/∂F*| a table may imply (f64 reaches
+/// e^709.8).
+pub const LN_SLOPE_MAX: f64 = 690.0;
+/// The longest generator string, in bytes.
+pub const GENERATOR_MAX: usize = 4096;
+/// The largest table file a program reads (1 GiB): larger files are
+/// refused before they are read in full.
+pub const FILE_MAX: u64 = 1 << 30;
 
 /// Why a table file was rejected.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -67,6 +117,14 @@ pub enum TableError {
     /// The payload decodes but its contents are inconsistent.
     #[error("table is inconsistent: {0}")]
     Inconsistent(String),
+    /// The file is larger than [`FILE_MAX`] (refused before it is read).
+    #[error("table file is {size} bytes, more than the {max} bytes a table may have")]
+    TooLarge {
+        /// The size the header declares (or the file has).
+        size: u64,
+        /// [`FILE_MAX`].
+        max: u64,
+    },
     /// The file could not be read.
     #[error("cannot read table {path}: {message}")]
     Io {
@@ -333,6 +391,46 @@ pub fn encode(payload: &Payload) -> Vec<u8> {
     out
 }
 
+/// Reads a table file from `r`, bounded: the header first (so that a file
+/// that is not a table, even an endless one such as `/dev/urandom`, is
+/// refused after 20 bytes), then exactly the length it declares, at most
+/// [`FILE_MAX`] bytes in all, and one byte more to detect trailing data.
+/// Read errors are `io`'s.
+pub fn read(r: &mut impl std::io::Read, io: impl Fn(std::io::Error) -> TableError) -> Result<Vec<u8>, TableError> {
+    use std::io::Read;
+    let mut bytes = Vec::with_capacity(HEADER);
+    r.by_ref().take(HEADER as u64).read_to_end(&mut bytes).map_err(&io)?;
+    if bytes.len() < HEADER {
+        // Too short, or the wrong magic: `decode` says which.
+        return decode(&bytes).map(|_| bytes);
+    }
+    let len = header(&bytes)?;
+    let total = (HEADER as u64 + 4).saturating_add(len);
+    if total > FILE_MAX {
+        return Err(TableError::TooLarge {
+            size: total,
+            max: FILE_MAX,
+        });
+    }
+    // Grows as data arrives: a false length costs no memory up front.
+    bytes.reserve((total as usize - HEADER).min(1 << 26));
+    r.take(total - HEADER as u64 + 1).read_to_end(&mut bytes).map_err(&io)?;
+    Ok(bytes)
+}
+
+/// Checks the magic and the version of a 20-byte header; returns the
+/// payload length it declares.
+fn header(bytes: &[u8]) -> Result<u64, TableError> {
+    if bytes[..8] != MAGIC {
+        return Err(TableError::WrongMagic);
+    }
+    let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
+    if version != VERSION {
+        return Err(TableError::UnsupportedVersion { found: version });
+    }
+    Ok(u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")))
+}
+
 /// Checks the framing and decodes the payload (values are checked by the caller).
 pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
     if bytes.len() < HEADER + 4 {
@@ -341,14 +439,7 @@ pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
         }
         return Err(TableError::TooShort { len: bytes.len() });
     }
-    if bytes[..8] != MAGIC {
-        return Err(TableError::WrongMagic);
-    }
-    let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
-    if version != VERSION {
-        return Err(TableError::UnsupportedVersion { found: version });
-    }
-    let len = u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes"));
+    let len = header(bytes)?;
     let expected = (HEADER as u64 + 4).saturating_add(len);
     if expected != bytes.len() as u64 {
         return Err(TableError::Length {

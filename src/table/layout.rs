@@ -12,6 +12,14 @@ pub const NAMES: [&str; 3] = ["psi", "theta", "f_star"];
 /// The largest coefficient array a table may have (2^28 values per array).
 pub const MAX_COEFS: usize = 1 << 28;
 
+/// An axis's spacing relative to its coordinates: each step must be at
+/// least this times max(1, the largest |coordinate| of its nodes). The
+/// maps (ln, √) are accurate to about 1e-16 of max(1, |coordinate|), so a
+/// query's cell coordinate is then accurate to about 1e-4 of a cell; a
+/// finer step would make it noise (a step of 1e-17 at ln 0.01 would put an
+/// in-domain query hundreds of cells before the first).
+pub const MIN_RELATIVE_STEP: f64 = 1e-12;
+
 /// The lookup grid of a table: its axes, its domain and the strides of its
 /// coefficient arrays (shape (nψ, nθ, nF), F* fastest).
 #[derive(Debug, Clone)]
@@ -100,8 +108,11 @@ impl Layout {
         for k in 0..3 {
             let s = coords[k] * self.inv_step[k] + self.offset[k];
             // i64 conversions are single instructions (usize ones, and
-            // floor without SSE4.1, are not); s ≥ 0 inside the domain.
-            let i = (s as i64).min(self.last_cell[k] as i64);
+            // floor without SSE4.1, are not). The cell is clamped at both
+            // ends whatever `s` is (NaN converts to 0), so the block lies
+            // inside the coefficients by construction: base + 3·s0 + 3·s1
+            // + 3 ≤ the last index, as `portable::blend` checks.
+            let i = (s as i64).clamp(0, self.last_cell[k] as i64);
             base += i as usize * self.strides[k];
             frac[k] = s - i as f64;
         }
@@ -122,8 +133,24 @@ fn axis(k: usize, specs: &[AxisSpec; 3]) -> Result<Axis, String> {
         return Err(format!("{name} axis: unknown scale code {}", s.scale));
     };
     let nodes = s.nodes as usize;
-    if !(s.first.is_finite() && s.step.is_finite() && s.step > 0.0 && (5..=1 << 20).contains(&nodes)) {
-        return Err(format!("{name} axis: bad node spacing or count"));
+    if !(5..=1 << 20).contains(&nodes) {
+        return Err(format!("{name} axis: {nodes} nodes (must be 5 to {})", 1 << 20));
+    }
+    if !(s.first.is_finite() && s.step.is_finite() && s.step > 0.0) {
+        return Err(format!(
+            "{name} axis: first node {} and step {} (must be finite, step > 0)",
+            s.first, s.step
+        ));
+    }
+    // The largest |coordinate| of a node: the cell coordinate of a query is
+    // computed to about 1e-16 of it (or of 1), which must be small next to
+    // a step.
+    let extent = s.first.abs().max((s.first + s.step * (nodes - 1) as f64).abs());
+    if !(extent.is_finite() && s.step >= MIN_RELATIVE_STEP * extent.max(1.0)) {
+        return Err(format!(
+            "{name} axis: step {} is below {MIN_RELATIVE_STEP:e} of max(1, largest |node coordinate| = {extent}): cell coordinates would not be accurate",
+            s.step
+        ));
     }
     let axis = Axis {
         scale,

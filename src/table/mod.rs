@@ -247,14 +247,25 @@ impl Table {
         Table::from_payload(format::decode(bytes)?)
     }
 
-    /// Reads and checks a table file.
+    /// Reads and checks a table file (see [`Table::read_file`]).
     pub fn load(path: impl AsRef<std::path::Path>) -> Result<Table, TableError> {
+        Table::from_bytes(&Table::read_file(path)?)
+    }
+
+    /// The bytes of a table file, read with bounds: a file that does not
+    /// start like a table is refused after its first 20 bytes, and no more
+    /// is read than the length its header declares (at most 1 GiB, see
+    /// [`TableError::TooLarge`]), so special files such as `/dev/urandom`
+    /// end in an error at once. The bytes are not yet checked: pass them
+    /// to [`Table::from_bytes`].
+    pub fn read_file(path: impl AsRef<std::path::Path>) -> Result<Vec<u8>, TableError> {
         let path = path.as_ref();
-        let bytes = std::fs::read(path).map_err(|e| TableError::Io {
+        let io = |e: std::io::Error| TableError::Io {
             path: path.display().to_string(),
             message: e.to_string(),
-        })?;
-        Table::from_bytes(&bytes)
+        };
+        let mut file = std::fs::File::open(path).map_err(io)?;
+        format::read(&mut file, io)
     }
 
     /// Builds the lookup structure from a payload, checking every value.
@@ -277,12 +288,51 @@ impl Table {
         }
         let ln_mu = payload.ln_mu.to_f64();
         let h_star = payload.h_star.to_f64();
-        if ln_mu.iter().chain(&h_star).any(|v| !v.is_finite()) {
-            return bad("non-finite coefficient".into());
+        let ln_mu_max = match payload.ln_mu {
+            Coefs::F32(_) => format::LN_MU_MAX_F32,
+            Coefs::F64(_) => format::LN_MU_MAX_F64,
+        };
+        let ln_mu_range = bounded("ln_mu", &ln_mu, ln_mu_max).map_err(TableError::Inconsistent)?;
+        bounded("h_star", &h_star, format::H_STAR_MAX).map_err(TableError::Inconsistent)?;
+        // |∂μ/∂F*| ≤ μ_max·|d ln μ/d(cell coordinate)|·(1/step)/F*_lo, and
+        // |d ln μ/d(cell coordinate)| ≤ 2·max|c| (the weights' slopes sum
+        // to at most 1.5 in absolute value), μ_max ≤ e^(max c + 1e-3·max|c|)
+        // (the weights are convex up to the rounding of the cell offset).
+        let (c_max, c_abs) = ln_mu_range;
+        let ln_slope_bound = c_max + 1e-3 * c_abs + (4.0 * c_abs + 1.0).ln() + layout.inv_step[2].ln() - f_star.0.ln();
+        if !(ln_slope_bound <= format::LN_SLOPE_MAX) {
+            return bad(format!(
+                "ln_mu coefficients up to {c_max} with F* down to {} and an F* step of {}: dmu/dF* could overflow (bound e^{ln_slope_bound:.1}, at most e^{})",
+                f_star.0,
+                layout.axes[2].step,
+                format::LN_SLOPE_MAX
+            ));
         }
         let acc = &payload.accuracy;
-        if !(acc.tolerance.is_finite() && acc.tolerance > 0.0 && acc.max_rel.is_finite() && acc.p99_rel.is_finite()) {
-            return bad("accuracy record is not finite and positive".into());
+        if !(acc.tolerance.is_finite() && acc.tolerance > 0.0) {
+            return bad(format!(
+                "accuracy: tolerance {} (must be finite and > 0)",
+                acc.tolerance
+            ));
+        }
+        for (name, v) in [("max_rel", acc.max_rel), ("p99_rel", acc.p99_rel)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return bad(format!("accuracy: {name} {v} (must be finite and >= 0)"));
+            }
+        }
+        if !acc.worst.iter().all(|v| v.is_finite()) {
+            return bad(format!("accuracy: worst point {:?} is not finite", acc.worst));
+        }
+        let b = &payload.build;
+        if !(b.h_lo.is_finite() && b.h_hi.is_finite()) {
+            return bad(format!("build: h* range [{}, {}] is not finite", b.h_lo, b.h_hi));
+        }
+        if b.generator.len() > format::GENERATOR_MAX {
+            return bad(format!(
+                "build: generator is {} bytes (at most {})",
+                b.generator.len(),
+                format::GENERATOR_MAX
+            ));
         }
         let info = TableInfo {
             domain: Domain {
@@ -366,10 +416,21 @@ impl Table {
         let kernel = self.avx2.as_ref()?;
         let (mu, d) = kernel.eval::<SLOPE>(psi, theta, f_star);
         Some(if mu.is_nan() {
-            Err(self.domain_error(psi, theta, f_star))
+            self.nan_from_kernel(psi, theta, f_star)
         } else {
             Ok((mu, d))
         })
+    }
+
+    /// What a NaN from the fast kernel means: a query outside the domain
+    /// (the error naming it). For a query inside, the loader's bounds make
+    /// a NaN impossible; should one occur all the same, the portable
+    /// kernel answers (never a panic, never a NaN handed on as μ).
+    #[cold]
+    #[inline(never)]
+    fn nan_from_kernel(&self, psi: f64, theta: f64, f_star: f64) -> Result<(f64, f64), LookupError> {
+        self.layout.check(psi, theta, f_star)?;
+        self.ln_slope_portable(psi, theta, f_star)
     }
 
     /// μ with each argument first clamped into the table's range — an
@@ -524,34 +585,61 @@ impl Table {
                 out: n,
             });
         }
-        let failed = match (&self.avx2, out) {
-            (Some(kernel), out) => kernel.batch(psi, theta, f_star, out),
-            (None, BatchOutput::Mu(o)) => fill(o, |i| self.mu_portable(psi[i], theta[i], f_star[i])),
-            (None, BatchOutput::WithSlope(o)) => fill(o, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i])),
+        let Some(kernel) = &self.avx2 else {
+            let failed = match out {
+                BatchOutput::Mu(o) => fill(o, |i| self.mu_portable(psi[i], theta[i], f_star[i])),
+                BatchOutput::WithSlope(o) => fill(o, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i])),
+            };
+            return failed.map_or(Ok(()), Err);
         };
-        let Some(i) = failed else {
-            return Ok(());
-        };
-        Err(match self.domain_error(psi[i], theta[i], f_star[i]) {
-            LookupError::OutOfDomain { name, value, lo, hi } => LookupError::BatchElement {
-                index: i,
-                name,
-                value,
-                lo,
-                hi,
-            },
-            other => other,
-        })
-    }
-
-    /// The error for a query outside the domain (the first bad argument).
-    #[cold]
-    fn domain_error(&self, psi: f64, theta: f64, f_star: f64) -> LookupError {
-        match self.layout.check(psi, theta, f_star) {
-            Err(e) => e,
-            Ok(()) => unreachable!("domain_error is called only for a query outside the domain"),
+        let mut out = out;
+        let mut start = 0;
+        while start < n {
+            let Some(j) = kernel.batch(&psi[start..], &theta[start..], &f_star[start..], out.tail(start)) else {
+                break;
+            };
+            // A NaN from the fast kernel: the query is outside the domain,
+            // or (impossible for a table that loads, see `nan_from_kernel`)
+            // the portable kernel answers it and the batch goes on.
+            let i = start + j;
+            let r = self
+                .nan_from_kernel(psi[i], theta[i], f_star[i])
+                .map_err(|e| batch_error(i, e))?;
+            out.set(i, r, slope(r.0, r.1, self.layout.inv_step[2], f_star[i]));
+            start = i + 1;
         }
+        Ok(())
     }
+}
+
+/// The error of batch element `index`, from its own lookup error.
+fn batch_error(index: usize, e: LookupError) -> LookupError {
+    match e {
+        LookupError::OutOfDomain { name, value, lo, hi } => LookupError::BatchElement {
+            index,
+            name,
+            value,
+            lo,
+            hi,
+        },
+        other => other,
+    }
+}
+
+/// Checks that every value of coefficient array `name` is finite and
+/// within ±`max`; returns (the largest value, the largest magnitude).
+fn bounded(name: &str, coefs: &[f64], max: f64) -> Result<(f64, f64), String> {
+    let (mut top, mut size) = (f64::NEG_INFINITY, 0.0f64);
+    for (i, &c) in coefs.iter().enumerate() {
+        if !(c.abs() <= max) {
+            return Err(format!(
+                "{name} coefficient {i} is {c}: must be finite and within [-{max}, {max}]"
+            ));
+        }
+        top = top.max(c);
+        size = size.max(c.abs());
+    }
+    Ok((top, size))
 }
 
 /// ∂μ/∂F* from μ and d ln μ/d(cell coordinate of F*), the coordinate
@@ -579,14 +667,31 @@ impl BatchOutput<'_> {
             BatchOutput::WithSlope(o) => o.len(),
         }
     }
+
+    /// The outputs from `start` on.
+    fn tail(&mut self, start: usize) -> BatchOutput<'_> {
+        match self {
+            BatchOutput::Mu(o) => BatchOutput::Mu(&mut o[start..]),
+            BatchOutput::WithSlope(o) => BatchOutput::WithSlope(&mut o[start..]),
+        }
+    }
+
+    /// Writes query `i`'s μ (`r.0`) and, where asked for, its slope.
+    fn set(&mut self, i: usize, r: (f64, f64), slope: f64) {
+        match self {
+            BatchOutput::Mu(o) => o[i] = r.0,
+            BatchOutput::WithSlope(o) => o[i] = (r.0, slope),
+        }
+    }
 }
 
-/// Sets `out[i] = f(i)` in order; returns the first `i` where `f` fails.
-fn fill<T>(out: &mut [T], f: impl Fn(usize) -> Result<T, LookupError>) -> Option<usize> {
+/// Sets `out[i] = f(i)` in order; on the first `i` where `f` fails, the
+/// batch error for it.
+fn fill<T>(out: &mut [T], f: impl Fn(usize) -> Result<T, LookupError>) -> Option<LookupError> {
     for (i, o) in out.iter_mut().enumerate() {
         match f(i) {
             Ok(v) => *o = v,
-            Err(_) => return Some(i),
+            Err(e) => return Some(batch_error(i, e)),
         }
     }
     None

@@ -20,6 +20,11 @@ impl Kernel {
     }
 
     /// Unreachable: there is no `Kernel` to call it on.
+    pub(super) fn prepare(&self, _: usize) {
+        match *self {}
+    }
+
+    /// Unreachable: there is no `Kernel` to call it on.
     pub(super) fn batch(&self, _: &[f64], _: &[f64], _: &[f64], _: BatchOutput) -> Option<usize> {
         match *self {}
     }

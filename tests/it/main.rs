@@ -4,7 +4,12 @@
 //! and the tables against direct integration.
 
 mod common;
+mod crafted_tables;
 mod curve;
+// The independent table encoder, shared with the CLI's, the C ABI's tests
+// and the fuzz targets.
+#[path = "../forge.rs"]
+mod forge;
 mod hardening_numerics;
 mod paper_statements;
 mod properties;
