@@ -32,6 +32,10 @@ echo "python: pip install ./python took $((SECONDS - t0)) s"
 
 out=$target/ci-python
 rm -rf "$out" && mkdir -p "$out"
+# The crafted table files the tests load (test_errors.py).
+cargo build --release --quiet -p ke-friction --example crafted_tables
+export KEF_CRAFTED_DIR=$out/crafted
+"$target/release/examples/crafted_tables" "$KEF_CRAFTED_DIR" > /dev/null
 # From outside python/, so that the installed package is what is tested
 # (not python/pysrc, which has no native module).
 (cd "$out" && "$py" -m pytest -q -p no:cacheprovider "$root/python/tests")

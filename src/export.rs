@@ -26,7 +26,7 @@
 //! in the same directory, flushed, then renamed).
 
 use crate::build::{params_of, BuildError, BuildOptions, Progress};
-use crate::io::write_atomic_with;
+use crate::io::{write_atomic_with, write_dir_atomic, WriteFile};
 use crate::model::Model;
 use crate::num::{json_numbers, json_object, Json};
 use crate::spline::Axis;
@@ -295,25 +295,33 @@ pub fn write_npz(path: &Path, arrays: &[Named], metadata: &str) -> io::Result<()
 }
 
 /// Writes each array to `DIR/NAME.npy`, and the metadata to
-/// `DIR/metadata.npy`, each file atomically. `dir` is created (with its
-/// parents) if missing.
+/// `DIR/metadata.npy`, all or nothing (see [`write_dir_atomic`]): after a
+/// failure (a full disk) no new file is in `dir`. `dir` is created if
+/// missing (its parent must exist).
 pub fn write_npy_dir(dir: &Path, arrays: &[Named], metadata: &str) -> io::Result<()> {
-    std::fs::create_dir_all(dir)?;
-    let write = |name: &str, array: &dyn Fn(&mut BufWriter<std::fs::File>) -> io::Result<()>| {
-        write_atomic_with(&dir.join(format!("{name}.npy")), |file| {
-            let mut out = BufWriter::new(file);
-            array(&mut out)?;
-            out.flush()?;
-            out.into_inner().map_err(|e| e.into_error())?.sync_all()
-        })
+    let npy = |write: &dyn Fn(&mut BufWriter<std::fs::File>) -> io::Result<()>, file: std::fs::File| {
+        let mut out = BufWriter::new(file);
+        write(&mut out)?;
+        out.flush()?;
+        out.into_inner().map_err(|e| e.into_error())?.sync_all()
     };
-    write("metadata", &|out| {
-        metadata_bytes(metadata).write_npy(out).map_err(io::Error::other)
-    })?;
-    for (name, array) in arrays {
-        write(name, &|out| array.write_npy(out).map_err(io::Error::other))?;
-    }
-    Ok(())
+    let meta = |file| {
+        npy(
+            &|out| metadata_bytes(metadata).write_npy(out).map_err(io::Error::other),
+            file,
+        )
+    };
+    let names: Vec<String> = arrays.iter().map(|(name, _)| format!("{name}.npy")).collect();
+    let writers: Vec<Box<dyn Fn(std::fs::File) -> io::Result<()> + '_>> = arrays
+        .iter()
+        .map(|(_, array)| {
+            Box::new(move |file| npy(&|out| array.write_npy(out).map_err(io::Error::other), file))
+                as Box<dyn Fn(std::fs::File) -> io::Result<()>>
+        })
+        .collect();
+    let mut files: Vec<(&str, &WriteFile)> = vec![("metadata.npy", &meta)];
+    files.extend(names.iter().map(String::as_str).zip(writers.iter().map(|w| w.as_ref())));
+    write_dir_atomic(dir, &files)
 }
 
 fn metadata_bytes(metadata: &str) -> ndarray::Array1<u8> {

@@ -31,11 +31,53 @@ impl Failure {
         }
     }
 
+    /// Output that cannot be written (`what`: `stdout` or a file's flag
+    /// and path): exit status 1.
+    pub fn output(what: impl Display, e: &std::io::Error) -> Failure {
+        Failure::other(format!("{what}: {}", io_message(e)))
+    }
+
     /// Prints the message as one line on stderr; returns the exit status.
     pub fn report(&self) -> i32 {
-        eprintln!("error: {}", self.message);
+        errln!("error: {}", self.message);
         self.code
     }
+}
+
+/// A system error's message without Rust's " (os error N)" suffix:
+/// `No space left on device`.
+pub fn io_message(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.rfind(" (os error ") {
+        Some(at) if text.ends_with(')') => text[..at].to_string(),
+        _ => text,
+    }
+}
+
+/// Writes to stdout through one checked path: a failed write (a full
+/// disk, a closed pipe) is a [`Failure`] (`error: stdout: …`, exit 1),
+/// never a panic as `println!` would give.
+pub fn write_stdout(args: std::fmt::Arguments, newline: bool) -> Result<(), Failure> {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    out.write_fmt(args)
+        .and_then(|()| if newline { out.write_all(b"\n") } else { Ok(()) })
+        .map_err(|e| Failure::output("stdout", &e))
+}
+
+/// Flushes stdout (at the end of a run): what is still buffered must
+/// reach it, or the run fails.
+pub fn flush_stdout() -> Result<(), Failure> {
+    use std::io::Write;
+    std::io::stdout().flush().map_err(|e| Failure::output("stdout", &e))
+}
+
+/// Writes a line to stderr; if stderr itself cannot be written there is
+/// nowhere left to say so, and the exit status still tells.
+pub fn write_stderr(args: std::fmt::Arguments) {
+    use std::io::Write;
+    let mut err = std::io::stderr().lock();
+    let _ = err.write_fmt(args).and_then(|()| err.write_all(b"\n"));
 }
 
 /// Parses a finite number, naming the flag on failure.
@@ -97,7 +139,9 @@ pub fn check_writable(flag: &str, path: &std::path::Path) -> Result<(), Failure>
             parent.display()
         )));
     }
-    Ok(())
+    ke_friction::io::output_target(path)
+        .map(|_| ())
+        .map_err(|e| Failure::input(format!("{flag}: {}", io_message(&e))))
 }
 
 /// The output directory `path`, given by `flag`, created with its parents
@@ -183,13 +227,13 @@ pub fn short(x: f64) -> Shortest {
 }
 
 /// Prints where a table's measured error of μ is largest.
-pub fn print_worst(acc: &ke_friction::table::Accuracy) {
-    println!(
+pub fn print_worst(acc: &ke_friction::table::Accuracy) -> Result<(), Failure> {
+    outln!(
         "worst at psi = {}, theta = {}, F* = {}",
         short(acc.worst[0]),
         short(acc.worst[1]),
         short(acc.worst[2])
-    );
+    )
 }
 
 /// The model's parameters, shared by the subcommands that evaluate it:
@@ -442,7 +486,7 @@ impl PaperRange {
         } else {
             format!("{} of {} points lie", self.outside, self.total)
         };
-        eprintln!(
+        errln!(
             "warning: {which} outside the range the paper covers (F* <= {}, h* >= 0): F* up to {}, h* down to {}; the model is extrapolated there",
             Shortest(PAPER_F_STAR_MAX),
             short(self.f_star_max),

@@ -15,7 +15,9 @@ use std::time::Instant;
 /// library embeds); any other build needs --out.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Output file, written to a temporary name and then renamed. Required
+    /// Output file, written to a temporary name beside it and then renamed
+    /// over it. A symlink is followed (its target is replaced, the link
+    /// stays); an existing device, pipe or directory is refused. Required
     /// unless every other option is at its default (which rebuilds
     /// tables/default.kft).
     #[arg(long, value_name = "FILE")]
@@ -174,39 +176,42 @@ pub fn run(args: Args) -> Result<(), Failure> {
     check_writable("--out", &out)?;
     let started = Instant::now();
     let bar = Bar::new(args.quiet);
-    let built = build(&options, &bar).map_err(|e| Failure::other(e.to_string()))?;
+    let built = build(&options, &bar).map_err(|e| match e {
+        // The options put a ghost node where the model has no μ.
+        BuildError::Ghost { .. } => Failure::input(format!("--f-star/--nodes: {e}")),
+        _ => Failure::other(e),
+    })?;
     bar.done();
-    write_atomic(&out, &built.bytes)
-        .map_err(|e| Failure::input(format!("--out: cannot write {}: {e}", out.display())))?;
+    write_atomic(&out, &built.bytes).map_err(|e| Failure::output(format_args!("--out {}", out.display()), &e))?;
     let secs = started.elapsed().as_secs_f64();
     let t = &built.table;
     let info = t.info();
     let acc = &info.accuracy;
     let axes = t.axes();
-    println!("wrote {} ({} bytes)", out.display(), built.bytes.len());
+    outln!("wrote {} ({} bytes)", out.display(), built.bytes.len())?;
     let h_nodes = options.h_star.2;
-    println!(
+    outln!(
         "F*(h*) guess grid: {} psi x {} theta x {h_nodes} h* = {} force evaluations",
         axes[0].nodes,
         axes[1].nodes,
         axes[0].nodes * axes[1].nodes * h_nodes
-    );
-    println!(
+    )?;
+    outln!(
         "lookup grid: {} psi x {} theta x {} F* nodes ({} ghost nodes per end on psi and F*), {} coefficients",
         axes[0].nodes,
         axes[1].nodes,
         axes[2].nodes,
         options.ghosts,
         options.precision.name()
-    );
-    println!(
+    )?;
+    outln!(
         "accuracy of mu vs direct integration ({} points): max relative error {:.3e} (tolerance {}), 99th percentile {:.3e}",
         acc.samples,
         acc.max_rel,
         Shortest(info.tolerance),
         acc.p99_rel
-    );
-    print_worst(acc);
-    println!("build time: {secs:.1} s on {} threads", threads());
+    )?;
+    print_worst(acc)?;
+    outln!("build time: {secs:.1} s on {} threads", threads())?;
     Ok(())
 }

@@ -100,7 +100,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let mut paper = PaperRange::default();
     if args.json {
         for c in &contacts {
-            println!(
+            outln!(
                 "{}",
                 json_object(&[
                     ("psi", Json::Num(p.psi)),
@@ -118,21 +118,33 @@ pub fn run(args: Args) -> Result<(), Failure> {
                     ("f_star", Json::Num(c.f_star)),
                     ("mu", c.mu.map_or(Json::Null, Json::Num)),
                 ])
-            );
+            )?;
             paper.note(c.f_star, c.h_star);
         }
     } else {
-        println!("# {}", describe(p));
-        println!(
+        outln!("# {}", describe(p))?;
+        outln!(
             "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
-            "h*", "d*", "P*", "Fs*", "Q*", "F*", "mu"
-        );
+            "h*",
+            "d*",
+            "P*",
+            "Fs*",
+            "Q*",
+            "F*",
+            "mu"
+        )?;
         for c in &contacts {
             let mu = c.mu.map_or("undefined".to_string(), |m| format!("{m:.5e}"));
-            println!(
+            outln!(
                 "{:>10.6} {:>10.6} {:>12.5e} {:>12.5e} {:>12.5e} {:>12.5e} {:>12}",
-                c.h_star, c.d_star, c.p_star, c.fs_star, c.q_star, c.f_star, mu
-            );
+                c.h_star,
+                c.d_star,
+                c.p_star,
+                c.fs_star,
+                c.q_star,
+                c.f_star,
+                mu
+            )?;
             paper.note(c.f_star, c.h_star);
         }
     }

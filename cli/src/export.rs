@@ -17,11 +17,14 @@ pub struct Args {
     /// Table file (default: the embedded default table).
     #[arg(long)]
     pub table: Option<PathBuf>,
-    /// Write one .npz file (uncompressed, like numpy.savez).
+    /// Write one .npz file (uncompressed, like numpy.savez), atomically. A
+    /// symlink is followed (its target is replaced, the link stays); an
+    /// existing device, pipe or directory is refused.
     #[arg(long, value_name = "FILE")]
     pub npz: Option<PathBuf>,
     /// Write one NAME.npy per array into this directory (created, with its
-    /// parents, if missing).
+    /// parents, if missing), all or nothing: the files are written into a
+    /// temporary directory beside it and moved in only when all are.
     #[arg(long, value_name = "DIR")]
     pub npy: Option<PathBuf>,
     /// No progress bar.
@@ -39,7 +42,16 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let table = load_table(args.table.as_deref())?;
     let table = &*table;
     if want_dir {
-        output_dir(flag, path)?;
+        // The directory itself appears only when every file is written.
+        if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
+            output_dir(flag, parent)?;
+        }
+        if path.file_name().is_none() || (path.exists() && !path.is_dir()) {
+            return Err(Failure::input(format!(
+                "{flag}: {} is not a directory name",
+                path.display()
+            )));
+        }
     } else {
         check_writable(flag, path)?;
     }
@@ -59,7 +71,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     } else {
         write_npz(path, &named, &meta)
     };
-    written.map_err(|e| Failure::input(format!("{flag}: cannot write {}: {e}", path.display())))?;
+    written.map_err(|e| Failure::output(format_args!("{flag} {}", path.display()), &e))?;
     let shape = |name: &str| {
         named
             .iter()
@@ -67,13 +79,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
             .map(|(_, a)| format!("{:?}", a.shape()))
             .unwrap_or_default()
     };
-    println!(
+    outln!(
         "wrote {} ({} arrays: mu {}, grid_mu {}) in {:.1} s",
         path.display(),
         named.len() + 1,
         shape("mu"),
         shape("grid_mu"),
         started.elapsed().as_secs_f64()
-    );
+    )?;
     Ok(())
 }

@@ -53,7 +53,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .unwrap_or(f64::NAN);
     if args.json {
         let range = |(lo, hi): (f64, f64)| Json::Raw(json_numbers(&[lo, hi]));
-        println!(
+        outln!(
             "{}",
             json_object(&[
                 ("file", Json::Str(&name)),
@@ -83,52 +83,52 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 ("precision", Json::Str(info.precision.name())),
                 ("generator", Json::Str(&b.generator)),
             ])
-        );
+        )?;
         return Ok(());
     }
     let r = |(lo, hi): (f64, f64)| format!("[{}, {}]", Shortest(lo), Shortest(hi));
-    println!("table:      {name}");
-    println!(
+    outln!("table:      {name}")?;
+    outln!(
         "file:       {} bytes, format version {}, CRC-32 {checksum:08x}, built by {}",
         bytes.len(),
         info.format_version,
         b.generator
-    );
-    println!("model:      {}, fit = {}", d.kind.name(), d.fit.name());
-    println!("domain:     psi {}, theta {}, F* {}", r(d.psi), r(d.theta), r(d.f_star));
-    println!(
+    )?;
+    outln!("model:      {}, fit = {}", d.kind.name(), d.fit.name())?;
+    outln!("domain:     psi {}, theta {}, F* {}", r(d.psi), r(d.theta), r(d.f_star))?;
+    outln!(
         "constants:  beta = {}, nu = {}, eps_star = {}",
         Shortest(d.beta),
         Shortest(d.nu),
         Shortest(d.eps_star)
-    );
-    println!(
+    )?;
+    outln!(
         "accuracy:   mu max relative error {:.2e} (tolerance {}), 99th percentile {:.2e}, {} points at build",
         acc.max_rel,
         Shortest(info.tolerance),
         acc.p99_rel,
         acc.samples
-    );
-    print!("            ");
-    print_worst(acc);
-    println!(
+    )?;
+    out!("            ")?;
+    print_worst(acc)?;
+    outln!(
         "            slope dmu/dF* max relative error {slope:.2e} (measured now at {SLOPE_SAMPLES} points; the file records only mu's)"
-    );
-    println!(
+    )?;
+    outln!(
         "nodes:      {} psi x {} theta x {} F* ({} ghost nodes per end), {} coefficients",
         b.nodes[0],
         b.nodes[1],
         b.nodes[2],
         b.ghosts,
         info.precision.name()
-    );
-    println!(
+    )?;
+    outln!(
         "interpolant: cubic B-spline of ln mu over (ln psi, sqrt theta, ln F*); lookups {}",
         if table.fast_kernel() {
             "use the fast f32 AVX2 kernel on this machine"
         } else {
             "use the portable f64 kernel on this machine"
         }
-    );
+    )?;
     Ok(())
 }

@@ -6,7 +6,7 @@ use ke_friction::num::Shortest;
 use ke_friction::num::{json_object, Json};
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
-use std::io::{BufRead, Write};
+use std::io::{BufRead, Read, Write};
 use std::path::PathBuf;
 
 /// Look up μ(ψ, θ, F*), ∂μ/∂F* and h* in a table (the embedded default
@@ -28,7 +28,7 @@ pub struct Args {
     /// Print one JSON object (numbers in shortest round-trip form).
     #[arg(long, conflicts_with = "csv")]
     pub json: bool,
-    /// Read psi,theta,f_star rows from stdin (a header line is optional);
+    /// Read psi,theta,f_star rows from stdin (a header line is optional; lines up to 1 MiB);
     /// write psi,theta,f_star,mu,dmu_df_star,h_star rows to stdout. A bad
     /// row stops the run with its line number (exit 2); the rows before it
     /// are complete.
@@ -84,7 +84,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         Failure::input(format!("{flag}: {e}"))
     })?;
     if args.json {
-        println!(
+        outln!(
             "{}",
             json_object(&[
                 ("psi", Json::Num(psi)),
@@ -94,14 +94,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 ("dmu_df_star", Json::Num(r.slope)),
                 ("h_star", Json::Num(r.h_star)),
             ])
-        );
+        )?;
     } else {
         if args.si.any() {
-            println!("psi = {}, theta = {}", Shortest(psi), Shortest(theta));
+            outln!("psi = {}, theta = {}", Shortest(psi), Shortest(theta))?;
         }
-        println!("mu = {}", Shortest(r.mu));
-        println!("dmu/dF* = {}", Shortest(r.slope));
-        println!("h* = {}", Shortest(r.h_star));
+        outln!("mu = {}", Shortest(r.mu))?;
+        outln!("dmu/dF* = {}", Shortest(r.slope))?;
+        outln!("h* = {}", Shortest(r.h_star))?;
     }
     let mut paper = PaperRange::default();
     paper.note(f_star, r.h_star);
@@ -144,12 +144,15 @@ fn point(args: &Args, table: &Table) -> Result<(f64, f64), Failure> {
     Ok((p.psi, p.theta))
 }
 
+/// The longest CSV line `lookup --csv` reads (1 MiB), end of line included.
+pub const CSV_LINE_MAX: usize = 1 << 20;
+
 /// Streams CSV rows from stdin to stdout.
 fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
     let stdin = std::io::stdin().lock();
     let stdout = std::io::stdout().lock();
     let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout);
-    let write_failed = |e: std::io::Error| Failure::other(format!("--csv: cannot write stdout: {e}"));
+    let write_failed = |e: std::io::Error| Failure::output("stdout", &e);
     out.write_all(b"psi,theta,f_star,mu,dmu_df_star,h_star\n")
         .map_err(write_failed)?;
     let mut paper = PaperRange::default();
@@ -159,8 +162,16 @@ fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
     let mut number = 0usize;
     let result = loop {
         line.clear();
-        match input.read_line(&mut line) {
+        // At most CSV_LINE_MAX bytes a line: a line without end is an
+        // error, not an unbounded allocation.
+        match (&mut input).take(CSV_LINE_MAX as u64 + 1).read_line(&mut line) {
             Ok(0) => break Ok(()),
+            Ok(n) if n > CSV_LINE_MAX => {
+                break Err(Failure::input(format!(
+                    "--csv: line {}: longer than {CSV_LINE_MAX} bytes (a line holds psi,theta,f_star)",
+                    number + 1
+                )))
+            }
             Ok(_) => {}
             Err(e) => {
                 break Err(Failure::input(format!(

@@ -6,6 +6,22 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 
+/// `println!` through [`args::write_stdout`]: `outln!(…)?` fails the run
+/// (exit 1) when stdout cannot be written.
+macro_rules! outln {
+    ($($t:tt)*) => { $crate::args::write_stdout(format_args!($($t)*), true) };
+}
+
+/// `print!` through [`args::write_stdout`].
+macro_rules! out {
+    ($($t:tt)*) => { $crate::args::write_stdout(format_args!($($t)*), false) };
+}
+
+/// `eprintln!` that cannot panic (see [`args::write_stderr`]).
+macro_rules! errln {
+    ($($t:tt)*) => { $crate::args::write_stderr(format_args!($($t)*)) };
+}
+
 mod args;
 mod build;
 mod eval;
@@ -17,6 +33,7 @@ mod plot;
 mod validate;
 mod verify;
 
+use args::Failure;
 use clap::{Parser, Subcommand};
 
 fn main() {
@@ -71,7 +88,8 @@ fn run() -> i32 {
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
     };
-    match result {
+    // Whatever the command left in stdout's buffer must be written too.
+    match result.and_then(|()| args::flush_stdout()) {
         Ok(()) => 0,
         Err(f) => f.report(),
     }
@@ -83,7 +101,9 @@ fn clap_exit(err: clap::Error) -> i32 {
     use clap::error::ErrorKind;
     match err.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            let _ = err.print();
+            if let Err(e) = err.print() {
+                return Failure::output("stdout", &e).report();
+            }
             if err.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
                 2
             } else {
@@ -92,7 +112,7 @@ fn clap_exit(err: clap::Error) -> i32 {
         }
         ErrorKind::ValueValidation | ErrorKind::InvalidValue => {
             // The same voice as every other input error: `error: --FLAG: …`.
-            eprintln!("error: {}", value_message(&err));
+            errln!("error: {}", value_message(&err));
             2
         }
         _ => {
@@ -102,7 +122,7 @@ fn clap_exit(err: clap::Error) -> i32 {
                 .take_while(|l| !l.trim().is_empty() && !l.starts_with("Usage:"))
                 .map(str::trim)
                 .collect();
-            eprintln!("{}", line.join(" "));
+            errln!("{}", line.join(" "));
             2
         }
     }

@@ -27,7 +27,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     let p = args.si.params()?;
     if args.json {
-        println!(
+        outln!(
             "{}",
             json_object(&[
                 ("psi", Json::Num(p.psi)),
@@ -36,13 +36,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 ("nu", Json::Num(p.nu)),
                 ("eps_star", Json::Num(p.eps_star)),
             ])
-        );
+        )?;
     } else {
-        println!("psi = {}", Shortest(p.psi));
-        println!("theta = {}", Shortest(p.theta));
-        println!("beta = {}", Shortest(p.beta));
-        println!("nu = {}", Shortest(p.nu));
-        println!("eps_star = {}", Shortest(p.eps_star));
+        outln!("psi = {}", Shortest(p.psi))?;
+        outln!("theta = {}", Shortest(p.theta))?;
+        outln!("beta = {}", Shortest(p.beta))?;
+        outln!("nu = {}", Shortest(p.nu))?;
+        outln!("eps_star = {}", Shortest(p.eps_star))?;
     }
     Ok(())
 }

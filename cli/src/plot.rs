@@ -37,7 +37,7 @@ enum What {
 
 #[derive(Debug, clap::Args)]
 struct Out {
-    /// Output file; its extension, .png or .svg (any case), picks the format. Its folder must exist.
+    /// Output file; its extension, .png or .svg (any case), picks the format. Its folder must exist. Written beside it, then renamed over it; a symlink is followed (its target is replaced); an existing device, pipe or directory is refused.
     #[arg(long, value_name = "FILE")]
     out: PathBuf,
     #[command(flatten)]
@@ -109,7 +109,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
             let page = figures::curve_page(&model, table.as_deref()).map_err(failure)?;
             page.save_scaled(out, scale).map_err(failure)?;
-            wrote(out);
+            wrote(out)?;
             Ok(())
         }
         What::TableError(a) => {
@@ -117,14 +117,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let table = load_table(a.table.as_deref())?;
             let map = figures::table_error(&table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
             map.save_scaled(out, scale).map_err(failure)?;
-            wrote(out);
+            wrote(out)?;
             Ok(())
         }
         What::All(a) => {
             let scale = a.scale.get()?;
             output_dir("--out-dir", &a.out_dir)?;
             for path in figures::save_all(&a.out_dir, scale).map_err(failure)? {
-                wrote(&path);
+                wrote(&path)?;
             }
             Ok(())
         }
@@ -134,7 +134,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 fn figure(fig: Figure, o: &Out) -> Result<(), Failure> {
     let (out, scale) = output(o)?;
     fig.page().and_then(|p| p.save_scaled(out, scale)).map_err(failure)?;
-    wrote(out);
+    wrote(out)?;
     Ok(())
 }
 
@@ -147,8 +147,8 @@ fn output(o: &Out) -> Result<(&Path, u32), Failure> {
     Ok((&o.out, scale))
 }
 
-fn wrote(path: &Path) {
-    println!("wrote {}", path.display());
+fn wrote(path: &Path) -> Result<(), Failure> {
+    outln!("wrote {}", path.display())
 }
 
 /// Bad input names its flag (exit 2); a failed drawing is exit 1.

@@ -13,7 +13,7 @@ pub struct Args {}
 /// Runs `kefric validate`.
 pub fn run(_args: Args) -> Result<(), Failure> {
     let rows = statements().map_err(|e| Failure::other(e.to_string()))?;
-    print!("{}", markdown(&rows));
+    out!("{}", markdown(&rows))?;
     Ok(())
 }
 

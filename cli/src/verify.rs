@@ -33,28 +33,33 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .map_err(|e| Failure::other(e.to_string()))?;
     bar.done();
     let (recorded, acc) = (&info.accuracy, &checked.accuracy);
-    println!(
+    outln!(
         "recorded at build: max relative error {:.3e}, 99th percentile {:.3e} ({} points)",
-        recorded.max_rel, recorded.p99_rel, recorded.samples
-    );
-    println!(
+        recorded.max_rel,
+        recorded.p99_rel,
+        recorded.samples
+    )?;
+    outln!(
         "measured now:      max relative error {:.3e}, 99th percentile {:.3e} ({} points, seed {})",
-        acc.max_rel, acc.p99_rel, acc.samples, args.seed
-    );
-    print_worst(acc);
+        acc.max_rel,
+        acc.p99_rel,
+        acc.samples,
+        args.seed
+    )?;
+    print_worst(acc)?;
     if let Some(slope) = checked.slope_max_rel {
-        println!("slope dmu/dF*:     max relative error {slope:.3e} (same points; reported, not checked)");
+        outln!("slope dmu/dF*:     max relative error {slope:.3e} (same points; reported, not checked)")?;
     }
     // The figures above are the exact (f64) interpolant's; where this
     // machine runs the f32 kernel, its rounding adds to them.
     if table.fast_kernel() {
-        println!(
+        outln!(
             "fast f32 kernel:   max relative deviation from the exact interpolant {:.3e} (same points)",
             checked.kernel_deviation
-        );
+        )?;
     }
     if checked.passes() {
-        println!("ok: within the table's tolerance {}", Shortest(checked.tolerance));
+        outln!("ok: within the table's tolerance {}", Shortest(checked.tolerance))?;
         Ok(())
     } else {
         Err(Failure::other(format!(

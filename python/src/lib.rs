@@ -19,6 +19,13 @@ type Bad = Option<(usize, String)>;
 /// scattered into the two output arrays).
 const CHUNK: usize = 256;
 
+pyo3::create_exception!(
+    _core,
+    TableError,
+    PyValueError,
+    "A table file that is damaged, not a table, or inconsistent (a ValueError)."
+);
+
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
@@ -331,7 +338,7 @@ impl TableCore {
         match Table::load(&path) {
             Ok(t) => Ok(TableCore(Cow::Owned(t))),
             Err(e @ ke_friction::TableError::Io { .. }) => Err(PyOSError::new_err(e.to_string())),
-            Err(e) => Err(value_error(format!("{}: {e}", path.display()))),
+            Err(e) => Err(TableError::new_err(format!("{}: {e}", path.display()))),
         }
     }
 
@@ -663,5 +670,6 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<ModelCore>()?;
     m.add_function(wrap_pyfunction!(params_from_physical, m)?)?;
     m.add("CURVE_ACCURACY", ke_friction::CURVE_ACCURACY)?;
+    m.add("TableError", m.py().get_type::<TableError>())?;
     Ok(())
 }

@@ -171,3 +171,36 @@ def test_loading_tables(tmp_path):
     empty.write_bytes(b"")
     with pytest.raises(ValueError, match="empty.kft"):
         kf.Table.load(empty)
+
+
+def test_crafted_tables_raise_table_error_or_answer(tmp_path):
+    """Issue 23's crafted files (valid checksums, hostile contents, written
+    by examples/crafted_tables.rs from tests/forge.rs into KEF_CRAFTED_DIR,
+    which .ci/python.sh sets): refused with TableError naming the field, or
+    loaded and answering mu = e^c; never a PanicException."""
+    import math
+    import os
+    import pathlib
+
+    crafted = os.environ.get("KEF_CRAFTED_DIR")
+    assert crafted, "KEF_CRAFTED_DIR is not set (.ci/python.sh writes the crafted tables there)"
+    lines = (pathlib.Path(crafted) / "index.tsv").read_text().splitlines()
+    assert len(lines) >= 20
+    refused = 0
+    for line in lines:
+        file, field, query, expected, name = line.split("\t")
+        path = pathlib.Path(crafted) / file
+        if field != "ok":
+            with pytest.raises(kf.TableError, match=field.replace("*", r"\*")) as err:
+                kf.Table.load(path)
+            assert isinstance(err.value, ValueError), name
+            refused += 1
+            continue
+        t = kf.Table.load(path)
+        psi, theta, f_star = map(float, query.split())
+        mu = t.mu(psi, theta, f_star)
+        batch = t.mu(np.full(3, psi), np.full(3, theta), np.full(3, f_star))
+        assert mu > 0 and math.isfinite(mu), name
+        assert abs(mu / float(expected) - 1) <= 2e-6 * (1 + abs(math.log(float(expected)))), (name, mu, expected)
+        assert (batch == mu).all(), name
+    assert refused >= 10

@@ -15,7 +15,7 @@ use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THET
 use crate::spline::{fit_3d, Axis, Scale, Start};
 use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
 pub use crate::table::Precision;
-use crate::table::Table;
+use crate::table::{Table, TableError};
 use rayon::prelude::*;
 
 /// The largest F* a table may cover, ghost nodes included (a limit on the
@@ -108,6 +108,24 @@ pub enum BuildError {
         /// The model's error.
         error: EvalError,
     },
+    /// The model fails at a ghost node: one beyond the F* range, which the
+    /// spline's end conditions need.
+    #[error(
+        "model evaluation failed at psi = {}, theta = {}, F* = {}, a ghost node beyond the F* range [{}, {}]: {error}; with more F* nodes the ghost nodes lie closer to the range (or lower its upper end)",
+        Shortest(*.psi), Shortest(*.theta), short(*.f_star), Shortest(.range.0), Shortest(.range.1)
+    )]
+    Ghost {
+        /// ψ of the node.
+        psi: f64,
+        /// θ of the node.
+        theta: f64,
+        /// F* of the ghost node.
+        f_star: f64,
+        /// The table's F* range.
+        range: (f64, f64),
+        /// The model's error.
+        error: EvalError,
+    },
     /// The finished table misses the tolerance.
     #[error(
         "the table misses its tolerance: max relative error {:.2e} > {} (worst at psi = {:.4}, theta = {:.4e}, f_star = {:.4e}); {}",
@@ -125,6 +143,16 @@ pub enum BuildError {
         /// The coefficients' precision.
         precision: Precision,
     },
+    /// The fitted coefficients break a bound every table file must keep
+    /// (see the format's invariants), e.g. ln μ beyond an f32 table's range
+    /// at a ghost node far outside the domain.
+    #[error("the built table cannot be stored: {0} (try f64 precision, more nodes or a narrower range)")]
+    Unstorable(TableError),
+}
+
+/// `x` to 4 significant digits, for messages.
+fn short(x: f64) -> Shortest {
+    Shortest(format!("{x:.3e}").parse().unwrap_or(x))
 }
 
 /// Below this relative error of μ, rounding the coefficients to f32 (24
@@ -309,14 +337,34 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
             let col = f_nodes
                 .iter()
                 .map(|&f| {
-                    let err = |error| BuildError::Eval {
-                        psi: p,
-                        theta: t,
-                        error,
+                    // A ghost node beyond the range: say so, as that is
+                    // the cause to act on (more nodes bring it closer).
+                    let beyond = !(o.f_star.0..=o.f_star.1).contains(&f);
+                    let err = |error| {
+                        if beyond {
+                            BuildError::Ghost {
+                                psi: p,
+                                theta: t,
+                                f_star: f,
+                                range: o.f_star,
+                                error,
+                            }
+                        } else {
+                            BuildError::Eval {
+                                psi: p,
+                                theta: t,
+                                error,
+                            }
+                        }
                     };
                     let h = model.solve_h(f, guess(&h_grid, &f_col, f)).map_err(err)?;
                     let c = model.at_h_star(h).map_err(err)?;
-                    let mu = c.mu.filter(|m| *m > 0.0).ok_or(err(EvalError::FStar(c.f_star)))?;
+                    let mu = c.mu.filter(|m| *m > 0.0).ok_or_else(|| {
+                        err(EvalError::NoMu {
+                            f_star: c.f_star,
+                            h_star: c.h_star,
+                        })
+                    })?;
                     Ok((mu.ln(), h))
                 })
                 .collect();
@@ -368,7 +416,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         // Measured below, on the decoded draft.
         accuracy: format::Accuracy::unmeasured(o.tolerance),
     };
-    let draft = Table::from_payload(payload.clone()).expect("a freshly built payload is consistent");
+    let draft = Table::from_payload(payload.clone()).map_err(BuildError::Unstorable)?;
     // The record is the exact interpolant's (the same on every machine);
     // the verdict also counts this machine's kernel, as `kefric verify` does.
     let checked = verify::verify(&draft, o.tolerance, o.samples, o.seed, false, progress)?;

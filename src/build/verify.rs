@@ -129,7 +129,10 @@ pub fn direct_mu(table: &Table, psi: f64, theta: f64, f_star: f64) -> Result<f64
     let eval = |error| BuildError::Eval { psi, theta, error };
     let model = Model::new(table.domain().params(psi, theta))?;
     let contact = model.at_f_star(f_star).map_err(eval)?;
-    contact.mu.ok_or(eval(EvalError::FStar(contact.f_star)))
+    contact.mu.ok_or(eval(EvalError::NoMu {
+        f_star: contact.f_star,
+        h_star: contact.h_star,
+    }))
 }
 
 /// How far this machine's lookups ([`Table::mu`], the f32 kernel where

@@ -51,7 +51,29 @@ fn supersample(scale: u32) -> u32 {
 fn save(path: &Path, what: &impl Render, scale: u32) -> Result<(), FigureError> {
     let format = Format::from_path(path)?;
     let size = size_at(scale)?;
-    let result = fonts().and_then(|()| match format {
+    let failed = |message: String| FigureError::Draw {
+        path: path.display().to_string(),
+        message,
+    };
+    // Drawn beside the output, then renamed over it (see `crate::io`): a
+    // temporary name that keeps the extension plotters' encoder reads.
+    let target = crate::io::output_target(path).map_err(|e| failed(e.to_string()))?;
+    let name = target
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = target.with_file_name(format!(".tmp-{}-{name}", std::process::id()));
+    let result =
+        draw(&tmp, format, size, what, scale).and_then(|()| std::fs::rename(&tmp, &target).map_err(|e| e.to_string()));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result.map_err(failed)
+}
+
+/// Draws `what` into `path` (as `format`, at `size`).
+fn draw(path: &Path, format: Format, size: (u32, u32), what: &impl Render, scale: u32) -> Result<(), String> {
+    fonts().and_then(|()| match format {
         Format::Png => {
             let k = supersample(scale);
             let big = (size.0 * k, size.1 * k);
@@ -71,10 +93,6 @@ fn save(path: &Path, what: &impl Render, scale: u32) -> Result<(), FigureError> 
             what.render(&root, scale)?;
             root.present().map_err(err)
         }
-    });
-    result.map_err(|message| FigureError::Draw {
-        path: path.display().to_string(),
-        message,
     })
 }
 

@@ -48,6 +48,16 @@ pub enum EvalError {
         /// F* at the lower end of the h* range.
         f_max: f64,
     },
+    /// μ is not defined, or not positive, at this point: the external
+    /// force is not positive at this separation (adhesion outweighs the
+    /// contact load), or the friction fit gives μ ≤ 0 there.
+    #[error("no positive mu at f_star = {}, h_star = {}", Shortest(*.f_star), Shortest(*.h_star))]
+    NoMu {
+        /// F* at that separation.
+        f_star: f64,
+        /// The separation.
+        h_star: f64,
+    },
     /// The root search did not converge (a bug: please report it with the
     /// parameters).
     #[error("no convergence solving F*(h*) = {} after {iterations} iterations (last h* = {})", Shortest(*.f_star), Shortest(*.h_star))]
@@ -144,7 +154,10 @@ impl Model {
         let (force, d_force) = self.force(h);
         let mu_at = |h: f64| -> Result<f64, EvalError> {
             let c = self.at_h_star(h)?;
-            c.mu.ok_or(EvalError::FStar(c.f_star))
+            c.mu.ok_or(EvalError::NoMu {
+                f_star: c.f_star,
+                h_star: c.h_star,
+            })
         };
         let step = 1e-3 * (force / d_force).abs();
         let d_mu_dh = (-mu_at(h + 2.0 * step)? + 8.0 * mu_at(h + step)? - 8.0 * mu_at(h - step)?

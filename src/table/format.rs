@@ -32,9 +32,9 @@
 //!    `0..=last_cell` on every axis (in every kernel), every 4×4×4 block
 //!    lies inside them.
 //! 3. **Coefficients.** ln μ coefficients are finite and within
-//!    ±[`LN_MU_MAX_F32`] (f32 tables) or ±[`LN_MU_MAX_F64`] (f64 tables),
-//!    the ranges of the kernels' exponentials; h* coefficients within
-//!    ±[`H_STAR_MAX`]. The B-spline weights are convex (up to the rounding
+//!    ±[`LN_MU_MAX`], the range of the portable kernel's exponential (the
+//!    fast f32 kernel runs only within ±[`FAST_LN_MU_MAX`], the range of
+//!    its own); h* coefficients within ±[`H_STAR_MAX`]. The B-spline weights are convex (up to the rounding
 //!    of the cell offset), so a blend is bounded by its coefficients:
 //!    μ is finite and > 0.
 //! 4. **Slopes.** The bound on |∂μ/∂F*| that the coefficients, the F*
@@ -59,12 +59,16 @@ pub const MAGIC: [u8; 8] = *b"KEFRICTB";
 pub const VERSION: u32 = 1;
 const HEADER: usize = 20;
 
-/// The largest |ln μ| coefficient of an f32 table: the fast kernel's f32
-/// exponential is accurate for |x| < 87.
-pub const LN_MU_MAX_F32: f64 = 80.0;
-/// The largest |ln μ| coefficient of an f64 table: the portable kernel's
-/// exponential is accurate for |x| < 708.
-pub const LN_MU_MAX_F64: f64 = 700.0;
+/// The largest |ln μ| coefficient a table may have, in either precision:
+/// the portable kernel's exponential is accurate for |x| < 708, and a
+/// blend exceeds its largest coefficient by at most 1e-3 of it. (The fast
+/// f32 kernel runs only on tables whose coefficients stay within
+/// ±[`FAST_LN_MU_MAX`].)
+pub const LN_MU_MAX: f64 = 700.0;
+/// The largest |ln μ| coefficient of a table the fast f32 kernel looks up:
+/// its exponential gives a normal, finite f32 for |x| < 87.3. (Small
+/// tables reach −86 at their ghost nodes: they run the portable kernel.)
+pub const FAST_LN_MU_MAX: f64 = 86.0;
 /// The largest |h*| coefficient (separations are a few σ).
 pub const H_STAR_MAX: f64 = 1e6;
 /// The largest ln of the bound on |∂μ/∂F*| a table may imply (f64 reaches
@@ -354,9 +358,30 @@ impl BuildSpec {
             h_star: (self.h_lo, self.h_hi, self.h_nodes as usize),
             samples: self.samples as usize,
             seed: self.seed,
-            generator: self.generator.clone(),
+            generator: escape_text(&self.generator),
         }
     }
+}
+
+/// Text from a file made safe to print: control characters (C0, DEL, C1)
+/// and the invisible and bidirectional format characters a file could
+/// use to forge or hide output are written as `\u{…}`, and a backslash as
+/// `\\` (so the escaped form is unambiguous). Printable text, ASCII or
+/// not, is unchanged.
+pub fn escape_text(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        let hidden =
+            matches!(c, '\u{200b}'..='\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2060}'..='\u{2069}' | '\u{feff}');
+        if c == '\\' {
+            out.push_str("\\\\");
+        } else if c.is_control() || hidden {
+            out.push_str(&format!("\\u{{{:x}}}", c as u32));
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }
 
 /// Everything in a table file between the header and the checksum.

@@ -4,6 +4,7 @@
 
 use super::format::AxisSpec;
 use super::LookupError;
+use crate::num::Shortest;
 use crate::spline::{weights, Axis, Scale};
 
 /// The argument names, in axis order (as [`LookupError`] reports them).
@@ -139,7 +140,8 @@ fn axis(k: usize, specs: &[AxisSpec; 3]) -> Result<Axis, String> {
     if !(s.first.is_finite() && s.step.is_finite() && s.step > 0.0) {
         return Err(format!(
             "{name} axis: first node {} and step {} (must be finite, step > 0)",
-            s.first, s.step
+            Shortest(s.first),
+            Shortest(s.step)
         ));
     }
     // The largest |coordinate| of a node: the cell coordinate of a query is
@@ -148,8 +150,9 @@ fn axis(k: usize, specs: &[AxisSpec; 3]) -> Result<Axis, String> {
     let extent = s.first.abs().max((s.first + s.step * (nodes - 1) as f64).abs());
     if !(extent.is_finite() && s.step >= MIN_RELATIVE_STEP * extent.max(1.0)) {
         return Err(format!(
-            "{name} axis: step {} is below {MIN_RELATIVE_STEP:e} of max(1, largest |node coordinate| = {extent}): cell coordinates would not be accurate",
-            s.step
+            "{name} axis: step {} is below {MIN_RELATIVE_STEP:e} of max(1, largest |node coordinate| = {}): cell coordinates would not be accurate",
+            Shortest(s.step),
+            Shortest(extent)
         ));
     }
     let axis = Axis {

@@ -172,7 +172,9 @@ pub struct BuildRecord {
     pub samples: usize,
     /// Seed of those points.
     pub seed: u64,
-    /// The crate and version that built the table.
+    /// The crate and version that built the table, as the file says: text
+    /// from a file, so control and bidirectional-format characters come
+    /// escaped (`\u{1b}`) and a backslash doubled, safe to print.
     pub generator: String,
 }
 
@@ -288,11 +290,7 @@ impl Table {
         }
         let ln_mu = payload.ln_mu.to_f64();
         let h_star = payload.h_star.to_f64();
-        let ln_mu_max = match payload.ln_mu {
-            Coefs::F32(_) => format::LN_MU_MAX_F32,
-            Coefs::F64(_) => format::LN_MU_MAX_F64,
-        };
-        let ln_mu_range = bounded("ln_mu", &ln_mu, ln_mu_max).map_err(TableError::Inconsistent)?;
+        let ln_mu_range = bounded("ln_mu", &ln_mu, format::LN_MU_MAX).map_err(TableError::Inconsistent)?;
         bounded("h_star", &h_star, format::H_STAR_MAX).map_err(TableError::Inconsistent)?;
         // |∂μ/∂F*| ≤ μ_max·|d ln μ/d(cell coordinate)|·(1/step)/F*_lo, and
         // |d ln μ/d(cell coordinate)| ≤ 2·max|c| (the weights' slopes sum
@@ -300,11 +298,12 @@ impl Table {
         // (the weights are convex up to the rounding of the cell offset).
         let (c_max, c_abs) = ln_mu_range;
         let ln_slope_bound = c_max + 1e-3 * c_abs + (4.0 * c_abs + 1.0).ln() + layout.inv_step[2].ln() - f_star.0.ln();
-        if !(ln_slope_bound <= format::LN_SLOPE_MAX) {
+        if ln_slope_bound.is_nan() || ln_slope_bound > format::LN_SLOPE_MAX {
             return bad(format!(
-                "ln_mu coefficients up to {c_max} with F* down to {} and an F* step of {}: dmu/dF* could overflow (bound e^{ln_slope_bound:.1}, at most e^{})",
-                f_star.0,
-                layout.axes[2].step,
+                "ln_mu coefficients up to {} with F* down to {} and an F* step of {}: dmu/dF* could overflow (bound e^{ln_slope_bound:.1}, at most e^{})",
+                Shortest(c_max),
+                Shortest(f_star.0),
+                Shortest(layout.axes[2].step),
                 format::LN_SLOPE_MAX
             ));
         }
@@ -355,8 +354,8 @@ impl Table {
             format_version: format::VERSION,
         };
         let avx2 = match &payload.ln_mu {
-            Coefs::F32(c) => avx2::Kernel::new(&layout, c),
-            Coefs::F64(_) => None,
+            Coefs::F32(c) if ln_mu_range.1 <= format::FAST_LN_MU_MAX => avx2::Kernel::new(&layout, c),
+            _ => None,
         };
         Ok(Table {
             layout,
@@ -631,9 +630,12 @@ fn batch_error(index: usize, e: LookupError) -> LookupError {
 fn bounded(name: &str, coefs: &[f64], max: f64) -> Result<(f64, f64), String> {
     let (mut top, mut size) = (f64::NEG_INFINITY, 0.0f64);
     for (i, &c) in coefs.iter().enumerate() {
-        if !(c.abs() <= max) {
+        if !c.is_finite() || c.abs() > max {
             return Err(format!(
-                "{name} coefficient {i} is {c}: must be finite and within [-{max}, {max}]"
+                "{name} coefficient {i} is {}: must be finite and within [-{}, {}]",
+                Shortest(c),
+                Shortest(max),
+                Shortest(max)
             ));
         }
         top = top.max(c);

@@ -5,6 +5,9 @@
 #[path = "../../../tests/it/common.rs"]
 mod common;
 mod support;
+// The independent table encoder (crafted files).
+#[path = "../../../tests/forge.rs"]
+mod forge;
 
 mod cli_eval;
 mod cli_export;
@@ -14,4 +17,5 @@ mod corrupted_tables;
 mod figures;
 mod hardening_build;
 mod hardening_cli;
+mod untrusted;
 mod validation_doc;

@@ -36,7 +36,11 @@ import numpy.typing as npt
 
 from . import _core
 
-__all__ = ["Table", "Curve", "Model", "Contact", "params_from_physical", "CURVE_ACCURACY"]
+__all__ = ["Table", "Curve", "Model", "Contact", "TableError", "params_from_physical", "CURVE_ACCURACY"]
+
+#: Raised for a table file that is damaged, not a table, or inconsistent
+#: (a subclass of ValueError).
+TableError = _core.TableError
 
 #: The relative accuracy of :meth:`Curve.from_model` against the model.
 CURVE_ACCURACY: float = _core.CURVE_ACCURACY
@@ -153,8 +157,8 @@ class Table:
     def load(path: Union[str, "os.PathLike[str]"]) -> "Table":
         """Load a table file written by ``kefric build``.
 
-        Raises OSError if the file cannot be read and ValueError if it is
-        damaged or not a table.
+        Raises OSError if the file cannot be read and :class:`TableError`
+        (a ValueError) if it is damaged, not a table, or inconsistent.
         """
         if not isinstance(path, (str, os.PathLike)):
             raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")

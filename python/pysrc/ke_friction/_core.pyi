@@ -9,6 +9,9 @@ _F64 = npt.NDArray[np.float64]
 
 CURVE_ACCURACY: float
 
+class TableError(ValueError): ...
+
+
 class TableCore:
     @staticmethod
     def default() -> TableCore: ...
