@@ -3,23 +3,23 @@
 //! same order (multiplies and adds, no fused multiply-adds), so a batch
 //! gives bit for bit what single lookups give.
 
-use super::{Curve, MANTISSA, ONE};
+use super::{BatchKernel, Curve, MANTISSA, ONE};
 use core::arch::x86_64::*;
 
 /// Proof that this CPU runs AVX2: made only by [`Batch::detect`].
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Batch(());
 
-impl Batch {
+impl BatchKernel for Batch {
     /// The batch kernel, if this CPU has AVX2.
-    pub(super) fn detect() -> Option<Batch> {
+    fn detect() -> Option<Batch> {
         std::is_x86_feature_detected!("avx2").then_some(Batch(()))
     }
 
     /// μ for the loads of `f_star` four at a time into `out` (of the same
     /// length), up to the first group of four holding a load outside the
     /// range; returns how many loads it did (a multiple of four).
-    pub(super) fn mu(self, curve: &Curve, f_star: &[f64], out: &mut [f64]) -> usize {
+    fn mu(self, curve: &Curve, f_star: &[f64], out: &mut [f64]) -> usize {
         assert_eq!(f_star.len(), out.len(), "one output per load");
         // SAFETY: a `Batch` exists only where `detect` found AVX2.
         unsafe { mu_groups(curve, f_star, out) }

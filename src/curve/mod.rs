@@ -22,12 +22,26 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-// The AVX2 batch, or on other targets a stand-in that is never detected.
-#[cfg(target_arch = "x86_64")]
+// The AVX2 batch on x86-64, and a stand-in that is never detected, compiled
+// on every target (both implement `BatchKernel`, so the stand-in cannot
+// fall behind); `--cfg ke_friction_portable` selects it on x86-64 too.
+#[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
 mod avx2;
-#[cfg(not(target_arch = "x86_64"))]
-#[path = "no_avx2.rs"]
-mod avx2;
+mod no_avx2;
+
+#[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+use avx2::Batch;
+#[cfg(not(all(target_arch = "x86_64", not(ke_friction_portable))))]
+use no_avx2::Batch;
+
+/// What a batch kernel offers a curve (see `avx2.rs`).
+trait BatchKernel: Sized + Copy {
+    /// The kernel, if this CPU runs it.
+    fn detect() -> Option<Self>;
+    /// μ for the loads of `f_star` four at a time into `out`, up to the
+    /// first group holding a load outside the range; how many it did.
+    fn mu(self, curve: &Curve, f_star: &[f64], out: &mut [f64]) -> usize;
+}
 
 use crate::model::{EvalError, Model};
 use crate::num::Shortest;
@@ -126,7 +140,7 @@ pub struct Curve {
     /// The largest relative error of μ measured at build time.
     max_error: f64,
     /// The AVX2 batch, where the CPU has it.
-    batch: Option<avx2::Batch>,
+    batch: Option<Batch>,
 }
 
 /// The range, the cells and the measured error (not the coefficients).
@@ -230,7 +244,7 @@ impl Curve {
             coefs,
             inv_width,
             max_error: f64::NAN,
-            batch: avx2::Batch::detect(),
+            batch: Batch::detect(),
         })
     }
 

@@ -1,20 +1,22 @@
-//! Stands in for the curve's AVX2 batch on targets other than x86-64: it
-//! is never detected, so batches run the scalar loop.
+//! Stands in for the curve's AVX2 batch on targets other than x86-64 (and
+//! with `--cfg ke_friction_portable`): it is never detected, so batches
+//! run the scalar loop. Compiled on every target.
 
-use super::Curve;
+use super::{BatchKernel, Curve};
 
 /// A batch kernel that cannot exist.
 #[derive(Debug, Clone, Copy)]
+#[allow(dead_code)] // not constructed, by design; unused on x86-64
 pub(super) enum Batch {}
 
-impl Batch {
+impl BatchKernel for Batch {
     /// Never a kernel.
-    pub(super) fn detect() -> Option<Batch> {
+    fn detect() -> Option<Batch> {
         None
     }
 
     /// Unreachable: there is no `Batch` to call it on.
-    pub(super) fn mu(self, _: &Curve, _: &[f64], _: &mut [f64]) -> usize {
+    fn mu(self, _: &Curve, _: &[f64], _: &mut [f64]) -> usize {
         match self {}
     }
 }

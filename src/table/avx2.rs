@@ -52,7 +52,7 @@
 //!   (Rust, and `python/bench.py` after SciPy).
 
 use super::layout::Layout;
-use super::BatchOutput;
+use super::{BatchOutput, FastKernel};
 use crate::spline::BASIS;
 use core::arch::x86_64::*;
 
@@ -100,7 +100,7 @@ pub(super) struct Kernel {
     f_inv_step: f64,
 }
 
-impl Kernel {
+impl FastKernel for Kernel {
     /// The kernel for a table's layout and f32 coefficients, if this CPU
     /// runs it and the table suits it: a domain of normal f32 numbers,
     /// fewer than 2048 nodes per axis (so that cell coordinates keep their
@@ -109,7 +109,7 @@ impl Kernel {
     /// The unsafe code relies on two checks made here: the CPU feature
     /// detection (the only place an [`Avx2Fma`] is made) and the last
     /// block's bound.
-    pub(super) fn new(layout: &Layout, coefs: &[f32]) -> Option<Kernel> {
+    fn new(layout: &Layout, coefs: &[f32]) -> Option<Kernel> {
         if !(std::is_x86_feature_detected!("avx2") && std::is_x86_feature_detected!("fma")) {
             return None;
         }
@@ -182,7 +182,7 @@ impl Kernel {
     /// One lookup (see [`eval`]): μ, NaN for a query outside the domain,
     /// and if `SLOPE`, d ln μ/d(cell coordinate of F*).
     #[inline(always)]
-    pub(super) fn eval<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
+    fn eval<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> (f64, f64) {
         // SAFETY: `eval` needs AVX2 and FMA; `self.cpu` proves both
         // (detected in `Kernel::new`).
         unsafe { eval::<SLOPE>(self, psi, theta, f_star) }
@@ -194,7 +194,7 @@ impl Kernel {
     /// default table), where the queries would read every line several
     /// times over. Every batch does it first; a caller that splits a batch
     /// into smaller ones does it once for the whole.
-    pub(super) fn prepare(&self, n: usize) {
+    fn prepare(&self, n: usize) {
         if n >= self.coefs.len() / LINE_FLOATS {
             prefetch_coefficients(self);
         }
@@ -202,7 +202,7 @@ impl Kernel {
 
     /// Many lookups (see [`batch`]); the slices must all have `out`'s
     /// length. Returns the index of the first query outside the domain.
-    pub(super) fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
+    fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize> {
         let n = out.len();
         assert!(
             psi.len() == n && theta.len() == n && f_star.len() == n,

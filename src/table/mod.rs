@@ -15,24 +15,47 @@
 //! The file format (`format.rs`) is private: what a file records reaches
 //! users as a [`TableInfo`].
 
-// The fast kernel, or on other targets a stand-in that never runs.
-#[cfg(target_arch = "x86_64")]
-mod avx2;
-#[cfg(not(target_arch = "x86_64"))]
-#[path = "no_avx2.rs"]
+// The fast kernel on x86-64, and a stand-in that is never made: both
+// implement `FastKernel`, and the stand-in is compiled on every target, so
+// a method it lacks is a compile error on x86-64 too. `--cfg
+// ke_friction_portable` selects the stand-in on x86-64 (the portable
+// kernel then runs everywhere, as on other targets).
+#[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
 mod avx2;
 mod fastmath;
 pub(crate) mod format;
 mod layout;
+mod no_avx2;
 mod portable;
+
+/// The fast kernel this build uses: AVX2 on x86-64, else the stand-in.
+#[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+use avx2::Kernel as Fast;
+#[cfg(not(all(target_arch = "x86_64", not(ke_friction_portable))))]
+use no_avx2::Kernel as Fast;
+
+/// What a fast lookup kernel offers the table (see `avx2.rs`); the
+/// stand-in `no_avx2.rs` implements it too.
+trait FastKernel: Sized + Clone {
+    /// The kernel for a table's layout and f32 coefficients, if this CPU
+    /// and the table suit it.
+    fn new(layout: &Layout, coefs: &[f32]) -> Option<Self>;
+    /// One lookup: μ (NaN outside the domain) and, if `SLOPE`, d ln μ/d(cell
+    /// coordinate of F*).
+    fn eval<const SLOPE: bool>(&self, psi: f64, theta: f64, f_star: f64) -> (f64, f64);
+    /// Readies the kernel for `n` queries in smaller batches.
+    fn prepare(&self, n: usize);
+    /// Many lookups; the index of the first query whose μ is NaN.
+    fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize>;
+}
 #[cfg(test)]
 mod tests;
 
 use crate::num::Shortest;
 use crate::params::{Fit, Kind, Params};
 use crate::spline::Axis;
-pub use format::TableError;
 use format::{Coefs, Payload};
+pub use format::{TableError, FILE_MAX};
 use layout::Layout;
 
 /// A lookup argument outside a table's domain or a curve's range, or not
@@ -204,7 +227,7 @@ pub struct Table {
     layout: Layout,
     info: TableInfo,
     /// The AVX2 kernel, where the CPU and the table suit it.
-    avx2: Option<avx2::Kernel>,
+    avx2: Option<Fast>,
     /// Spline coefficients of ln μ and of h*, shape (nψ, nθ, nF), F* fastest.
     ln_mu: Vec<f64>,
     h_star: Vec<f64>,
@@ -354,7 +377,7 @@ impl Table {
             format_version: format::VERSION,
         };
         let avx2 = match &payload.ln_mu {
-            Coefs::F32(c) if ln_mu_range.1 <= format::FAST_LN_MU_MAX => avx2::Kernel::new(&layout, c),
+            Coefs::F32(c) if ln_mu_range.1 <= format::FAST_LN_MU_MAX => Fast::new(&layout, c),
             _ => None,
         };
         Ok(Table {
