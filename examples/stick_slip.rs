@@ -32,15 +32,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         epsilon: 0.4e-9,
     };
     let params = Params::from_physical(&surfaces)?;
-    let model = Model::new(params)?;
+    let model = Model::new(params.clone())?;
     let started = std::time::Instant::now();
     let curve = Curve::from_model(&model, 1e-5, 0.1)?;
     println!(
         "surfaces: psi = {:.4}, theta = {:.4}, beta = {}, eps* = {}; curve over F* in [{:e}, {:e}] built in {:.1} ms, max relative error {:.1e}",
         params.psi,
         params.theta,
-        params.beta,
-        params.eps_star,
+        params.constants.beta,
+        params.constants.eps_star,
         curve.range().0,
         curve.range().1,
         started.elapsed().as_secs_f64() * 1e3,

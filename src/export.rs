@@ -189,9 +189,9 @@ pub fn arrays(table: &Table, progress: &dyn Progress) -> Result<Vec<Named>, Buil
         ("grid_q_star", cube(g_shape, grid.q_star)),
         ("grid_f_star", cube(g_shape, grid.f_star)),
         ("grid_mu", cube(g_shape, grid.mu)),
-        ("beta", arr0(d.beta).into_dyn()),
-        ("nu", arr0(d.nu).into_dyn()),
-        ("eps_star", arr0(d.eps_star).into_dyn()),
+        ("beta", arr0(d.constants.beta).into_dyn()),
+        ("nu", arr0(d.constants.nu).into_dyn()),
+        ("eps_star", arr0(d.constants.eps_star).into_dyn()),
         ("spline_ln_mu", cube(coef_shape, table.ln_mu_coefficients().to_vec())),
         ("knots_psi", knots(0)),
         ("knots_theta", knots(1)),
@@ -241,11 +241,11 @@ pub fn metadata(table: &Table) -> String {
         ("axes", Json::Raw(axes)),
     ]);
     json_object(&[
-        ("model", Json::Str(d.kind.name())),
-        ("fit", Json::Str(d.fit.name())),
-        ("beta", Json::Num(d.beta)),
-        ("nu", Json::Num(d.nu)),
-        ("eps_star", Json::Num(d.eps_star)),
+        ("model", Json::Str(d.constants.kind.name())),
+        ("fit", Json::Str(d.constants.fit.name())),
+        ("beta", Json::Num(d.constants.beta)),
+        ("nu", Json::Num(d.constants.nu)),
+        ("eps_star", Json::Num(d.constants.eps_star)),
         (
             "domain",
             Json::Raw(json_object(&[

@@ -52,7 +52,7 @@ pub mod table;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use params::{
-    Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
+    Constants, Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
     EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
 pub use table::{Domain, LookupError, Table, TableError, TableInfo};

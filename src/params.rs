@@ -28,6 +28,20 @@ pub enum Kind {
     CebType,
 }
 
+impl serde::Serialize for Fit {
+    /// As its [`name`](Fit::name).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+impl serde::Serialize for Kind {
+    /// As its [`name`](Kind::name).
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
 impl Fit {
     /// Every fit, in the order of [`Fit::name`]'s documentation.
     pub const ALL: [Fit; 2] = [Fit::Consistent, Fit::AsPrinted];
@@ -78,22 +92,23 @@ impl Kind {
     }
 }
 
-/// Dimensionless model inputs (MODEL.md §1).
+/// The model constants of a material pair: everything fixed apart from ψ
+/// and θ (MODEL.md §1). A table is built for one set of constants; a
+/// [`Model`](crate::Model) evaluates at one ψ, θ with them.
 ///
-/// Built with [`Params::new`] and the builder-style setters; checked once,
-/// by [`Model::new`](crate::Model::new).
+/// Field names are the record names every front end uses (JSON keys, the
+/// NumPy export's metadata, the Python attributes, the C setters).
 ///
 /// ```
-/// use ke_friction::{Fit, Params};
-/// let p = Params::new(1.0, 0.003).beta(0.05).nu(0.3).eps_star(0.004).fit(Fit::Consistent);
-/// assert_eq!(p.psi, 1.0);
+/// use ke_friction::{Constants, Fit};
+/// let c = Constants::default().beta(0.05).fit(Fit::Consistent);
+/// let p = c.at(1.0, 0.003)?;               // validated parameters at (ψ, θ)
+/// assert_eq!((p.psi, p.constants.beta), (1.0, 0.05));
+/// assert!(c.at(1.0, -1.0).is_err());        // θ < 0
+/// # Ok::<(), ke_friction::ParamError>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Params {
-    /// Plasticity index ψ, in [1e-3, 1e3] (the paper covers 0.5–8).
-    pub psi: f64,
-    /// Adhesion parameter θ = Δγ/(σH), in [0, 1e3] (the paper covers 1e-4–0.01).
-    pub theta: f64,
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Constants {
     /// Roughness parameter β = ηRσ, in (0.01928, 100] (default 0.04).
     pub beta: f64,
     /// Poisson's ratio of the softer material, in [0, 0.5) (default 0.3).
@@ -102,8 +117,105 @@ pub struct Params {
     pub eps_star: f64,
     /// Which friction row to use (default [`Fit::Consistent`]).
     pub fit: Fit,
-    /// Which model to evaluate (default [`Kind::KogutEtsion`]).
+    /// Which model to evaluate (default [`Kind::KogutEtsion`]); its record
+    /// name is `model`.
+    #[serde(rename = "model")]
     pub kind: Kind,
+}
+
+impl Default for Constants {
+    /// β = 0.04, ν = 0.3, ε* = 0.004, [`Fit::Consistent`], [`Kind::KogutEtsion`].
+    fn default() -> Constants {
+        Constants {
+            beta: DEFAULT_BETA,
+            nu: DEFAULT_NU,
+            eps_star: DEFAULT_EPS_STAR,
+            fit: Fit::Consistent,
+            kind: Kind::KogutEtsion,
+        }
+    }
+}
+
+impl Constants {
+    /// Sets the roughness parameter β.
+    pub fn beta(mut self, beta: f64) -> Constants {
+        self.beta = beta;
+        self
+    }
+
+    /// Sets Poisson's ratio ν of the softer material.
+    pub fn nu(mut self, nu: f64) -> Constants {
+        self.nu = nu;
+        self
+    }
+
+    /// Sets the intermolecular distance ε*.
+    pub fn eps_star(mut self, eps_star: f64) -> Constants {
+        self.eps_star = eps_star;
+        self
+    }
+
+    /// Sets the friction row ([`Fit`]).
+    pub fn fit(mut self, fit: Fit) -> Constants {
+        self.fit = fit;
+        self
+    }
+
+    /// Sets the model ([`Kind`]).
+    pub fn kind(mut self, kind: Kind) -> Constants {
+        self.kind = kind;
+        self
+    }
+
+    /// The parameters at (ψ, θ) with these constants, validated.
+    pub fn at(&self, psi: f64, theta: f64) -> Result<Params, ParamError> {
+        let p = self.unchecked_at(psi, theta);
+        p.validate()?;
+        Ok(p)
+    }
+
+    /// The parameters at (ψ, θ), not yet validated (for builders that
+    /// validate later, or report the first bad field themselves).
+    pub fn unchecked_at(&self, psi: f64, theta: f64) -> Params {
+        Params {
+            psi,
+            theta,
+            constants: self.clone(),
+        }
+    }
+
+    /// Checks every constant against MODEL.md §1 and the numerical limits
+    /// documented on the fields.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        check("beta", self.beta, "in (0.01928, 100]", |v| {
+            v > 0.0 && v <= BETA_MAX && beta_admissible(v)
+        })?;
+        check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
+        check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
+            (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
+        })
+    }
+}
+
+/// Dimensionless model inputs (MODEL.md §1): ψ, θ and the [`Constants`].
+///
+/// Built with [`Params::new`] and the builder-style setters, or with
+/// [`Constants::at`]; checked once, by [`Model::new`](crate::Model::new).
+///
+/// ```
+/// use ke_friction::{Fit, Params};
+/// let p = Params::new(1.0, 0.003).beta(0.05).nu(0.3).eps_star(0.004).fit(Fit::Consistent);
+/// assert_eq!((p.psi, p.constants.beta), (1.0, 0.05));
+/// ```
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Params {
+    /// Plasticity index ψ, in [1e-3, 1e3] (the paper covers 0.5–8).
+    pub psi: f64,
+    /// Adhesion parameter θ = Δγ/(σH), in [0, 1e3] (the paper covers 1e-4–0.01).
+    pub theta: f64,
+    /// The model constants (serialised flat, beside ψ and θ).
+    #[serde(flatten)]
+    pub constants: Constants,
 }
 
 /// Default roughness parameter β (Greenwood & Williamson, as in the paper).
@@ -134,47 +246,45 @@ pub const EPS_STAR_MIN: f64 = 1e-9;
 pub const EPS_STAR_MAX: f64 = 100.0;
 
 impl Params {
-    /// Parameters with the defaults β = 0.04, ν = 0.3, ε* = 0.004,
-    /// [`Fit::Consistent`] and [`Kind::KogutEtsion`].
+    /// Parameters with the default [`Constants`]: β = 0.04, ν = 0.3,
+    /// ε* = 0.004, [`Fit::Consistent`] and [`Kind::KogutEtsion`].
     pub fn new(psi: f64, theta: f64) -> Params {
-        Params {
-            psi,
-            theta,
-            beta: DEFAULT_BETA,
-            nu: DEFAULT_NU,
-            eps_star: DEFAULT_EPS_STAR,
-            fit: Fit::Consistent,
-            kind: Kind::KogutEtsion,
-        }
+        Constants::default().unchecked_at(psi, theta)
     }
 
     /// Sets the roughness parameter β.
     pub fn beta(mut self, beta: f64) -> Params {
-        self.beta = beta;
+        self.constants.beta = beta;
         self
     }
 
     /// Sets Poisson's ratio ν of the softer material.
     pub fn nu(mut self, nu: f64) -> Params {
-        self.nu = nu;
+        self.constants.nu = nu;
         self
     }
 
     /// Sets the intermolecular distance ε*.
     pub fn eps_star(mut self, eps_star: f64) -> Params {
-        self.eps_star = eps_star;
+        self.constants.eps_star = eps_star;
         self
     }
 
     /// Sets the friction row ([`Fit`]).
     pub fn fit(mut self, fit: Fit) -> Params {
-        self.fit = fit;
+        self.constants.fit = fit;
         self
     }
 
     /// Sets the model ([`Kind`]).
     pub fn kind(mut self, kind: Kind) -> Params {
-        self.kind = kind;
+        self.constants.kind = kind;
+        self
+    }
+
+    /// Replaces all the constants.
+    pub fn constants(mut self, constants: Constants) -> Params {
+        self.constants = constants;
         self
     }
 
@@ -185,14 +295,7 @@ impl Params {
         check("psi", self.psi, "in [1e-3, 1e3]", |v| (PSI_MIN..=PSI_MAX).contains(&v))?;
         check("theta", self.theta, ">= 0", |v| v >= 0.0)?;
         check("theta", self.theta, "<= 1e3", |v| v <= THETA_MAX)?;
-        check("beta", self.beta, "in (0.01928, 100]", |v| {
-            v > 0.0 && v <= BETA_MAX && beta_admissible(v)
-        })?;
-        check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
-        check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
-            (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
-        })?;
-        Ok(())
+        self.constants.validate()
     }
 
     /// Dimensionless parameters from physical (SI) quantities, with the
@@ -208,8 +311,8 @@ impl Params {
     ///     delta_gamma: 0.3, epsilon: 0.4e-9,
     /// };
     /// let p = Params::from_physical(&phys).unwrap();
-    /// assert!((p.beta - 0.04).abs() < 1e-12);
-    /// assert!((p.eps_star - 0.004).abs() < 1e-12);
+    /// assert!((p.constants.beta - 0.04).abs() < 1e-12);
+    /// assert!((p.constants.eps_star - 0.004).abs() < 1e-12);
     /// ```
     pub fn from_physical(phys: &Physical) -> Result<Params, ParamError> {
         let positive = |v: f64| v > 0.0;
@@ -359,8 +462,8 @@ mod tests {
         let psi = 2.0 * e / (core::f64::consts::PI * 0.577 * 2e9) * (s * 50e-9 / 20e-6f64).sqrt();
         assert!((p.psi / psi - 1.0).abs() < 1e-12);
         assert!((p.theta - 0.5 / (50e-9 * 2e9)).abs() < 1e-15);
-        assert!((p.beta - 0.05).abs() < 1e-12);
-        assert!((p.eps_star - 0.006).abs() < 1e-12);
+        assert!((p.constants.beta - 0.05).abs() < 1e-12);
+        assert!((p.constants.eps_star - 0.006).abs() < 1e-12);
         let bad = Physical { hardness: -1.0, ..phys };
         assert_eq!(Params::from_physical(&bad).unwrap_err().name, "hardness");
     }

@@ -3,7 +3,7 @@
 
 use ke_friction::num::Shortest;
 use ke_friction::paper::PAPER_F_STAR_MAX;
-use ke_friction::{Fit, Kind, Model, Params, Physical, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU};
+use ke_friction::{Constants, Fit, Kind, Model, Params, Physical};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -246,6 +246,16 @@ pub struct ModelArgs {
     /// Adhesion parameter θ = Δγ/(σH), in [0, 1000] (the paper: 1e-4 to 0.01). Required unless the SI inputs are given.
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub theta: Option<f64>,
+    #[command(flatten)]
+    pub constants: ConstantsArgs,
+    #[command(flatten)]
+    pub si: SiArgs,
+}
+
+/// The model constants' flags (β, ν, ε*, fit, model), shared by every
+/// subcommand that takes them; unset ones take [`Constants::default`].
+#[derive(Debug, Clone, clap::Args)]
+pub struct ConstantsArgs {
     /// Roughness parameter β = ηRσ, in (0.01928, 100] [default: 0.04].
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub beta: Option<f64>,
@@ -255,14 +265,31 @@ pub struct ModelArgs {
     /// Intermolecular distance ε* = ε/σ, in [1e-9, 100] [default: 0.004].
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub eps_star: Option<f64>,
-    #[command(flatten)]
-    pub si: SiArgs,
     /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18; negative μ for ψ ≳ 2).
     #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
     pub fit: FitArg,
     /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model, MODEL.md §8).
     #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
     pub model: ModelKindArg,
+}
+
+impl ConstantsArgs {
+    /// The constants the flags ask for (not yet validated).
+    pub fn constants(&self) -> Constants {
+        let d = Constants::default();
+        Constants {
+            beta: self.beta.unwrap_or(d.beta),
+            nu: self.nu.unwrap_or(d.nu),
+            eps_star: self.eps_star.unwrap_or(d.eps_star),
+            fit: self.fit.into(),
+            kind: self.model.into(),
+        }
+    }
+
+    /// The dimensionless constants given (they conflict with SI inputs).
+    fn given(&self) -> [(&'static str, Option<f64>); 3] {
+        [("--beta", self.beta), ("--nu", self.nu), ("--eps-star", self.eps_star)]
+    }
 }
 
 /// The SI inputs that give ψ, θ, β, ν and ε* ([`Params::from_physical`]):
@@ -400,14 +427,12 @@ impl ModelArgs {
     /// yet validated.
     pub fn params(&self) -> Result<Params, Failure> {
         let params = if self.si.any() {
-            let dimensionless = [
-                ("--psi", self.psi),
-                ("--theta", self.theta),
-                ("--beta", self.beta),
-                ("--nu", self.nu),
-                ("--eps-star", self.eps_star),
-            ];
-            if let Some((flag, _)) = dimensionless.iter().find(|(_, v)| v.is_some()) {
+            let dimensionless = [("--psi", self.psi), ("--theta", self.theta)];
+            if let Some((flag, _)) = dimensionless
+                .iter()
+                .chain(&self.constants.given())
+                .find(|(_, v)| v.is_some())
+            {
                 return Err(Failure::input(format!(
                     "{flag}: give either the dimensionless inputs or the SI inputs, not both"
                 )));
@@ -417,12 +442,12 @@ impl ModelArgs {
             let required = |flag: &str, v: Option<f64>| {
                 v.ok_or_else(|| Failure::input(format!("{flag}: required (or give the SI inputs, see --help)")))
             };
-            Params::new(required("--psi", self.psi)?, required("--theta", self.theta)?)
-                .beta(self.beta.unwrap_or(DEFAULT_BETA))
-                .nu(self.nu.unwrap_or(DEFAULT_NU))
-                .eps_star(self.eps_star.unwrap_or(DEFAULT_EPS_STAR))
+            self.constants
+                .constants()
+                .unchecked_at(required("--psi", self.psi)?, required("--theta", self.theta)?)
         };
-        Ok(params.fit(self.fit.into()).kind(self.model.into()))
+        let c = self.constants.constants();
+        Ok(params.fit(c.fit).kind(c.kind))
     }
 
     /// The validated model, or a message naming the offending flag.
@@ -445,11 +470,11 @@ pub fn describe(p: &Params) -> String {
         "psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {}, model = {}",
         Shortest(p.psi),
         Shortest(p.theta),
-        Shortest(p.beta),
-        Shortest(p.nu),
-        Shortest(p.eps_star),
-        p.fit.name(),
-        p.kind.name()
+        Shortest(p.constants.beta),
+        Shortest(p.constants.nu),
+        Shortest(p.constants.eps_star),
+        p.constants.fit.name(),
+        p.constants.kind.name()
     )
 }
 

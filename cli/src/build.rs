@@ -1,7 +1,7 @@
 //! `kefric build`: integrate, tabulate, verify, write atomically.
 
 use crate::args::{
-    check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, Failure, FitArg, ModelKindArg,
+    check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, ConstantsArgs, Failure,
 };
 use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::io::write_atomic;
@@ -40,21 +40,8 @@ pub struct Args {
     /// Integration grid in h*, LO:HI:COUNT (within ±1e6; COUNT from 2 to 100000).
     #[arg(long, value_name = "LO:HI:COUNT", default_value_t = h_text(defaults().h_star), allow_hyphen_values = true)]
     pub h_star: String,
-    /// Roughness parameter β = ηRσ, in (0.01928, 100].
-    #[arg(long, value_parser = parse_f64, default_value_t = defaults().beta, allow_hyphen_values = true)]
-    pub beta: f64,
-    /// Poisson's ratio ν of the softer material, in [0, 0.5).
-    #[arg(long, value_parser = parse_f64, default_value_t = defaults().nu, allow_hyphen_values = true)]
-    pub nu: f64,
-    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100].
-    #[arg(long, value_parser = parse_f64, default_value_t = defaults().eps_star, allow_hyphen_values = true)]
-    pub eps_star: f64,
-    /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18).
-    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
-    pub fit: FitArg,
-    /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model).
-    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
-    pub model: ModelKindArg,
+    #[command(flatten)]
+    pub constants: ConstantsArgs,
     /// Stored precision of the coefficients.
     #[arg(long, value_enum, default_value_t = PrecisionArg::F32)]
     pub precision: PrecisionArg,
@@ -122,11 +109,7 @@ impl Args {
                 number("--h-star", h_hi)?,
                 whole("--h-star", h_n)?,
             ),
-            beta: self.beta,
-            nu: self.nu,
-            eps_star: self.eps_star,
-            fit: self.fit.into(),
-            kind: self.model.into(),
+            constants: self.constants.constants(),
             precision: match self.precision {
                 PrecisionArg::F32 => Precision::F32,
                 PrecisionArg::F64 => Precision::F64,

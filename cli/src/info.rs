@@ -60,14 +60,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 ("bytes", Json::Int(bytes.len() as u64)),
                 ("crc32", Json::Raw(format!("\"{checksum:08x}\""))),
                 ("format_version", Json::Int(info.format_version.into())),
-                ("model", Json::Str(d.kind.name())),
-                ("fit", Json::Str(d.fit.name())),
+                ("model", Json::Str(d.constants.kind.name())),
+                ("fit", Json::Str(d.constants.fit.name())),
                 ("psi", range(d.psi)),
                 ("theta", range(d.theta)),
                 ("f_star", range(d.f_star)),
-                ("beta", Json::Num(d.beta)),
-                ("nu", Json::Num(d.nu)),
-                ("eps_star", Json::Num(d.eps_star)),
+                ("beta", Json::Num(d.constants.beta)),
+                ("nu", Json::Num(d.constants.nu)),
+                ("eps_star", Json::Num(d.constants.eps_star)),
                 ("tolerance", Json::Num(info.tolerance)),
                 ("max_rel_error", Json::Num(acc.max_rel)),
                 ("p99_rel_error", Json::Num(acc.p99_rel)),
@@ -94,13 +94,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         info.format_version,
         b.generator
     )?;
-    outln!("model:      {}, fit = {}", d.kind.name(), d.fit.name())?;
+    outln!(
+        "model:      {}, fit = {}",
+        d.constants.kind.name(),
+        d.constants.fit.name()
+    )?;
     outln!("domain:     psi {}, theta {}, F* {}", r(d.psi), r(d.theta), r(d.f_star))?;
     outln!(
         "constants:  beta = {}, nu = {}, eps_star = {}",
-        Shortest(d.beta),
-        Shortest(d.nu),
-        Shortest(d.eps_star)
+        Shortest(d.constants.beta),
+        Shortest(d.constants.nu),
+        Shortest(d.constants.eps_star)
     )?;
     outln!(
         "accuracy:   mu max relative error {:.2e} (tolerance {}), 99th percentile {:.2e}, {} points at build",

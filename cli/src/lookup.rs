@@ -129,9 +129,9 @@ fn point(args: &Args, table: &Table) -> Result<(f64, f64), Failure> {
     let p = args.si.params()?;
     let d = table.domain();
     for (name, flag, ours, table_value) in [
-        ("beta", "--density", p.beta, d.beta),
-        ("nu", "--nu1", p.nu, d.nu),
-        ("eps_star", "--epsilon", p.eps_star, d.eps_star),
+        ("beta", "--density", p.constants.beta, d.constants.beta),
+        ("nu", "--nu1", p.constants.nu, d.constants.nu),
+        ("eps_star", "--epsilon", p.constants.eps_star, d.constants.eps_star),
     ] {
         if (ours - table_value).abs() > 1e-9 * table_value.abs() {
             return Err(Failure::input(format!(

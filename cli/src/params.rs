@@ -32,17 +32,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
             json_object(&[
                 ("psi", Json::Num(p.psi)),
                 ("theta", Json::Num(p.theta)),
-                ("beta", Json::Num(p.beta)),
-                ("nu", Json::Num(p.nu)),
-                ("eps_star", Json::Num(p.eps_star)),
+                ("beta", Json::Num(p.constants.beta)),
+                ("nu", Json::Num(p.constants.nu)),
+                ("eps_star", Json::Num(p.constants.eps_star)),
             ])
         )?;
     } else {
         outln!("psi = {}", Shortest(p.psi))?;
         outln!("theta = {}", Shortest(p.theta))?;
-        outln!("beta = {}", Shortest(p.beta))?;
-        outln!("nu = {}", Shortest(p.nu))?;
-        outln!("eps_star = {}", Shortest(p.eps_star))?;
+        outln!("beta = {}", Shortest(p.constants.beta))?;
+        outln!("nu = {}", Shortest(p.constants.nu))?;
+        outln!("eps_star = {}", Shortest(p.constants.eps_star))?;
     }
     Ok(())
 }

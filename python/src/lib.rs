@@ -437,11 +437,11 @@ impl TableCore {
         dict.set_item("psi", d.psi)?;
         dict.set_item("theta", d.theta)?;
         dict.set_item("f_star", d.f_star)?;
-        dict.set_item("beta", d.beta)?;
-        dict.set_item("nu", d.nu)?;
-        dict.set_item("eps_star", d.eps_star)?;
-        dict.set_item("model", d.kind.name())?;
-        dict.set_item("fit", d.fit.name())?;
+        dict.set_item("beta", d.constants.beta)?;
+        dict.set_item("nu", d.constants.nu)?;
+        dict.set_item("eps_star", d.constants.eps_star)?;
+        dict.set_item("model", d.constants.kind.name())?;
+        dict.set_item("fit", d.constants.fit.name())?;
         dict.set_item("tolerance", info.tolerance)?;
         dict.set_item("max_rel_error", info.accuracy.max_rel)?;
         dict.set_item("p99_rel_error", info.accuracy.p99_rel)?;
@@ -616,11 +616,11 @@ impl ModelCore {
         let dict = PyDict::new(py);
         dict.set_item("psi", p.psi)?;
         dict.set_item("theta", p.theta)?;
-        dict.set_item("beta", p.beta)?;
-        dict.set_item("nu", p.nu)?;
-        dict.set_item("eps_star", p.eps_star)?;
-        dict.set_item("fit", p.fit.name())?;
-        dict.set_item("model", p.kind.name())?;
+        dict.set_item("beta", p.constants.beta)?;
+        dict.set_item("nu", p.constants.nu)?;
+        dict.set_item("eps_star", p.constants.eps_star)?;
+        dict.set_item("fit", p.constants.fit.name())?;
+        dict.set_item("model", p.constants.kind.name())?;
         Ok(dict)
     }
 }
@@ -657,9 +657,9 @@ fn params_from_physical<'py>(
     let dict = PyDict::new(py);
     dict.set_item("psi", p.psi)?;
     dict.set_item("theta", p.theta)?;
-    dict.set_item("beta", p.beta)?;
-    dict.set_item("nu", p.nu)?;
-    dict.set_item("eps_star", p.eps_star)?;
+    dict.set_item("beta", p.constants.beta)?;
+    dict.set_item("nu", p.constants.nu)?;
+    dict.set_item("eps_star", p.constants.eps_star)?;
     Ok(dict)
 }
 

@@ -11,7 +11,7 @@ pub mod verify;
 
 use crate::model::{EvalError, Model, H_LIMIT};
 use crate::num::Shortest;
-use crate::params::{check, Fit, Kind, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
+use crate::params::{check, Constants, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
 use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
 pub use crate::table::Precision;
@@ -39,16 +39,8 @@ pub struct BuildOptions {
     pub ghosts: usize,
     /// The integration grid's h* axis: from, to, points.
     pub h_star: (f64, f64, usize),
-    /// Model constants.
-    pub beta: f64,
-    /// Poisson's ratio.
-    pub nu: f64,
-    /// Intermolecular distance.
-    pub eps_star: f64,
-    /// Friction row.
-    pub fit: Fit,
-    /// Model.
-    pub kind: Kind,
+    /// The model constants (β, ν, ε*, fit, model).
+    pub constants: Constants,
     /// Stored precision.
     pub precision: Precision,
     /// The maximum relative error of μ the table must meet (else the build fails).
@@ -68,11 +60,7 @@ impl Default for BuildOptions {
             nodes: [33, 33, 33],
             ghosts: 2,
             h_star: (-1.0, 6.0, 141),
-            beta: crate::params::DEFAULT_BETA,
-            nu: crate::params::DEFAULT_NU,
-            eps_star: crate::params::DEFAULT_EPS_STAR,
-            fit: Fit::Consistent,
-            kind: Kind::KogutEtsion,
+            constants: Constants::default(),
             precision: Precision::F32,
             tolerance: 1e-4,
             samples: 10000,
@@ -201,12 +189,7 @@ pub struct Built {
 
 /// The model's parameters at (ψ, θ) with the options' constants.
 pub(crate) fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
-    Params::new(psi, theta)
-        .beta(o.beta)
-        .nu(o.nu)
-        .eps_star(o.eps_star)
-        .fit(o.fit)
-        .kind(o.kind)
+    o.constants.unchecked_at(psi, theta)
 }
 
 impl BuildOptions {
@@ -399,7 +382,7 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
         hi,
     };
     let mut payload = Payload {
-        model: ModelSpec::of(&params_of(o, o.psi.0, o.theta.0)),
+        model: ModelSpec::of(&o.constants),
         axes: [spec(&axes[0], o.psi), spec(&axes[1], o.theta), spec(&axes[2], o.f_star)],
         ln_mu: store(fit_3d(&ln_mu, [np, nt, nf], starts)),
         h_star: store(fit_3d(&h_star, [np, nt, nf], starts)),
@@ -466,11 +449,7 @@ impl BuildOptions {
             nodes: b.nodes,
             ghosts: b.ghosts,
             h_star: b.h_star,
-            beta: d.beta,
-            nu: d.nu,
-            eps_star: d.eps_star,
-            fit: d.fit,
-            kind: d.kind,
+            constants: d.constants.clone(),
             precision: info.precision,
             tolerance: info.tolerance,
             samples: b.samples,

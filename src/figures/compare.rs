@@ -14,7 +14,7 @@ use crate::{Kind, Model, Params, Table};
 fn constants(p: &Params) -> String {
     format!(
         "beta = {}, nu = {}, eps_star = {}, fit {:?}, model {:?}",
-        p.beta, p.nu, p.eps_star, p.fit, p.kind
+        p.constants.beta, p.constants.nu, p.constants.eps_star, p.constants.fit, p.constants.kind
     )
 }
 
@@ -22,8 +22,8 @@ fn constants(p: &Params) -> String {
 /// with a table, its lookup overlaid (dashed) and, in a lower panel, the
 /// relative difference μ_table/μ − 1 at the loads inside the table's domain.
 pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> {
-    let params = *model.params();
-    let name = match params.kind {
+    let params = model.params().clone();
+    let name = match params.constants.kind {
         Kind::KogutEtsion => "Kogut–Etsion",
         Kind::CebType => "CEB-type (approx.)",
     };
@@ -131,7 +131,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureEr
 /// machine's lookup ([`Table::mu`]) against direct integration
 /// ([`direct_mu`], the builder's verification uses the same).
 pub fn table_error(table: &Table, theta: f64, rows: usize, cols: usize) -> Result<ErrorMap, FigureError> {
-    let d = *table.domain();
+    let d = table.domain().clone();
     // θ outside the domain is an error that names it.
     table.mu(d.psi.0, theta, d.f_star.0)?;
     let edges = |(lo, hi): (f64, f64), n: usize| -> Vec<f64> {

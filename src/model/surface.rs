@@ -149,30 +149,30 @@ impl Surface {
     /// Plans the integrals for valid parameters.
     pub fn new(p: &Params) -> Surface {
         let pi = core::f64::consts::PI;
-        let s = sigma_s_ratio(p.beta);
-        let k = hardness_coefficient(p.nu);
+        let s = sigma_s_ratio(p.constants.beta);
+        let k = hardness_coefficient(p.constants.nu);
         let omega = s / (p.psi * p.psi);
-        let r = p.eps_star / omega;
-        let (q_ep, q_unclipped) = match p.fit {
+        let r = p.constants.eps_star / omega;
+        let (q_ep, q_unclipped) = match p.constants.fit {
             Fit::Consistent => (load::EP1.0, false),
             Fit::AsPrinted => (FRICTION_ELASTIC.0, true),
         };
         Surface {
-            kind: p.kind,
+            kind: p.constants.kind,
             s,
             inv_s2: 1.0 / (s * s),
             norm: 1.0 / (s * (2.0 * pi).sqrt()),
             omega,
-            ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.beta),
-            eps: p.eps_star,
-            load_pref: (2.0 / 3.0) * pi * p.beta * k * omega,
-            adh_pref: 2.0 * pi * p.beta * p.theta,
+            ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.constants.beta),
+            eps: p.constants.eps_star,
+            load_pref: (2.0 / 3.0) * pi * p.constants.beta * k * omega,
+            adh_pref: 2.0 * pi * p.constants.beta * p.theta,
             plastic: 3.0 / k,
             adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2].map(|(a, _, c)| a * r.powf(c)),
             q_ep,
             q_unclipped,
             rules: Rules::get(),
-            ceb: CebCapacity::new(p.nu),
+            ceb: CebCapacity::new(p.constants.nu),
         }
     }
 

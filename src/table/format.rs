@@ -49,7 +49,7 @@
 //! finite slope, from every kernel; `src/table/tests.rs` and the fuzz
 //! targets in `fuzz/` check each point with crafted files.
 
-use crate::params::{Fit, Kind, Params};
+use crate::params::{Constants, Fit, Kind};
 use serde::de::{self, EnumAccess, VariantAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -236,27 +236,27 @@ pub struct ModelSpec {
 }
 
 impl ModelSpec {
-    /// The stored form of a model's constants, fit and kind.
+    /// The stored form of a set of model constants.
     #[cfg(any(feature = "builder", test))]
-    pub fn of(p: &Params) -> ModelSpec {
+    pub fn of(c: &Constants) -> ModelSpec {
         ModelSpec {
-            beta: p.beta,
-            nu: p.nu,
-            eps_star: p.eps_star,
-            fit: match p.fit {
+            beta: c.beta,
+            nu: c.nu,
+            eps_star: c.eps_star,
+            fit: match c.fit {
                 Fit::Consistent => 0,
                 Fit::AsPrinted => 1,
             },
-            kind: match p.kind {
+            kind: match c.kind {
                 Kind::KogutEtsion => 0,
                 Kind::CebType => 1,
             },
         }
     }
 
-    /// The parameters these constants describe at (ψ, θ), or why the codes
-    /// are invalid (the values themselves are checked by `Params::validate`).
-    pub fn params(&self, psi: f64, theta: f64) -> Result<Params, String> {
+    /// The constants these values describe, or why the codes are invalid
+    /// (the values themselves are checked by `Constants::validate`).
+    pub fn constants(&self) -> Result<Constants, String> {
         let fit = match self.fit {
             0 => Fit::Consistent,
             1 => Fit::AsPrinted,
@@ -267,12 +267,13 @@ impl ModelSpec {
             1 => Kind::CebType,
             k => return Err(format!("unknown model code {k}")),
         };
-        Ok(Params::new(psi, theta)
-            .beta(self.beta)
-            .nu(self.nu)
-            .eps_star(self.eps_star)
-            .fit(fit)
-            .kind(kind))
+        Ok(Constants {
+            beta: self.beta,
+            nu: self.nu,
+            eps_star: self.eps_star,
+            fit,
+            kind,
+        })
     }
 }
 

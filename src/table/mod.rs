@@ -52,7 +52,7 @@ trait FastKernel: Sized + Clone {
 mod tests;
 
 use crate::num::Shortest;
-use crate::params::{Fit, Kind, Params};
+use crate::params::{Constants, Params};
 use crate::spline::Axis;
 use format::{Coefs, Payload};
 pub use format::{TableError, FILE_MAX};
@@ -113,7 +113,7 @@ pub enum LookupError {
 
 /// What a table covers: the ranges of its three arguments and the model
 /// constants it was built with (the same at every point).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Domain {
     /// Range of ψ.
     pub psi: (f64, f64),
@@ -121,16 +121,9 @@ pub struct Domain {
     pub theta: (f64, f64),
     /// Range of F*.
     pub f_star: (f64, f64),
-    /// Roughness parameter β.
-    pub beta: f64,
-    /// Poisson's ratio ν.
-    pub nu: f64,
-    /// Intermolecular distance ε*.
-    pub eps_star: f64,
-    /// The friction row.
-    pub fit: Fit,
-    /// The model.
-    pub kind: Kind,
+    /// The model constants (β, ν, ε*, fit, model), serialised flat.
+    #[serde(flatten)]
+    pub constants: Constants,
 }
 
 impl Domain {
@@ -139,14 +132,10 @@ impl Domain {
         [self.psi, self.theta, self.f_star]
     }
 
-    /// The model's parameters at (ψ, θ), with the table's constants.
+    /// The model's parameters at (ψ, θ), with the table's constants (not
+    /// validated: ψ or θ may lie outside the table).
     pub fn params(&self, psi: f64, theta: f64) -> Params {
-        Params::new(psi, theta)
-            .beta(self.beta)
-            .nu(self.nu)
-            .eps_star(self.eps_star)
-            .fit(self.fit)
-            .kind(self.kind)
+        self.constants.unchecked_at(psi, theta)
     }
 }
 
@@ -298,8 +287,8 @@ impl Table {
         let bad = |m: String| Err(TableError::Inconsistent(m));
         let layout = Layout::new(&payload.axes).map_err(TableError::Inconsistent)?;
         let [psi, theta, f_star] = layout.ranges;
-        let params = payload.model.params(psi.0, theta.0).map_err(TableError::Inconsistent)?;
-        params
+        let constants = payload.model.constants().map_err(TableError::Inconsistent)?;
+        constants
             .validate()
             .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;
         let count = layout.coefficients();
@@ -361,11 +350,7 @@ impl Table {
                 psi,
                 theta,
                 f_star,
-                beta: params.beta,
-                nu: params.nu,
-                eps_star: params.eps_star,
-                fit: params.fit,
-                kind: params.kind,
+                constants,
             },
             tolerance: acc.tolerance,
             accuracy: acc.measured(),

@@ -137,7 +137,11 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     assert_eq!(grid_mu[[i, j, k]], c.mu.unwrap());
 
     // The model constants.
-    for (name, want) in [("beta", d.beta), ("nu", d.nu), ("eps_star", d.eps_star)] {
+    for (name, want) in [
+        ("beta", d.constants.beta),
+        ("nu", d.constants.nu),
+        ("eps_star", d.constants.eps_star),
+    ] {
         let a: Array0<f64> = z.by_name(name).unwrap();
         assert_eq!(a.into_scalar(), want, "{name}");
     }
@@ -151,7 +155,7 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
         .zip(&grid_mu)
         .all(|(a, b)| a.to_bits() == b.to_bits()));
     let nu_npy: Array0<f64> = read_npy(npy.join("nu.npy")).unwrap();
-    assert_eq!(nu_npy.into_scalar(), d.nu);
+    assert_eq!(nu_npy.into_scalar(), d.constants.nu);
 
     // Exporting again replaces the files; an explicit --table gives the same arrays.
     let table_file = tmp.join("default.kft");

@@ -238,9 +238,9 @@ fn params_and_the_si_flags_give_the_librarys_numbers() {
     for (key, want) in [
         ("psi", p.psi),
         ("theta", p.theta),
-        ("beta", p.beta),
-        ("nu", p.nu),
-        ("eps_star", p.eps_star),
+        ("beta", p.constants.beta),
+        ("nu", p.constants.nu),
+        ("eps_star", p.constants.eps_star),
     ] {
         assert_eq!(v[key].as_f64(), Some(want), "{key}");
     }
@@ -248,7 +248,7 @@ fn params_and_the_si_flags_give_the_librarys_numbers() {
     let o = kefric(&[&["eval", "--json", "--f-star", "0.01"][..], &SI].concat());
     assert!(o.status.success(), "{}", stderr(&o));
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-    let model = ke_friction::Model::new(p).unwrap();
+    let model = ke_friction::Model::new(p.clone()).unwrap();
     assert_eq!(v["psi"].as_f64(), Some(p.psi));
     assert!((v["mu"].as_f64().unwrap() / model.at_f_star(0.01).unwrap().mu.unwrap() - 1.0).abs() < 1e-15);
     // lookup: the SI inputs' β, ν, ε* are the default table's.

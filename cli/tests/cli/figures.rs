@@ -198,7 +198,7 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
 /// ranges; they are the embedded table's own.
 #[test]
 fn table_error_help_states_the_default_and_the_tables_ranges() {
-    let d = *ke_friction::Table::embedded().domain();
+    let d = ke_friction::Table::embedded().domain().clone();
     assert_eq!((d.theta, d.psi, d.f_star), ((0.0, 0.01), (0.5, 8.0), (1e-5, 0.1)));
     let o = kefric(&["plot", "table-error", "--help"]);
     assert!(o.status.success());
