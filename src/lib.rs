@@ -37,6 +37,7 @@
 #[cfg(feature = "builder")]
 pub mod build;
 mod curve;
+mod error;
 #[cfg(feature = "builder")]
 pub mod export;
 #[cfg(feature = "plot")]
@@ -50,9 +51,10 @@ pub mod spline;
 pub mod table;
 
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
+pub use error::ErrorKind;
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use params::{
     Constants, Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
     EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
-pub use table::{Domain, LookupError, Table, TableError, TableInfo};
+pub use table::{Domain, LookupError, OnError, Table, TableError, TableInfo};

@@ -45,6 +45,7 @@ trait BatchKernel: Sized + Copy {
 
 use crate::model::{EvalError, Model};
 use crate::num::Shortest;
+use crate::table::OnError;
 use crate::table::{LookupError, Table};
 
 /// The accuracy [`Curve::from_model`] builds to: the largest relative
@@ -326,24 +327,84 @@ impl Curve {
 
     /// μ for many loads, written into `out` (no allocation), bit for bit
     /// what [`mu`](Self::mu) gives (four at a time with AVX2 where the CPU
-    /// has it). On a load outside the range the error names its index, and
-    /// `out` is written up to it.
+    /// has it). The batch contract of [`OnError::Stop`]: on the first load
+    /// `i` outside the range (or NaN), `out[..i]` holds the results,
+    /// `out[i..]` is untouched and the error is
+    /// [`LookupError::BatchElement`] with index `i`.
     pub fn mu_batch(&self, f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
-        let done = match self.batch {
-            Some(kernel) if f_star.len() == out.len() => kernel.mu(self, f_star, out),
-            _ => 0,
-        };
-        self.batch_from(done, f_star, out, |f| self.mu(f))
+        self.mu_batch_with(f_star, out, OnError::Stop).map(|_| ())
     }
 
-    /// (μ, dμ/dF*) for many loads, written into `out`; as
+    /// [`mu_batch`](Self::mu_batch) with a policy for loads outside the
+    /// range: [`OnError::Stop`] as there, or [`OnError::Nan`], which writes
+    /// NaN at each such load and finishes the batch. Returns how many
+    /// elements are NaN.
+    ///
+    /// ```
+    /// # use ke_friction::{Curve, OnError, Table};
+    /// let curve = Table::embedded().curve(1.0, 0.001)?;
+    /// let mut mu = [0.0; 3];
+    /// let n_nan = curve.mu_batch_with(&[0.01, f64::NAN, 0.02], &mut mu, OnError::Nan)?;
+    /// assert!(n_nan == 1 && mu[1].is_nan() && mu[0] == curve.mu(0.01)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn mu_batch_with(&self, f_star: &[f64], out: &mut [f64], on_error: OnError) -> Result<usize, LookupError> {
+        self.check_lengths(f_star.len(), out.len())?;
+        let mut start = 0;
+        let mut nan = 0;
+        loop {
+            let done = match self.batch {
+                Some(kernel) => start + kernel.mu(self, &f_star[start..], &mut out[start..]),
+                None => start,
+            };
+            match self.batch_from(done, f_star, out, |f| self.mu(f)) {
+                None => return Ok(nan),
+                Some(i) => {
+                    on_error.bad(i, self.domain_error(f_star[i]))?;
+                    out[i] = f64::NAN;
+                    nan += 1;
+                    start = i + 1;
+                }
+            }
+        }
+    }
+
+    /// (μ, dμ/dF*) for many loads, written into `out`; the contract of
     /// [`mu_batch`](Self::mu_batch).
     pub fn mu_with_slope_batch(&self, f_star: &[f64], out: &mut [(f64, f64)]) -> Result<(), LookupError> {
-        self.batch_from(0, f_star, out, |f| self.mu_with_slope(f))
+        self.mu_with_slope_batch_with(f_star, out, OnError::Stop).map(|_| ())
     }
 
-    /// Both batch forms: the lengths, the loop from load `start` on (those
-    /// before it are done), the index of a bad load.
+    /// [`mu_with_slope_batch`](Self::mu_with_slope_batch) with a policy
+    /// (see [`mu_batch_with`](Self::mu_batch_with)); NaN pairs at bad loads.
+    pub fn mu_with_slope_batch_with(
+        &self,
+        f_star: &[f64],
+        out: &mut [(f64, f64)],
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
+        self.check_lengths(f_star.len(), out.len())?;
+        let (mut start, mut nan) = (0, 0);
+        while let Some(i) = self.batch_from(start, f_star, out, |f| self.mu_with_slope(f)) {
+            on_error.bad(i, self.domain_error(f_star[i]))?;
+            out[i] = (f64::NAN, f64::NAN);
+            nan += 1;
+            start = i + 1;
+        }
+        Ok(nan)
+    }
+
+    /// The error for slices of different lengths.
+    fn check_lengths(&self, f_star: usize, out: usize) -> Result<(), LookupError> {
+        if f_star == out {
+            Ok(())
+        } else {
+            Err(LookupError::CurveLengthMismatch { f_star, out })
+        }
+    }
+
+    /// The loop from load `start` on (those before it are done) up to the
+    /// first bad load, whose index it returns (`out` untouched from it).
     #[inline(always)]
     fn batch_from<T>(
         &self,
@@ -351,38 +412,20 @@ impl Curve {
         f_star: &[f64],
         out: &mut [T],
         one: impl Fn(f64) -> Result<T, LookupError>,
-    ) -> Result<(), LookupError> {
-        if f_star.len() != out.len() {
-            return Err(LookupError::CurveLengthMismatch {
-                f_star: f_star.len(),
-                out: out.len(),
-            });
-        }
+    ) -> Option<usize> {
         for (i, (&f, o)) in f_star.iter().zip(out.iter_mut()).enumerate().skip(start) {
             match one(f) {
                 Ok(v) => *o = v,
-                Err(_) => return Err(self.batch_error(i, f)),
+                Err(_) => return Some(i),
             }
         }
-        Ok(())
+        None
     }
 
     /// The error for a load outside the range.
     #[cold]
     fn domain_error(&self, value: f64) -> LookupError {
         LookupError::OutOfDomain {
-            name: "f_star",
-            value,
-            lo: self.range.0,
-            hi: self.range.1,
-        }
-    }
-
-    /// The error for batch element `index`.
-    #[cold]
-    fn batch_error(&self, index: usize, value: f64) -> LookupError {
-        LookupError::BatchElement {
-            index,
             name: "f_star",
             value,
             lo: self.range.0,

@@ -510,7 +510,6 @@ unsafe fn batch_with<const SLOPE: bool>(
     };
     let maps = [map(0), map(1), map(2)];
     let queries = [psi, theta, f_star];
-    kernel.prepare(n);
     // Software pipelined: block i + 8 is located while block i is blended,
     // two independent chains the CPU overlaps. A block with a query
     // outside the domain ends the loop; the single-query kernel then

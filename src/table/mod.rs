@@ -111,6 +111,72 @@ pub enum LookupError {
     },
 }
 
+impl LookupError {
+    /// This error as the error of batch element `index` (an element's own
+    /// [`OutOfDomain`](LookupError::OutOfDomain) becomes
+    /// [`BatchElement`](LookupError::BatchElement) with the same fields).
+    pub fn at(self, index: usize) -> LookupError {
+        match self {
+            LookupError::OutOfDomain { name, value, lo, hi }
+            | LookupError::BatchElement {
+                name, value, lo, hi, ..
+            } => LookupError::BatchElement {
+                index,
+                name,
+                value,
+                lo,
+                hi,
+            },
+            other => other,
+        }
+    }
+
+    /// For a caller that split a batch into pieces: a batch element's
+    /// index moved by `offset` (the piece's start); other errors as they are.
+    pub fn shifted(self, offset: usize) -> LookupError {
+        match self {
+            LookupError::BatchElement { index, .. } => self.at(index + offset),
+            other => other,
+        }
+    }
+
+    /// The element's index, for a batch element's error.
+    pub fn index(&self) -> Option<usize> {
+        match self {
+            LookupError::BatchElement { index, .. } => Some(*index),
+            _ => None,
+        }
+    }
+}
+
+/// What a batch does at an element it cannot answer (NaN, or outside the
+/// table's domain or the curve's range). Every batch function of [`Table`]
+/// and [`Curve`](crate::Curve) follows it, and the C and Python bindings
+/// hand it on rather than re-implement it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum OnError {
+    /// Stop at the first bad element `i`: `out[..i]` holds the results,
+    /// `out[i..]` is untouched, and the error is
+    /// [`LookupError::BatchElement`] with index `i` and the element's own
+    /// error (see [`LookupError::shifted`] for split batches).
+    #[default]
+    Stop,
+    /// Write NaN at each bad element (a NaN pair for slopes) and finish the
+    /// batch; the call returns how many elements are NaN.
+    Nan,
+}
+
+impl OnError {
+    /// At bad element `index` with error `e`: go on (`Nan`), or the batch
+    /// error (`Stop`).
+    pub(crate) fn bad(self, index: usize, e: LookupError) -> Result<(), LookupError> {
+        match self {
+            OnError::Stop => Err(e.at(index)),
+            OnError::Nan => Ok(()),
+        }
+    }
+}
+
 /// What a table covers: the ranges of its three arguments and the model
 /// constants it was built with (the same at every point).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -519,7 +585,45 @@ impl Table {
     /// # Ok::<(), LookupError>(())
     /// ```
     pub fn mu_batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: &mut [f64]) -> Result<(), LookupError> {
-        self.batch(psi, theta, f_star, BatchOutput::Mu(out))
+        self.batch(psi, theta, f_star, BatchOutput::Mu(out), OnError::Stop)
+            .map(|_| ())
+    }
+
+    /// [`mu_batch`](Self::mu_batch) with a policy for queries outside the
+    /// domain: [`OnError::Stop`] as there, or [`OnError::Nan`], which writes
+    /// NaN there and finishes the batch. Returns how many elements are NaN.
+    ///
+    /// ```
+    /// # use ke_friction::{OnError, Table};
+    /// let table = Table::embedded();
+    /// let mut mu = [0.0; 3];
+    /// let n_nan = table.mu_batch_with(&[1.0; 3], &[0.001; 3], &[0.01, f64::NAN, 0.2], &mut mu, OnError::Nan)?;
+    /// assert_eq!(n_nan, 2);
+    /// assert!(mu[0] == table.mu(1.0, 0.001, 0.01)? && mu[1].is_nan() && mu[2].is_nan());
+    /// # Ok::<(), ke_friction::LookupError>(())
+    /// ```
+    pub fn mu_batch_with(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        out: &mut [f64],
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
+        self.batch(psi, theta, f_star, BatchOutput::Mu(out), on_error)
+    }
+
+    /// [`mu_with_slope_batch`](Self::mu_with_slope_batch) with a policy
+    /// (see [`mu_batch_with`](Self::mu_batch_with)); NaN pairs at bad queries.
+    pub fn mu_with_slope_batch_with(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        out: &mut [(f64, f64)],
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
+        self.batch(psi, theta, f_star, BatchOutput::WithSlope(out), on_error)
     }
 
     /// μ and ∂μ/∂F* for many queries at once, written into `out` as
@@ -547,7 +651,8 @@ impl Table {
         f_star: &[f64],
         out: &mut [(f64, f64)],
     ) -> Result<(), LookupError> {
-        self.batch(psi, theta, f_star, BatchOutput::WithSlope(out))
+        self.batch(psi, theta, f_star, BatchOutput::WithSlope(out), OnError::Stop)
+            .map(|_| ())
     }
 
     /// Readies the table for `n` lookups made in smaller batches: what a
@@ -580,9 +685,17 @@ impl Table {
         }
     }
 
-    /// Both batch forms: checks the lengths, runs the kernel, and turns
-    /// the index of the first query outside the domain into the error.
-    fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Result<(), LookupError> {
+    /// Both batch forms: checks the lengths, runs the kernel, and applies
+    /// `on_error` at each query outside the domain; returns the number of
+    /// NaN elements.
+    fn batch(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        mut out: BatchOutput,
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
         let n = out.len();
         if psi.len() != n || theta.len() != n || f_star.len() != n {
             return Err(LookupError::LengthMismatch {
@@ -593,14 +706,25 @@ impl Table {
             });
         }
         let Some(kernel) = &self.avx2 else {
-            let failed = match out {
-                BatchOutput::Mu(o) => fill(o, |i| self.mu_portable(psi[i], theta[i], f_star[i])),
-                BatchOutput::WithSlope(o) => fill(o, |i| self.mu_with_slope_portable(psi[i], theta[i], f_star[i])),
-            };
-            return failed.map_or(Ok(()), Err);
+            let mut nan = 0;
+            for i in 0..n {
+                let r = match &out {
+                    BatchOutput::Mu(_) => self.mu_portable(psi[i], theta[i], f_star[i]).map(|mu| (mu, 0.0)),
+                    BatchOutput::WithSlope(_) => self.mu_with_slope_portable(psi[i], theta[i], f_star[i]),
+                };
+                match r {
+                    Ok((mu, slope)) => out.set(i, mu, slope),
+                    Err(e) => {
+                        on_error.bad(i, e)?;
+                        out.set(i, f64::NAN, f64::NAN);
+                        nan += 1;
+                    }
+                }
+            }
+            return Ok(nan);
         };
-        let mut out = out;
-        let mut start = 0;
+        kernel.prepare(n);
+        let (mut start, mut nan) = (0, 0);
         while start < n {
             let Some(j) = kernel.batch(&psi[start..], &theta[start..], &f_star[start..], out.tail(start)) else {
                 break;
@@ -609,27 +733,17 @@ impl Table {
             // or (impossible for a table that loads, see `nan_from_kernel`)
             // the portable kernel answers it and the batch goes on.
             let i = start + j;
-            let r = self
-                .nan_from_kernel(psi[i], theta[i], f_star[i])
-                .map_err(|e| batch_error(i, e))?;
-            out.set(i, r, slope(r.0, r.1, self.layout.inv_step[2], f_star[i]));
+            match self.nan_from_kernel(psi[i], theta[i], f_star[i]) {
+                Ok((mu, d)) => out.set(i, mu, slope(mu, d, self.layout.inv_step[2], f_star[i])),
+                Err(e) => {
+                    on_error.bad(i, e)?;
+                    out.set(i, f64::NAN, f64::NAN);
+                    nan += 1;
+                }
+            }
             start = i + 1;
         }
-        Ok(())
-    }
-}
-
-/// The error of batch element `index`, from its own lookup error.
-fn batch_error(index: usize, e: LookupError) -> LookupError {
-    match e {
-        LookupError::OutOfDomain { name, value, lo, hi } => LookupError::BatchElement {
-            index,
-            name,
-            value,
-            lo,
-            hi,
-        },
-        other => other,
+        Ok(nan)
     }
 }
 
@@ -686,23 +800,11 @@ impl BatchOutput<'_> {
         }
     }
 
-    /// Writes query `i`'s μ (`r.0`) and, where asked for, its slope.
-    fn set(&mut self, i: usize, r: (f64, f64), slope: f64) {
+    /// Writes query `i`'s μ and, where asked for, its slope.
+    fn set(&mut self, i: usize, mu: f64, slope: f64) {
         match self {
-            BatchOutput::Mu(o) => o[i] = r.0,
-            BatchOutput::WithSlope(o) => o[i] = (r.0, slope),
+            BatchOutput::Mu(o) => o[i] = mu,
+            BatchOutput::WithSlope(o) => o[i] = (mu, slope),
         }
     }
-}
-
-/// Sets `out[i] = f(i)` in order; on the first `i` where `f` fails, the
-/// batch error for it.
-fn fill<T>(out: &mut [T], f: impl Fn(usize) -> Result<T, LookupError>) -> Option<LookupError> {
-    for (i, o) in out.iter_mut().enumerate() {
-        match f(i) {
-            Ok(v) => *o = v,
-            Err(e) => return Some(batch_error(i, e)),
-        }
-    }
-    None
 }

@@ -3,6 +3,7 @@
 //! implementation, its properties and hardening, the paper's statements,
 //! and the tables against direct integration.
 
+mod batch_contract;
 mod common;
 mod crafted_tables;
 mod curve;
