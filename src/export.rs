@@ -11,10 +11,11 @@
 //! | `beta`, `nu`, `eps_star` | () | the model constants |
 //! | `spline_ln_mu` | (mψ+2, mθ+2, mF+2) | the table's own interpolant: B-spline coefficients of ln μ (ghost nodes included) |
 //! | `knots_psi`, `knots_theta`, `knots_f_star` | (mψ), (mθ), (mF) | its knots in the interpolation coordinates ln ψ, √θ, ln F* |
-//! | `metadata` | (bytes,) `uint8` | UTF-8 JSON describing the table ([`metadata`]) |
+//! | `metadata` | (bytes,) `uint8` | UTF-8 JSON: the table's record ([`metadata`]) |
+//! | `interpolant` | (bytes,) `uint8` | UTF-8 JSON: how to evaluate `spline_ln_mu` ([`interpolant`]) |
 //!
 //! The interpolant: along each axis, with `s = (x − first)/step` in the
-//! axis's coordinate x (ln ψ, √θ, ln F*), cell `i = min(⌊s⌋, nodes − 2)`
+//! axis's coordinate x (ln ψ, √θ, ln F*), cell `i = clamp(⌊s⌋, 0, nodes − 2)`
 //! and `f = s − i`, ln μ = Σ w_a(f_ψ)·w_b(f_θ)·w_c(f_F)·c[iψ+a, iθ+b, iF+c]
 //! over a, b, c in 0..4, with the uniform cubic B-spline weights
 //! w = ((1−f)³, 3f³−6f²+4, −3f³+3f²+3f+1, f³)/6. `tools/spline_eval.py`
@@ -28,7 +29,6 @@
 use crate::build::{params_of, BuildError, BuildOptions, Progress};
 use crate::io::{write_atomic_with, write_dir_atomic, WriteFile};
 use crate::model::Model;
-use crate::num::{json_numbers, json_object, Json};
 use crate::spline::Axis;
 use crate::table::Table;
 use ndarray::{arr0, ArrayD, IxDyn};
@@ -199,72 +199,48 @@ pub fn arrays(table: &Table, progress: &dyn Progress) -> Result<Vec<Named>, Buil
     ])
 }
 
-/// The export's self-description, JSON (stored as the `uint8` array
-/// `metadata`: `json.loads(z["metadata"].tobytes())`). Keys: `model`
-/// (`"ke"`/`"ceb"`), `fit` (`"consistent"`/`"as-printed"`), `beta`, `nu`,
-/// `eps_star`, `domain` (ranges of psi, theta, f_star), `tolerance`,
-/// `max_rel_error` (measured at build), `format_version`, `precision`,
-/// `generator`, and `interpolant`: the quantity (`"ln(mu)"`), its kind,
-/// and per axis its coordinate (`"ln(psi)"`, `"sqrt(theta)"`,
-/// `"ln(f_star)"`), `first`, `step` and `nodes` (numbers exact in
-/// shortest round-trip form).
+/// The table's record, JSON (stored as the `uint8` array `metadata`:
+/// `json.loads(z["metadata"].tobytes())`): exactly [`TableInfo`](crate::TableInfo)'s
+/// serialisation, the names `kefric info --json` and Python's
+/// `Table.info` use too.
 pub fn metadata(table: &Table) -> String {
-    let info = table.info();
-    let d = &info.domain;
-    let range = |(lo, hi): (f64, f64)| Json::Raw(json_numbers(&[lo, hi]));
+    serde_json::to_string(table.info()).expect("a table's record serialises")
+}
+
+/// How to evaluate the exported interpolant, JSON (stored as the `uint8`
+/// array `interpolant`): the quantity (`"ln(mu)"`), its kind, the
+/// coefficients' array name, the cell and weight formulas, and per axis
+/// its name, coordinate (`"ln(psi)"`, `"sqrt(theta)"`, `"ln(f_star)"`),
+/// `first`, `step`, `nodes` and knots' array name (numbers exact in
+/// shortest round-trip form).
+pub fn interpolant(table: &Table) -> String {
     let axis = |k: usize, name: &str, coordinate: &str| {
         let a = table.axes()[k];
-        json_object(&[
-            ("name", Json::Str(name)),
-            ("coordinate", Json::Str(coordinate)),
-            ("first", Json::Num(a.first)),
-            ("step", Json::Num(a.step)),
-            ("nodes", Json::Int(a.nodes as u64)),
-            ("knots", Json::Str(&format!("knots_{name}"))),
-        ])
+        serde_json::json!({
+            "name": name,
+            "coordinate": coordinate,
+            "first": a.first,
+            "step": a.step,
+            "nodes": a.nodes,
+            "knots": format!("knots_{name}"),
+        })
     };
-    let axes = format!(
-        "[{},{},{}]",
-        axis(0, "psi", "ln(psi)"),
-        axis(1, "theta", "sqrt(theta)"),
-        axis(2, "f_star", "ln(f_star)")
-    );
-    let interpolant = json_object(&[
-        ("quantity", Json::Str("ln(mu)")),
-        ("kind", Json::Str("tensor-product uniform cubic B-spline")),
-        ("coefficients", Json::Str("spline_ln_mu")),
-        (
-            "cell",
-            Json::Str("s = (x - first)/step, i = min(floor(s), nodes - 2), f = s - i; coefficients i..i+3"),
-        ),
-        ("weights", Json::Str("((1-f)^3, 3f^3-6f^2+4, -3f^3+3f^2+3f+1, f^3)/6")),
-        ("axes", Json::Raw(axes)),
-    ]);
-    json_object(&[
-        ("model", Json::Str(d.constants.kind.name())),
-        ("fit", Json::Str(d.constants.fit.name())),
-        ("beta", Json::Num(d.constants.beta)),
-        ("nu", Json::Num(d.constants.nu)),
-        ("eps_star", Json::Num(d.constants.eps_star)),
-        (
-            "domain",
-            Json::Raw(json_object(&[
-                ("psi", range(d.psi)),
-                ("theta", range(d.theta)),
-                ("f_star", range(d.f_star)),
-            ])),
-        ),
-        ("tolerance", Json::Num(info.tolerance)),
-        ("max_rel_error", Json::Num(info.accuracy.max_rel)),
-        ("format_version", Json::Int(info.format_version.into())),
-        ("precision", Json::Str(info.precision.name())),
-        ("generator", Json::Str(&info.build.generator)),
-        (
-            "node_values",
-            Json::Str("mu and h_star are the table's lookups at its nodes inside the domain"),
-        ),
-        ("interpolant", Json::Raw(interpolant)),
-    ])
+    serde_json::json!({
+        "quantity": "ln(mu)",
+        "kind": "tensor-product uniform cubic B-spline",
+        "coefficients": "spline_ln_mu",
+        "cell": "s = (x - first)/step, i = clamp(floor(s), 0, nodes - 2), f = s - i; coefficients i..i+3",
+        "weights": "((1-f)^3, 3f^3-6f^2+4, -3f^3+3f^2+3f+1, f^3)/6",
+        "node_values": "mu and h_star are the table's lookups at its nodes inside the domain",
+        "axes": [axis(0, "psi", "ln(psi)"), axis(1, "theta", "sqrt(theta)"), axis(2, "f_star", "ln(f_star)")],
+    })
+    .to_string()
+}
+
+/// The JSON texts of an export, by array name: `metadata` and
+/// `interpolant` (see [`metadata`], [`interpolant`]).
+pub fn texts(table: &Table) -> [(&'static str, String); 2] {
+    [("metadata", metadata(table)), ("interpolant", interpolant(table))]
 }
 
 fn vector(v: Vec<f64>) -> ArrayD<f64> {
@@ -275,17 +251,18 @@ fn cube(shape: [usize; 3], v: Vec<f64>) -> ArrayD<f64> {
     ArrayD::from_shape_vec(IxDyn(&shape), v).expect("row-major data of the shape")
 }
 
-/// Writes the arrays and the `metadata` (as a `uint8` array of its UTF-8
-/// bytes) into one uncompressed `.npz` file (as `numpy.savez` does),
-/// atomically.
-pub fn write_npz(path: &Path, arrays: &[Named], metadata: &str) -> io::Result<()> {
+/// Writes the arrays and the JSON `texts` (each as a `uint8` array of its
+/// UTF-8 bytes, see [`texts`]) into one uncompressed `.npz` file (as
+/// `numpy.savez` does), atomically.
+pub fn write_npz(path: &Path, arrays: &[Named], texts: &[(&str, String)]) -> io::Result<()> {
     write_atomic_with(path, |file| {
         let mut npz = NpzWriter::new(BufWriter::new(file));
         for (name, array) in arrays {
             npz.add_array(*name, array).map_err(io::Error::other)?;
         }
-        npz.add_array("metadata", &metadata_bytes(metadata))
-            .map_err(io::Error::other)?;
+        for (name, text) in texts {
+            npz.add_array(*name, &text_bytes(text)).map_err(io::Error::other)?;
+        }
         npz.finish()
             .map_err(io::Error::other)?
             .into_inner()
@@ -294,38 +271,43 @@ pub fn write_npz(path: &Path, arrays: &[Named], metadata: &str) -> io::Result<()
     })
 }
 
-/// Writes each array to `DIR/NAME.npy`, and the metadata to
-/// `DIR/metadata.npy`, all or nothing (see [`write_dir_atomic`]): after a
-/// failure (a full disk) no new file is in `dir`. `dir` is created if
-/// missing (its parent must exist).
-pub fn write_npy_dir(dir: &Path, arrays: &[Named], metadata: &str) -> io::Result<()> {
+/// Writes each array to `DIR/NAME.npy`, and each JSON text to
+/// `DIR/NAME.npy` (`uint8`), all or nothing (see [`write_dir_atomic`]):
+/// after a failure (a full disk) no new file is in `dir`. `dir` is created
+/// if missing (its parent must exist).
+pub fn write_npy_dir(dir: &Path, arrays: &[Named], texts: &[(&str, String)]) -> io::Result<()> {
     let npy = |write: &dyn Fn(&mut BufWriter<std::fs::File>) -> io::Result<()>, file: std::fs::File| {
         let mut out = BufWriter::new(file);
         write(&mut out)?;
         out.flush()?;
         out.into_inner().map_err(|e| e.into_error())?.sync_all()
     };
-    let meta = |file| {
-        npy(
-            &|out| metadata_bytes(metadata).write_npy(out).map_err(io::Error::other),
-            file,
-        )
-    };
-    let names: Vec<String> = arrays.iter().map(|(name, _)| format!("{name}.npy")).collect();
-    let writers: Vec<Box<dyn Fn(std::fs::File) -> io::Result<()> + '_>> = arrays
+    let names: Vec<String> = arrays
+        .iter()
+        .map(|(name, _)| *name)
+        .chain(texts.iter().map(|(name, _)| *name))
+        .map(|name| format!("{name}.npy"))
+        .collect();
+    let writers: Vec<Box<WriteFile>> = arrays
         .iter()
         .map(|(_, array)| {
-            Box::new(move |file| npy(&|out| array.write_npy(out).map_err(io::Error::other), file))
-                as Box<dyn Fn(std::fs::File) -> io::Result<()>>
+            Box::new(move |file| npy(&|out| array.write_npy(out).map_err(io::Error::other), file)) as Box<WriteFile>
         })
+        .chain(texts.iter().map(|(_, text)| {
+            Box::new(move |file| npy(&|out| text_bytes(text).write_npy(out).map_err(io::Error::other), file))
+                as Box<WriteFile>
+        }))
         .collect();
-    let mut files: Vec<(&str, &WriteFile)> = vec![("metadata.npy", &meta)];
-    files.extend(names.iter().map(String::as_str).zip(writers.iter().map(|w| w.as_ref())));
+    let files: Vec<(&str, &WriteFile)> = names
+        .iter()
+        .map(String::as_str)
+        .zip(writers.iter().map(|w| w.as_ref()))
+        .collect();
     write_dir_atomic(dir, &files)
 }
 
-fn metadata_bytes(metadata: &str) -> ndarray::Array1<u8> {
-    ndarray::Array1::from(metadata.as_bytes().to_vec())
+fn text_bytes(text: &str) -> ndarray::Array1<u8> {
+    ndarray::Array1::from(text.as_bytes().to_vec())
 }
 
 #[cfg(test)]

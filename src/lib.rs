@@ -44,7 +44,7 @@ pub mod export;
 pub mod figures;
 pub mod io;
 mod model;
-pub mod num;
+mod num;
 pub mod paper;
 mod params;
 pub mod spline;
@@ -53,6 +53,7 @@ pub mod table;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use error::ErrorKind;
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
+pub use num::Shortest;
 pub use params::{
     Constants, Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
     EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,

@@ -1,7 +1,6 @@
 //! Numbers as people read them: the shortest decimal that parses back to
-//! the same `f64`, in one style everywhere (messages, text output, JSON),
-//! and the small JSON writer that prints them (the CLI's `--json` output,
-//! the NumPy export's metadata).
+//! the same `f64`, in one style everywhere (messages and text output; JSON
+//! output is serde_json's, also shortest round-trip).
 
 use core::fmt;
 
@@ -11,7 +10,7 @@ use core::fmt;
 /// Non-finite values print as `NaN`, `inf`, `-inf`.
 ///
 /// ```
-/// use ke_friction::num::Shortest;
+/// use ke_friction::Shortest;
 /// assert_eq!(Shortest(0.5).to_string(), "0.5");
 /// assert_eq!(Shortest(8.0).to_string(), "8");
 /// assert_eq!(Shortest(1e-5).to_string(), "1e-5");
@@ -35,76 +34,6 @@ impl fmt::Display for Shortest {
     }
 }
 
-/// A JSON number: [`Shortest`] form for finite values (valid JSON, exact
-/// on parsing), `null` for NaN and infinities.
-///
-/// ```
-/// use ke_friction::num::json;
-/// assert_eq!(json(1e-5), "1e-5");
-/// assert_eq!(json(f64::NAN), "null");
-/// ```
-pub fn json(x: f64) -> String {
-    if x.is_finite() {
-        Shortest(x).to_string()
-    } else {
-        "null".to_string()
-    }
-}
-
-/// A JSON value of [`json_object`].
-pub enum Json<'a> {
-    /// A number ([`json`]: shortest round-trip, `null` if not finite).
-    Num(f64),
-    /// A whole number.
-    Int(u64),
-    /// A string (escaped).
-    Str(&'a str),
-    /// `null`.
-    Null,
-    /// Raw JSON text (a nested object or array).
-    Raw(String),
-}
-
-/// One JSON object on one line, keys in the given order.
-pub fn json_object(fields: &[(&str, Json)]) -> String {
-    let body: Vec<String> = fields
-        .iter()
-        .map(|(k, v)| {
-            let v = match v {
-                Json::Num(x) => json(*x),
-                Json::Int(n) => n.to_string(),
-                Json::Str(t) => json_string(t),
-                Json::Null => "null".to_string(),
-                Json::Raw(r) => r.clone(),
-            };
-            format!("{}:{v}", json_string(k))
-        })
-        .collect();
-    format!("{{{}}}", body.join(","))
-}
-
-/// A JSON array of numbers.
-pub fn json_numbers(xs: &[f64]) -> String {
-    let v: Vec<String> = xs.iter().map(|&x| json(x)).collect();
-    format!("[{}]", v.join(","))
-}
-
-/// A JSON string literal, escaped.
-pub fn json_string(t: &str) -> String {
-    let mut out = String::with_capacity(t.len() + 2);
-    out.push('"');
-    for c in t.chars() {
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
-            c => out.push(c),
-        }
-    }
-    out.push('"');
-    out
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -116,7 +45,6 @@ mod tests {
             for v in [x, -x, x.next_up(), 1.0 / x] {
                 let text = Shortest(v).to_string();
                 assert_eq!(text.parse::<f64>().unwrap(), v, "{text}");
-                assert_eq!(json(v), text);
             }
             x *= 7.3;
         }
@@ -125,21 +53,5 @@ mod tests {
         assert_eq!(Shortest(1e6).to_string(), "1e6");
         assert_eq!(Shortest(-2.5e-7).to_string(), "-2.5e-7");
         assert_eq!(Shortest(0.0).to_string(), "0");
-        assert_eq!(json(f64::INFINITY), "null");
-    }
-
-    #[test]
-    fn json_objects_escape_strings_and_keep_order() {
-        let text = json_object(&[
-            ("b", Json::Num(0.5)),
-            ("a", Json::Str("say \"hi\"\n\\")),
-            ("n", Json::Int(3)),
-            ("x", Json::Raw(json_numbers(&[1e-5, f64::NAN]))),
-            ("z", Json::Null),
-        ]);
-        assert_eq!(
-            text,
-            r#"{"b":0.5,"a":"say \"hi\"\u000a\\","n":3,"x":[1e-5,null],"z":null}"#
-        );
     }
 }

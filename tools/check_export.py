@@ -14,7 +14,7 @@ instead; it must be an export of the embedded default table) and checked:
     (psi x theta x f_star), grid_psi, grid_theta, grid_h_star and grid_p_star,
     grid_fs_star, grid_q_star, grid_f_star, grid_mu (psi x theta x h*), the
     0-d constants beta, nu, eps_star, the interpolant spline_ln_mu and
-    knots_psi, knots_theta, knots_f_star; all float64; and metadata (1-D
+    knots_psi, knots_theta, knots_f_star; all float64; and metadata, interpolant (1-D
     uint8, JSON with the model, fit, constants, tolerance, accuracy, format
     version and interpolation coordinates);
   * grid_mu is NaN exactly where grid_f_star <= 0;
@@ -155,21 +155,26 @@ def main(argv):
         **{k: () for k in SCALARS},
     }
     # The table's own interpolant and the self-description.
-    meta = json.loads(a["metadata"].tobytes()) if "metadata" in a else {}
-    c.check(a.get("metadata") is not None and a["metadata"].dtype == np.uint8 and a["metadata"].ndim == 1,
-            "metadata: not 1-D uint8")
-    for key in ["model", "fit", "beta", "nu", "eps_star", "tolerance", "max_rel_error",
-                "format_version", "interpolant"]:
+    texts = {}
+    for name in ["metadata", "interpolant"]:
+        c.check(a.get(name) is not None and a[name].dtype == np.uint8 and a[name].ndim == 1,
+                f"{name}: not 1-D uint8")
+        texts[name] = json.loads(a[name].tobytes()) if name in a else {}
+    meta, interp = texts["metadata"], texts["interpolant"]
+    # The table's record: the names of `kefric info --json` and Python's Table.info.
+    for key in ["psi", "theta", "f_star", "model", "fit", "beta", "nu", "eps_star", "tolerance", "accuracy",
+                "build", "precision", "format_version", "bytes", "crc32"]:
         c.check(key in meta, f"metadata: {key} missing")
-    axes = meta.get("interpolant", {}).get("axes", [])
+    c.check(set(meta.get("accuracy", {})) == {"max_rel", "p99_rel", "samples", "worst"}, "metadata: accuracy keys")
+    axes = interp.get("axes", [])
     c.check([x.get("coordinate") for x in axes] == ["ln(psi)", "sqrt(theta)", "ln(f_star)"]
-            and meta["interpolant"].get("quantity") == "ln(mu)", "metadata: interpolation coordinates")
+            and interp.get("quantity") == "ln(mu)", "interpolant: interpolation coordinates")
     if len(axes) == 3:
         shapes["spline_ln_mu"] = tuple(x["nodes"] + 2 for x in axes)
         for k, x in zip(["psi", "theta", "f_star"], axes):
             shapes[f"knots_{k}"] = (x["nodes"],)
-    c.check(set(a) - {"metadata"} == set(shapes),
-            f"array names {sorted(a)} != {sorted(shapes)} + metadata")
+    c.check(set(a) - {"metadata", "interpolant"} == set(shapes),
+            f"array names {sorted(a)} != {sorted(shapes)} + metadata, interpolant")
     for k, shape in shapes.items():
         if not c.check(k in a, f"{k} missing"):
             continue

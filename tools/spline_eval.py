@@ -24,13 +24,13 @@ TOLERANCE = 1e-12
 
 def spline_mu(z, psi, theta, f_star):
     """mu at the points (1-D arrays) from the export `z`: the few lines a user needs."""
-    meta = json.loads(z["metadata"].tobytes())
-    coef = z[meta["interpolant"]["coefficients"]]
+    interp = json.loads(z["interpolant"].tobytes())
+    coef = z[interp["coefficients"]]
     coords = [np.log(psi), np.sqrt(theta), np.log(f_star)]
     cells, weights = [], []
-    for x, axis in zip(coords, meta["interpolant"]["axes"]):
+    for x, axis in zip(coords, interp["axes"]):
         s = (x - axis["first"]) / axis["step"]
-        i = np.minimum(np.floor(s), axis["nodes"] - 2).astype(int)
+        i = np.clip(np.floor(s), 0, axis["nodes"] - 2).astype(int)
         f = s - i
         w = np.stack([(1 - f) ** 3, 3 * f**3 - 6 * f**2 + 4, -3 * f**3 + 3 * f**2 + 3 * f + 1, f**3]) / 6
         cells.append(i)
@@ -62,7 +62,7 @@ def main(argv):
             subprocess.run([kefric, "export", "--quiet", "--npz", npz], check=True, stdout=subprocess.DEVNULL)
         z = np.load(npz)
         meta = json.loads(z["metadata"].tobytes())
-        d = meta["domain"]
+        d = meta  # the table's record: ranges psi, theta, f_star at the top level
         rng = np.random.default_rng(15)
         psi = np.exp(rng.uniform(*np.log(d["psi"]), points))
         theta = rng.uniform(*np.sqrt(d["theta"]), points) ** 2

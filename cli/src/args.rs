@@ -1,8 +1,8 @@
 //! What the subcommands share: failures and their exit codes, number
 //! parsing, the model's flags, progress bars, tables and output paths.
 
-use ke_friction::num::Shortest;
 use ke_friction::paper::PAPER_F_STAR_MAX;
+use ke_friction::Shortest;
 use ke_friction::{Constants, Fit, Kind, Model, Params, Physical};
 use std::fmt::Display;
 

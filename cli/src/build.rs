@@ -5,7 +5,7 @@ use crate::args::{
 };
 use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::io::write_atomic;
-use ke_friction::num::Shortest;
+use ke_friction::Shortest;
 use std::path::PathBuf;
 use std::time::Instant;
 

@@ -1,7 +1,6 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
 use crate::args::{describe, number, Failure, ModelArgs, PaperRange};
-use ke_friction::num::{json_object, Json};
 use ke_friction::Contact;
 
 /// Evaluate the model by direct integration at given h* or F*.
@@ -42,7 +41,7 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
         if spacing == Spacing::Log && v <= 0.0 {
             Err(bad(format!(
                 "{} is out of range: must be > 0",
-                ke_friction::num::Shortest(v)
+                ke_friction::Shortest(v)
             )))
         } else {
             Ok(v)
@@ -99,26 +98,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let p = model.params();
     let mut paper = PaperRange::default();
     if args.json {
+        // One record a line: the parameters and the contact, flat.
+        #[derive(serde::Serialize)]
+        struct Row<'a> {
+            #[serde(flatten)]
+            params: &'a ke_friction::Params,
+            #[serde(flatten)]
+            contact: &'a Contact,
+        }
         for c in &contacts {
-            outln!(
-                "{}",
-                json_object(&[
-                    ("psi", Json::Num(p.psi)),
-                    ("theta", Json::Num(p.theta)),
-                    ("beta", Json::Num(p.constants.beta)),
-                    ("nu", Json::Num(p.constants.nu)),
-                    ("eps_star", Json::Num(p.constants.eps_star)),
-                    ("fit", Json::Str(p.constants.fit.name())),
-                    ("model", Json::Str(p.constants.kind.name())),
-                    ("h_star", Json::Num(c.h_star)),
-                    ("d_star", Json::Num(c.d_star)),
-                    ("p_star", Json::Num(c.p_star)),
-                    ("fs_star", Json::Num(c.fs_star)),
-                    ("q_star", Json::Num(c.q_star)),
-                    ("f_star", Json::Num(c.f_star)),
-                    ("mu", c.mu.map_or(Json::Null, Json::Num)),
-                ])
-            )?;
+            let row = Row { params: p, contact: c };
+            outln!("{}", serde_json::to_string(&row).expect("a contact serialises"))?;
             paper.note(c.f_star, c.h_star);
         }
     } else {

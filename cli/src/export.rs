@@ -2,14 +2,14 @@
 
 use crate::args::{check_writable, load_table, output_dir, Bar, Failure};
 use ke_friction::build::BuildError;
-use ke_friction::export::{arrays, metadata, write_npy_dir, write_npz};
+use ke_friction::export::{arrays, texts, write_npy_dir, write_npz};
 use std::path::PathBuf;
 use std::time::Instant;
 
 /// Export a table to NumPy: its nodes (`psi`, `theta`, `f_star`), `mu` and
 /// `h_star` there, the build's integration grid (`grid_*`, recomputed), the
 /// model constants (`beta`, `nu`, `eps_star`), the table's own interpolant
-/// (`spline_ln_mu`, `knots_*`) and `metadata` (UTF-8 JSON bytes:
+/// (`spline_ln_mu`, `knots_*`), `metadata` (the table's record, as `kefric info --json` prints it) and `interpolant` (how to evaluate it), both UTF-8 JSON bytes:
 /// `json.loads(z["metadata"].tobytes())`).
 #[derive(Debug, clap::Args)]
 #[command(group(clap::ArgGroup::new("output").required(true).args(["npz", "npy"])))]
@@ -65,11 +65,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
         _ => Failure::other(e.to_string()),
     })?;
     bar.done();
-    let meta = metadata(table);
+    let texts = texts(table);
     let written = if want_dir {
-        write_npy_dir(path, &named, &meta)
+        write_npy_dir(path, &named, &texts)
     } else {
-        write_npz(path, &named, &meta)
+        write_npz(path, &named, &texts)
     };
     written.map_err(|e| Failure::output(format_args!("{flag} {}", path.display()), &e))?;
     let shape = |name: &str| {

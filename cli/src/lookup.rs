@@ -2,8 +2,7 @@
 //! CSV rows streamed from stdin.
 
 use crate::args::{flag_of, load_table, parse_f64, Failure, PaperRange, SiArgs};
-use ke_friction::num::Shortest;
-use ke_friction::num::{json_object, Json};
+use ke_friction::Shortest;
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
 use std::io::{BufRead, Read, Write};
@@ -84,17 +83,15 @@ pub fn run(args: Args) -> Result<(), Failure> {
         Failure::input(format!("{flag}: {e}"))
     })?;
     if args.json {
-        outln!(
-            "{}",
-            json_object(&[
-                ("psi", Json::Num(psi)),
-                ("theta", Json::Num(theta)),
-                ("f_star", Json::Num(f_star)),
-                ("mu", Json::Num(r.mu)),
-                ("dmu_df_star", Json::Num(r.slope)),
-                ("h_star", Json::Num(r.h_star)),
-            ])
-        )?;
+        let row = serde_json::json!({
+            "psi": psi,
+            "theta": theta,
+            "f_star": f_star,
+            "mu": r.mu,
+            "dmu_df_star": r.slope,
+            "h_star": r.h_star,
+        });
+        outln!("{row}")?;
     } else {
         if args.si.any() {
             outln!("psi = {}, theta = {}", Shortest(psi), Shortest(theta))?;

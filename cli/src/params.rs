@@ -1,8 +1,7 @@
 //! `kefric params`: the dimensionless parameters of SI inputs.
 
 use crate::args::{Failure, SiArgs};
-use ke_friction::num::Shortest;
-use ke_friction::num::{json_object, Json};
+use ke_friction::Shortest;
 
 /// Convert SI quantities (moduli, Poisson's ratios, hardness, roughness,
 /// adhesion) to the model's ψ, θ, β, ν and ε*.
@@ -27,16 +26,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     let p = args.si.params()?;
     if args.json {
-        outln!(
-            "{}",
-            json_object(&[
-                ("psi", Json::Num(p.psi)),
-                ("theta", Json::Num(p.theta)),
-                ("beta", Json::Num(p.constants.beta)),
-                ("nu", Json::Num(p.constants.nu)),
-                ("eps_star", Json::Num(p.constants.eps_star)),
-            ])
-        )?;
+        outln!("{}", serde_json::to_string(&p).expect("parameters serialise"))?;
     } else {
         outln!("psi = {}", Shortest(p.psi))?;
         outln!("theta = {}", Shortest(p.theta))?;

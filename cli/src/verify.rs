@@ -2,7 +2,7 @@
 
 use crate::args::{load_table, print_worst, Bar, Failure};
 use ke_friction::build::verify::{check_samples, verify};
-use ke_friction::num::Shortest;
+use ke_friction::Shortest;
 use std::path::PathBuf;
 
 /// Check a table against direct integration; exit 1 if it misses its

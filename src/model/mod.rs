@@ -11,7 +11,7 @@ use surface::Surface;
 
 /// The state of the contact at one separation (all quantities dimensionless,
 /// MODEL.md §1).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Contact {
     /// Separation of the mean surface heights h*.
     pub h_star: f64,

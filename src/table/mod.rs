@@ -205,13 +205,19 @@ impl Domain {
     }
 }
 
-/// Stored precision of a table's coefficients.
+/// Stored precision of a table's coefficients (serialised by its name).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Precision {
     /// 4 bytes a coefficient; enough for tolerances down to ~1e-6.
     F32,
     /// 8 bytes a coefficient.
     F64,
+}
+
+impl serde::Serialize for Precision {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
 }
 
 impl Precision {
@@ -225,7 +231,7 @@ impl Precision {
 }
 
 /// The accuracy of μ measured against direct integration.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Accuracy {
     /// The maximum relative error of μ.
     pub max_rel: f64,
@@ -238,7 +244,7 @@ pub struct Accuracy {
 }
 
 /// The options a table was built with, as its file records them.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct BuildRecord {
     /// Nodes across the domain on the ψ, θ, F* axes (ghost nodes excluded).
     pub nodes: [usize; 3],
@@ -256,10 +262,18 @@ pub struct BuildRecord {
     pub generator: String,
 }
 
-/// Everything a table file says about itself.
-#[derive(Debug, Clone, PartialEq)]
+/// Everything a table file says about itself: the one record of a table
+/// that every front end shows under these names (`kefric info --json`,
+/// Python's `Table.info`, the `metadata` of a NumPy export). Serialised
+/// with the domain's fields at the top level:
+/// `psi`, `theta`, `f_star` (ranges), `beta`, `nu`, `eps_star`, `fit`,
+/// `model`, `tolerance`, `accuracy` {`max_rel`, `p99_rel`, `samples`,
+/// `worst`}, `build` {`nodes`, `ghosts`, `h_star`, `samples`, `seed`,
+/// `generator`}, `precision`, `format_version`, `bytes`, `crc32`.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct TableInfo {
     /// The arguments' ranges and the model constants.
+    #[serde(flatten)]
     pub domain: Domain,
     /// The maximum relative error of μ the table promises (its build
     /// failed unless the measured error, plus the fast kernel's rounding
@@ -274,6 +288,10 @@ pub struct TableInfo {
     pub precision: Precision,
     /// The file format's version.
     pub format_version: u32,
+    /// The file's size in bytes.
+    pub bytes: u64,
+    /// The file's CRC-32 (its last four bytes).
+    pub crc32: u32,
 }
 
 /// A loaded table: immutable, `Send + Sync`, shareable across threads.
@@ -324,7 +342,12 @@ impl Table {
 
     /// Decodes and checks a table file's contents.
     pub fn from_bytes(bytes: &[u8]) -> Result<Table, TableError> {
-        Table::from_payload(format::decode(bytes)?)
+        let mut table = Table::from_payload(format::decode(bytes)?)?;
+        // `decode` checked the length and the CRC in the last four bytes.
+        let crc = &bytes[bytes.len() - 4..];
+        table.info.bytes = bytes.len() as u64;
+        table.info.crc32 = u32::from_le_bytes([crc[0], crc[1], crc[2], crc[3]]);
+        Ok(table)
     }
 
     /// Reads and checks a table file (see [`Table::read_file`]).
@@ -426,6 +449,9 @@ impl Table {
                 Coefs::F64(_) => Precision::F64,
             },
             format_version: format::VERSION,
+            // Set by `from_bytes`, which has the file.
+            bytes: 0,
+            crc32: 0,
         };
         let avx2 = match &payload.ln_mu {
             Coefs::F32(c) if ln_mu_range.1 <= format::FAST_LN_MU_MAX => Fast::new(&layout, c),

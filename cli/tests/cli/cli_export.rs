@@ -11,7 +11,7 @@ fn s(p: &Path) -> &str {
     p.to_str().unwrap()
 }
 
-const NAMES: [&str; 21] = [
+const NAMES: [&str; 22] = [
     "beta",
     "eps_star",
     "f_star",
@@ -24,6 +24,7 @@ const NAMES: [&str; 21] = [
     "grid_q_star",
     "grid_theta",
     "h_star",
+    "interpolant",
     "knots_f_star",
     "knots_psi",
     "knots_theta",
@@ -63,14 +64,23 @@ fn export_npz_and_npy_hold_the_table_and_its_grid() {
     assert_eq!(meta["model"], "ke");
     assert_eq!(meta["fit"], "consistent");
     assert_eq!(meta["tolerance"].as_f64(), Some(table.info().tolerance));
-    assert_eq!(meta["max_rel_error"].as_f64(), Some(table.info().accuracy.max_rel));
+    assert_eq!(
+        meta["accuracy"]["max_rel"].as_f64(),
+        Some(table.info().accuracy.max_rel)
+    );
     assert_eq!(
         meta["format_version"].as_u64(),
         Some(table.info().format_version.into())
     );
-    assert_eq!(meta["interpolant"]["quantity"], "ln(mu)");
+    // The table's record under the same names as `kefric info --json`.
+    let o = kefric(&["info", "--json"]);
+    let info: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(meta, info);
+    let interpolant: Array1<u8> = z.by_name("interpolant").unwrap();
+    let interpolant: serde_json::Value = serde_json::from_slice(interpolant.as_slice().unwrap()).unwrap();
+    assert_eq!(interpolant["quantity"], "ln(mu)");
     let coords: Vec<&str> = (0..3)
-        .map(|k| meta["interpolant"]["axes"][k]["coordinate"].as_str().unwrap())
+        .map(|k| interpolant["axes"][k]["coordinate"].as_str().unwrap())
         .collect();
     assert_eq!(coords, ["ln(psi)", "sqrt(theta)", "ln(f_star)"]);
     let spline: Array3<f64> = z.by_name("spline_ln_mu").unwrap();

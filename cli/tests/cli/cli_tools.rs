@@ -169,21 +169,30 @@ fn info_shows_what_a_table_holds() {
     assert_eq!(v["model"], "ke");
     assert_eq!(v["fit"], "consistent");
     assert_eq!(v["bytes"].as_u64(), Some(Table::embedded_bytes().len() as u64));
-    assert_eq!(v["max_rel_error"].as_f64(), Some(info.accuracy.max_rel));
+    assert_eq!(v["accuracy"]["max_rel"].as_f64(), Some(info.accuracy.max_rel));
+    assert_eq!(v["accuracy"]["p99_rel"].as_f64(), Some(info.accuracy.p99_rel));
     assert_eq!(v["tolerance"].as_f64(), Some(info.tolerance));
     assert_eq!(v["psi"][0].as_f64(), Some(0.5));
     assert_eq!(v["psi"][1].as_f64(), Some(8.0));
-    assert_eq!(v["nodes"], serde_json::json!([33, 33, 33]));
+    assert_eq!(v["build"]["nodes"], serde_json::json!([33, 33, 33]));
     assert_eq!(v["precision"], "f32");
-    // The slope's error, measured now: positive, and far below 1.
-    let slope = v["slope_max_rel_error"].as_f64().unwrap();
-    assert!(slope > 0.0 && slope < 1e-2, "{slope}");
+    // Exactly the core's record.
+    assert_eq!(v, serde_json::to_value(info).unwrap());
     let bytes = Table::embedded_bytes();
     let stored = u32::from_le_bytes(bytes[bytes.len() - 4..].try_into().unwrap());
-    assert_eq!(v["crc32"], format!("{stored:08x}"));
+    assert_eq!(v["crc32"].as_u64(), Some(stored.into()));
     assert_eq!(stored, crc32fast::hash(&bytes[..bytes.len() - 4]));
     let o = kefric(&["info"]);
     let text = String::from_utf8_lossy(&o.stdout);
+    // The slope's error, measured now: positive, and far below 1.
+    let slope: f64 = text
+        .split("slope dmu/dF* max relative error ")
+        .nth(1)
+        .and_then(|t| t.split_whitespace().next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!(slope > 0.0 && slope < 1e-2, "{slope}");
+    assert!(text.contains(&format!("CRC-32 {stored:08x}")), "{text}");
     assert!(text.contains("model:      ke, fit = consistent"), "{text}");
     assert!(
         text.contains("domain:     psi [0.5, 8], theta [0, 0.01], F* [1e-5, 0.1]"),
