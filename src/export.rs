@@ -272,7 +272,7 @@ pub fn write_npz(path: &Path, arrays: &[Named], texts: &[(&str, String)]) -> io:
 }
 
 /// Writes each array to `DIR/NAME.npy`, and each JSON text to
-/// `DIR/NAME.npy` (`uint8`), all or nothing (see [`write_dir_atomic`]):
+/// `DIR/NAME.npy` (`uint8`), all or nothing (into a temporary directory beside it, moved in when all are written):
 /// after a failure (a full disk) no new file is in `dir`. `dir` is created
 /// if missing (its parent must exist).
 pub fn write_npy_dir(dir: &Path, arrays: &[Named], texts: &[(&str, String)]) -> io::Result<()> {

@@ -11,11 +11,12 @@
 //!   default table is compiled in.
 //! - [`Curve`]: μ(F*) for one surface pair (fixed ψ, θ) in a few
 //!   nanoseconds, from the model or from a table.
-//! - [`paper`]: the paper's statements, computed from the model.
+//! - `paper` (feature `paper`): the paper's statements, computed from the
+//!   model.
 //! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
 //!   the table builder and its verification, NumPy export, the figures.
-//!   Neither feature is on by default: a plain dependency is the light
-//!   runtime (the model and the lookups).
+//!   No feature is on by default: a plain dependency is the light runtime
+//!   (the model and the lookups).
 //!
 //! The model is specified, equation by equation, in `docs/MODEL.md`; doc
 //! comments cite its sections.
@@ -42,12 +43,13 @@ mod error;
 pub mod export;
 #[cfg(feature = "plot")]
 pub mod figures;
-pub mod io;
+mod io;
 mod model;
 mod num;
+#[cfg(feature = "paper")]
 pub mod paper;
 mod params;
-pub mod spline;
+mod spline;
 pub mod table;
 
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
@@ -58,4 +60,7 @@ pub use params::{
     Constants, Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
     EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
-pub use table::{Domain, LookupError, OnError, Table, TableError, TableInfo};
+pub use spline::{Axis, Scale};
+pub use table::{
+    Accuracy, BuildRecord, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo, FAST_KERNEL_MAX_REL,
+};

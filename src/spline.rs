@@ -17,8 +17,6 @@ pub enum Scale {
     /// Coordinate = √value; value ≥ 0. The function must be smooth in the
     /// value itself, so it is even in the coordinate about 0 (slope 0 there).
     Sqrt,
-    /// Coordinate = value.
-    Linear,
 }
 
 impl Scale {
@@ -27,7 +25,6 @@ impl Scale {
         match self {
             Scale::Log => 0,
             Scale::Sqrt => 1,
-            Scale::Linear => 2,
         }
     }
 
@@ -36,7 +33,6 @@ impl Scale {
         match code {
             0 => Some(Scale::Log),
             1 => Some(Scale::Sqrt),
-            2 => Some(Scale::Linear),
             _ => None,
         }
     }
@@ -47,7 +43,6 @@ impl Scale {
         match self {
             Scale::Log => value.ln(),
             Scale::Sqrt => value.sqrt(),
-            Scale::Linear => value,
         }
     }
 
@@ -56,7 +51,6 @@ impl Scale {
         match self {
             Scale::Log => c.exp(),
             Scale::Sqrt => c * c,
-            Scale::Linear => c,
         }
     }
 }
@@ -239,7 +233,7 @@ mod tests {
 
     #[test]
     fn scale_codes_round_trip_and_are_the_format_s() {
-        for (scale, code) in [(Scale::Log, 0), (Scale::Sqrt, 1), (Scale::Linear, 2)] {
+        for (scale, code) in [(Scale::Log, 0), (Scale::Sqrt, 1)] {
             assert_eq!(scale.code(), code);
             assert_eq!(Scale::from_code(code), Some(scale));
         }

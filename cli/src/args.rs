@@ -139,9 +139,7 @@ pub fn check_writable(flag: &str, path: &std::path::Path) -> Result<(), Failure>
             parent.display()
         )));
     }
-    ke_friction::io::output_target(path)
-        .map(|_| ())
-        .map_err(|e| Failure::input(format!("{flag}: {}", io_message(&e))))
+    ke_friction::build::check_output(path).map_err(|e| Failure::input(format!("{flag}: {}", io_message(&e))))
 }
 
 /// The output directory `path`, given by `flag`, created with its parents
@@ -227,7 +225,7 @@ pub fn short(x: f64) -> Shortest {
 }
 
 /// Prints where a table's measured error of μ is largest.
-pub fn print_worst(acc: &ke_friction::table::Accuracy) -> Result<(), Failure> {
+pub fn print_worst(acc: &ke_friction::Accuracy) -> Result<(), Failure> {
     outln!(
         "worst at psi = {}, theta = {}, F* = {}",
         short(acc.worst[0]),

@@ -4,7 +4,6 @@ use crate::args::{
     check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, ConstantsArgs, Failure,
 };
 use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
-use ke_friction::io::write_atomic;
 use ke_friction::Shortest;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -165,7 +164,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         _ => Failure::other(e),
     })?;
     bar.done();
-    write_atomic(&out, &built.bytes).map_err(|e| Failure::output(format_args!("--out {}", out.display()), &e))?;
+    built
+        .write(&out)
+        .map_err(|e| Failure::output(format_args!("--out {}", out.display()), &e))?;
     let secs = started.elapsed().as_secs_f64();
     let t = &built.table;
     let info = t.info();

@@ -33,9 +33,7 @@ pub struct Args {
     /// are complete.
     #[arg(long, conflicts_with_all = ["psi", "theta", "f_star"])]
     pub csv: bool,
-    /// Use the portable f64 kernel (the table's exact interpolant) instead
-    /// of the fast f32 one (which may differ by ~1e-7 relative).
-    #[arg(long)]
+    #[arg(long, help = exact_help())]
     pub exact: bool,
     #[command(flatten)]
     pub si: SiArgs,
@@ -139,6 +137,14 @@ fn point(args: &Args, table: &Table) -> Result<(f64, f64), Failure> {
         }
     }
     Ok((p.psi, p.theta))
+}
+
+/// `--exact`'s help, quoting the library's bound.
+fn exact_help() -> String {
+    format!(
+        "Use the portable f64 kernel (the table's exact interpolant) instead of the fast f32 one (which may differ by up to {} relative)",
+        ke_friction::FAST_KERNEL_MAX_REL
+    )
 }
 
 /// The longest CSV line `lookup --csv` reads (1 MiB), end of line included.

@@ -187,6 +187,22 @@ pub struct Built {
     pub table: Table,
 }
 
+impl Built {
+    /// Writes the table file to `path` atomically (a temporary file beside
+    /// it, synced, then renamed over it; see [`check_output`]).
+    pub fn write(&self, path: &std::path::Path) -> std::io::Result<()> {
+        crate::io::write_atomic(path, &self.bytes)
+    }
+}
+
+/// Whether `path` may be written as an output file (a table, an export, a
+/// figure): a new file, or an existing regular file, which is replaced
+/// whole; a symbolic link is followed (its target is replaced, the link
+/// stays); an existing device, pipe, socket or directory is refused.
+pub fn check_output(path: &std::path::Path) -> std::io::Result<()> {
+    crate::io::output_target(path).map(|_| ())
+}
+
 /// The model's parameters at (ψ, θ) with the options' constants.
 pub(crate) fn params_of(o: &BuildOptions, psi: f64, theta: f64) -> Params {
     o.constants.unchecked_at(psi, theta)

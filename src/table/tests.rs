@@ -265,7 +265,7 @@ fn inconsistent_payloads() -> Vec<(&'static str, Payload)> {
     add("theta axis made logarithmic", &|p| p.axes[1].scale = Scale::Log.code());
     add(
         "theta axis made linear (valid on its own, but not the map the lookup applies)",
-        &|p| p.axes[1].scale = Scale::Linear.code(),
+        &|p| p.axes[1].scale = 2,
     );
     add("unknown scale code on psi", &|p| p.axes[0].scale = 3);
     add("unknown scale code on F*", &|p| p.axes[2].scale = 255);

@@ -2,7 +2,7 @@
 //! batch and threads, domain errors, and that it is exactly what the
 //! builder makes.
 use ke_friction::build::{build, BuildOptions};
-use ke_friction::table::Precision;
+use ke_friction::Precision;
 use ke_friction::{LookupError, Model, Params, Table};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
