@@ -101,6 +101,7 @@ impl crate::TableError {
     pub fn kind(&self) -> ErrorKind {
         match self {
             crate::TableError::Io { .. } => ErrorKind::Io,
+            crate::TableError::File { error, .. } => error.kind(),
             _ => ErrorKind::Table,
         }
     }
@@ -153,6 +154,20 @@ impl crate::figures::FigureError {
             Lookup(e) => e.kind(),
             Direct(e) => e.kind(),
             Draw { .. } => ErrorKind::Io,
+        }
+    }
+}
+
+#[cfg(feature = "paper")]
+impl crate::paper::PaperError {
+    /// The parameters' or the model's kind; a statement that cannot be
+    /// computed from fixed inputs is `Internal`.
+    pub fn kind(&self) -> ErrorKind {
+        use crate::paper::PaperError::*;
+        match self {
+            Params(e) => e.kind(),
+            Eval(e) => e.kind(),
+            _ => ErrorKind::Internal,
         }
     }
 }

@@ -3,7 +3,7 @@
 
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Constants, Fit, Kind, Model, Params, Physical};
+use ke_friction::{Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -28,6 +28,21 @@ impl Failure {
         Failure {
             message: message.to_string(),
             code: 1,
+        }
+    }
+
+    /// A library error, by its [`ErrorKind`]: the CLI's one mapping of
+    /// kinds to exit statuses. Argument, domain, no μ, a damaged table, an
+    /// input that cannot be read: 2; a missed tolerance: 1; a bug: 70
+    /// (EX_SOFTWARE), saying so.
+    pub fn of(context: impl Display, kind: ErrorKind, e: impl Display) -> Failure {
+        match kind {
+            ErrorKind::Tolerance => Failure::other(format!("{context}: {e}")),
+            ErrorKind::Internal => Failure {
+                message: format!("{context}: {e} (this is a bug: please report it with the command line)"),
+                code: 70,
+            },
+            _ => Failure::input(format!("{context}: {e}")),
         }
     }
 
@@ -215,7 +230,7 @@ pub fn load_table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'st
         None => Ok(Cow::Borrowed(ke_friction::Table::embedded())),
         Some(path) => ke_friction::Table::load(path)
             .map(Cow::Owned)
-            .map_err(|e| Failure::input(format!("--table {}: {e}", path.display()))),
+            .map_err(|e| Failure::of("--table", e.kind(), e)),
     }
 }
 

@@ -160,6 +160,6 @@ fn failure(e: FigureError) -> Failure {
         FigureError::Lookup(LookupError::OutOfDomain { name, .. }) => Failure::input(format!("{}: {e}", flag_of(name))),
         FigureError::TableMismatch { .. } => Failure::input(format!("--table: {e}")),
         FigureError::Empty(_) => Failure::input(e),
-        _ => Failure::other(e),
+        _ => Failure::of("plot", e.kind(), e),
     }
 }

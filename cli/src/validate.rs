@@ -12,7 +12,7 @@ pub struct Args {}
 
 /// Runs `kefric validate`.
 pub fn run(_args: Args) -> Result<(), Failure> {
-    let rows = statements().map_err(|e| Failure::other(e.to_string()))?;
+    let rows = statements().map_err(|e| Failure::of("validate", e.kind(), e))?;
     out!("{}", markdown(&rows))?;
     Ok(())
 }

@@ -30,7 +30,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let info = table.info();
     let bar = Bar::new(args.quiet);
     let checked = verify(&table, info.tolerance, args.samples, args.seed, true, &bar)
-        .map_err(|e| Failure::other(e.to_string()))?;
+        .map_err(|e| Failure::of("verify", e.kind(), e))?;
     bar.done();
     let (recorded, acc) = (&info.accuracy, &checked.accuracy);
     outln!(

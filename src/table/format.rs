@@ -129,6 +129,17 @@ pub enum TableError {
         /// [`FILE_MAX`].
         max: u64,
     },
+    /// A table file that was read but is refused: the path and why (any of
+    /// the other variants but `Io`). [`Table::load`](crate::Table::load)
+    /// and [`Table::read_file`](crate::Table::read_file) name the file
+    /// this way, once.
+    #[error("{path}: {error}")]
+    File {
+        /// The path.
+        path: String,
+        /// Why it is refused.
+        error: Box<TableError>,
+    },
     /// The file could not be read.
     #[error("cannot read table {path}: {message}")]
     Io {
@@ -137,6 +148,28 @@ pub enum TableError {
         /// The system's message.
         message: String,
     },
+}
+
+impl TableError {
+    /// This error as the error of the file at `path` (once: an error that
+    /// names its file already is returned as it is).
+    pub(crate) fn in_file(self, path: &std::path::Path) -> TableError {
+        match self {
+            e @ (TableError::Io { .. } | TableError::File { .. }) => e,
+            e => TableError::File {
+                path: path.display().to_string(),
+                error: Box::new(e),
+            },
+        }
+    }
+
+    /// The error itself, without the file it came from.
+    pub fn cause(&self) -> &TableError {
+        match self {
+            TableError::File { error, .. } => error.cause(),
+            e => e,
+        }
+    }
 }
 
 /// One axis of the lookup grid, as stored.

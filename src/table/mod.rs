@@ -358,7 +358,8 @@ impl Table {
 
     /// Reads and checks a table file (see [`Table::read_file`]).
     pub fn load(path: impl AsRef<std::path::Path>) -> Result<Table, TableError> {
-        Table::from_bytes(&Table::read_file(path)?)
+        let path = path.as_ref();
+        Table::from_bytes(&Table::read_file(path)?).map_err(|e| e.in_file(path))
     }
 
     /// The bytes of a table file, read with bounds: a file that does not
@@ -374,7 +375,7 @@ impl Table {
             message: e.to_string(),
         };
         let mut file = std::fs::File::open(path).map_err(io)?;
-        format::read(&mut file, io)
+        format::read(&mut file, io).map_err(|e| e.in_file(path))
     }
 
     /// Builds the lookup structure from a payload, checking every value.

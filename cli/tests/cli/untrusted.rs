@@ -202,3 +202,17 @@ fn a_ghost_node_without_mu_is_named_as_the_cause() {
     );
     assert!(tmp.names("").is_empty());
 }
+
+#[test]
+fn a_table_error_names_the_file_once() {
+    let tmp = TempDir::new("once");
+    let missing = tmp.arg("missing.kft");
+    std::fs::write(tmp.join("bad.kft"), b"KEFRICTB\x01\x00\x00\x00junk").unwrap();
+    for path in [missing, tmp.arg("bad.kft")] {
+        let o = kefric(&[
+            "lookup", "--table", &path, "--psi", "1", "--theta", "0", "--f-star", "0.01",
+        ]);
+        assert_bad_input(&o, "--table");
+        assert_eq!(stderr(&o).matches(path.as_str()).count(), 1, "{}", stderr(&o));
+    }
+}
