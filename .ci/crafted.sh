@@ -9,13 +9,8 @@ target=${CARGO_TARGET_DIR:-target}
 out="$target/ci-crafted"
 rm -rf "$out" && mkdir -p "$out"
 
-if ! command -v valgrind > /dev/null; then
-  echo "installing valgrind"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get install -y -q valgrind > "$out/apt.log" 2>&1 \
-    || { apt-get update -q >> "$out/apt.log" 2>&1 && apt-get install -y -q valgrind >> "$out/apt.log" 2>&1; } \
-    || { tail -20 "$out/apt.log"; exit 1; }
-fi
+source .ci/lib.sh
+need valgrind valgrind "$out/apt.log"
 
 cargo build --release --quiet -p kefric -p ke-friction-ffi
 cargo build --release --quiet -p ke-friction --example crafted_tables

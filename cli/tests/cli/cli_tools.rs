@@ -203,7 +203,7 @@ fn info_shows_what_a_table_holds() {
 }
 
 /// Steel on steel (the README's worked example).
-const SI: [&str; 20] = [
+pub(crate) const SI: [&str; 20] = [
     "--e1",
     "200e9",
     "--nu1",

@@ -18,34 +18,13 @@ fn to_full(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn output_that_cannot_be_written_is_one_error_line_and_exit_1() {
+    let params = [&["params"][..], &crate::cli_tools::SI[..]].concat();
     let cases: &[&[&str]] = &[
         &["info"],
         &["info", "--json"],
         &["eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.01"],
         &["lookup", "--psi", "1", "--theta", "0.001", "--f-star", "0.01"],
-        &[
-            "params",
-            "--e1",
-            "200e9",
-            "--nu1",
-            "0.3",
-            "--e2",
-            "200e9",
-            "--nu2",
-            "0.3",
-            "--hardness",
-            "2e9",
-            "--sigma",
-            "1e-7",
-            "--radius",
-            "1e-5",
-            "--density",
-            "4e10",
-            "--delta-gamma",
-            "0.3",
-            "--epsilon",
-            "4e-10",
-        ],
+        &params,
         &["validate"],
         &["--help"],
     ];
@@ -133,20 +112,9 @@ fn special_files_are_refused_as_outputs_and_symlinks_followed() {
     assert_eq!(tmp.names(""), ["link.npz", "real.npz"], "no temporary file left");
     let fifo = tmp.join("fifo.kft");
     assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
-    let o = kefric(&[
-        "build",
-        "--nodes",
-        "9,9,9",
-        "--h-star",
-        "0:4:21",
-        "--samples",
-        "200",
-        "--tolerance",
-        "1",
-        "--quiet",
-        "--out",
-        fifo.to_str().unwrap(),
-    ]);
+    let mut args = crate::support::SMALL_BUILD.to_vec();
+    args.extend(["--out", fifo.to_str().unwrap()]);
+    let o = kefric(&args);
     assert_bad_input(&o, "--out");
 }
 
