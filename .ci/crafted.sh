@@ -36,7 +36,7 @@ assert mu > 0 and abs(mu / expected - 1) <= 2e-6 * (1 + abs(math.log(expected)))
 PY
   else
     [ $rc -eq 2 ] || { echo "$name ($file): kefric lookup exit $rc (must be 2)"; cat "$out/stderr"; exit 1; }
-    grep -q -- "--table .*$field" "$out/stderr" || { echo "$name ($file): error does not name $field"; cat "$out/stderr"; exit 1; }
+    grep -q -- "--table.*$field" "$out/stderr" || { echo "$name ($file): error does not name $field"; cat "$out/stderr"; exit 1; }
   fi
   # info measures the slope at 4000 points by direct integration: too
   # slow under valgrind; it must exit as lookup did, without a panic.
