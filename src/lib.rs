@@ -43,6 +43,7 @@ mod error;
 pub mod export;
 #[cfg(feature = "plot")]
 pub mod figures;
+#[cfg(feature = "builder")]
 mod io;
 mod model;
 mod num;

@@ -107,6 +107,7 @@ pub fn weight_slopes(f: f64) -> [f64; 4] {
 }
 
 /// End condition of one axis for [`fit_line`].
+#[cfg(feature = "builder")]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Start {
     /// Estimate the slope at node 0 from the data.
@@ -118,6 +119,7 @@ pub enum Start {
 /// Spline coefficients (`y.len() + 2` of them) interpolating `y` at the
 /// nodes of a uniform axis, clamped to slopes estimated to fifth order (or
 /// zero at the start, for [`Start::Even`]).
+#[cfg(feature = "builder")]
 pub fn fit_line(y: &[f64], start: Start, out: &mut [f64]) {
     let n = y.len();
     debug_assert!(n >= 5 && out.len() == n + 2);
@@ -153,6 +155,7 @@ pub fn fit_line(y: &[f64], start: Start, out: &mut [f64]) {
 
 /// Fits a 3-D tensor spline to node values `y` of shape `dims` (last index
 /// fastest); returns coefficients of shape `dims + 2` (last index fastest).
+#[cfg(feature = "builder")]
 pub fn fit_3d(y: &[f64], dims: [usize; 3], starts: [Start; 3]) -> Vec<f64> {
     debug_assert_eq!(y.len(), dims.iter().product::<usize>());
     // The tensor spline is separable: fit every line along axis 2, then
@@ -166,6 +169,7 @@ pub fn fit_3d(y: &[f64], dims: [usize; 3], starts: [Start; 3]) -> Vec<f64> {
 
 /// Fits every line of `data` (shape `dims`, last index fastest) along
 /// `axis`; returns the coefficients and their shape (`dims[axis] + 2`).
+#[cfg(feature = "builder")]
 fn fit_axis(data: &[f64], dims: [usize; 3], axis: usize, start: Start) -> (Vec<f64>, [usize; 3]) {
     let mut out_dims = dims;
     out_dims[axis] += 2;
