@@ -9,19 +9,18 @@ lib="$target/release"
 out="$target/ci-ffi"
 rm -rf "$out" && mkdir -p "$out"
 
-if ! command -v gfortran > /dev/null; then
-  echo "installing gfortran"
-  export DEBIAN_FRONTEND=noninteractive
-  apt-get install -y -q gfortran > "$out/apt.log" 2>&1 \
-    || { apt-get update -q >> "$out/apt.log" 2>&1 && apt-get install -y -q gfortran >> "$out/apt.log" 2>&1; } \
-    || { tail -20 "$out/apt.log"; exit 1; }
-fi
+source .ci/lib.sh
+need gfortran gfortran "$out/apt.log"
 
 cargo build --release --quiet -p ke-friction-ffi -p kefric
 
 # C99, warnings as errors, against the static library.
 gcc -std=c99 -D_POSIX_C_SOURCE=199309L -O2 -Wall -Wextra -Werror -I ffi/include \
   ffi/examples/contacts.c "$lib/libkefriction.a" -lpthread -ldl -lm -o "$out/contacts"
+# The batches' NaN mode and the stable kef_last_error pointer, from C.
+gcc -std=c99 -O2 -Wall -Wextra -Werror -I ffi/include \
+  ffi/tests/batch_nan.c "$lib/libkefriction.a" -lpthread -ldl -lm -o "$out/batch_nan"
+"$out/batch_nan"
 # The header from C++.
 printf '#include <kefriction.h>\nint main() { double mu; return kef_table_mu(kef_table_default(), 1.0, 0.001, 0.01, &mu); }\n' > "$out/use.cpp"
 g++ -std=c++11 -Wall -Wextra -Werror -I ffi/include "$out/use.cpp" -L "$lib" -lkefriction -Wl,-rpath,"$PWD/$lib" -o "$out/use_cpp"

@@ -5,13 +5,16 @@
 !       -L target/release -lkefriction -Wl,-rpath,target/release -o contacts_f
 program contacts
   use ke_friction
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   implicit none
   integer, parameter :: n = 100000, rounds = 21
   real(c_double), parameter :: psi = 1.0d0, theta = 0.003d0
   real(c_double) :: loads(4) = [1d-4, 1d-3, 1d-2, 5d-2]
   real(c_double), allocatable :: f(:), mu(:)
   real(c_double) :: m, slope, times(rounds), t
-  type(c_ptr) :: curve
+  type(c_ptr) :: curve, constants
+  real(c_double) :: few(3) = [1d-3, 0.5d0, 1d-2], out(3)
+  integer(c_size_t) :: n_nan
   integer :: i, r
   integer(8) :: t0, t1, rate
 
@@ -29,6 +32,17 @@ program contacts
   end do
   if (kef_curve_mu(curve, 0.5d0, m) /= KEF_ERR_DOMAIN) stop 2
   print '(a)', 'expected error: ' // kef_error_message()
+  ! A batch that does not stop: NaN at the load outside the range.
+  if (kef_curve_mu_batch_nan(curve, 3_c_size_t, few, out, n_nan) /= KEF_OK) stop 4
+  if (n_nan /= 1 .or. .not. ieee_is_nan(out(2)) .or. out(1) <= 0 .or. out(3) <= 0) stop 4
+  ! Model constants: the printed fit, and a beta out of range refused.
+  constants = kef_constants_new()
+  if (kef_constants_set_fit(constants, kef_c_string("as-printed")) /= KEF_OK) stop 5
+  if (kef_constants_set_beta(constants, 0.01d0) /= KEF_ERR_DOMAIN) stop 5
+  print '(a)', 'expected error: ' // kef_error_message()
+  if (kef_model_mu_with(constants, psi, theta, 1d-2, m) /= KEF_OK) stop 5
+  print '(a, f10.7)', 'mu with the printed fit at f_star = 0.01: ', m
+  call kef_constants_free(constants)
 
   allocate(f(n), mu(n))
   do i = 1, n

@@ -4,15 +4,24 @@
 ! Link with -lkefriction (or libkefriction.a -lpthread -ldl -lm).
 !
 ! Every function returns KEF_OK or a KEF_ERR_* code (or c_null_ptr for a
-! handle); kef_error_message() returns this thread's last message.
+! handle); kef_error_message() returns this thread's last message. The
+! *_batch_nan functions write NaN at bad elements and count them in n_nan.
+! Model constants: a handle from kef_constants_new (c_null_ptr where a
+! function takes one: the defaults); names via kef_c_string("as-printed").
 module ke_friction
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_char, c_null_char, c_associated, c_f_pointer
   implicit none
   private
   public :: kef_table_default, kef_table_load, kef_table_free, kef_table_mu, kef_table_mu_with_slope, &
-            kef_table_mu_batch, kef_curve_from_table, kef_curve_from_model, kef_curve_mu, &
-            kef_curve_mu_with_slope, kef_curve_mu_batch, kef_curve_range, kef_curve_free, kef_model_mu, &
-            kef_last_error, kef_error_message, kef_c_string
+            kef_table_mu_batch, kef_table_mu_batch_nan, kef_table_mu_with_slope_batch, &
+            kef_table_mu_with_slope_batch_nan, kef_curve_from_table, kef_curve_from_model, &
+            kef_curve_from_model_with, kef_curve_mu, kef_curve_mu_with_slope, kef_curve_mu_batch, &
+            kef_curve_mu_batch_nan, kef_curve_mu_with_slope_batch, kef_curve_mu_with_slope_batch_nan, &
+            kef_curve_range, kef_curve_free, kef_model_mu, kef_model_mu_with, &
+            kef_constants_new, kef_constants_free, kef_constants_set_beta, kef_constants_set_nu, &
+            kef_constants_set_eps_star, kef_constants_set_fit, kef_constants_set_model, &
+            kef_constants_beta, kef_constants_nu, kef_constants_eps_star, kef_constants_fit, &
+            kef_constants_model, kef_last_error, kef_error_message, kef_c_string
   public :: c_int, c_double, c_size_t, c_ptr, c_associated
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -21,6 +30,7 @@ module ke_friction
   integer(c_int), parameter, public :: KEF_ERR_IO = 3
   integer(c_int), parameter, public :: KEF_ERR_TABLE = 4
   integer(c_int), parameter, public :: KEF_ERR_INTERNAL = 5
+  integer(c_int), parameter, public :: KEF_ERR_NO_MU = 6
 
   interface
     function kef_last_error() bind(c, name="kef_last_error")
@@ -71,6 +81,37 @@ module ke_friction
       integer(c_int) :: kef_table_mu_batch
     end function
 
+    function kef_table_mu_batch_nan(table, n, psi, theta, f_star, mu, n_nan) bind(c, name="kef_table_mu_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_table_mu_batch_nan
+    end function
+
+    function kef_table_mu_with_slope_batch(table, n, psi, theta, f_star, mu, dmu_df_star) &
+        bind(c, name="kef_table_mu_with_slope_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_df_star
+      integer(c_int) :: kef_table_mu_with_slope_batch
+    end function
+
+    function kef_table_mu_with_slope_batch_nan(table, n, psi, theta, f_star, mu, dmu_df_star, n_nan) &
+        bind(c, name="kef_table_mu_with_slope_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_df_star
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_table_mu_with_slope_batch_nan
+    end function
+
     function kef_curve_from_table(table, psi, theta) bind(c, name="kef_curve_from_table")
       import :: c_ptr, c_double
       type(c_ptr), value :: table
@@ -83,6 +124,15 @@ module ke_friction
       import :: c_ptr, c_double
       real(c_double), value :: psi, theta, beta, nu, eps_star, f_star_min, f_star_max
       type(c_ptr) :: kef_curve_from_model
+    end function
+
+    ! constants: from kef_constants_new, or c_null_ptr for the defaults.
+    function kef_curve_from_model_with(constants, psi, theta, f_star_min, f_star_max) &
+        bind(c, name="kef_curve_from_model_with")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: constants
+      real(c_double), value :: psi, theta, f_star_min, f_star_max
+      type(c_ptr) :: kef_curve_from_model_with
     end function
 
     function kef_curve_mu(curve, f_star, mu) bind(c, name="kef_curve_mu")
@@ -110,6 +160,37 @@ module ke_friction
       integer(c_int) :: kef_curve_mu_batch
     end function
 
+    function kef_curve_mu_batch_nan(curve, n, f_star, mu, n_nan) bind(c, name="kef_curve_mu_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_curve_mu_batch_nan
+    end function
+
+    function kef_curve_mu_with_slope_batch(curve, n, f_star, mu, dmu_df_star) &
+        bind(c, name="kef_curve_mu_with_slope_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: f_star
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_df_star
+      integer(c_int) :: kef_curve_mu_with_slope_batch
+    end function
+
+    function kef_curve_mu_with_slope_batch_nan(curve, n, f_star, mu, dmu_df_star, n_nan) &
+        bind(c, name="kef_curve_mu_with_slope_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: curve
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: f_star
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_df_star
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_curve_mu_with_slope_batch_nan
+    end function
+
     function kef_curve_range(curve, f_star_min, f_star_max) bind(c, name="kef_curve_range")
       import :: c_ptr, c_double, c_int
       type(c_ptr), value :: curve
@@ -127,6 +208,93 @@ module ke_friction
       real(c_double), value :: psi, theta, beta, nu, eps_star, f_star
       real(c_double), intent(out) :: mu
       integer(c_int) :: kef_model_mu
+    end function
+
+    function kef_model_mu_with(constants, psi, theta, f_star, mu) bind(c, name="kef_model_mu_with")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_model_mu_with
+    end function
+
+    function kef_constants_new() bind(c, name="kef_constants_new")
+      import :: c_ptr
+      type(c_ptr) :: kef_constants_new
+    end function
+
+    subroutine kef_constants_free(constants) bind(c, name="kef_constants_free")
+      import :: c_ptr
+      type(c_ptr), value :: constants
+    end subroutine
+
+    function kef_constants_set_beta(constants, beta) bind(c, name="kef_constants_set_beta")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      real(c_double), value :: beta
+      integer(c_int) :: kef_constants_set_beta
+    end function
+
+    function kef_constants_set_nu(constants, nu) bind(c, name="kef_constants_set_nu")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      real(c_double), value :: nu
+      integer(c_int) :: kef_constants_set_nu
+    end function
+
+    function kef_constants_set_eps_star(constants, eps_star) bind(c, name="kef_constants_set_eps_star")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      real(c_double), value :: eps_star
+      integer(c_int) :: kef_constants_set_eps_star
+    end function
+
+    ! name: a NUL-terminated string, e.g. kef_c_string("as-printed").
+    function kef_constants_set_fit(constants, name) bind(c, name="kef_constants_set_fit")
+      import :: c_ptr, c_char, c_int
+      type(c_ptr), value :: constants
+      character(kind=c_char), dimension(*), intent(in) :: name
+      integer(c_int) :: kef_constants_set_fit
+    end function
+
+    ! name: a NUL-terminated string, e.g. kef_c_string("ceb").
+    function kef_constants_set_model(constants, name) bind(c, name="kef_constants_set_model")
+      import :: c_ptr, c_char, c_int
+      type(c_ptr), value :: constants
+      character(kind=c_char), dimension(*), intent(in) :: name
+      integer(c_int) :: kef_constants_set_model
+    end function
+
+    function kef_constants_beta(constants) bind(c, name="kef_constants_beta")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: constants
+      real(c_double) :: kef_constants_beta
+    end function
+
+    function kef_constants_nu(constants) bind(c, name="kef_constants_nu")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: constants
+      real(c_double) :: kef_constants_nu
+    end function
+
+    function kef_constants_eps_star(constants) bind(c, name="kef_constants_eps_star")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: constants
+      real(c_double) :: kef_constants_eps_star
+    end function
+
+    ! A static C string (not to free).
+    function kef_constants_fit(constants) bind(c, name="kef_constants_fit")
+      import :: c_ptr
+      type(c_ptr), value :: constants
+      type(c_ptr) :: kef_constants_fit
+    end function
+
+    ! A static C string (not to free).
+    function kef_constants_model(constants) bind(c, name="kef_constants_model")
+      import :: c_ptr
+      type(c_ptr), value :: constants
+      type(c_ptr) :: kef_constants_model
     end function
 
     function c_strlen(s) bind(c, name="strlen")

@@ -6,15 +6,24 @@
  * -lpthread -ldl -lm (see the README, "From C, C++ and Fortran").
  *
  * Every function returns KEF_OK (0) or a KEF_ERR_* code (or NULL for a
- * handle); on failure kef_last_error() gives this thread's message and the
- * outputs are left untouched (a batch writes the elements before the first
- * bad one, and nothing from it on). A NULL pointer where one is required is
- * KEF_ERR_ARGUMENT, never a crash. All quantities are dimensionless:
- * psi (plasticity index), theta = dgamma/(sigma H), f_star = F/(A_n H),
- * mu (static friction coefficient).
+ * handle); on failure kef_last_error() gives this thread's message (a
+ * pointer that stays valid until the thread exits) and the outputs are
+ * left untouched (a batch writes the elements before the first bad one,
+ * and nothing from it on; its _nan form writes NaN there and goes on).
+ * The codes follow the library's classification of its errors: a value
+ * out of its range is KEF_ERR_DOMAIN, NaN or +-inf KEF_ERR_ARGUMENT, no mu
+ * where the model has none KEF_ERR_NO_MU. A NULL pointer where one is
+ * required is KEF_ERR_ARGUMENT, never a crash. All quantities are
+ * dimensionless: psi (plasticity index), theta = dgamma/(sigma H),
+ * f_star = F/(A_n H), mu (static friction coefficient).
+ *
+ * Model constants (beta, nu, eps_star, fit, model) are a kef_constants
+ * handle: kef_constants_new, the kef_constants_set_* setters, and the
+ * *_with functions (NULL: the defaults).
  *
  * Threads: tables and curves are immutable after creation; any number of
- * threads may use one at once. Free one only when no thread uses it.
+ * threads may use one at once. Free one only when no thread uses it. A
+ * kef_constants may be read by many threads once no thread sets it.
  */
 
 #ifndef KEFRICTION_H
@@ -27,12 +36,13 @@
 // Success.
 #define KEF_OK 0
 
-// A lookup argument outside the table's or curve's range, or NaN; or no
-// μ where the model has none (F* <= 0, or no solution).
+// A finite argument outside its range: a lookup outside the table's or
+// curve's range, a model parameter or constant out of range, a load the
+// model cannot reach; or a table or curve that missed its accuracy.
 #define KEF_ERR_DOMAIN 1
 
-// A NULL pointer, or an invalid model parameter (e.g. psi <= 0,
-// f_star_min >= f_star_max).
+// A NULL pointer, an argument that is not a usable number (NaN, ±inf),
+// an unknown name, or an invalid F* range for a curve.
 #define KEF_ERR_ARGUMENT 2
 
 // A table file that cannot be read.
@@ -41,8 +51,20 @@
 // A damaged or incompatible table file.
 #define KEF_ERR_TABLE 4
 
-// A bug in ke-friction (a caught panic); please report the message.
+// A bug in ke-friction (a caught panic, or a root search that did not
+// converge); please report the message.
 #define KEF_ERR_INTERNAL 5
+
+// No μ where the model has none: F* <= 0 at that separation (adhesion
+// outweighs the contact load), or no positive μ.
+#define KEF_ERR_NO_MU 6
+
+// The model constants (opaque): β, ν, ε*, the friction fit and the model,
+// always valid (each setter checks its value). New constants get new
+// setters, so the handle grows without breaking the ABI. A function
+// taking `const kef_constants *` reads NULL as the defaults. Not
+// synchronised: set it on one thread, then share it read-only.
+typedef struct kef_constants kef_constants;
 
 // μ(F*) of one surface pair, fixed ψ and θ (opaque). Immutable; may be
 // shared across threads.
@@ -55,8 +77,12 @@ typedef struct kef_table kef_table;
 extern "C" {
 #endif // __cplusplus
 
-// The message of this thread's last failure ("" if none): valid until the
-// next failing call on this thread. Never NULL; do not free it.
+// The message of this thread's last failure ("" if none). Never NULL; do
+// not free it. The pointer stays valid until the thread exits: it points
+// to one buffer per thread that each later failure on the thread
+// overwrites in place (never freed or moved), so reading it after a call
+// that failed, even one made after the pointer was taken, is safe and
+// gives that call's message. A message longer than 1023 bytes is cut.
 const char *kef_last_error(void);
 
 // The table compiled into the library (ψ in [0.5, 8], θ in [0, 0.01],
@@ -82,8 +108,8 @@ kef_table *kef_table_load(const char *path);
 void kef_table_free(kef_table *table);
 
 // μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),
-// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is NaN or outside the
-// table's range; KEF_ERR_ARGUMENT for a NULL pointer.
+// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is outside the table's
+// range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL pointer.
 //
 // # Safety
 // `table` is NULL or a live table; `mu` is NULL or writable.
@@ -101,10 +127,11 @@ int kef_table_mu_with_slope(const kef_table *table,
                             double *mu,
                             double *dmu_df_star);
 
-// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`, vectorised (AVX2
-// where the CPU has it). On a point outside the table, KEF_ERR_DOMAIN
-// with its index in the message; `mu` is written before that index and
-// not from it on. Pointers may be NULL only when n is 0; `mu` must not
+// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`,
+// vectorised (AVX2 where the CPU has it). At the first point `i` outside
+// the table (or NaN), the error of kef_table_mu for it with "batch element
+// i: " in front; `mu[0..i)` is written, `mu[i..n)` untouched. Pointers may
+// be NULL only when n is 0 (KEF_ERR_ARGUMENT otherwise); `mu` must not
 // overlap the inputs.
 //
 // # Safety
@@ -117,9 +144,53 @@ int kef_table_mu_batch(const kef_table *table,
                        const double *f_star,
                        double *mu);
 
+// kef_table_mu_batch that does not stop: NaN in `mu[i]` at each point
+// outside the table (or NaN), valid values elsewhere, the number of NaN
+// elements in `*n_nan`, and KEF_OK. `n_nan` is required (KEF_ERR_ARGUMENT
+// if NULL).
+//
+// # Safety
+// As kef_table_mu_batch; `n_nan` NULL or writable.
+int kef_table_mu_batch_nan(const kef_table *table,
+                           size_t n,
+                           const double *psi,
+                           const double *theta,
+                           const double *f_star,
+                           double *mu,
+                           size_t *n_nan);
+
+// μ and ∂μ/∂F* at `n` points into `mu[i]` and `dmu_df_star[i]`; errors,
+// NULL pointers and a bad point as kef_table_mu_batch (both outputs
+// written before it, neither from it on). No output may overlap another
+// argument.
+//
+// # Safety
+// As kef_table_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
+int kef_table_mu_with_slope_batch(const kef_table *table,
+                                  size_t n,
+                                  const double *psi,
+                                  const double *theta,
+                                  const double *f_star,
+                                  double *mu,
+                                  double *dmu_df_star);
+
+// kef_table_mu_with_slope_batch that does not stop: NaN in both outputs
+// at each point outside the table, the count in `*n_nan`, KEF_OK.
+//
+// # Safety
+// As kef_table_mu_with_slope_batch; `n_nan` NULL or writable.
+int kef_table_mu_with_slope_batch_nan(const kef_table *table,
+                                      size_t n,
+                                      const double *psi,
+                                      const double *theta,
+                                      const double *f_star,
+                                      double *mu,
+                                      double *dmu_df_star,
+                                      size_t *n_nan);
+
 // A curve μ(F*) for (ψ, θ) from `table`, over the table's F* range (to
-// free with kef_curve_free), or NULL: KEF_ERR_ARGUMENT for a NULL table,
-// KEF_ERR_DOMAIN for ψ or θ outside the table.
+// free with kef_curve_free), or NULL: KEF_ERR_ARGUMENT for a NULL table
+// or a NaN, KEF_ERR_DOMAIN for ψ or θ outside the table.
 //
 // # Safety
 // `table` is NULL or a live table.
@@ -127,10 +198,9 @@ kef_curve *kef_curve_from_table(const kef_table *table, double psi, double theta
 
 // A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
 // of the Kogut–Etsion model (ψ, θ, β, ν, ε*; the paper's constants are
-// β = 0.04, ν = 0.3, ε* = 0.004): within 1e-6 relative of the model,
-// about 20 ms to build. Returns NULL with KEF_ERR_ARGUMENT for an
-// invalid parameter or range, KEF_ERR_DOMAIN where the model has no
-// positive μ in the range.
+// β = 0.04, ν = 0.3, ε* = 0.004; the default fit and model): within 1e-6
+// relative of the model, about 20 ms to build. kef_curve_from_model_with
+// with these constants.
 kef_curve *kef_curve_from_model(double psi,
                                 double theta,
                                 double beta,
@@ -139,8 +209,23 @@ kef_curve *kef_curve_from_model(double psi,
                                 double f_star_min,
                                 double f_star_max);
 
-// μ(F*) from `curve` into `*mu`: KEF_ERR_DOMAIN for F* NaN or outside the
-// curve's range.
+// A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
+// of the model with `constants` (NULL: the defaults) at (ψ, θ): within
+// 1e-6 relative of the model, about 20 ms to build. NULL on failure:
+// KEF_ERR_DOMAIN for a parameter out of range, KEF_ERR_ARGUMENT for a NaN
+// or an invalid range, KEF_ERR_NO_MU where the model has no positive μ in
+// the range.
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+kef_curve *kef_curve_from_model_with(const kef_constants *constants,
+                                     double psi,
+                                     double theta,
+                                     double f_star_min,
+                                     double f_star_max);
+
+// μ(F*) from `curve` into `*mu`: KEF_ERR_DOMAIN for F* outside the
+// curve's range, KEF_ERR_ARGUMENT for NaN or ±inf.
 //
 // # Safety
 // `curve` is NULL or a live curve; `mu` NULL or writable.
@@ -153,12 +238,47 @@ int kef_curve_mu(const kef_curve *curve, double f_star, double *mu);
 int kef_curve_mu_with_slope(const kef_curve *curve, double f_star, double *mu, double *dmu_df_star);
 
 // μ at `n` loads `f_star[i]` into `mu[i]` (AVX2 where the CPU has it); a
-// bad load as in kef_table_mu_batch.
+// bad load and NULL pointers as in kef_table_mu_batch.
 //
 // # Safety
 // `curve` is NULL or a live curve; `f_star` NULL or valid for `n` reads;
 // `mu` NULL or valid for `n` writes, not overlapping `f_star`.
 int kef_curve_mu_batch(const kef_curve *curve, size_t n, const double *f_star, double *mu);
+
+// kef_curve_mu_batch that does not stop: NaN at each load outside the
+// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK.
+//
+// # Safety
+// As kef_curve_mu_batch; `n_nan` NULL or writable.
+int kef_curve_mu_batch_nan(const kef_curve *curve,
+                           size_t n,
+                           const double *f_star,
+                           double *mu,
+                           size_t *n_nan);
+
+// μ and dμ/dF* at `n` loads into `mu[i]` and `dmu_df_star[i]`; a bad
+// load and NULL pointers as in kef_table_mu_batch.
+//
+// # Safety
+// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes, not
+// overlapping another argument.
+int kef_curve_mu_with_slope_batch(const kef_curve *curve,
+                                  size_t n,
+                                  const double *f_star,
+                                  double *mu,
+                                  double *dmu_df_star);
+
+// kef_curve_mu_with_slope_batch that does not stop: NaN in both outputs
+// at each bad load, the count in `*n_nan`, KEF_OK.
+//
+// # Safety
+// As kef_curve_mu_with_slope_batch; `n_nan` NULL or writable.
+int kef_curve_mu_with_slope_batch_nan(const kef_curve *curve,
+                                      size_t n,
+                                      const double *f_star,
+                                      double *mu,
+                                      double *dmu_df_star,
+                                      size_t *n_nan);
 
 // The F* range [*f_star_min, *f_star_max] of `curve`.
 //
@@ -174,9 +294,8 @@ int kef_curve_range(const kef_curve *curve, double *f_star_min, double *f_star_m
 void kef_curve_free(kef_curve *curve);
 
 // μ of the Kogut–Etsion model by direct integration (microseconds) at
-// F* (ψ, θ, β, ν, ε* as for kef_curve_from_model). KEF_ERR_ARGUMENT for
-// an invalid parameter or a NULL `mu`; KEF_ERR_DOMAIN where the model has
-// no μ (F* <= 0, or beyond the largest force the model reaches).
+// F* with β, ν, ε* given (the default fit and model):
+// kef_model_mu_with with these constants.
 //
 // # Safety
 // `mu` is NULL or writable.
@@ -187,6 +306,103 @@ int kef_model_mu(double psi,
                  double eps_star,
                  double f_star,
                  double *mu);
+
+// μ of the model with `constants` (NULL: the defaults) by direct
+// integration (microseconds) at (ψ, θ, F*). KEF_ERR_DOMAIN for a
+// parameter out of range or an F* the model cannot reach, KEF_ERR_ARGUMENT
+// for a NaN or ±inf or a NULL `mu`, KEF_ERR_NO_MU where the model has no
+// μ (F* <= 0 at that separation), KEF_ERR_INTERNAL if the root search
+// does not converge.
+//
+// # Safety
+// `constants` is NULL or a live kef_constants; `mu` NULL or writable.
+int kef_model_mu_with(const kef_constants *constants,
+                      double psi,
+                      double theta,
+                      double f_star,
+                      double *mu);
+
+// New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,
+// fit "consistent", model "ke"), to free with kef_constants_free. NULL
+// only if a panic was caught.
+kef_constants *kef_constants_new(void);
+
+// Frees model constants. NULL is ignored.
+//
+// # Safety
+// `constants` is NULL or from kef_constants_new, not yet freed and no
+// longer in use.
+void kef_constants_free(kef_constants *constants);
+
+// Sets β, the roughness parameter ηRσ, checked at once: KEF_ERR_DOMAIN
+// outside (0.01928, 100], KEF_ERR_ARGUMENT for NaN, ±inf or a NULL
+// handle; the handle is unchanged on failure.
+//
+// # Safety
+// `constants` is NULL or a live kef_constants that no other thread uses.
+int kef_constants_set_beta(kef_constants *constants, double beta);
+
+// Sets ν, Poisson's ratio of the softer material, in [0, 0.5); checked
+// as kef_constants_set_beta.
+//
+// # Safety
+// As kef_constants_set_beta.
+int kef_constants_set_nu(kef_constants *constants, double nu);
+
+// Sets ε* = ε/σ, the intermolecular distance, in [1e-9, 100]; checked as
+// kef_constants_set_beta.
+//
+// # Safety
+// As kef_constants_set_beta.
+int kef_constants_set_eps_star(kef_constants *constants, double eps_star);
+
+// Sets the friction fit by name: "consistent" (the default) or
+// "as-printed" (the paper's printed Eq. 18). KEF_ERR_ARGUMENT for another
+// name or a NULL pointer.
+//
+// # Safety
+// As kef_constants_set_beta; `name` NULL or a NUL-terminated string.
+int kef_constants_set_fit(kef_constants *constants, const char *name);
+
+// Sets the model by name: "ke" (Kogut–Etsion, the default) or "ceb" (the
+// CEB-type comparison model). KEF_ERR_ARGUMENT for another name or a
+// NULL pointer.
+//
+// # Safety
+// As kef_constants_set_fit.
+int kef_constants_set_model(kef_constants *constants, const char *name);
+
+// β of `constants` (NULL: the default).
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+double kef_constants_beta(const kef_constants *constants);
+
+// ν of `constants` (NULL: the default).
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+double kef_constants_nu(const kef_constants *constants);
+
+// ε* of `constants` (NULL: the default).
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+double kef_constants_eps_star(const kef_constants *constants);
+
+// The fit's name of `constants` (NULL: the default): a static string,
+// not to free.
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+const char *kef_constants_fit(const kef_constants *constants);
+
+// The model's name of `constants` (NULL: the default): a static string,
+// not to free.
+//
+// # Safety
+// `constants` is NULL or a live kef_constants.
+const char *kef_constants_model(const kef_constants *constants);
 
 #ifdef __cplusplus
 }  // extern "C"

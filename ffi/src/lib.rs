@@ -7,40 +7,55 @@
 //!   NULL handle); on failure [`kef_last_error`] holds the message (the
 //!   Rust error's one line: argument, value, valid range) and the outputs
 //!   are untouched, except that a batch writes the elements before the
-//!   first bad one and nothing from it on;
+//!   first bad one and nothing from it on (its `_nan` form writes NaN
+//!   there instead and goes on);
+//! - the code is the core's classification of the error
+//!   ([`ke_friction::ErrorKind`]), mapped in one place (`code`);
 //! - a NULL pointer where one is required is [`KEF_ERR_ARGUMENT`], never a
 //!   crash; no panic crosses the boundary ([`KEF_ERR_INTERNAL`] if one
 //!   ever happened);
 //! - tables and curves are immutable: any number of threads may use one
 //!   at once; only freeing it must wait until they are done.
+//!
+//! Every export is one line: the `ffi!` macro checks its pointer
+//! arguments, runs the body under `catch_unwind` and turns a failure into
+//! its code and message.
 #![warn(missing_docs)]
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 // The C names are the contract.
 #![allow(non_camel_case_types)]
 
-use ke_friction::num::Shortest;
-use ke_friction::{Curve, CurveError, LookupError, Model, Params, Table, TableError};
+use ke_friction::{
+    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, Kind, LookupError, Model, OnError, ParamError, Table,
+    TableError,
+};
 use std::borrow::Cow;
-use std::cell::RefCell;
+use std::cell::Cell;
 use std::ffi::{c_char, c_int, CStr, CString};
+use std::ops::Range;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Success.
 pub const KEF_OK: c_int = 0;
-/// A lookup argument outside the table's or curve's range, or NaN; or no
-/// μ where the model has none (F* <= 0, or no solution).
+/// A finite argument outside its range: a lookup outside the table's or
+/// curve's range, a model parameter or constant out of range, a load the
+/// model cannot reach; or a table or curve that missed its accuracy.
 pub const KEF_ERR_DOMAIN: c_int = 1;
-/// A NULL pointer, or an invalid model parameter (e.g. psi <= 0,
-/// f_star_min >= f_star_max).
+/// A NULL pointer, an argument that is not a usable number (NaN, ±inf),
+/// an unknown name, or an invalid F* range for a curve.
 pub const KEF_ERR_ARGUMENT: c_int = 2;
 /// A table file that cannot be read.
 pub const KEF_ERR_IO: c_int = 3;
 /// A damaged or incompatible table file.
 pub const KEF_ERR_TABLE: c_int = 4;
-/// A bug in ke-friction (a caught panic); please report the message.
+/// A bug in ke-friction (a caught panic, or a root search that did not
+/// converge); please report the message.
 pub const KEF_ERR_INTERNAL: c_int = 5;
+/// No μ where the model has none: F* <= 0 at that separation (adhesion
+/// outweighs the contact load), or no positive μ.
+pub const KEF_ERR_NO_MU: c_int = 6;
 
 /// A table of μ(ψ, θ, F*) (opaque). Immutable; may be shared across threads.
 pub struct kef_table(Cow<'static, Table>);
@@ -52,92 +67,447 @@ static DEFAULT: OnceLock<kef_table> = OnceLock::new();
 /// shared across threads.
 pub struct kef_curve(Curve);
 
-thread_local! {
-    static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
+/// The model constants (opaque): β, ν, ε*, the friction fit and the model,
+/// always valid (each setter checks its value). New constants get new
+/// setters, so the handle grows without breaking the ABI. A function
+/// taking `const kef_constants *` reads NULL as the defaults. Not
+/// synchronised: set it on one thread, then share it read-only.
+pub struct kef_constants(Constants);
+
+/// The C code of a kind of failure: the one place the core's
+/// classification (the table of `ke_friction::ErrorKind`) becomes a code.
+fn code(kind: ErrorKind) -> c_int {
+    match kind {
+        ErrorKind::Argument => KEF_ERR_ARGUMENT,
+        ErrorKind::Domain => KEF_ERR_DOMAIN,
+        ErrorKind::NoMu => KEF_ERR_NO_MU,
+        ErrorKind::Io => KEF_ERR_IO,
+        ErrorKind::Table => KEF_ERR_TABLE,
+        ErrorKind::Tolerance => KEF_ERR_DOMAIN,
+        ErrorKind::Internal => KEF_ERR_INTERNAL,
+        _ => KEF_ERR_INTERNAL,
+    }
 }
 
 /// A failure: its code and message.
-struct Failure(c_int, String);
-
-fn domain(e: LookupError) -> Failure {
-    Failure(KEF_ERR_DOMAIN, e.to_string())
+struct Failure {
+    code: c_int,
+    message: String,
 }
 
-fn null(name: &str) -> Failure {
-    Failure(KEF_ERR_ARGUMENT, format!("{name} is NULL"))
+impl Failure {
+    /// A failure of the C side itself (a NULL pointer, an unknown name).
+    fn argument(message: String) -> Failure {
+        Failure {
+            code: KEF_ERR_ARGUMENT,
+            message,
+        }
+    }
 }
 
+/// An error of the core: its kind and its message.
+trait CoreError: std::fmt::Display {
+    /// Its classification.
+    fn kind(&self) -> ErrorKind;
+}
+
+macro_rules! core_errors {
+    ($($t:ty),*) => {
+        $(impl CoreError for $t {
+            fn kind(&self) -> ErrorKind {
+                <$t>::kind(self)
+            }
+        })*
+    };
+}
+core_errors!(LookupError, EvalError, ParamError, CurveError, TableError);
+
+impl<E: CoreError> From<E> for Failure {
+    fn from(e: E) -> Failure {
+        Failure {
+            code: code(e.kind()),
+            message: e.to_string(),
+        }
+    }
+}
+
+/// The size of the per-thread message buffer, its NUL included.
+const MESSAGE_CAPACITY: usize = 1024;
+
+thread_local! {
+    /// This thread's last message, NUL-terminated: one buffer for the
+    /// thread's life, overwritten in place, never freed or moved.
+    static LAST_ERROR: [Cell<u8>; MESSAGE_CAPACITY] = const { [const { Cell::new(0) }; MESSAGE_CAPACITY] };
+}
+
+/// Stores `message` as this thread's last (cut at a character boundary to
+/// fit; a NUL in it becomes a space).
 fn remember(message: &str) {
-    let text = CString::new(message.replace('\0', " ")).unwrap_or_default();
-    LAST_ERROR.with(|e| *e.borrow_mut() = text);
-}
-
-/// Runs `body`, turning a failure or a panic into its code and message.
-fn guard(body: impl FnOnce() -> Result<(), Failure>) -> c_int {
-    match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(())) => KEF_OK,
-        Ok(Err(Failure(code, message))) => {
-            remember(&message);
-            code
-        }
-        Err(_) => {
-            remember("internal error: a panic in ke-friction (please report it)");
-            KEF_ERR_INTERNAL
-        }
+    let mut end = message.len().min(MESSAGE_CAPACITY - 1);
+    while !message.is_char_boundary(end) {
+        end -= 1;
     }
-}
-
-/// Runs `body`, returning its handle or NULL on a failure or a panic.
-fn guard_ptr<T>(body: impl FnOnce() -> Result<*mut T, Failure>) -> *mut T {
-    let mut out = std::ptr::null_mut();
-    guard(|| {
-        out = body()?;
-        Ok(())
+    LAST_ERROR.with(|buffer| {
+        for (cell, &b) in buffer.iter().zip(&message.as_bytes()[..end]) {
+            cell.set(if b == 0 { b' ' } else { b });
+        }
+        buffer[end].set(0);
     });
-    out
 }
 
-/// The table behind `table`, or a failure naming it.
-///
-/// # Safety
-/// `table` is NULL or a pointer from `kef_table_default`/`kef_table_load`
-/// not yet freed.
-unsafe fn table_ref<'a>(table: *const kef_table) -> Result<&'a Table, Failure> {
-    // SAFETY: the caller's contract: NULL or a live table.
-    unsafe { table.as_ref() }.map(|t| &*t.0).ok_or_else(|| null("table"))
+/// What an export returns: a code, a handle, a value.
+trait Answer {
+    /// The C type.
+    type C;
+    /// The answer of a call that succeeded.
+    fn ok(self) -> Self::C;
+    /// The answer of a call that failed with `code`.
+    fn failed(code: c_int) -> Self::C;
 }
 
-/// The curve behind `curve`, or a failure naming it.
-///
-/// # Safety
-/// `curve` is NULL or a pointer from a `kef_curve_from_*` not yet freed.
-unsafe fn curve_ref<'a>(curve: *const kef_curve) -> Result<&'a Curve, Failure> {
-    // SAFETY: the caller's contract: NULL or a live curve.
-    unsafe { curve.as_ref() }.map(|c| &c.0).ok_or_else(|| null("curve"))
-}
-
-/// Writes `value` through `out`, or fails if `out` is NULL.
-///
-/// # Safety
-/// `out` is NULL or valid for one write of a double.
-unsafe fn put(out: *mut f64, value: f64) {
-    // SAFETY: the caller checked `out` is not NULL and it is writable.
-    unsafe { out.write(value) }
-}
-
-/// Fails if any of the pointers is NULL.
-fn required(pointers: &[(&str, bool)]) -> Result<(), Failure> {
-    match pointers.iter().find(|(_, is_null)| *is_null) {
-        Some((name, _)) => Err(null(name)),
-        None => Ok(()),
+impl Answer for () {
+    type C = c_int;
+    fn ok(self) -> c_int {
+        KEF_OK
+    }
+    fn failed(code: c_int) -> c_int {
+        code
     }
 }
 
-/// The message of this thread's last failure ("" if none): valid until the
-/// next failing call on this thread. Never NULL; do not free it.
+impl<T> Answer for Box<T> {
+    type C = *mut T;
+    fn ok(self) -> *mut T {
+        Box::into_raw(self)
+    }
+    fn failed(_: c_int) -> *mut T {
+        std::ptr::null_mut()
+    }
+}
+
+impl Answer for f64 {
+    type C = f64;
+    fn ok(self) -> f64 {
+        self
+    }
+    fn failed(_: c_int) -> f64 {
+        f64::NAN
+    }
+}
+
+impl Answer for &'static CStr {
+    type C = *const c_char;
+    fn ok(self) -> *const c_char {
+        self.as_ptr()
+    }
+    fn failed(_: c_int) -> *const c_char {
+        std::ptr::null()
+    }
+}
+
+/// Runs `body`, turning a failure or a panic into its code (or NULL) and
+/// message.
+fn guard<A: Answer>(body: impl FnOnce() -> Result<A, Failure>) -> A::C {
+    let failure = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(answer)) => return answer.ok(),
+        Ok(Err(failure)) => failure,
+        Err(_) => Failure {
+            code: KEF_ERR_INTERNAL,
+            message: "internal error: a panic in ke-friction (please report it)".into(),
+        },
+    };
+    remember(&failure.message);
+    A::failed(failure.code)
+}
+
+/// A pointer argument, checked and turned into what Rust uses.
+trait Arg<'a> {
+    /// What it points to.
+    type Rust;
+    /// The Rust view of the pointer named `name`, or a failure naming it.
+    ///
+    /// # Safety
+    /// The pointer is NULL or valid as the export's contract says, for `'a`.
+    unsafe fn check(self, name: &str) -> Result<Self::Rust, Failure>;
+}
+
+/// A pointer to `n` elements, checked and turned into a slice.
+trait Array<'a> {
+    /// The slice.
+    type Rust;
+    /// The slice of `n` elements at the pointer named `name` (NULL allowed
+    /// only when `n` is 0).
+    ///
+    /// # Safety
+    /// The pointer is NULL or valid for `n` elements (writes for an output,
+    /// overlapping no other argument) for `'a`.
+    unsafe fn check_n(self, name: &str, n: usize) -> Result<Self::Rust, Failure>;
+}
+
+/// The failure for a NULL pointer.
+fn null(name: &str) -> Failure {
+    Failure::argument(format!("{name} is NULL"))
+}
+
+macro_rules! pointee {
+    ($ptr:ty => $rust:ty, |$p:ident| $view:expr) => {
+        impl<'a> Arg<'a> for $ptr {
+            type Rust = $rust;
+            unsafe fn check(self, name: &str) -> Result<$rust, Failure> {
+                let $p = self;
+                // SAFETY: NULL or valid for 'a, by the caller's contract.
+                unsafe { $view }.ok_or_else(|| null(name))
+            }
+        }
+    };
+}
+pointee!(*const kef_table => &'a Table, |p| p.as_ref().map(|t| &*t.0));
+pointee!(*const kef_curve => &'a Curve, |p| p.as_ref().map(|c| &c.0));
+pointee!(*mut kef_constants => &'a mut Constants, |p| p.as_mut().map(|c| &mut c.0));
+pointee!(*mut f64 => &'a mut f64, |p| p.as_mut());
+pointee!(*mut usize => &'a mut usize, |p| p.as_mut());
+pointee!(*const c_char => &'a CStr, |p| (!p.is_null()).then(|| CStr::from_ptr(p)));
+
+/// The defaults, for a NULL `const kef_constants *`.
+static DEFAULT_CONSTANTS: OnceLock<Constants> = OnceLock::new();
+
+impl<'a> Arg<'a> for *const kef_constants {
+    type Rust = &'a Constants;
+    /// NULL is the defaults ([`Constants::default`]).
+    unsafe fn check(self, _: &str) -> Result<&'a Constants, Failure> {
+        // SAFETY: NULL or a live handle for 'a, by the caller's contract.
+        let given = unsafe { self.as_ref() }.map(|c| &c.0);
+        Ok(given.unwrap_or_else(|| DEFAULT_CONSTANTS.get_or_init(Constants::default)))
+    }
+}
+
+impl<'a> Array<'a> for *const f64 {
+    type Rust = &'a [f64];
+    unsafe fn check_n(self, name: &str, n: usize) -> Result<&'a [f64], Failure> {
+        match (self.is_null(), n) {
+            (_, 0) => Ok(&[]),
+            (true, _) => Err(null(name)),
+            // SAFETY: valid for n reads by the caller's contract.
+            (false, _) => Ok(unsafe { std::slice::from_raw_parts(self, n) }),
+        }
+    }
+}
+
+impl<'a> Array<'a> for *mut f64 {
+    type Rust = &'a mut [f64];
+    unsafe fn check_n(self, name: &str, n: usize) -> Result<&'a mut [f64], Failure> {
+        match (self.is_null(), n) {
+            (_, 0) => Ok(&mut []),
+            (true, _) => Err(null(name)),
+            // SAFETY: valid for n writes and unaliased by the caller's contract.
+            (false, _) => Ok(unsafe { std::slice::from_raw_parts_mut(self, n) }),
+        }
+    }
+}
+
+/// The body of an export: `ffi!(p, q[n], … => body)` checks each pointer
+/// argument in order (`q[n]`: an array of `n`), rebinding it to its Rust
+/// view, then runs `body` (a `Result<A, Failure>`) under [`guard`].
+macro_rules! ffi {
+    ($($arg:ident $([$n:expr])?),* => $body:expr) => {
+        guard(|| {
+            $(
+                // SAFETY: the export's `# Safety` contract: every pointer
+                // argument is NULL or valid as it says.
+                let $arg = unsafe { ffi!(@check $arg $([$n])?) }?;
+            )*
+            $body
+        })
+    };
+    (@check $arg:ident) => {
+        Arg::check($arg, stringify!($arg))
+    };
+    (@check $arg:ident [$n:expr]) => {
+        Array::check_n($arg, stringify!($arg), $n)
+    };
+}
+
+/// Writes `value` to `out`.
+fn set<T>(out: &mut T, value: T) -> Result<(), Failure> {
+    *out = value;
+    Ok(())
+}
+
+/// Writes a pair to two outputs.
+fn set2(a: &mut f64, b: &mut f64, (x, y): (f64, f64)) -> Result<(), Failure> {
+    (*a, *b) = (x, y);
+    Ok(())
+}
+
+/// A batch in [`OnError::Stop`] mode: success, or the core's error.
+fn stop(result: Result<usize, LookupError>) -> Result<(), Failure> {
+    result.map(|_| ()).map_err(Failure::from)
+}
+
+/// The pairs in a stack buffer: at most this many at a time.
+const CHUNK: usize = 256;
+
+/// A batch of (μ, slope) pairs written to `mu` and `slope`: `batch(range,
+/// out)` runs the core's batch for elements `range` into `out`, chunk by
+/// chunk; the NaN count, or the first bad element's error (elements before
+/// it written, none from it on).
+fn scatter(
+    mu: &mut [f64],
+    slope: &mut [f64],
+    mut batch: impl FnMut(Range<usize>, &mut [(f64, f64)]) -> Result<usize, LookupError>,
+) -> Result<usize, LookupError> {
+    let mut buffer = [(0.0, 0.0); CHUNK];
+    let mut nan = 0;
+    for start in (0..mu.len()).step_by(CHUNK) {
+        let end = mu.len().min(start + CHUNK);
+        let out = &mut buffer[..end - start];
+        let result = batch(start..end, out);
+        let done = match &result {
+            Ok(_) => out.len(),
+            Err(e) => e.index().unwrap_or(0),
+        };
+        for (k, &(m, s)) in out[..done].iter().enumerate() {
+            (mu[start + k], slope[start + k]) = (m, s);
+        }
+        nan += result.map_err(|e| e.shifted(start))?;
+    }
+    Ok(nan)
+}
+
+/// [`Table::mu_with_slope_batch_with`] into two arrays.
+fn table_slopes(
+    table: &Table,
+    [psi, theta, f_star]: [&[f64]; 3],
+    mu: &mut [f64],
+    slope: &mut [f64],
+    on_error: OnError,
+) -> Result<usize, LookupError> {
+    table.prepare_batch(mu.len());
+    scatter(mu, slope, |r, out| {
+        table.mu_with_slope_batch_with(&psi[r.clone()], &theta[r.clone()], &f_star[r], out, on_error)
+    })
+}
+
+/// [`Curve::mu_with_slope_batch_with`] into two arrays.
+fn curve_slopes(
+    curve: &Curve,
+    f_star: &[f64],
+    mu: &mut [f64],
+    slope: &mut [f64],
+    on_error: OnError,
+) -> Result<usize, LookupError> {
+    scatter(mu, slope, |r, out| {
+        curve.mu_with_slope_batch_with(&f_star[r], out, on_error)
+    })
+}
+
+/// Frees a handle from `Box::into_raw` unless it is NULL or `keep`.
+///
+/// # Safety
+/// `p` is NULL, `keep`, or from `Box::into_raw`, not yet freed and no
+/// longer in use.
+unsafe fn free<T>(p: *mut T, keep: *const T) {
+    if !p.is_null() && !std::ptr::eq(p.cast_const(), keep) {
+        // SAFETY: from Box::into_raw, freed once, by the caller's contract.
+        drop(unsafe { Box::from_raw(p) });
+    }
+}
+
+/// The table file at `path`.
+fn load(path: &CStr) -> Result<Box<kef_table>, Failure> {
+    #[cfg(unix)]
+    let path = {
+        use std::os::unix::ffi::OsStrExt;
+        std::path::PathBuf::from(std::ffi::OsStr::from_bytes(path.to_bytes()))
+    };
+    #[cfg(not(unix))]
+    let path = std::path::PathBuf::from(path.to_string_lossy().into_owned());
+    Ok(Box::new(kef_table(Cow::Owned(Table::load(path)?))))
+}
+
+/// The constants of the functions that take β, ν and ε* themselves.
+fn explicit(beta: f64, nu: f64, eps_star: f64) -> Constants {
+    Constants::default().beta(beta).nu(nu).eps_star(eps_star)
+}
+
+/// μ by direct integration at F* = `f_star`.
+fn model_mu(constants: &Constants, psi: f64, theta: f64, f_star: f64) -> Result<f64, Failure> {
+    let contact = Model::new(constants.at(psi, theta)?)?.at_f_star(f_star)?;
+    let no_mu = EvalError::NoMu {
+        f_star: contact.f_star,
+        h_star: contact.h_star,
+    };
+    Ok(contact.mu.ok_or(no_mu)?)
+}
+
+/// A curve by direct integration over [`lo`, `hi`].
+fn model_curve(constants: &Constants, psi: f64, theta: f64, lo: f64, hi: f64) -> Result<Box<kef_curve>, Failure> {
+    let model = Model::new(constants.at(psi, theta)?)?;
+    Ok(Box::new(kef_curve(Curve::from_model(&model, lo, hi)?)))
+}
+
+/// `constants` changed by `change`, if the result is valid.
+fn update(
+    constants: &mut Constants,
+    change: impl FnOnce(Constants) -> Result<Constants, Failure>,
+) -> Result<(), Failure> {
+    let next = change(constants.clone())?;
+    next.validate()?;
+    *constants = next;
+    Ok(())
+}
+
+/// The value named `name` among `all` (`what`: the setting, for the message).
+fn named<T: Copy>(
+    what: &str,
+    name: &CStr,
+    from_name: fn(&str) -> Option<T>,
+    all: &[T],
+    name_of: fn(T) -> &'static str,
+) -> Result<T, Failure> {
+    let text = name.to_string_lossy();
+    from_name(&text).ok_or_else(|| {
+        let known: Vec<String> = all.iter().map(|&v| format!("\"{}\"", name_of(v))).collect();
+        Failure::argument(format!("{what} \"{text}\" is unknown: must be {}", known.join(" or ")))
+    })
+}
+
+/// The fit named `name`.
+fn fit_named(name: &CStr) -> Result<Fit, Failure> {
+    named("fit", name, Fit::from_name, &Fit::ALL, Fit::name)
+}
+
+/// The model named `name`.
+fn kind_named(name: &CStr) -> Result<Kind, Failure> {
+    named("model", name, Kind::from_name, &Kind::ALL, Kind::name)
+}
+
+/// `name` as a C string for the life of the program (one allocation per
+/// distinct name).
+fn static_c(name: &'static str) -> Result<&'static CStr, Failure> {
+    static NAMES: Mutex<Vec<&'static CStr>> = Mutex::new(Vec::new());
+    let mut names = NAMES.lock().unwrap_or_else(PoisonError::into_inner);
+    if let Some(&c) = names.iter().find(|c| c.to_bytes() == name.as_bytes()) {
+        return Ok(c);
+    }
+    let c: &'static CStr = Box::leak(
+        CString::new(name)
+            .map_err(|e| Failure::argument(e.to_string()))?
+            .into_boxed_c_str(),
+    );
+    names.push(c);
+    Ok(c)
+}
+
+/// The message of this thread's last failure ("" if none). Never NULL; do
+/// not free it. The pointer stays valid until the thread exits: it points
+/// to one buffer per thread that each later failure on the thread
+/// overwrites in place (never freed or moved), so reading it after a call
+/// that failed, even one made after the pointer was taken, is safe and
+/// gives that call's message. A message longer than 1023 bytes is cut.
 #[no_mangle]
 pub extern "C" fn kef_last_error() -> *const c_char {
-    LAST_ERROR.with(|e| e.borrow().as_ptr())
+    LAST_ERROR.with(|buffer| buffer.as_ptr().cast())
 }
 
 /// The table compiled into the library (ψ in [0.5, 8], θ in [0, 0.01],
@@ -157,25 +527,7 @@ pub extern "C" fn kef_table_default() -> *const kef_table {
 /// `path` is NULL or a NUL-terminated string.
 #[no_mangle]
 pub unsafe extern "C" fn kef_table_load(path: *const c_char) -> *mut kef_table {
-    guard_ptr(|| {
-        if path.is_null() {
-            return Err(null("path"));
-        }
-        // SAFETY: not NULL, and NUL-terminated by the caller's contract.
-        let bytes = unsafe { CStr::from_ptr(path) }.to_bytes();
-        #[cfg(not(unix))]
-        let path = std::path::PathBuf::from(String::from_utf8_lossy(bytes).into_owned());
-        #[cfg(unix)]
-        let path = {
-            use std::os::unix::ffi::OsStrExt;
-            std::path::PathBuf::from(std::ffi::OsStr::from_bytes(bytes))
-        };
-        let table = Table::load(&path).map_err(|e| match e {
-            TableError::Io { .. } => Failure(KEF_ERR_IO, e.to_string()),
-            _ => Failure(KEF_ERR_TABLE, format!("{}: {e}", path.display())),
-        })?;
-        Ok(Box::into_raw(Box::new(kef_table(Cow::Owned(table)))))
-    })
+    ffi!(path => load(path))
 }
 
 /// Frees a table from kef_table_load. NULL and the default table are
@@ -186,16 +538,13 @@ pub unsafe extern "C" fn kef_table_load(path: *const c_char) -> *mut kef_table {
 /// yet freed and no longer in use by any thread.
 #[no_mangle]
 pub unsafe extern "C" fn kef_table_free(table: *mut kef_table) {
-    if table.is_null() || std::ptr::eq(table.cast_const(), kef_table_default()) {
-        return;
-    }
-    // SAFETY: a pointer from Box::into_raw in kef_table_load, freed once.
-    drop(unsafe { Box::from_raw(table) });
+    // SAFETY: the caller's contract; the default table is kept.
+    unsafe { free(table, kef_table_default()) }
 }
 
 /// μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),
-/// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is NaN or outside the
-/// table's range; KEF_ERR_ARGUMENT for a NULL pointer.
+/// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is outside the table's
+/// range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL pointer.
 ///
 /// # Safety
 /// `table` is NULL or a live table; `mu` is NULL or writable.
@@ -207,15 +556,7 @@ pub unsafe extern "C" fn kef_table_mu(
     f_star: f64,
     mu: *mut f64,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract.
-        let table = unsafe { table_ref(table) }?;
-        required(&[("mu", mu.is_null())])?;
-        let value = table.mu(psi, theta, f_star).map_err(domain)?;
-        // SAFETY: not NULL; writable by the caller's contract.
-        unsafe { put(mu, value) };
-        Ok(())
-    })
+    ffi!(table, mu => set(mu, table.mu(psi, theta, f_star)?))
 }
 
 /// μ and ∂μ/∂F* from `table` into `*mu` and `*dmu_df_star`; errors as
@@ -232,61 +573,14 @@ pub unsafe extern "C" fn kef_table_mu_with_slope(
     mu: *mut f64,
     dmu_df_star: *mut f64,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract.
-        let table = unsafe { table_ref(table) }?;
-        required(&[("mu", mu.is_null()), ("dmu_df_star", dmu_df_star.is_null())])?;
-        let (m, s) = table.mu_with_slope(psi, theta, f_star).map_err(domain)?;
-        // SAFETY: both checked non-NULL; writable by the caller's contract.
-        unsafe {
-            put(mu, m);
-            put(dmu_df_star, s);
-        }
-        Ok(())
-    })
+    ffi!(table, mu, dmu_df_star => set2(mu, dmu_df_star, table.mu_with_slope(psi, theta, f_star)?))
 }
 
-/// The slice of `n` doubles at `p`, or a failure naming it (NULL is only
-/// allowed when `n` is 0).
-///
-/// # Safety
-/// `p` is NULL or valid for `n` reads.
-unsafe fn input<'a>(name: &str, p: *const f64, n: usize) -> Result<&'a [f64], Failure> {
-    match (p.is_null(), n) {
-        (_, 0) => Ok(&[]),
-        (true, _) => Err(null(name)),
-        // SAFETY: valid for n reads by the caller's contract.
-        (false, _) => Ok(unsafe { std::slice::from_raw_parts(p, n) }),
-    }
-}
-
-/// The writable slice of `n` doubles at `p` (see [`input`]).
-///
-/// # Safety
-/// `p` is NULL or valid for `n` writes, and overlaps no input.
-unsafe fn output<'a>(name: &str, p: *mut f64, n: usize) -> Result<&'a mut [f64], Failure> {
-    match (p.is_null(), n) {
-        (_, 0) => Ok(&mut []),
-        (true, _) => Err(null(name)),
-        // SAFETY: valid for n writes and unaliased by the caller's contract.
-        (false, _) => Ok(unsafe { std::slice::from_raw_parts_mut(p, n) }),
-    }
-}
-
-/// The index of the first query outside `table`'s domain (or NaN), with
-/// its error.
-fn first_bad(table: &Table, psi: &[f64], theta: &[f64], f_star: &[f64]) -> Option<(usize, LookupError)> {
-    let [(p0, p1), (t0, t1), (f0, f1)] = table.domain().ranges();
-    let inside = |v: f64, lo: f64, hi: f64| v >= lo && v <= hi;
-    let i =
-        (0..psi.len()).find(|&i| !(inside(psi[i], p0, p1) && inside(theta[i], t0, t1) && inside(f_star[i], f0, f1)))?;
-    Some((i, table.mu(psi[i], theta[i], f_star[i]).err()?))
-}
-
-/// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`, vectorised (AVX2
-/// where the CPU has it). On a point outside the table, KEF_ERR_DOMAIN
-/// with its index in the message; `mu` is written before that index and
-/// not from it on. Pointers may be NULL only when n is 0; `mu` must not
+/// μ at `n` points `(psi[i], theta[i], f_star[i])` into `mu[i]`,
+/// vectorised (AVX2 where the CPU has it). At the first point `i` outside
+/// the table (or NaN), the error of kef_table_mu for it with "batch element
+/// i: " in front; `mu[0..i)` is written, `mu[i..n)` untouched. Pointers may
+/// be NULL only when n is 0 (KEF_ERR_ARGUMENT otherwise); `mu` must not
 /// overlap the inputs.
 ///
 /// # Safety
@@ -301,66 +595,87 @@ pub unsafe extern "C" fn kef_table_mu_batch(
     f_star: *const f64,
     mu: *mut f64,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract, for each pointer.
-        let (table, psi, theta, f_star, mu) = unsafe {
-            (
-                table_ref(table)?,
-                input("psi", psi, n)?,
-                input("theta", theta, n)?,
-                input("f_star", f_star, n)?,
-                output("mu", mu, n)?,
-            )
-        };
-        let (good, bad) = match first_bad(table, psi, theta, f_star) {
-            Some((i, e)) => (i, Some((i, e))),
-            None => (n, None),
-        };
-        table
-            .mu_batch(&psi[..good], &theta[..good], &f_star[..good], &mut mu[..good])
-            .map_err(domain)?;
-        match bad {
-            Some((i, e)) => Err(Failure(KEF_ERR_DOMAIN, format!("batch element {i}: {e}"))),
-            None => Ok(()),
-        }
-    })
+    ffi!(table, psi[n], theta[n], f_star[n], mu[n] => stop(table.mu_batch_with(psi, theta, f_star, mu, OnError::Stop)))
+}
+
+/// kef_table_mu_batch that does not stop: NaN in `mu[i]` at each point
+/// outside the table (or NaN), valid values elsewhere, the number of NaN
+/// elements in `*n_nan`, and KEF_OK. `n_nan` is required (KEF_ERR_ARGUMENT
+/// if NULL).
+///
+/// # Safety
+/// As kef_table_mu_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_mu_batch_nan(
+    table: *const kef_table,
+    n: usize,
+    psi: *const f64,
+    theta: *const f64,
+    f_star: *const f64,
+    mu: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(table, psi[n], theta[n], f_star[n], mu[n], n_nan =>
+        set(n_nan, table.mu_batch_with(psi, theta, f_star, mu, OnError::Nan)?))
+}
+
+/// μ and ∂μ/∂F* at `n` points into `mu[i]` and `dmu_df_star[i]`; errors,
+/// NULL pointers and a bad point as kef_table_mu_batch (both outputs
+/// written before it, neither from it on). No output may overlap another
+/// argument.
+///
+/// # Safety
+/// As kef_table_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_mu_with_slope_batch(
+    table: *const kef_table,
+    n: usize,
+    psi: *const f64,
+    theta: *const f64,
+    f_star: *const f64,
+    mu: *mut f64,
+    dmu_df_star: *mut f64,
+) -> c_int {
+    ffi!(table, psi[n], theta[n], f_star[n], mu[n], dmu_df_star[n] =>
+        stop(table_slopes(table, [psi, theta, f_star], mu, dmu_df_star, OnError::Stop)))
+}
+
+/// kef_table_mu_with_slope_batch that does not stop: NaN in both outputs
+/// at each point outside the table, the count in `*n_nan`, KEF_OK.
+///
+/// # Safety
+/// As kef_table_mu_with_slope_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_mu_with_slope_batch_nan(
+    table: *const kef_table,
+    n: usize,
+    psi: *const f64,
+    theta: *const f64,
+    f_star: *const f64,
+    mu: *mut f64,
+    dmu_df_star: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(table, psi[n], theta[n], f_star[n], mu[n], dmu_df_star[n], n_nan =>
+        set(n_nan, table_slopes(table, [psi, theta, f_star], mu, dmu_df_star, OnError::Nan)?))
 }
 
 /// A curve μ(F*) for (ψ, θ) from `table`, over the table's F* range (to
-/// free with kef_curve_free), or NULL: KEF_ERR_ARGUMENT for a NULL table,
-/// KEF_ERR_DOMAIN for ψ or θ outside the table.
+/// free with kef_curve_free), or NULL: KEF_ERR_ARGUMENT for a NULL table
+/// or a NaN, KEF_ERR_DOMAIN for ψ or θ outside the table.
 ///
 /// # Safety
 /// `table` is NULL or a live table.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_from_table(table: *const kef_table, psi: f64, theta: f64) -> *mut kef_curve {
-    guard_ptr(|| {
-        // SAFETY: the caller's contract.
-        let table = unsafe { table_ref(table) }?;
-        let curve = table.curve(psi, theta).map_err(curve_failure)?;
-        Ok(Box::into_raw(Box::new(kef_curve(curve))))
-    })
-}
-
-fn curve_failure(e: CurveError) -> Failure {
-    let code = match e {
-        CurveError::Range { .. } | CurveError::TooWide { .. } => KEF_ERR_ARGUMENT,
-        _ => KEF_ERR_DOMAIN,
-    };
-    Failure(code, e.to_string())
-}
-
-fn model(psi: f64, theta: f64, beta: f64, nu: f64, eps_star: f64) -> Result<Model, Failure> {
-    let params = Params::new(psi, theta).beta(beta).nu(nu).eps_star(eps_star);
-    Model::new(params).map_err(|e| Failure(KEF_ERR_ARGUMENT, e.to_string()))
+    ffi!(table => Ok(Box::new(kef_curve(table.curve(psi, theta)?))))
 }
 
 /// A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
 /// of the Kogut–Etsion model (ψ, θ, β, ν, ε*; the paper's constants are
-/// β = 0.04, ν = 0.3, ε* = 0.004): within 1e-6 relative of the model,
-/// about 20 ms to build. Returns NULL with KEF_ERR_ARGUMENT for an
-/// invalid parameter or range, KEF_ERR_DOMAIN where the model has no
-/// positive μ in the range.
+/// β = 0.04, ν = 0.3, ε* = 0.004; the default fit and model): within 1e-6
+/// relative of the model, about 20 ms to build. kef_curve_from_model_with
+/// with these constants.
 #[no_mangle]
 pub extern "C" fn kef_curve_from_model(
     psi: f64,
@@ -371,29 +686,37 @@ pub extern "C" fn kef_curve_from_model(
     f_star_min: f64,
     f_star_max: f64,
 ) -> *mut kef_curve {
-    guard_ptr(|| {
-        let m = model(psi, theta, beta, nu, eps_star)?;
-        let curve = Curve::from_model(&m, f_star_min, f_star_max).map_err(curve_failure)?;
-        Ok(Box::into_raw(Box::new(kef_curve(curve))))
-    })
+    ffi!(=> model_curve(&explicit(beta, nu, eps_star), psi, theta, f_star_min, f_star_max))
 }
 
-/// μ(F*) from `curve` into `*mu`: KEF_ERR_DOMAIN for F* NaN or outside the
-/// curve's range.
+/// A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
+/// of the model with `constants` (NULL: the defaults) at (ψ, θ): within
+/// 1e-6 relative of the model, about 20 ms to build. NULL on failure:
+/// KEF_ERR_DOMAIN for a parameter out of range, KEF_ERR_ARGUMENT for a NaN
+/// or an invalid range, KEF_ERR_NO_MU where the model has no positive μ in
+/// the range.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_curve_from_model_with(
+    constants: *const kef_constants,
+    psi: f64,
+    theta: f64,
+    f_star_min: f64,
+    f_star_max: f64,
+) -> *mut kef_curve {
+    ffi!(constants => model_curve(constants, psi, theta, f_star_min, f_star_max))
+}
+
+/// μ(F*) from `curve` into `*mu`: KEF_ERR_DOMAIN for F* outside the
+/// curve's range, KEF_ERR_ARGUMENT for NaN or ±inf.
 ///
 /// # Safety
 /// `curve` is NULL or a live curve; `mu` NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_mu(curve: *const kef_curve, f_star: f64, mu: *mut f64) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract.
-        let curve = unsafe { curve_ref(curve) }?;
-        required(&[("mu", mu.is_null())])?;
-        let value = curve.mu(f_star).map_err(domain)?;
-        // SAFETY: not NULL; writable by the caller's contract.
-        unsafe { put(mu, value) };
-        Ok(())
-    })
+    ffi!(curve, mu => set(mu, curve.mu(f_star)?))
 }
 
 /// μ and dμ/dF* from `curve`; errors as kef_curve_mu.
@@ -407,22 +730,11 @@ pub unsafe extern "C" fn kef_curve_mu_with_slope(
     mu: *mut f64,
     dmu_df_star: *mut f64,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract.
-        let curve = unsafe { curve_ref(curve) }?;
-        required(&[("mu", mu.is_null()), ("dmu_df_star", dmu_df_star.is_null())])?;
-        let (m, s) = curve.mu_with_slope(f_star).map_err(domain)?;
-        // SAFETY: both checked non-NULL; writable by the caller's contract.
-        unsafe {
-            put(mu, m);
-            put(dmu_df_star, s);
-        }
-        Ok(())
-    })
+    ffi!(curve, mu, dmu_df_star => set2(mu, dmu_df_star, curve.mu_with_slope(f_star)?))
 }
 
 /// μ at `n` loads `f_star[i]` into `mu[i]` (AVX2 where the CPU has it); a
-/// bad load as in kef_table_mu_batch.
+/// bad load and NULL pointers as in kef_table_mu_batch.
 ///
 /// # Safety
 /// `curve` is NULL or a live curve; `f_star` NULL or valid for `n` reads;
@@ -434,20 +746,58 @@ pub unsafe extern "C" fn kef_curve_mu_batch(
     f_star: *const f64,
     mu: *mut f64,
 ) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract, for each pointer.
-        let (curve, f_star, mu) = unsafe { (curve_ref(curve)?, input("f_star", f_star, n)?, output("mu", mu, n)?) };
-        let (lo, hi) = curve.range();
-        let good = f_star.iter().position(|&f| !(f >= lo && f <= hi)).unwrap_or(n);
-        curve.mu_batch(&f_star[..good], &mut mu[..good]).map_err(domain)?;
-        match f_star.get(good) {
-            Some(&f) => {
-                let e = curve.mu(f).err().map_or_else(String::new, |e| e.to_string());
-                Err(Failure(KEF_ERR_DOMAIN, format!("batch element {good}: {e}")))
-            }
-            None => Ok(()),
-        }
-    })
+    ffi!(curve, f_star[n], mu[n] => stop(curve.mu_batch_with(f_star, mu, OnError::Stop)))
+}
+
+/// kef_curve_mu_batch that does not stop: NaN at each load outside the
+/// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK.
+///
+/// # Safety
+/// As kef_curve_mu_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_curve_mu_batch_nan(
+    curve: *const kef_curve,
+    n: usize,
+    f_star: *const f64,
+    mu: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(curve, f_star[n], mu[n], n_nan => set(n_nan, curve.mu_batch_with(f_star, mu, OnError::Nan)?))
+}
+
+/// μ and dμ/dF* at `n` loads into `mu[i]` and `dmu_df_star[i]`; a bad
+/// load and NULL pointers as in kef_table_mu_batch.
+///
+/// # Safety
+/// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes, not
+/// overlapping another argument.
+#[no_mangle]
+pub unsafe extern "C" fn kef_curve_mu_with_slope_batch(
+    curve: *const kef_curve,
+    n: usize,
+    f_star: *const f64,
+    mu: *mut f64,
+    dmu_df_star: *mut f64,
+) -> c_int {
+    ffi!(curve, f_star[n], mu[n], dmu_df_star[n] => stop(curve_slopes(curve, f_star, mu, dmu_df_star, OnError::Stop)))
+}
+
+/// kef_curve_mu_with_slope_batch that does not stop: NaN in both outputs
+/// at each bad load, the count in `*n_nan`, KEF_OK.
+///
+/// # Safety
+/// As kef_curve_mu_with_slope_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_curve_mu_with_slope_batch_nan(
+    curve: *const kef_curve,
+    n: usize,
+    f_star: *const f64,
+    mu: *mut f64,
+    dmu_df_star: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(curve, f_star[n], mu[n], dmu_df_star[n], n_nan =>
+        set(n_nan, curve_slopes(curve, f_star, mu, dmu_df_star, OnError::Nan)?))
 }
 
 /// The F* range [*f_star_min, *f_star_max] of `curve`.
@@ -456,21 +806,7 @@ pub unsafe extern "C" fn kef_curve_mu_batch(
 /// `curve` is NULL or a live curve; the outputs NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_range(curve: *const kef_curve, f_star_min: *mut f64, f_star_max: *mut f64) -> c_int {
-    guard(|| {
-        // SAFETY: the caller's contract.
-        let curve = unsafe { curve_ref(curve) }?;
-        required(&[
-            ("f_star_min", f_star_min.is_null()),
-            ("f_star_max", f_star_max.is_null()),
-        ])?;
-        let (lo, hi) = curve.range();
-        // SAFETY: both checked non-NULL; writable by the caller's contract.
-        unsafe {
-            put(f_star_min, lo);
-            put(f_star_max, hi);
-        }
-        Ok(())
-    })
+    ffi!(curve, f_star_min, f_star_max => set2(f_star_min, f_star_max, curve.range()))
 }
 
 /// Frees a curve. NULL is ignored.
@@ -480,16 +816,13 @@ pub unsafe extern "C" fn kef_curve_range(curve: *const kef_curve, f_star_min: *m
 /// longer in use by any thread.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_free(curve: *mut kef_curve) {
-    if !curve.is_null() {
-        // SAFETY: a pointer from Box::into_raw, freed once.
-        drop(unsafe { Box::from_raw(curve) });
-    }
+    // SAFETY: the caller's contract.
+    unsafe { free(curve, std::ptr::null()) }
 }
 
 /// μ of the Kogut–Etsion model by direct integration (microseconds) at
-/// F* (ψ, θ, β, ν, ε* as for kef_curve_from_model). KEF_ERR_ARGUMENT for
-/// an invalid parameter or a NULL `mu`; KEF_ERR_DOMAIN where the model has
-/// no μ (F* <= 0, or beyond the largest force the model reaches).
+/// F* with β, ν, ε* given (the default fit and model):
+/// kef_model_mu_with with these constants.
 ///
 /// # Safety
 /// `mu` is NULL or writable.
@@ -503,23 +836,144 @@ pub unsafe extern "C" fn kef_model_mu(
     f_star: f64,
     mu: *mut f64,
 ) -> c_int {
-    guard(|| {
-        required(&[("mu", mu.is_null())])?;
-        let m = model(psi, theta, beta, nu, eps_star)?;
-        let contact = m
-            .at_f_star(f_star)
-            .map_err(|e| Failure(KEF_ERR_DOMAIN, e.to_string()))?;
-        let value = contact.mu.ok_or_else(|| {
-            Failure(
-                KEF_ERR_DOMAIN,
-                format!(
-                    "no mu at f_star = {}: the net normal force is not positive",
-                    Shortest(f_star)
-                ),
-            )
-        })?;
-        // SAFETY: not NULL; writable by the caller's contract.
-        unsafe { put(mu, value) };
-        Ok(())
-    })
+    ffi!(mu => set(mu, model_mu(&explicit(beta, nu, eps_star), psi, theta, f_star)?))
+}
+
+/// μ of the model with `constants` (NULL: the defaults) by direct
+/// integration (microseconds) at (ψ, θ, F*). KEF_ERR_DOMAIN for a
+/// parameter out of range or an F* the model cannot reach, KEF_ERR_ARGUMENT
+/// for a NaN or ±inf or a NULL `mu`, KEF_ERR_NO_MU where the model has no
+/// μ (F* <= 0 at that separation), KEF_ERR_INTERNAL if the root search
+/// does not converge.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants; `mu` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_model_mu_with(
+    constants: *const kef_constants,
+    psi: f64,
+    theta: f64,
+    f_star: f64,
+    mu: *mut f64,
+) -> c_int {
+    ffi!(constants, mu => set(mu, model_mu(constants, psi, theta, f_star)?))
+}
+
+/// New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,
+/// fit "consistent", model "ke"), to free with kef_constants_free. NULL
+/// only if a panic was caught.
+#[no_mangle]
+pub extern "C" fn kef_constants_new() -> *mut kef_constants {
+    ffi!(=> Ok(Box::new(kef_constants(Constants::default()))))
+}
+
+/// Frees model constants. NULL is ignored.
+///
+/// # Safety
+/// `constants` is NULL or from kef_constants_new, not yet freed and no
+/// longer in use.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_free(constants: *mut kef_constants) {
+    // SAFETY: the caller's contract.
+    unsafe { free(constants, std::ptr::null()) }
+}
+
+/// Sets β, the roughness parameter ηRσ, checked at once: KEF_ERR_DOMAIN
+/// outside (0.01928, 100], KEF_ERR_ARGUMENT for NaN, ±inf or a NULL
+/// handle; the handle is unchanged on failure.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants that no other thread uses.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_beta(constants: *mut kef_constants, beta: f64) -> c_int {
+    ffi!(constants => update(constants, |c| Ok(c.beta(beta))))
+}
+
+/// Sets ν, Poisson's ratio of the softer material, in [0, 0.5); checked
+/// as kef_constants_set_beta.
+///
+/// # Safety
+/// As kef_constants_set_beta.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_nu(constants: *mut kef_constants, nu: f64) -> c_int {
+    ffi!(constants => update(constants, |c| Ok(c.nu(nu))))
+}
+
+/// Sets ε* = ε/σ, the intermolecular distance, in [1e-9, 100]; checked as
+/// kef_constants_set_beta.
+///
+/// # Safety
+/// As kef_constants_set_beta.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_eps_star(constants: *mut kef_constants, eps_star: f64) -> c_int {
+    ffi!(constants => update(constants, |c| Ok(c.eps_star(eps_star))))
+}
+
+/// Sets the friction fit by name: "consistent" (the default) or
+/// "as-printed" (the paper's printed Eq. 18). KEF_ERR_ARGUMENT for another
+/// name or a NULL pointer.
+///
+/// # Safety
+/// As kef_constants_set_beta; `name` NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_fit(constants: *mut kef_constants, name: *const c_char) -> c_int {
+    ffi!(constants, name => update(constants, |c| Ok(c.fit(fit_named(name)?))))
+}
+
+/// Sets the model by name: "ke" (Kogut–Etsion, the default) or "ceb" (the
+/// CEB-type comparison model). KEF_ERR_ARGUMENT for another name or a
+/// NULL pointer.
+///
+/// # Safety
+/// As kef_constants_set_fit.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_model(constants: *mut kef_constants, name: *const c_char) -> c_int {
+    ffi!(constants, name => update(constants, |c| Ok(c.kind(kind_named(name)?))))
+}
+
+/// β of `constants` (NULL: the default).
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_beta(constants: *const kef_constants) -> f64 {
+    ffi!(constants => Ok(constants.beta))
+}
+
+/// ν of `constants` (NULL: the default).
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_nu(constants: *const kef_constants) -> f64 {
+    ffi!(constants => Ok(constants.nu))
+}
+
+/// ε* of `constants` (NULL: the default).
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_eps_star(constants: *const kef_constants) -> f64 {
+    ffi!(constants => Ok(constants.eps_star))
+}
+
+/// The fit's name of `constants` (NULL: the default): a static string,
+/// not to free.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_fit(constants: *const kef_constants) -> *const c_char {
+    ffi!(constants => static_c(constants.fit.name()))
+}
+
+/// The model's name of `constants` (NULL: the default): a static string,
+/// not to free.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_model(constants: *const kef_constants) -> *const c_char {
+    ffi!(constants => static_c(constants.kind.name()))
 }

@@ -1,6 +1,10 @@
 //! The C ABI from Rust: every exported function, its failures and its
 //! messages, threads, and the committed header.
 
+mod batches;
+mod constants;
+mod fortran;
+
 use kefriction::*;
 use std::ffi::{c_char, CStr, CString};
 use std::ptr::{null, null_mut};
@@ -60,7 +64,24 @@ fn the_header_is_current() {
         "kef_curve_free",
         "kef_model_mu",
         "kef_last_error",
+        "int kef_table_mu_batch_nan(",
+        "int kef_table_mu_with_slope_batch(",
+        "int kef_table_mu_with_slope_batch_nan(",
+        "int kef_curve_mu_batch_nan(",
+        "int kef_curve_mu_with_slope_batch(",
+        "int kef_curve_mu_with_slope_batch_nan(",
+        "size_t *n_nan",
+        "kef_curve *kef_curve_from_model_with(const kef_constants *constants",
+        "int kef_model_mu_with(const kef_constants *constants",
+        "kef_constants *kef_constants_new(void);",
+        "void kef_constants_free(kef_constants *constants);",
+        "int kef_constants_set_beta(kef_constants *constants, double beta);",
+        "int kef_constants_set_fit(kef_constants *constants, const char *name);",
+        "int kef_constants_set_model(kef_constants *constants, const char *name);",
+        "typedef struct kef_constants kef_constants;",
         "#define KEF_ERR_TABLE 4",
+        "#define KEF_ERR_NO_MU 6",
+        "stays valid until the thread exits",
         "extern \"C\"",
         "typedef struct kef_table kef_table;",
     ] {
@@ -83,24 +104,34 @@ fn table_lookups_match_the_library_and_fail_cleanly() {
             KEF_OK
         );
         assert_eq!((mu, slope), table.mu_with_slope(1.0, 0.001, 0.01).unwrap());
-        // Out of the domain, NaN, ±∞: KEF_ERR_DOMAIN, the message names
-        // the argument and the range, the output stays untouched.
-        for (psi, theta, f, name) in [
-            (9.0, 0.001, 0.01, "psi = 9 is outside the range [0.5, 8]"),
-            (1.0, f64::NAN, 0.01, "theta = NaN"),
-            (1.0, 0.001, f64::INFINITY, "f_star = inf"),
-            (1.0, 0.001, f64::NEG_INFINITY, "f_star = -inf"),
-            (1.0, 0.001, 0.0, "f_star = 0 is outside the range [1e-5, 0.1]"),
+        // Out of the domain: KEF_ERR_DOMAIN; NaN, ±∞: KEF_ERR_ARGUMENT (the
+        // core's classification); the message names the argument and the
+        // range, the output stays untouched.
+        for (psi, theta, f, code, name) in [
+            (
+                9.0,
+                0.001,
+                0.01,
+                KEF_ERR_DOMAIN,
+                "psi = 9 is outside the range [0.5, 8]",
+            ),
+            (1.0, f64::NAN, 0.01, KEF_ERR_ARGUMENT, "theta = NaN"),
+            (1.0, 0.001, f64::INFINITY, KEF_ERR_ARGUMENT, "f_star = inf"),
+            (1.0, 0.001, f64::NEG_INFINITY, KEF_ERR_ARGUMENT, "f_star = -inf"),
+            (
+                1.0,
+                0.001,
+                0.0,
+                KEF_ERR_DOMAIN,
+                "f_star = 0 is outside the range [1e-5, 0.1]",
+            ),
         ] {
             let mut out = 42.0;
-            assert_eq!(kef_table_mu(t, psi, theta, f, &mut out), KEF_ERR_DOMAIN);
+            assert_eq!(kef_table_mu(t, psi, theta, f, &mut out), code);
             assert_eq!(out, 42.0);
             assert!(last_error().contains(name), "{}", last_error());
             let mut s = 42.0;
-            assert_eq!(
-                kef_table_mu_with_slope(t, psi, theta, f, &mut out, &mut s),
-                KEF_ERR_DOMAIN
-            );
+            assert_eq!(kef_table_mu_with_slope(t, psi, theta, f, &mut out, &mut s), code);
             assert_eq!((out, s), (42.0, 42.0));
         }
         // NULL pointers.
@@ -158,7 +189,7 @@ fn batches_name_the_first_bad_element_and_write_nothing_from_it() {
         let mut out = [-1.0; 4];
         assert_eq!(
             kef_curve_mu_batch(c, 4, loads.as_ptr(), out.as_mut_ptr()),
-            KEF_ERR_DOMAIN
+            KEF_ERR_ARGUMENT
         );
         assert!(
             last_error().starts_with("batch element 2: f_star = NaN"),
@@ -229,24 +260,31 @@ fn the_model_by_direct_integration() {
         // MODEL.md §7.
         assert!((mu - 0.52521087083).abs() < 1e-10, "{mu}");
         let mut out = 3.0;
-        for f in [0.0, -1.0, f64::NAN, f64::INFINITY, 1e30] {
-            assert_eq!(
-                kef_model_mu(1.0, 0.001, 0.04, 0.3, 0.004, f, &mut out),
-                KEF_ERR_DOMAIN,
-                "{f}"
-            );
+        for (f, code) in [
+            (0.0, KEF_ERR_DOMAIN),
+            (-1.0, KEF_ERR_DOMAIN),
+            (f64::NAN, KEF_ERR_ARGUMENT),
+            (f64::INFINITY, KEF_ERR_ARGUMENT),
+            (1e30, KEF_ERR_DOMAIN),
+        ] {
+            assert_eq!(kef_model_mu(1.0, 0.001, 0.04, 0.3, 0.004, f, &mut out), code, "{f}");
             assert_eq!(out, 3.0);
             assert!(last_error().contains("f_star"), "{}", last_error());
         }
         assert_eq!(
             kef_model_mu(1.0, 0.001, 0.01, 0.3, 0.004, 0.01, &mut out),
-            KEF_ERR_ARGUMENT
+            KEF_ERR_DOMAIN
         );
         assert!(
             last_error().starts_with("beta = 0.01 is out of range"),
             "{}",
             last_error()
         );
+        assert_eq!(
+            kef_model_mu(1.0, 0.001, f64::NAN, 0.3, 0.004, 0.01, &mut out),
+            KEF_ERR_ARGUMENT
+        );
+        assert!(last_error().starts_with("beta = NaN"), "{}", last_error());
         assert_eq!(
             kef_model_mu(1.0, 0.001, 0.04, 0.3, 0.004, 0.01, null_mut()),
             KEF_ERR_ARGUMENT
