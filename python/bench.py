@@ -184,7 +184,7 @@ def main(argv):
     print(f"ke_friction bench: {N:,} random points of the default table's domain, median of {rounds} "
           f"interleaved rounds; max relative error against direct integration at {ERROR_SAMPLES:,} of them.")
     print(f"NumPy {np.__version__}, SciPy {scipy.__version__}, Python {platform.python_version()}, {cpu_name()}, "
-          f"{os.cpu_count()} CPUs; table kernel: {'AVX2 (f32)' if info['fast_kernel'] else 'portable (f64)'}; "
+          f"{os.cpu_count()} CPUs; table kernel: {'AVX2 (f32)' if table.fast_kernel else 'portable (f64)'}; "
           f"Table.mu on one thread (as RGI) and with threads=None on {cores()}.")
     print()
     print(f"| {'contender':<24} | {'ns/query':>8} | {'Table.mu faster by':>18} | {'max rel. error':>14} "

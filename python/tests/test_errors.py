@@ -2,6 +2,7 @@
 TypeError for wrong types; nothing panics."""
 
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -120,7 +121,9 @@ def test_wrong_types_elsewhere_raise_type_error(table):
     with pytest.raises(TypeError, match="psi"):
         kf.Model("1", 0.001)
     with pytest.raises(TypeError, match="fit"):
-        kf.Model(1.0, 0.001, fit=None)
+        kf.Model(1.0, 0.001, fit=3)  # (None is the default)
+    with pytest.raises(TypeError, match="beta"):
+        kf.Model(1.0, 0.001, beta="0.04")
     with pytest.raises(TypeError, match="h_star"):
         kf.Model(1.0, 0.001).at_h_star(None)
     with pytest.raises(TypeError, match="model"):
@@ -149,6 +152,39 @@ def test_the_native_layer_rejects_mismatched_arrays_without_panicking(table):
         kf.Model(1.0, 0.001)._core.contacts_into(np.ones(2), False, np.empty(3), False, 0)
     with pytest.raises(TypeError):
         core.mu_into(a.astype(np.float32), a, a, np.empty(3), False, 0)
+
+
+def test_the_native_layer_raises_by_error_kind_with_the_flat_index(table):
+    """The native layer maps the library's error kinds to exceptions in one
+    place and hands the bad element's flat index on as ``index``; in NaN
+    mode it returns how many elements are NaN (the library's count)."""
+    core = table._core
+    f = np.full(600, 0.01)
+    f[[5, 300, 599]] = [0.5, np.nan, -1.0]
+    one = np.ones(1)
+    with pytest.raises(ValueError, match=r"^f_star = 0.5 is outside the range \[1e-5, 0.1\]$") as e:
+        core.mu_into(one, one * 0.001, f, np.empty(600), False, 1)
+    assert e.value.index == 5
+    with pytest.raises(ValueError, match=r"^f_star = NaN ") as e:
+        core.mu_with_slope_into(one, one * 0.001, f[6:], np.empty(594), np.empty(594), False, 1)
+    assert e.value.index == 294
+    assert core.mu_into(one, one * 0.001, f, np.empty(600), True, 1) == 3
+    assert core.mu_with_slope_into(one, one * 0.001, f, np.empty(600), np.empty(600), True, 2) == 3
+    curve = table.curve(1.0, 0.001)._core
+    assert curve.mu_into(f, np.empty(600), True, 1) == 3
+    assert curve.mu_with_slope_into(f, np.empty(600), np.empty(600), True, 1) == 3
+    model = kf.Model(1.0, 0.001)._core
+    assert model.contacts_into(np.array([0.01, -1.0, np.nan]), True, np.empty(21), True, 1) == 2
+    with pytest.raises(ValueError) as e:
+        model.contacts_into(np.array([0.01, -1.0, np.nan]), True, np.empty(21), False, 1)
+    assert e.value.index == 1
+    # Scalar lookups and errors without an element raise without an index.
+    with pytest.raises(ValueError) as e:
+        core.mu_scalar(9.0, 0.001, 0.01)
+    assert not hasattr(e.value, "index")
+    with pytest.raises(kf.TableError):
+        kf.Table.load(pathlib.Path(kf.__file__))  # not a table
+    assert issubclass(kf.TableError, ValueError)
 
 
 def test_loading_tables(tmp_path):

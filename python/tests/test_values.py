@@ -1,11 +1,13 @@
 """Values: the model, the table and curves against the mpmath reference
 points and the CLI (`kefric eval --json`, `kefric lookup --json`)."""
 
+import json
 import math
+import subprocess
 
 import numpy as np
 import pytest
-from conftest import MODEL_REL, REFERENCE, SAME_REL, kefric
+from conftest import KEFRIC, MODEL_REL, REFERENCE, SAME_REL, kefric
 
 import ke_friction as kf
 
@@ -122,14 +124,45 @@ def test_curve_from_model_is_within_its_accuracy(points):
 def test_info_describes_the_default_table(table):
     info = table.info
     assert info["model"] == "ke" and info["fit"] == "consistent"
-    assert info["psi"] == (0.5, 8.0) and info["theta"] == (0.0, 0.01) and info["f_star"] == (1e-5, 0.1)
-    assert (info["beta"], info["nu"], info["eps_star"]) == (0.04, 0.3, 0.004)
-    assert 0 < info["p99_rel_error"] <= info["max_rel_error"] <= info["tolerance"] == 1e-4
-    assert info["error_samples"] > 0 and len(info["worst_point"]) == 3
-    assert info["precision"] in ("f32", "f64") and isinstance(info["fast_kernel"], bool)
-    assert len(info["nodes"]) == 3
+    assert info["psi"] == [0.5, 8.0] and info["theta"] == [0.0, 0.01] and info["f_star"] == [1e-5, 0.1]
+    # Built with the library's default constants.
+    assert {k: info[k] for k in kf.DEFAULTS} == dict(kf.DEFAULTS)
+    accuracy = info["accuracy"]
+    assert 0 < accuracy["p99_rel"] <= accuracy["max_rel"] <= info["tolerance"] == 1e-4
+    assert accuracy["samples"] > 0 and len(accuracy["worst"]) == 3
+    assert info["precision"] in ("f32", "f64") and isinstance(table.fast_kernel, bool)
+    assert len(info["build"]["nodes"]) == 3 and info["build"]["generator"].startswith("ke-friction")
+    assert info["bytes"] > 0 and isinstance(info["crc32"], int) and info["format_version"] >= 1
     info["psi"] = None  # a copy: the table is not changed
-    assert table.info["psi"] == (0.5, 8.0)
+    info["accuracy"]["max_rel"] = None
+    assert table.info["psi"] == [0.5, 8.0] and table.info["accuracy"]["max_rel"] > 0
+
+
+def test_info_is_the_record_of_kefric_info_and_of_the_export(table, tmp_path):
+    """One record of a table, one set of names: Table.info is what `kefric
+    info --json` prints, and has the keys of a NumPy export's metadata."""
+    cli = kefric("info")
+    assert len(cli) == 1 and cli[0] == kf.Table.default().info == table.info
+    npz = tmp_path / "default.npz"
+    subprocess.run([KEFRIC, "export", "--quiet", "--npz", str(npz)], check=True, capture_output=True)
+    with np.load(npz) as z:
+        metadata = json.loads(z["metadata"].tobytes())
+    assert set(metadata) == set(table.info)
+    assert metadata == table.info
+
+
+def test_model_defaults_and_params_are_the_librarys_records():
+    assert set(kf.DEFAULTS) == {"beta", "nu", "eps_star", "fit", "model"}
+    with pytest.raises(TypeError):
+        kf.DEFAULTS["beta"] = 1.0  # read-only
+    p = kf.Model(1.0, 0.001).params
+    assert list(p) == ["psi", "theta", "beta", "nu", "eps_star", "fit", "model"]
+    assert p == {"psi": 1.0, "theta": 0.001, **kf.DEFAULTS}
+    # A constant left out or None is the default; one given is kept.
+    assert kf.Model(1.0, 0.001, beta=None, fit=None).params == p
+    assert kf.Model(1.0, 0.001, nu=0.25, model="ceb").params == {**p, "nu": 0.25, "model": "ceb"}
+    row = kefric("eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.01")[0]
+    assert {k: row[k] for k in p} == p
 
 
 def test_params_from_physical_is_kefric_params():
@@ -138,6 +171,8 @@ def test_params_from_physical_is_kefric_params():
     p = kf.params_from_physical(**si)
     flags = [x for k, v in si.items() for x in ("--" + k.replace("_", "-"), repr(v))]
     row = kefric("params", *flags)[0]
+    assert set(p) == set(row) == {"psi", "theta", "beta", "nu", "eps_star", "fit", "model"}
     for key in ["psi", "theta", "beta", "nu", "eps_star"]:
         assert p[key] == pytest.approx(row[key], rel=SAME_REL), key
+    assert (p["fit"], p["model"]) == (row["fit"], row["model"]) == (kf.DEFAULTS["fit"], kf.DEFAULTS["model"])
     assert kf.Model(**p).at_f_star(0.01).mu > 0

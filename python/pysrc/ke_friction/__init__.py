@@ -14,7 +14,15 @@ Lookups take Python floats (and return a float) or array-likes, which
 broadcast by NumPy's rules (and return float64 arrays). Arguments outside
 the table's or curve's range, or NaN, raise ValueError naming the argument,
 its value, its index and the range; ``out_of_domain="nan"`` gives NaN there
-instead. Array work runs with the GIL released and, if asked
+instead (the library's own batch policy). Errors map to exceptions by the
+library's error kinds: ValueError for bad arguments, values out of range
+and an undefined mu; OSError for a file that cannot be read;
+:class:`TableError` (a ValueError) for a damaged table file; RuntimeError
+for a bug. Records use the library's names: :attr:`Table.info` is what
+``kefric info --json`` prints, :attr:`Model.params` and
+:func:`params_from_physical` what ``kefric params --json`` prints, and
+:data:`DEFAULTS` the model constants a :class:`Model` takes by default.
+Array work runs with the GIL released and, if asked
 (``threads=None`` for one per core, or a number), on several threads.
 
 >>> import ke_friction as kf
@@ -29,6 +37,7 @@ import dataclasses
 import math
 import numbers
 import os
+import types
 from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 
 import numpy as np
@@ -36,7 +45,7 @@ import numpy.typing as npt
 
 from . import _core
 
-__all__ = ["Table", "Curve", "Model", "Contact", "TableError", "params_from_physical", "CURVE_ACCURACY"]
+__all__ = ["Table", "Curve", "Model", "Contact", "TableError", "params_from_physical", "CURVE_ACCURACY", "DEFAULTS"]
 
 #: Raised for a table file that is damaged, not a table, or inconsistent
 #: (a subclass of ValueError).
@@ -44,6 +53,11 @@ TableError = _core.TableError
 
 #: The relative accuracy of :meth:`Curve.from_model` against the model.
 CURVE_ACCURACY: float = _core.CURVE_ACCURACY
+
+#: The model constants a :class:`Model` takes unless told otherwise, from
+#: the library (read-only): ``beta``, ``nu``, ``eps_star``, ``fit`` and
+#: ``model``, by the names of its records.
+DEFAULTS: "types.MappingProxyType[str, Any]" = types.MappingProxyType(_core.DEFAULTS)
 
 #: What lookups take: a number or anything :func:`numpy.asarray` turns into
 #: an array of real numbers.
@@ -126,11 +140,15 @@ def _arrays(names: Tuple[str, ...], values: Tuple[Any, ...], scalars: bool = Fal
     return shape, flat
 
 
-def _raise(bad: Any, shape: Tuple[int, ...]) -> None:
-    if bad is not None:
-        index, message = bad
-        where = np.unravel_index(index, shape) if shape else ()
-        raise ValueError(f"{message} (at index {tuple(int(i) for i in where)})" if shape else message)
+def _located(e: BaseException, shape: Tuple[int, ...]) -> BaseException:
+    """An exception of the native layer for an array of ``shape``: the same
+    class, its message ending in the bad element's index in that shape if
+    it has one (its ``index`` attribute: the flat index); else ``e``."""
+    index = getattr(e, "index", None)
+    if index is None or not shape:
+        return e
+    where = tuple(int(i) for i in np.unravel_index(index, shape))
+    return type(e)(f"{e} (at index {where})")
 
 
 class Table:
@@ -246,7 +264,10 @@ class Table:
         workers = _threads(threads)
         shape, (p, t, f) = _arrays(_TABLE_ARGS, (psi, theta, f_star), scalars=True)
         out = np.empty(math.prod(shape))
-        _raise(self._core.mu_into(p, t, f, out, nan, workers), shape)
+        try:
+            self._core.mu_into(p, t, f, out, nan, workers)
+        except Exception as e:
+            raise _located(e, shape) from None
         return out.reshape(shape)[()]
 
     @overload
@@ -282,27 +303,41 @@ class Table:
         shape, (p, t, f) = _arrays(_TABLE_ARGS, (psi, theta, f_star), scalars=True)
         size = math.prod(shape)
         mu, slope = np.empty(size), np.empty(size)
-        _raise(self._core.mu_with_slope_into(p, t, f, mu, slope, nan, workers), shape)
+        try:
+            self._core.mu_with_slope_into(p, t, f, mu, slope, nan, workers)
+        except Exception as e:
+            raise _located(e, shape) from None
         return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     @property
     def info(self) -> Dict[str, Any]:
-        """What the table holds, a new dict each time:
+        """What the table file says about itself, a new dict each time: the
+        library's table record, exactly what ``kefric info --json`` prints
+        and a NumPy export (``kefric export``) stores as ``metadata``:
 
-        * ``psi``, ``theta``, ``f_star``: the ranges (lo, hi) lookups accept;
+        * ``psi``, ``theta``, ``f_star``: the ranges [lo, hi] lookups accept;
         * ``beta``, ``nu``, ``eps_star``: the model constants it was built with;
-        * ``model``: ``"ke"`` (Kogut-Etsion) or ``"ceb"`` (CEB-type);
+          ``model``: ``"ke"`` (Kogut-Etsion) or ``"ceb"`` (CEB-type);
           ``fit``: ``"consistent"`` or ``"as-printed"`` (see :class:`Model`);
         * ``tolerance``: the largest relative error of mu it promises;
-        * ``max_rel_error``, ``p99_rel_error``: its error against direct
-          integration measured at build time at ``error_samples`` random
-          points, the largest at ``worst_point`` (psi, theta, F*);
-        * ``nodes`` (psi, theta, F*), ``precision`` (``"f32"``/``"f64"``),
-          ``format_version``, ``generator`` (the program that built it);
-        * ``fast_kernel``: whether this CPU runs the AVX2 kernel (else the
-          portable f64 one).
+        * ``accuracy``: its error of mu against direct integration measured
+          at build time, ``max_rel`` and ``p99_rel``, at ``samples`` random
+          points, the largest at ``worst`` [psi, theta, F*];
+        * ``build``: the build options, ``nodes`` [psi, theta, F*],
+          ``ghosts``, ``h_star`` [from, to, points] of the integration grid,
+          ``samples``, ``seed`` and ``generator`` (the program that built it);
+        * ``precision`` (``"f32"``/``"f64"``), ``format_version``, and the
+          file's ``bytes`` and ``crc32``.
+
+        Ranges and other tuples are lists (as JSON has them).
         """
         return self._core.info()
+
+    @property
+    def fast_kernel(self) -> bool:
+        """Whether lookups run the fast AVX2 kernel on this CPU (else the
+        portable f64 one); the results agree within the table's tolerance."""
+        return self._core.fast_kernel()
 
     def curve(self, psi: float, theta: float) -> "Curve":
         """mu(F*) of the surface pair (psi, theta) over the table's F* range:
@@ -384,7 +419,10 @@ class Curve:
         workers = _threads(threads)
         shape, (f,) = _arrays(("f_star",), (f_star,))
         out = np.empty(f.size)
-        _raise(self._core.mu_into(f, out, nan, workers), shape)
+        try:
+            self._core.mu_into(f, out, nan, workers)
+        except Exception as e:
+            raise _located(e, shape) from None
         return out.reshape(shape)[()]
 
     @overload
@@ -410,7 +448,10 @@ class Curve:
         workers = _threads(threads)
         shape, (f,) = _arrays(("f_star",), (f_star,))
         mu, slope = np.empty(f.size), np.empty(f.size)
-        _raise(self._core.mu_with_slope_into(f, mu, slope, nan, workers), shape)
+        try:
+            self._core.mu_with_slope_into(f, mu, slope, nan, workers)
+        except Exception as e:
+            raise _located(e, shape) from None
         return mu.reshape(shape)[()], slope.reshape(shape)[()]
 
     def __repr__(self) -> str:
@@ -442,6 +483,9 @@ class Model:
     intermolecular distance eps/sigma, in [1e-9, 100]; fit: "consistent"
     (MODEL.md section 4) or "as-printed" (the literal printed Eq. 18);
     model: "ke" (Kogut-Etsion) or "ceb" (the CEB-type comparison model).
+    A constant left out (or None) is the library's default,
+    :data:`DEFAULTS`: beta = {beta!r}, nu = {nu!r}, eps_star = {eps_star!r},
+    fit = {fit!r}, model = {model!r}.
     Invalid values raise ValueError naming the parameter and its range.
     Wrong types raise TypeError. Array work runs with the GIL released,
     and with ``threads=None`` (or a number) on several threads from 8
@@ -456,17 +500,22 @@ class Model:
 
     __slots__ = ("_core",)
 
-    def __init__(self, psi: float, theta: float, beta: float = 0.04, nu: float = 0.3, eps_star: float = 0.004,
-                 fit: str = "consistent", model: str = "ke") -> None:
-        _check_real(psi=psi, theta=theta, beta=beta, nu=nu, eps_star=eps_star)
+    def __init__(self, psi: float, theta: float, beta: Optional[float] = None, nu: Optional[float] = None,
+                 eps_star: Optional[float] = None, fit: Optional[str] = None, model: Optional[str] = None) -> None:
+        _check_real(psi=psi, theta=theta)
+        _check_real(**{k: v for k, v in (("beta", beta), ("nu", nu), ("eps_star", eps_star)) if v is not None})
         for name, value in (("fit", fit), ("model", model)):
-            if not isinstance(value, str):
+            if value is not None and not isinstance(value, str):
                 raise TypeError(f"{name} must be a str, not {type(value).__name__}")
-        self._core = _core.ModelCore(float(psi), float(theta), float(beta), float(nu), float(eps_star), fit, model)
+        self._core = _core.ModelCore(float(psi), float(theta), None if beta is None else float(beta),
+                                     None if nu is None else float(nu),
+                                     None if eps_star is None else float(eps_star), fit, model)
 
     @property
     def params(self) -> Dict[str, Any]:
-        """psi, theta, beta, nu, eps_star, fit and model."""
+        """The model's parameters, a new dict each time, by the library's
+        record names (what ``kefric params --json`` prints): psi, theta,
+        beta, nu, eps_star, fit and model."""
         return self._core.params()
 
     def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain,
@@ -476,7 +525,10 @@ class Model:
         scalar = _is_scalar(x)
         shape, (flat,) = _arrays((name,), (x,))
         out = np.empty((flat.size, 7))
-        _raise(self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan, workers), shape)
+        try:
+            self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan, workers)
+        except Exception as e:
+            raise _located(e, shape) from None
         cols = [np.ascontiguousarray(out[:, k]).reshape(shape)[()] for k in range(7)]
         return Contact(*(float(c) for c in cols)) if scalar else Contact(*cols)
 
@@ -485,7 +537,8 @@ class Model:
         """The model at external force F* > 0 (solving F*(h*) = F*): a
         :class:`Contact` of floats for a number, of arrays for an array-like.
         F* <= 0, NaN or beyond the model's reach raises ValueError (or gives
-        NaN with ``out_of_domain="nan"``). ``threads``: as :meth:`Table.mu`,
+        NaN with ``out_of_domain="nan"``); a solver that fails to converge
+        (a bug) raises RuntimeError either way. ``threads``: as :meth:`Table.mu`,
         from 8 points."""
         return self._at(f_star, True, "f_star", out_of_domain, threads)
 
@@ -500,8 +553,12 @@ class Model:
         return "Model(" + ", ".join(f"{k}={v!r}" for k, v in p.items()) + ")"
 
 
+if Model.__doc__:  # (None under python -OO)
+    Model.__doc__ = Model.__doc__.format(**DEFAULTS)
+
+
 def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,
-                         radius: float, density: float, delta_gamma: float, epsilon: float) -> Dict[str, float]:
+                         radius: float, density: float, delta_gamma: float, epsilon: float) -> Dict[str, Any]:
     """The model's dimensionless parameters of SI inputs.
 
     e1, e2: Young's moduli (Pa) of the softer material and the other;
@@ -509,8 +566,10 @@ def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardne
     (Pa); sigma: standard deviation of the asperity heights (m); radius:
     asperity radius R (m); density: areal density eta of asperities (1/m^2);
     delta_gamma: energy of adhesion (J/m^2); epsilon: intermolecular
-    distance (m). Returns {"psi", "theta", "beta", "nu", "eps_star"}, ready
-    for ``Model(**p)``. Unphysical input raises ValueError naming it.
+    distance (m). Returns the model's parameters by the library's record
+    names, as ``kefric params --json`` prints them: {"psi", "theta",
+    "beta", "nu", "eps_star", "fit", "model"} (the last two the defaults),
+    ready for ``Model(**p)``. Unphysical input raises ValueError naming it.
 
     >>> p = params_from_physical(e1=200e9, nu1=0.3, e2=200e9, nu2=0.3, hardness=2e9, sigma=100e-9,
     ...                          radius=10e-6, density=4e10, delta_gamma=0.3, epsilon=0.4e-9)

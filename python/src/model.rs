@@ -1,0 +1,155 @@
+//! `ModelCore`: the model by direct integration, and the parameters of
+//! physical inputs.
+
+use crate::convert::{record, same_len, slice, slice_mut};
+use crate::error::{raise, value_error, Failure};
+use crate::parallel::{cut, MODEL_WORK};
+use ke_friction::{Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
+use numpy::{PyReadonlyArray1, PyReadwriteArray1};
+use pyo3::prelude::*;
+
+/// The model by direct integration.
+#[pyclass(frozen, module = "ke_friction._core")]
+pub struct ModelCore(pub Model);
+
+/// The one of `all` called `value` (as `name_of` spells it), for argument
+/// `arg`; a `ValueError` listing the names if none is.
+fn by_name<T: Copy>(arg: &str, value: &str, all: &[T], name_of: fn(T) -> &'static str) -> PyResult<T> {
+    all.iter().copied().find(|&x| name_of(x) == value).ok_or_else(|| {
+        let names: Vec<_> = all.iter().map(|&x| format!("{:?}", name_of(x))).collect();
+        value_error(format!("{arg} = {value:?}: must be {}", names.join(" or ")))
+    })
+}
+
+#[pymethods]
+impl ModelCore {
+    /// The model at (ψ, θ); each constant left out (None) is the core's
+    /// default (`Constants::default()`, see `DEFAULTS`).
+    #[new]
+    #[pyo3(signature = (psi, theta, beta=None, nu=None, eps_star=None, fit=None, model=None))]
+    fn new(
+        psi: f64,
+        theta: f64,
+        beta: Option<f64>,
+        nu: Option<f64>,
+        eps_star: Option<f64>,
+        fit: Option<&str>,
+        model: Option<&str>,
+    ) -> PyResult<ModelCore> {
+        let mut c = Constants::default();
+        if let Some(fit) = fit {
+            c.fit = by_name("fit", fit, &Fit::ALL, Fit::name)?;
+        }
+        if let Some(model) = model {
+            c.kind = by_name("model", model, &Kind::ALL, Kind::name)?;
+        }
+        c.beta = beta.unwrap_or(c.beta);
+        c.nu = nu.unwrap_or(c.nu);
+        c.eps_star = eps_star.unwrap_or(c.eps_star);
+        Model::new(c.unchecked_at(psi, theta)).map(ModelCore).map_err(raise)
+    }
+
+    /// The contacts at `x` (F* if `at_f_star`, else h*) into the seven
+    /// output arrays (h*, d*, P*, Fs*, Q*, F*, μ); returns how many points
+    /// are NaN (with `nan`: a point the model cannot answer, but for an
+    /// internal error, which raises), or raises the first bad point's
+    /// error with its index as the exception's `index`. `threads` as
+    /// `TableCore.mu_into`.
+    #[allow(clippy::too_many_arguments)]
+    fn contacts_into(
+        &self,
+        py: Python<'_>,
+        x: PyReadonlyArray1<'_, f64>,
+        at_f_star: bool,
+        mut out: PyReadwriteArray1<'_, f64>,
+        nan: bool,
+        threads: usize,
+    ) -> PyResult<usize> {
+        let x = slice("x", &x)?;
+        let out = slice_mut("out", &mut out)?;
+        same_len(7 * x.len(), &[("out", out.len())])?;
+        let model = &self.0;
+        py.detach(|| {
+            MODEL_WORK.run(
+                x.len(),
+                threads,
+                |chunks| cut(out, 7, chunks),
+                |_| (),
+                |chunk, out| {
+                    let mut bad = 0;
+                    let start = chunk.start;
+                    for (i, (&v, row)) in x[chunk].iter().zip(out.chunks_exact_mut(7)).enumerate() {
+                        let c = if at_f_star {
+                            model.at_f_star(v)
+                        } else {
+                            model.at_h_star(v)
+                        };
+                        match c {
+                            Ok(c) => row.copy_from_slice(&[
+                                c.h_star,
+                                c.d_star,
+                                c.p_star,
+                                c.fs_star,
+                                c.q_star,
+                                c.f_star,
+                                c.mu.unwrap_or(f64::NAN),
+                            ]),
+                            Err(e) if nan && e.kind() != ErrorKind::Internal => {
+                                row.fill(f64::NAN);
+                                bad += 1;
+                            }
+                            Err(e) => return Err(Failure::at(start + i, &e)),
+                        }
+                    }
+                    Ok(bad)
+                },
+            )
+        })
+        .map_err(|failure| failure.into_pyerr(py))
+    }
+
+    /// The model's parameters: the core's `Params` record (psi, theta,
+    /// beta, nu, eps_star, fit, model).
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        record(py, serde_json::to_string(self.0.params()))
+    }
+}
+
+/// The model's parameters of SI inputs ([`Params::from_physical`]): the
+/// core's `Params` record, as `kefric params --json` prints it.
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+pub fn params_from_physical<'py>(
+    py: Python<'py>,
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    sigma: f64,
+    radius: f64,
+    density: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let phys = Physical {
+        e1,
+        nu1,
+        e2,
+        nu2,
+        hardness,
+        sigma,
+        radius,
+        density,
+        delta_gamma,
+        epsilon,
+    };
+    let p = Params::from_physical(&phys).map_err(raise)?;
+    record(py, serde_json::to_string(&p))
+}
+
+/// The core's default constants (`Constants::default()`: beta, nu,
+/// eps_star, fit, model), for `_core.DEFAULTS`.
+pub fn defaults(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
+    record(py, serde_json::to_string(&Constants::default()))
+}
