@@ -390,6 +390,7 @@ const NOT_KEFRIC: &[&str] = &[
     "--crate-type",
     "--print",
     "--upgrade",
+    "--cfg",
 ];
 
 #[test]
@@ -432,4 +433,33 @@ fn every_flag_in_the_readme_is_in_some_help() {
         }
     }
     assert!(missing.is_empty(), "README flags that no --help lists: {missing:?}");
+}
+
+#[test]
+fn the_readme_layout_table_lists_every_folder() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let skip = ["target", ".git", "corpus", "artifacts", "__pycache__", ".pytest_cache"];
+    let mut missing = vec![];
+    let mut stack = vec![std::path::PathBuf::new()];
+    while let Some(rel) = stack.pop() {
+        for entry in std::fs::read_dir(root.join(&rel)).unwrap() {
+            let entry = entry.unwrap();
+            let name = entry.file_name().to_string_lossy().into_owned();
+            if !entry.file_type().unwrap().is_dir() || skip.contains(&name.as_str()) || name.ends_with(".egg-info") {
+                continue;
+            }
+            let path = rel.join(&name);
+            let shown = format!("`{}/`", path.display());
+            if !readme.contains(&shown) {
+                missing.push(shown);
+            }
+            stack.push(path);
+        }
+    }
+    missing.sort();
+    assert!(
+        missing.is_empty(),
+        "folders the README's layout table does not list: {missing:?}"
+    );
 }
