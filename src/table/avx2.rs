@@ -39,17 +39,8 @@
 //! `mu_with_slope_batch` ran 2.5% slower (`mu_with_slope` 0.5–1%). So the
 //! kernel keeps the `#[inline(always)]` structure and its machine code.
 //!
-//! # Measured and not kept
-//!
-//! On this project's 2-core Xeon VM with AVX-512 (2026-11-23; `mu_batch`,
-//! 10⁵ random queries, three alternating runs of two builds):
-//! - the ψ-plane sums on 512-bit vectors (one load per plane instead of
-//!   two, the same arithmetic lane by lane, so the same bits; MSRV 1.89):
-//!   6.9 → 8.8 ns a query warm, 28% slower;
-//! - θ rows interleaved in pairs instead of fours (coefficients 0.83 →
-//!   0.41 MB, the same eight loads a query, each plane's block then in two
-//!   places): 3% slower warm, no faster on caches other work has swept
-//!   (Rust, and `python/bench.py` after SciPy).
+//! Variants measured and not kept (512-bit ψ-plane sums, θ rows in pairs)
+//! are in docs/PERFORMANCE.md.
 
 use super::layout::Layout;
 use super::{BatchOutput, FastKernel};
@@ -587,16 +578,9 @@ const LINE_FLOATS: usize = 16;
 /// It is for the caller whose caches other work has swept between
 /// batches: the queries' scattered reads would find the table in memory,
 /// one line at a time, and a sequential pass is far cheaper than those
-/// misses. Measured on this 2-core VM (2026-11-23), without → with it,
-/// medians of 101–301 rounds with both interleaved in one process: 10⁵
-/// queries after 64 MB of other writes 10.6 → 10.3 ns a query, on warm
-/// caches 8.5 → 8.6 ns; 20,000 queries 15.0 → 13.7 ns cold, 8.5 → 9.0
-/// warm. From Python right after SciPy's interpolator, where more of the
-/// table has gone (`python/bench.py`, 4 A/B runs of two builds), 10⁵
-/// queries 13.6–14.2 → 11.7–13.9 ns. Prefetching a few lines per block
-/// of queries instead, spread over the batch, saved nothing. On warm
-/// caches the pass costs about 10 µs, which is why smaller batches skip
-/// it.
+/// misses (the measurements, cold and warm, are in docs/PERFORMANCE.md).
+/// On warm caches the pass costs about 10 µs, which is why smaller batches
+/// skip it.
 #[inline(always)]
 fn prefetch_coefficients(kernel: &Kernel) {
     for line in kernel.coefs.chunks(LINE_FLOATS) {

@@ -359,7 +359,7 @@ def _check_real(**named: Any) -> None:
 
 class Curve:
     """mu(F*) of one surface pair (fixed psi and theta): Hermite cubics in
-    ln F* through mu and dmu/dF*, C1-smooth. From :meth:`Table.curve` or
+    F* through mu and dmu/dF* on cells spaced by octaves of F*, C1-smooth. From :meth:`Table.curve` or
     :meth:`Curve.from_model`. Immutable; share it freely across threads.
     A lookup takes about a nanosecond per load in arrays: the fastest way to
     evaluate mu where psi and theta stay fixed (a simulation's inner loop).
