@@ -504,7 +504,9 @@ impl PaperRange {
     /// Counts the point (F*, h*).
     pub fn note(&mut self, f_star: f64, h_star: f64) {
         self.total += 1;
-        if f_star > PAPER_F_STAR_MAX || h_star < 0.0 {
+        // A solved F* may exceed 0.1 by rounding (0.10000000000000003):
+        // not a point outside the paper's range.
+        if f_star > PAPER_F_STAR_MAX * (1.0 + 1e-9) || h_star < 0.0 {
             if self.outside == 0 {
                 (self.f_star_max, self.h_star_min) = (f_star, h_star);
             }

@@ -1,7 +1,9 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map. PNG or SVG by the output file's extension.
 
-use crate::args::{check_writable, flag_of, load_table, output_dir, parse_f64, whole, Failure, ModelArgs};
+use crate::args::{
+    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
+};
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
@@ -68,6 +70,9 @@ struct CurveArgs {
     /// Overlay a table's lookup: `--table` alone for the embedded default table, `--table PATH` for a file. The table must hold --psi and --theta and have been built with the same --beta, --nu, --eps-star, --fit and --model. Without it, direct integration only.
     #[arg(long, value_name = "PATH", num_args = 0..=1)]
     table: Option<Option<PathBuf>>,
+    /// Range of F*, LO:HI (0 < LO < HI), at 200 loads spaced logarithmically [default: the paper's range, 0 <= h* <= 3 and F* <= 0.1].
+    #[arg(long, value_name = "LO:HI")]
+    f_star: Option<String>,
     #[command(flatten)]
     out: Out,
 }
@@ -107,7 +112,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let (out, scale) = output(&a.out)?;
             let model = a.model.model()?;
             let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
-            let page = figures::curve_page(&model, table.as_deref()).map_err(failure)?;
+            let range = a.f_star.as_deref().map(f_star_range).transpose()?;
+            let page = figures::curve_page(&model, table.as_deref(), range).map_err(failure)?;
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())
@@ -145,6 +151,16 @@ fn output(o: &Out) -> Result<(&Path, u32), Failure> {
     Format::from_path(&o.out).map_err(|e| Failure::input(format!("--out: {e}")))?;
     check_writable("--out", &o.out)?;
     Ok((&o.out, scale))
+}
+
+/// `--f-star LO:HI` of `plot curve`: finite, 0 < LO < HI.
+fn f_star_range(text: &str) -> Result<(f64, f64), Failure> {
+    let [lo, hi] = fields("--f-star", text, ':', "LO:HI")?;
+    let (lo, hi) = (number("--f-star", lo)?, number("--f-star", hi)?);
+    if !(lo > 0.0 && lo < hi) {
+        return Err(Failure::input(format!("--f-star: '{text}' must have 0 < LO < HI")));
+    }
+    Ok((lo, hi))
 }
 
 fn wrote(path: &Path) -> Result<(), Failure> {

@@ -18,16 +18,30 @@ fn constants(p: &Params) -> String {
     )
 }
 
-/// μ against F* for `model` by direct integration over the paper's range;
-/// with a table, its lookup overlaid (dashed) and, in a lower panel, the
+/// μ against F* for `model` by direct integration over the paper's range
+/// (or, with `f_star`, at 200 loads spaced logarithmically over it); with
+/// a table, its lookup overlaid (dashed) and, in a lower panel, the
 /// relative difference μ_table/μ − 1 at the loads inside the table's domain.
-pub fn curve_page(model: &Model, table: Option<&Table>) -> Result<Page, FigureError> {
+pub fn curve_page(model: &Model, table: Option<&Table>, f_star: Option<(f64, f64)>) -> Result<Page, FigureError> {
     let params = model.params().clone();
     let name = match params.constants.kind {
         Kind::KogutEtsion => "Kogut–Etsion",
         Kind::CebType => "CEB-type (approx.)",
     };
-    let direct = mu_points(model)?;
+    let direct = match f_star {
+        None => mu_points(model)?,
+        Some((lo, hi)) => {
+            const LOADS: usize = 200;
+            let mut points = Vec::with_capacity(LOADS);
+            for i in 0..LOADS {
+                let f = lo * (hi / lo).powf(i as f64 / (LOADS - 1) as f64);
+                if let Some(mu) = model.at_f_star(f)?.mu {
+                    points.push((f, mu));
+                }
+            }
+            points
+        }
+    };
     if direct.is_empty() {
         return Err(FigureError::Empty(format!(
             "F* is not positive anywhere on 0 <= h* <= 3 for psi = {}, theta = {}",

@@ -175,3 +175,27 @@ fn eval_rejects_bad_input_with_status_2_and_one_line_naming_the_flag() {
         assert!(!err.contains("panicked"), "{all:?}: {err}");
     }
 }
+
+#[test]
+fn a_solved_f_star_of_0_1_plus_rounding_is_inside_the_papers_range() {
+    // F* = 0.1 solves to 0.10000000000000002 here, and h* > 0: no warning.
+    let o = kefric(&["eval", "--psi", "2", "--theta", "0.003", "--f-star", "1e-5:0.1:9"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+}
+
+#[test]
+fn plot_curve_takes_an_f_star_range() {
+    let tmp = crate::common::TempDir::new("curve-range");
+    let out = tmp.arg("c.svg");
+    let o = kefric(&[
+        "plot", "curve", "--psi", "1", "--theta", "0.003", "--f-star", "1e-4:0.5", "--out", &out,
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&out).unwrap();
+    assert!(svg.contains("<svg"));
+    let o = kefric(&[
+        "plot", "curve", "--psi", "1", "--theta", "0.003", "--f-star", "0.5:0.1", "--out", &out,
+    ]);
+    crate::support::assert_bad_input(&o, "--f-star");
+}
