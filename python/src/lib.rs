@@ -3,9 +3,9 @@
 //! GIL released. `pysrc/ke_friction/__init__.py` adds NumPy broadcasting,
 //! argument checks and the documented Python API on top.
 //!
-//! One module per class ([`table`], [`curve`], [`model`]); the core's
-//! errors become Python exceptions in [`error`] alone; the batch and
-//! thread machinery is [`parallel`]; [`convert`] turns arguments and the
+//! One module per class (`table.rs`, `curve.rs`, `model.rs`); the core's
+//! errors become Python exceptions in `error.rs` alone; the batch and
+//! thread machinery is `parallel.rs`; `convert.rs` turns arguments and the
 //! core's records between the two languages.
 
 mod convert;
