@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The C ABI from C, C++ and Fortran: build the library, compile the examples
 # against it (C: static library; Fortran: shared library), run them, and
-# compare the C example's mu with direct integration (`kefric eval`).
+# compare the C example's mu with direct integration (`kefric eval`); the
+# kef_last_error guarantee under AddressSanitizer; ffi/install.sh into a
+# scratch prefix, and the examples built against the installed tree
+# (pkg-config, CMake's find_package, the Fortran module) and run from
+# another directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 target=${CARGO_TARGET_DIR:-target}
@@ -11,6 +15,8 @@ rm -rf "$out" && mkdir -p "$out"
 
 source .ci/lib.sh
 need gfortran gfortran "$out/apt.log"
+need pkg-config pkg-config "$out/apt.log"
+need cmake cmake "$out/apt.log"
 
 cargo build --release --quiet -p ke-friction-ffi -p kefric
 
@@ -53,3 +59,47 @@ for r in rows:
     assert rel <= tolerance, f"F* = {r['f_star']}: C {r['mu']}, kefric eval {exact}: {rel:.2e} > {tolerance}"
 print(f"ffi: the C example's mu within {worst:.2e} of kefric eval (tolerance {tolerance:g}) at {len(rows)} loads")
 PY
+
+# The kef_last_error guarantee (the pointer stays valid; read in the same
+# expression as the failing call, after it, after a handle is freed; a long
+# message is cut) under AddressSanitizer, against the static library.
+gcc -std=c99 -g -O1 -fsanitize=address -fno-omit-frame-pointer -Wall -Wextra -Werror -I ffi/include \
+  ffi/tests/last_error_asan.c "$lib/libkefriction.a" -lpthread -ldl -lm -o "$out/last_error_asan"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 "$out/last_error_asan" > "$out/asan.txt" \
+  || { cat "$out/asan.txt"; echo "ffi: last_error_asan failed"; exit 1; }
+grep -qx '2 psi = NaN is out of range: must be in \[1e-3, 1e3\]' "$out/asan.txt" \
+  || { cat "$out/asan.txt"; echo "ffi: kef_model_mu(NaN, ...)'s message is not the expected one"; exit 1; }
+echo "ffi: kef_last_error under ASan: $(head -1 "$out/asan.txt")"
+
+# ffi/install.sh into a scratch prefix; then the examples against the
+# installed tree only, each run from another directory (the rpath, not the
+# working directory, finds the library).
+out=$(cd "$out" && pwd -P)
+mkdir -p "$out/prefix"
+prefix="$out/prefix"
+elsewhere=$(mktemp -d)
+trap 'rm -rf "$elsewhere"' EXIT
+ffi/install.sh "$prefix"
+cmp ffi/include/kefriction.h "$prefix/include/kefriction.h"
+export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"
+version=$(pkg-config --modversion kefriction)
+[ "$version" = "$(cargo pkgid -p ke-friction-ffi | sed 's/.*[#@]//')" ] || { echo "ffi: kefriction.pc says $version"; exit 1; }
+# C by pkg-config (contacts.c's own -lm: it calls exp and log).
+cc -O2 ffi/examples/contacts.c $(pkg-config --cflags --libs kefriction) -lm -Wl,-rpath,"$prefix/lib" \
+  -o "$out/contacts_pc"
+(cd "$elsewhere" && "$out/contacts_pc") > "$out/contacts_pc.txt"
+# CMake: find_package(kefriction CONFIG) and kefriction::kefriction.
+cmake -S ffi/examples/cmake -B "$out/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
+  > "$out/cmake.log" 2>&1 && cmake --build "$out/cmake-build" >> "$out/cmake.log" 2>&1 \
+  || { cat "$out/cmake.log"; echo "ffi: the CMake example failed"; exit 1; }
+(cd "$elsewhere" && "$out/cmake-build/contacts") > "$out/contacts_cmake.txt"
+# Fortran: the installed module (.mod and its library) by pkg-config.
+gfortran -O2 -Wall -Werror ffi/examples/contacts.f90 $(pkg-config --cflags --libs kefriction-fortran) \
+  -Wl,-rpath,"$prefix/lib" -o "$out/contacts_f_installed"
+(cd "$elsewhere" && "$out/contacts_f_installed") > /dev/null
+# The same mu as the in-tree static build.
+for built in contacts_pc contacts_cmake; do
+  cmp <(grep '^mu ' "$out/contacts.txt") <(grep '^mu ' "$out/$built.txt") \
+    || { echo "ffi: $built's mu differs from the in-tree build's"; exit 1; }
+done
+echo "ffi: installed kefriction $version: pkg-config, CMake and Fortran builds run from $elsewhere"

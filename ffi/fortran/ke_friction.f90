@@ -2,6 +2,8 @@
 ! (ffi/include/kefriction.h). Same names as the C functions; handles are
 ! type(c_ptr); scalars are passed by value, outputs by reference.
 ! Link with -lkefriction (or libkefriction.a -lpthread -ldl -lm).
+! ffi/install.sh PREFIX installs it compiled (PREFIX/include/ke_friction.mod,
+! PREFIX/lib/libkefriction_fortran.a; pkg-config kefriction-fortran).
 !
 ! Every function returns KEF_OK or a KEF_ERR_* code (or c_null_ptr for a
 ! handle); kef_error_message() returns this thread's last message. The
@@ -21,7 +23,9 @@ module ke_friction
             kef_constants_new, kef_constants_free, kef_constants_set_beta, kef_constants_set_nu, &
             kef_constants_set_eps_star, kef_constants_set_fit, kef_constants_set_model, &
             kef_constants_beta, kef_constants_nu, kef_constants_eps_star, kef_constants_fit, &
-            kef_constants_model, kef_last_error, kef_error_message, kef_c_string
+            kef_constants_model, kef_last_error, kef_error_message, kef_c_string, &
+            kef_version, kef_version_string, kef_table_domain, kef_table_h_star, kef_table_h_star_batch, &
+            kef_params_from_physical
   public :: c_int, c_double, c_size_t, c_ptr, c_associated
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -36,6 +40,12 @@ module ke_friction
     function kef_last_error() bind(c, name="kef_last_error")
       import :: c_ptr
       type(c_ptr) :: kef_last_error
+    end function
+
+    ! A static C string (not to free); kef_version_string() as a Fortran string.
+    function kef_version() bind(c, name="kef_version")
+      import :: c_ptr
+      type(c_ptr) :: kef_version
     end function
 
     function kef_table_default() bind(c, name="kef_table_default")
@@ -110,6 +120,40 @@ module ke_friction
       real(c_double), dimension(*), intent(inout) :: mu, dmu_df_star
       integer(c_size_t), intent(out) :: n_nan
       integer(c_int) :: kef_table_mu_with_slope_batch_nan
+    end function
+
+    function kef_table_domain(table, psi_min, psi_max, theta_min, theta_max, f_star_min, f_star_max) &
+        bind(c, name="kef_table_domain")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      real(c_double), intent(out) :: psi_min, psi_max, theta_min, theta_max, f_star_min, f_star_max
+      integer(c_int) :: kef_table_domain
+    end function
+
+    function kef_table_h_star(table, psi, theta, f_star, h_star) bind(c, name="kef_table_h_star")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: h_star
+      integer(c_int) :: kef_table_h_star
+    end function
+
+    function kef_table_h_star_batch(table, n, psi, theta, f_star, h_star) bind(c, name="kef_table_h_star_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: h_star
+      integer(c_int) :: kef_table_h_star_batch
+    end function
+
+    ! SI inputs (material 1 the softer); outputs the model's psi, theta, beta, nu, eps_star.
+    function kef_params_from_physical(e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon, &
+        psi, theta, beta, nu, eps_star) bind(c, name="kef_params_from_physical")
+      import :: c_double, c_int
+      real(c_double), value :: e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon
+      real(c_double), intent(out) :: psi, theta, beta, nu, eps_star
+      integer(c_int) :: kef_params_from_physical
     end function
 
     function kef_curve_from_table(table, psi, theta) bind(c, name="kef_curve_from_table")
@@ -309,10 +353,21 @@ contains
   ! This thread's last failure message, as a Fortran string ("" if none).
   function kef_error_message() result(message)
     character(len=:), allocatable :: message
-    type(c_ptr) :: p
+    message = f_string(kef_last_error())
+  end function
+
+  ! The library's version ("MAJOR.MINOR.PATCH"), as a Fortran string.
+  function kef_version_string() result(version)
+    character(len=:), allocatable :: version
+    version = f_string(kef_version())
+  end function
+
+  ! A NUL-terminated C string as a Fortran string.
+  function f_string(p) result(message)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: message
     character(kind=c_char), pointer :: chars(:)
     integer :: i, n
-    p = kef_last_error()
     n = int(c_strlen(p))
     allocate(character(len=n) :: message)
     if (n == 0) return

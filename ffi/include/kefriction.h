@@ -4,6 +4,8 @@
  *
  * Link: -lkefriction (libkefriction.so), or libkefriction.a plus
  * -lpthread -ldl -lm (see the README, "From C, C++ and Fortran").
+ * Installed by ffi/install.sh PREFIX: pkg-config kefriction, or CMake
+ * find_package(kefriction CONFIG) and the target kefriction::kefriction.
  *
  * Every function returns KEF_OK (0) or a KEF_ERR_* code (or NULL for a
  * handle); on failure kef_last_error() gives this thread's message (a
@@ -85,6 +87,10 @@ extern "C" {
 // gives that call's message. A message longer than 1023 bytes is cut.
 const char *kef_last_error(void);
 
+// The library's version ("MAJOR.MINOR.PATCH", the crate's version), a
+// static string: never NULL, not to free.
+const char *kef_version(void);
+
 // The table compiled into the library (ψ in [0.5, 8], θ in [0, 0.01],
 // F* in [1e-5, 0.1]; μ within 1e-4 relative of direct integration).
 // Never NULL; never freed (kef_table_free ignores it).
@@ -106,6 +112,81 @@ kef_table *kef_table_load(const char *path);
 // `table` is NULL, the default table, or a table from kef_table_load not
 // yet freed and no longer in use by any thread.
 void kef_table_free(kef_table *table);
+
+// The ranges `table` covers: ψ in [*psi_min, *psi_max], θ in
+// [*theta_min, *theta_max], F* in [*f_star_min, *f_star_max] (the default
+// table: [0.5, 8], [0, 0.01], [1e-5, 0.1]). A lookup inside all three
+// succeeds; one outside any is KEF_ERR_DOMAIN. KEF_ERR_ARGUMENT for a NULL
+// pointer (no output written then).
+//
+// # Safety
+// `table` is NULL or a live table; the outputs NULL or writable.
+int kef_table_domain(const kef_table *table,
+                     double *psi_min,
+                     double *psi_max,
+                     double *theta_min,
+                     double *theta_max,
+                     double *f_star_min,
+                     double *f_star_max);
+
+// The dimensionless parameters of a surface pair from physical (SI)
+// quantities (MODEL.md §1–2), into `*psi` (plasticity index), `*theta`
+// (= Δγ/(σH)), `*beta` (= ηRσ), `*nu` (= nu1) and `*eps_star` (= ε/σ):
+// the inputs of kef_table_mu (ψ, θ) and of kef_model_mu (all five).
+// Material 1 is the softer one: `e1`, `nu1` its Young's modulus (Pa) and
+// Poisson's ratio, `hardness` its hardness H (Pa); `e2`, `nu2` those of
+// material 2; `sigma` the standard deviation of the surface heights (m),
+// `radius` the asperity radius R (m), `density` the areal density of
+// asperities η (1/m²), `delta_gamma` the energy of adhesion Δγ (J/m²),
+// `epsilon` the intermolecular distance ε (m). KEF_ERR_DOMAIN for an input
+// or a result out of its range (the message names it and the range),
+// KEF_ERR_ARGUMENT for NaN, ±inf or a NULL output; no output is written
+// on failure.
+//
+// # Safety
+// The outputs are NULL or writable.
+int kef_params_from_physical(double e1,
+                             double nu1,
+                             double e2,
+                             double nu2,
+                             double hardness,
+                             double sigma,
+                             double radius,
+                             double density,
+                             double delta_gamma,
+                             double epsilon,
+                             double *psi,
+                             double *theta,
+                             double *beta,
+                             double *nu,
+                             double *eps_star);
+
+// The separation h*(ψ, θ, F*) = h/σ at which the surfaces carry F*, from
+// `table`, into `*h_star` (the mean-plane separation over σ; it falls as
+// F* grows). Errors as kef_table_mu.
+//
+// # Safety
+// `table` is NULL or a live table; `h_star` NULL or writable.
+int kef_table_h_star(const kef_table *table,
+                     double psi,
+                     double theta,
+                     double f_star,
+                     double *h_star);
+
+// h* at `n` points `(psi[i], theta[i], f_star[i])` into `h_star[i]`; a
+// bad point and NULL pointers as in kef_table_mu_batch ("batch element
+// i: " in front of the message, `h_star[0..i)` written, `h_star[i..n)`
+// untouched). `h_star` must not overlap the inputs.
+//
+// # Safety
+// `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
+// for `n` reads; `h_star` NULL or valid for `n` writes.
+int kef_table_h_star_batch(const kef_table *table,
+                           size_t n,
+                           const double *psi,
+                           const double *theta,
+                           const double *f_star,
+                           double *h_star);
 
 // μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),
 // θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is outside the table's

@@ -27,8 +27,8 @@
 #![allow(non_camel_case_types)]
 
 use ke_friction::{
-    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, Kind, LookupError, Model, OnError, ParamError, Table,
-    TableError,
+    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, Kind, LookupError, Model, OnError, ParamError, Params,
+    Physical, Table, TableError,
 };
 use std::borrow::Cow;
 use std::cell::Cell;
@@ -401,6 +401,15 @@ fn curve_slopes(
     })
 }
 
+/// [`Table::h_star`] at each point into `out`, stopping at the first
+/// bad one (the elements before it written).
+fn h_star_batch(table: &Table, [psi, theta, f_star]: [&[f64]; 3], out: &mut [f64]) -> Result<usize, LookupError> {
+    for (i, h) in out.iter_mut().enumerate() {
+        *h = table.h_star(psi[i], theta[i], f_star[i]).map_err(|e| e.at(i))?;
+    }
+    Ok(0)
+}
+
 /// Frees a handle from `Box::into_raw` unless it is NULL or `keep`.
 ///
 /// # Safety
@@ -510,6 +519,19 @@ pub extern "C" fn kef_last_error() -> *const c_char {
     LAST_ERROR.with(|buffer| buffer.as_ptr().cast())
 }
 
+/// The library's version ("MAJOR.MINOR.PATCH", the crate's version), a
+/// static string: never NULL, not to free.
+#[no_mangle]
+pub extern "C" fn kef_version() -> *const c_char {
+    ffi!(=> Ok(VERSION))
+}
+
+/// The crate's version, NUL-terminated.
+const VERSION: &CStr = match CStr::from_bytes_with_nul(concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes()) {
+    Ok(v) => v,
+    Err(_) => panic!("the crate version has no NUL"),
+};
+
 /// The table compiled into the library (ψ in [0.5, 8], θ in [0, 0.01],
 /// F* in [1e-5, 0.1]; μ within 1e-4 relative of direct integration).
 /// Never NULL; never freed (kef_table_free ignores it).
@@ -540,6 +562,112 @@ pub unsafe extern "C" fn kef_table_load(path: *const c_char) -> *mut kef_table {
 pub unsafe extern "C" fn kef_table_free(table: *mut kef_table) {
     // SAFETY: the caller's contract; the default table is kept.
     unsafe { free(table, kef_table_default()) }
+}
+
+/// The ranges `table` covers: ψ in [*psi_min, *psi_max], θ in
+/// [*theta_min, *theta_max], F* in [*f_star_min, *f_star_max] (the default
+/// table: [0.5, 8], [0, 0.01], [1e-5, 0.1]). A lookup inside all three
+/// succeeds; one outside any is KEF_ERR_DOMAIN. KEF_ERR_ARGUMENT for a NULL
+/// pointer (no output written then).
+///
+/// # Safety
+/// `table` is NULL or a live table; the outputs NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_domain(
+    table: *const kef_table,
+    psi_min: *mut f64,
+    psi_max: *mut f64,
+    theta_min: *mut f64,
+    theta_max: *mut f64,
+    f_star_min: *mut f64,
+    f_star_max: *mut f64,
+) -> c_int {
+    ffi!(table, psi_min, psi_max, theta_min, theta_max, f_star_min, f_star_max => {
+        let domain = table.domain();
+        set2(psi_min, psi_max, domain.psi)?;
+        set2(theta_min, theta_max, domain.theta)?;
+        set2(f_star_min, f_star_max, domain.f_star)
+    })
+}
+
+/// The dimensionless parameters of a surface pair from physical (SI)
+/// quantities (MODEL.md §1–2), into `*psi` (plasticity index), `*theta`
+/// (= Δγ/(σH)), `*beta` (= ηRσ), `*nu` (= nu1) and `*eps_star` (= ε/σ):
+/// the inputs of kef_table_mu (ψ, θ) and of kef_model_mu (all five).
+/// Material 1 is the softer one: `e1`, `nu1` its Young's modulus (Pa) and
+/// Poisson's ratio, `hardness` its hardness H (Pa); `e2`, `nu2` those of
+/// material 2; `sigma` the standard deviation of the surface heights (m),
+/// `radius` the asperity radius R (m), `density` the areal density of
+/// asperities η (1/m²), `delta_gamma` the energy of adhesion Δγ (J/m²),
+/// `epsilon` the intermolecular distance ε (m). KEF_ERR_DOMAIN for an input
+/// or a result out of its range (the message names it and the range),
+/// KEF_ERR_ARGUMENT for NaN, ±inf or a NULL output; no output is written
+/// on failure.
+///
+/// # Safety
+/// The outputs are NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_params_from_physical(
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    sigma: f64,
+    radius: f64,
+    density: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+    psi: *mut f64,
+    theta: *mut f64,
+    beta: *mut f64,
+    nu: *mut f64,
+    eps_star: *mut f64,
+) -> c_int {
+    ffi!(psi, theta, beta, nu, eps_star => {
+        let physical = Physical { e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon };
+        let p = Params::from_physical(&physical)?;
+        (*psi, *theta) = (p.psi, p.theta);
+        (*beta, *nu, *eps_star) = (p.constants.beta, p.constants.nu, p.constants.eps_star);
+        Ok(())
+    })
+}
+
+/// The separation h*(ψ, θ, F*) = h/σ at which the surfaces carry F*, from
+/// `table`, into `*h_star` (the mean-plane separation over σ; it falls as
+/// F* grows). Errors as kef_table_mu.
+///
+/// # Safety
+/// `table` is NULL or a live table; `h_star` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_h_star(
+    table: *const kef_table,
+    psi: f64,
+    theta: f64,
+    f_star: f64,
+    h_star: *mut f64,
+) -> c_int {
+    ffi!(table, h_star => set(h_star, table.h_star(psi, theta, f_star)?))
+}
+
+/// h* at `n` points `(psi[i], theta[i], f_star[i])` into `h_star[i]`; a
+/// bad point and NULL pointers as in kef_table_mu_batch ("batch element
+/// i: " in front of the message, `h_star[0..i)` written, `h_star[i..n)`
+/// untouched). `h_star` must not overlap the inputs.
+///
+/// # Safety
+/// `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
+/// for `n` reads; `h_star` NULL or valid for `n` writes.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_h_star_batch(
+    table: *const kef_table,
+    n: usize,
+    psi: *const f64,
+    theta: *const f64,
+    f_star: *const f64,
+    h_star: *mut f64,
+) -> c_int {
+    ffi!(table, psi[n], theta[n], f_star[n], h_star[n] => stop(h_star_batch(table, [psi, theta, f_star], h_star)))
 }
 
 /// μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),

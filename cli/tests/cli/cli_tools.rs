@@ -391,6 +391,8 @@ const NOT_KEFRIC: &[&str] = &[
     "--print",
     "--upgrade",
     "--cfg",
+    "--cflags",
+    "--libs",
 ];
 
 #[test]

@@ -4,6 +4,7 @@
 mod batches;
 mod constants;
 mod fortran;
+mod queries;
 
 use kefriction::*;
 use std::ffi::{c_char, CStr, CString};
@@ -84,6 +85,11 @@ fn the_header_is_current() {
         "stays valid until the thread exits",
         "extern \"C\"",
         "typedef struct kef_table kef_table;",
+        "const char *kef_version(void);",
+        "int kef_table_domain(const kef_table *table,",
+        "int kef_table_h_star(const kef_table *table,",
+        "int kef_table_h_star_batch(const kef_table *table,",
+        "int kef_params_from_physical(double e1,",
     ] {
         assert!(text.contains(name), "the header lacks {name}");
     }
