@@ -2,7 +2,11 @@
 # CI stage python-package: the Python package ke_friction. Installs the
 # tools with pip, builds and installs the package with `pip install
 # ./python` (maturin; it reuses the workspace's target directory), runs its
-# tests, the example (headless) and the benchmark's accuracy check.
+# tests (Dask's too: dask[distributed] is installed, and KEF_REQUIRE_DASK
+# makes tests/test_dask.py fail rather than skip without it), the examples
+# (headless) and the benchmark's accuracy check; then builds the abi3
+# manylinux wheel users install, installs it into a fresh venv with no
+# cargo on PATH and runs the tests against it.
 # Runs from anywhere in a checkout; exits non-zero on any failure.
 #
 # Environment: KEFRIC (the CLI, for reference values and the export; default
@@ -23,7 +27,8 @@ if [ ! -x "$KEFRIC" ]; then
   [ -x "$KEFRIC" ] || { echo "python: no $KEFRIC after the build (set KEFRIC)"; exit 1; }
 fi
 
-"$py" -m pip install --quiet maturin pytest numpy scipy matplotlib
+"$py" -m pip install --quiet maturin pytest numpy scipy matplotlib 'dask[distributed]'
+export KEF_REQUIRE_DASK=1
 
 t0=$SECONDS
 # --force-reinstall: the version does not change from one commit to the next.
@@ -50,6 +55,38 @@ assert image.ndim == 3 and image.shape[0] > 500 and image.shape[1] > 500, image.
 assert image[..., :3].std() > 0.05, "a blank image"
 EOF
 
+"$py" python/examples/dask_friction_map.py --size 400 --chunk 100 --surfaces 4 --out "$out/dask_map.npz"
+test -s "$out/dask_map.npz" || { echo "python: the Dask example wrote no $out/dask_map.npz"; exit 1; }
+
 # Speed ratios are not checked (two shared cores: timings swing 1.5x);
 # the accuracy ratio against SciPy is.
 "$py" python/bench.py --quick
+
+# The wheel: abi3 (one wheel for CPython >= 3.9), manylinux_2_35, the
+# lowest tag maturin's auditwheel check passes on a build with Debian 12's
+# glibc 2.36 (the extension links hypot@GLIBC_2.35; a lower tag needs a
+# manylinux container or zig). Installed into a fresh venv whose PATH has
+# no cargo, so nothing can be built from source there.
+t0=$SECONDS
+wheels=$out/wheels
+if ! "$py" -m maturin build --release --compatibility manylinux_2_35 -m python/Cargo.toml --out "$wheels" \
+  > "$out/maturin-build.log" 2>&1; then
+  cat "$out/maturin-build.log"; echo "python: maturin build failed"; exit 1
+fi
+grep -E 'Built wheel' "$out/maturin-build.log" || true
+wheel=$(ls "$wheels"/ke_friction-*-cp39-abi3-manylinux_2_35_x86_64.whl 2>/dev/null | head -1)
+[ -n "$wheel" ] || { echo "python: no abi3 manylinux_2_35 wheel in $wheels"; ls "$wheels"; exit 1; }
+nocargo=$(printf '%s' "$PATH" | tr ':' '\n' | while read -r d; do [ -x "$d/cargo" ] || printf '%s:' "$d"; done)
+nocargo=${nocargo%:}
+venv=$out/wheel-venv
+"$py" -m venv "$venv"
+(
+  export PATH=$venv/bin:$nocargo
+  unset CARGO_HOME RUSTUP_HOME
+  if command -v cargo > /dev/null; then echo "python: cargo is still on PATH"; exit 1; fi
+  python -m pip install --quiet --only-binary ke-friction "$wheel" pytest 'dask[distributed]'
+  cd "$out"
+  python -c "import ke_friction, sys; assert ke_friction.__file__.startswith(sys.prefix), ke_friction.__file__"
+  python -m pytest -q -p no:cacheprovider "$root/python/tests"
+)
+echo "python: the wheel ($(basename "$wheel")), its venv and its tests took $((SECONDS - t0)) s"

@@ -1,16 +1,30 @@
 //! Conversions between Python's values and the core's: array arguments as
-//! slices, the NaN flag as the core's [`OnError`], the core's records as
-//! Python dicts.
+//! slices (copied where not aligned), the NaN flag as the core's
+//! [`OnError`], the core's records as Python dicts.
 
 use crate::error::{exception, value_error};
 use ke_friction::{ErrorKind, OnError};
-use numpy::{PyReadonlyArray1, PyReadwriteArray1};
+use numpy::{PyArrayMethods, PyReadonlyArray1, PyReadwriteArray1, PyUntypedArrayMethods};
 use pyo3::prelude::*;
+use std::borrow::Cow;
 
-/// The contiguous data of array argument `name`.
-pub fn slice<'a>(name: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<&'a [f64]> {
-    a.as_slice()
-        .map_err(|_| value_error(format!("{name} must be contiguous")))
+/// The data of array argument `name`: in place where it is contiguous and
+/// aligned, else a copy of a contiguous array that is not aligned (a view
+/// at an odd offset into a buffer, `np.frombuffer(b[1:])`).
+pub fn slice<'a>(name: &str, a: &'a PyReadonlyArray1<'_, f64>) -> PyResult<Cow<'a, [f64]>> {
+    if let Ok(s) = a.as_slice() {
+        return Ok(Cow::Borrowed(s));
+    }
+    if !a.is_contiguous() {
+        return Err(value_error(format!("{name} must be contiguous")));
+    }
+    let (ptr, n) = (a.data().cast_const(), a.len());
+    // SAFETY: a contiguous array of `n` f64 starts at `ptr`, aligned or
+    // not (hence `read_unaligned`); the read-only borrow `a` keeps it alive,
+    // and the GIL, held here, keeps Python code from changing it meanwhile.
+    Ok(Cow::Owned(
+        (0..n).map(|i| unsafe { ptr.add(i).read_unaligned() }).collect(),
+    ))
 }
 
 /// The contiguous data of output array `name`.

@@ -23,6 +23,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<curve::CurveCore>()?;
     m.add_class::<model::ModelCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
+    // The crate's version: the workspace's, which the wheel's is too.
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("CURVE_ACCURACY", ke_friction::CURVE_ACCURACY)?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;

@@ -7,11 +7,16 @@ use crate::parallel::{cut, cut_pairs, in_pieces, into_pairs, Inputs, TABLE_WORK}
 use ke_friction::Table;
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
+use pyo3::types::PyBytes;
 use std::borrow::Cow;
 
-/// A table of μ(ψ, θ, F*).
+/// A table of μ(ψ, θ, F*), and the bytes it was decoded from (`None`
+/// for the embedded default table), so that it pickles as it was made.
 #[pyclass(frozen, module = "ke_friction._core")]
-pub struct TableCore(Cow<'static, Table>);
+pub struct TableCore {
+    table: Cow<'static, Table>,
+    bytes: Option<Vec<u8>>,
+}
 
 /// Readies `table` for `n` lookups by this thread (its coefficients read
 /// through into this core's cache, see [`Table::prepare_batch`]), unless
@@ -23,30 +28,56 @@ fn read_through(table: &Table, repeats: bool, n: usize) {
     }
 }
 
+impl TableCore {
+    /// The table of a file's contents, which it keeps.
+    fn decoded(bytes: Vec<u8>) -> Result<TableCore, ke_friction::TableError> {
+        Ok(TableCore {
+            table: Cow::Owned(Table::from_bytes(&bytes)?),
+            bytes: Some(bytes),
+        })
+    }
+}
+
 #[pymethods]
 impl TableCore {
     #[staticmethod]
     fn default() -> TableCore {
-        TableCore(Cow::Borrowed(Table::embedded()))
+        TableCore {
+            table: Cow::Borrowed(Table::embedded()),
+            bytes: None,
+        }
     }
 
     #[staticmethod]
     fn load(path: std::path::PathBuf) -> PyResult<TableCore> {
-        Table::load(&path)
-            .map(|t| TableCore(Cow::Owned(t)))
-            .map_err(|e| match e {
-                // The I/O error names the path itself.
-                ke_friction::TableError::Io { .. } => raise(e),
-                _ => crate::error::exception(e.kind(), format!("{}: {e}", path.display())),
-            })
+        // The read's errors name the path themselves.
+        let bytes = Table::read_file(&path).map_err(raise)?;
+        TableCore::decoded(bytes).map_err(|e| crate::error::exception(e.kind(), format!("{}: {e}", path.display())))
+    }
+
+    /// The table of a table file's contents (as `load` reads them).
+    #[staticmethod]
+    fn from_bytes(data: &[u8]) -> PyResult<TableCore> {
+        TableCore::decoded(data.to_vec()).map_err(raise)
+    }
+
+    /// The contents of the table's file: the bytes it was decoded from
+    /// (the embedded table's for the default one).
+    fn to_bytes<'py>(&self, py: Python<'py>) -> Bound<'py, PyBytes> {
+        PyBytes::new(py, self.bytes.as_deref().unwrap_or(Table::embedded_bytes()))
+    }
+
+    /// Whether this is the embedded default table (`default()`).
+    fn is_default(&self) -> bool {
+        self.bytes.is_none()
     }
 
     fn mu_scalar(&self, psi: f64, theta: f64, f_star: f64) -> PyResult<f64> {
-        self.0.mu(psi, theta, f_star).map_err(raise)
+        self.table.mu(psi, theta, f_star).map_err(raise)
     }
 
     fn mu_with_slope_scalar(&self, psi: f64, theta: f64, f_star: f64) -> PyResult<(f64, f64)> {
-        self.0.mu_with_slope(psi, theta, f_star).map_err(raise)
+        self.table.mu_with_slope(psi, theta, f_star).map_err(raise)
     }
 
     /// μ into `out` by the core's batch (`OnError::Nan` if `nan`, else
@@ -69,8 +100,8 @@ impl TableCore {
         let (p, t, f) = (slice("psi", &psi)?, slice("theta", &theta)?, slice("f_star", &f_star)?);
         let out = slice_mut("out", &mut out)?;
         let n = out.len();
-        let inputs = Inputs::new(n, [("psi", p), ("theta", t), ("f_star", f)])?;
-        let (table, on_error) = (&*self.0, on_error(nan));
+        let inputs = Inputs::new(n, [("psi", &*p), ("theta", &*t), ("f_star", &*f)])?;
+        let (table, on_error) = (&*self.table, on_error(nan));
         py.detach(|| {
             TABLE_WORK.run(
                 n,
@@ -109,8 +140,8 @@ impl TableCore {
         let (mu, slope) = (slice_mut("mu", &mut mu)?, slice_mut("slope", &mut slope)?);
         let n = mu.len();
         same_len(n, &[("slope", slope.len())])?;
-        let inputs = Inputs::new(n, [("psi", p), ("theta", t), ("f_star", f)])?;
-        let (table, on_error) = (&*self.0, on_error(nan));
+        let inputs = Inputs::new(n, [("psi", &*p), ("theta", &*t), ("f_star", &*f)])?;
+        let (table, on_error) = (&*self.table, on_error(nan));
         py.detach(|| {
             TABLE_WORK.run(
                 n,
@@ -131,17 +162,17 @@ impl TableCore {
     }
 
     fn curve(&self, psi: f64, theta: f64) -> PyResult<CurveCore> {
-        self.0.curve(psi, theta).map(CurveCore).map_err(raise)
+        self.table.curve(psi, theta).map(CurveCore).map_err(raise)
     }
 
     /// The table's record, `TableInfo` as the core serialises it (the
     /// names of `kefric info --json` and of a NumPy export's `metadata`).
     fn info<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        record(py, serde_json::to_string(self.0.info()))
+        record(py, serde_json::to_string(self.table.info()))
     }
 
     /// Whether lookups run the fast (AVX2) kernel on this CPU.
     fn fast_kernel(&self) -> bool {
-        self.0.fast_kernel()
+        self.table.fast_kernel()
     }
 }

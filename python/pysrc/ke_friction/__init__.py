@@ -24,6 +24,10 @@ for a bug. Records use the library's names: :attr:`Table.info` is what
 :data:`DEFAULTS` the model constants a :class:`Model` takes by default.
 Array work runs with the GIL released and, if asked
 (``threads=None`` for one per core, or a number), on several threads.
+Tables, curves and models pickle (for multiprocessing and Dask): the
+default table as its name, a loaded table with its file's bytes, a curve
+and a model as they were made; float64 input of any alignment or byte
+order is accepted (copied where it has to be).
 
 >>> import ke_friction as kf
 >>> t = kf.Table.default()
@@ -46,6 +50,15 @@ import numpy.typing as npt
 from . import _core
 
 __all__ = ["Table", "Curve", "Model", "Contact", "TableError", "params_from_physical", "CURVE_ACCURACY", "DEFAULTS"]
+
+#: The package's version: the library's (the Rust crate's).
+__version__: str = _core.__version__
+
+
+def __dir__() -> "list[str]":
+    """The public API alone (not the modules and typing names this module
+    imports)."""
+    return sorted([*__all__, "__version__"])
 
 #: Raised for a table file that is damaged, not a table, or inconsistent
 #: (a subclass of ValueError).
@@ -158,13 +171,25 @@ class Table:
 
     Use :meth:`Table.default` (the table built into the library: psi in
     [0.5, 8], theta in [0, 0.01], F* in [1e-5, 0.1], mu within 1e-4) or
-    :meth:`Table.load` (a file from ``kefric build``).
+    :meth:`Table.load` (a file from ``kefric build``). A table pickles
+    (``pickle``, ``multiprocessing``, Dask) as the word ``"default"`` for
+    the default table and as its file's bytes for a loaded one; ``copy``
+    and ``deepcopy`` give the table itself (it is immutable).
     """
 
     __slots__ = ("_core",)
 
     def __init__(self, core: Any) -> None:
         self._core = core
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        return _table_of, ("default" if self._core.is_default() else self._core.to_bytes(),)
+
+    def __copy__(self) -> "Table":
+        return self
+
+    def __deepcopy__(self, memo: Any) -> "Table":
+        return self
 
     @staticmethod
     def default() -> "Table":
@@ -177,10 +202,29 @@ class Table:
 
         Raises OSError if the file cannot be read and :class:`TableError`
         (a ValueError) if it is damaged, not a table, or inconsistent.
+        The table keeps the file's bytes (for :meth:`to_bytes` and
+        pickling): 0.45 MB for a table like the default one.
         """
         if not isinstance(path, (str, os.PathLike)):
             raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
         return Table(_core.TableCore.load(os.fspath(path)))
+
+    @staticmethod
+    def from_bytes(data: Union[bytes, bytearray, memoryview]) -> "Table":
+        """The table of a table file's contents (what :meth:`load` reads
+        from the file, or :meth:`to_bytes` gives). Raises
+        :class:`TableError` (a ValueError) if they are damaged, not a
+        table, or inconsistent."""
+        if not isinstance(data, (bytes, bytearray, memoryview)):
+            raise TypeError(f"data must be bytes, not {type(data).__name__}")
+        return Table(_core.TableCore.from_bytes(bytes(data)))
+
+    def to_bytes(self) -> bytes:
+        """The table file's contents: the bytes the table was read from
+        (for the default table, the file built into the library), which
+        :meth:`from_bytes` and :meth:`load` (once written to a file) read
+        back to the same table."""
+        return self._core.to_bytes()
 
     @overload
     def mu(self, psi: float, theta: float, f_star: float, *, out_of_domain: OutOfDomain = ...,
@@ -343,12 +387,24 @@ class Table:
         """mu(F*) of the surface pair (psi, theta) over the table's F* range:
         a :class:`Curve`, several times faster than :meth:`mu` per point."""
         _check_real(psi=psi, theta=theta)
-        return Curve(self._core.curve(float(psi), float(theta)))
+        psi, theta = float(psi), float(theta)
+        return Curve(self._core.curve(psi, theta), ("table", self, psi, theta))
 
     def __repr__(self) -> str:
         i = self.info
         return (f"Table(model={i['model']!r}, fit={i['fit']!r}, psi={i['psi']}, theta={i['theta']}, "
                 f"f_star={i['f_star']}, tolerance={i['tolerance']})")
+
+
+def _table_of(source: Union[str, bytes]) -> Table:
+    """A pickled table: ``"default"`` or a table file's bytes."""
+    return Table.default() if source == "default" else Table.from_bytes(source)
+
+
+def _curve_of(how: str, source: Any, a: float, b: float) -> "Curve":
+    """A pickled curve: of ``"table"`` ``source`` at (psi, theta) = (a, b),
+    or of ``"model"`` ``source`` over F* in [a, b]."""
+    return source.curve(a, b) if how == "table" else Curve.from_model(source, a, b)
 
 
 def _check_real(**named: Any) -> None:
@@ -363,6 +419,10 @@ class Curve:
     :meth:`Curve.from_model`. Immutable; share it freely across threads.
     A lookup takes about a nanosecond per load in arrays: the fastest way to
     evaluate mu where psi and theta stay fixed (a simulation's inner loop).
+    A curve pickles as it was made (its table and (psi, theta), or its
+    model and range) and is rebuilt the same to the bit where it is
+    unpickled (microseconds from a table, tens of milliseconds from a
+    model); ``copy`` and ``deepcopy`` give the curve itself.
 
     >>> c = Curve.from_model(Model(1.0, 0.001), 1e-5, 0.1)   # ~30 ms
     >>> c.range
@@ -371,10 +431,20 @@ class Curve:
     True
     """
 
-    __slots__ = ("_core",)
+    __slots__ = ("_core", "_made")
 
-    def __init__(self, core: Any) -> None:
+    def __init__(self, core: Any, made: Tuple[str, Any, float, float]) -> None:
         self._core = core
+        self._made = made
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        return _curve_of, self._made
+
+    def __copy__(self) -> "Curve":
+        return self
+
+    def __deepcopy__(self, memo: Any) -> "Curve":
+        return self
 
     @staticmethod
     def from_model(model: "Model", f_star_min: float, f_star_max: float) -> "Curve":
@@ -383,7 +453,8 @@ class Curve:
         if not isinstance(model, Model):
             raise TypeError(f"model must be a Model, not {type(model).__name__}")
         _check_real(f_star_min=f_star_min, f_star_max=f_star_max)
-        return Curve(_core.CurveCore.from_model(model._core, float(f_star_min), float(f_star_max)))
+        lo, hi = float(f_star_min), float(f_star_max)
+        return Curve(_core.CurveCore.from_model(model._core, lo, hi), ("model", model, lo, hi))
 
     @property
     def range(self) -> Tuple[float, float]:
@@ -489,7 +560,9 @@ class Model:
     Invalid values raise ValueError naming the parameter and its range.
     Wrong types raise TypeError. Array work runs with the GIL released,
     and with ``threads=None`` (or a number) on several threads from 8
-    points (as :meth:`Table.mu`): near 2x on two cores.
+    points (as :meth:`Table.mu`): near 2x on two cores. The parameters
+    are attributes too (``Model(1.0, 0.001).beta``); a model pickles as
+    its parameters, and ``copy`` and ``deepcopy`` give the model itself.
 
     >>> c = Model(1.0, 0.001).at_f_star(0.01)      # solve F*(h*) = 0.01
     >>> round(c.h_star, 6), round(c.mu, 6)
@@ -498,7 +571,7 @@ class Model:
     (3,)
     """
 
-    __slots__ = ("_core",)
+    __slots__ = ("_core", "_params")
 
     def __init__(self, psi: float, theta: float, beta: Optional[float] = None, nu: Optional[float] = None,
                  eps_star: Optional[float] = None, fit: Optional[str] = None, model: Optional[str] = None) -> None:
@@ -510,13 +583,33 @@ class Model:
         self._core = _core.ModelCore(float(psi), float(theta), None if beta is None else float(beta),
                                      None if nu is None else float(nu),
                                      None if eps_star is None else float(eps_star), fit, model)
+        self._params: Dict[str, Any] = self._core.params()
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        p = self._params
+        return Model, (p["psi"], p["theta"], p["beta"], p["nu"], p["eps_star"], p["fit"], p["model"])
+
+    def __copy__(self) -> "Model":
+        return self
+
+    def __deepcopy__(self, memo: Any) -> "Model":
+        return self
 
     @property
     def params(self) -> Dict[str, Any]:
         """The model's parameters, a new dict each time, by the library's
         record names (what ``kefric params --json`` prints): psi, theta,
         beta, nu, eps_star, fit and model."""
-        return self._core.params()
+        return dict(self._params)
+
+    psi = property(lambda self: self._params["psi"], doc="The plasticity index psi (a float).")
+    theta = property(lambda self: self._params["theta"], doc="The adhesion parameter theta (a float).")
+    beta = property(lambda self: self._params["beta"], doc="The roughness parameter beta = eta R sigma (a float).")
+    nu = property(lambda self: self._params["nu"], doc="Poisson's ratio of the softer material (a float).")
+    eps_star = property(lambda self: self._params["eps_star"],
+                        doc="The intermolecular distance eps/sigma (a float).")
+    fit = property(lambda self: self._params["fit"], doc='The fit: "consistent" or "as-printed".')
+    model = property(lambda self: self._params["model"], doc='The model: "ke" (Kogut-Etsion) or "ceb" (CEB-type).')
 
     def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain,
             threads: Optional[int]) -> Contact:
