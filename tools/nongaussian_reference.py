@@ -3,8 +3,9 @@
 (2004) static friction model with NON-GAUSSIAN asperity-height densities, as
 specified in MODEL.md section 9 (sections 1-4 for the model itself).  Test
 oracle for the Rust crate; it shares no code with it and imports nothing from
-it.  tools/reference.py (the Gaussian reference) is imported only by `check`,
-to confirm that the two references agree in the Gaussian case.
+it.  tools/reference.py (the Gaussian reference) supplies the
+single-asperity laws and is used by `check` to confirm that the two
+references agree in the Gaussian case.
 
 Usage (from the repository root):
 
@@ -86,26 +87,14 @@ import time
 import mpmath
 from mpmath import mp, mpf
 
+# The single-asperity laws are the Gaussian reference's (tools/reference.py,
+# beside this file): only the height density and its integrals are new here.
+sys.path.insert(0, __import__("os").path.dirname(__file__))
+from reference import D, mu_ep, x0  # noqa: E402
+
 mp.dps = 30
 
 TAIL_LOG = mpf(120)
-
-
-def D(s):
-    return mpf(s)
-
-
-def mu_ep(x):
-    return D('0.85') - D('0.40') * x + D('0.09') * x ** 2 - D('0.01') * x ** 3
-
-
-_X0 = {}
-
-
-def x0():
-    if mp.prec not in _X0:
-        _X0[mp.prec] = mp.findroot(mu_ep, mpf('4.2946'))
-    return _X0[mp.prec]
 
 
 def _fmt(v):
