@@ -61,15 +61,25 @@ fn temp_beside(path: &Path) -> io::Result<PathBuf> {
 
 /// [`write_atomic`] with the file's contents written (and synced) by `write`.
 pub fn write_atomic_with(path: &Path, write: impl FnOnce(File) -> io::Result<()>) -> io::Result<()> {
+    replace_via(path, false, |tmp| write(File::create_new(tmp)?))
+}
+
+/// Writes the file at `path` through a temporary path beside its target
+/// ([`output_target`]): `write` fills the temporary path, which is then
+/// renamed over the target; on any error it is removed. The temporary is
+/// `.NAME.tmp-PID`, or with `keep_extension` `.tmp-PID-NAME`, for writers
+/// that choose a format by the extension (the figures' image encoder).
+pub fn replace_via(path: &Path, keep_extension: bool, write: impl FnOnce(&Path) -> io::Result<()>) -> io::Result<()> {
     let target = output_target(path)?;
-    let tmp = temp_beside(&target)?;
-    File::create_new(&tmp).and_then(|file| {
-        let written = write(file).and_then(|()| std::fs::rename(&tmp, &target));
-        if written.is_err() {
-            let _ = std::fs::remove_file(&tmp);
-        }
-        written
-    })
+    let tmp = match (keep_extension, target.file_name()) {
+        (true, Some(name)) => target.with_file_name(format!(".tmp-{}-{}", std::process::id(), name.to_string_lossy())),
+        _ => temp_beside(&target)?,
+    };
+    let result = write(&tmp).and_then(|()| std::fs::rename(&tmp, &target));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }
 
 /// Writes one file's contents (and syncs it).

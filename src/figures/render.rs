@@ -55,20 +55,12 @@ fn save(path: &Path, what: &impl Render, scale: u32) -> Result<(), FigureError> 
         path: path.display().to_string(),
         message,
     };
-    // Drawn beside the output, then renamed over it (see `crate::io`): a
-    // temporary name that keeps the extension plotters' encoder reads.
-    let target = crate::io::output_target(path).map_err(|e| failed(e.to_string()))?;
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = target.with_file_name(format!(".tmp-{}-{name}", std::process::id()));
-    let result =
-        draw(&tmp, format, size, what, scale).and_then(|()| std::fs::rename(&tmp, &target).map_err(|e| e.to_string()));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result.map_err(failed)
+    // Drawn beside the output, then renamed over it, under a temporary
+    // name that keeps the extension plotters' encoder reads.
+    crate::io::replace_via(path, true, |tmp| {
+        draw(tmp, format, size, what, scale).map_err(std::io::Error::other)
+    })
+    .map_err(|e| failed(e.to_string()))
 }
 
 /// Draws `what` into `path` (as `format`, at `size`).
