@@ -21,6 +21,18 @@ use core::fmt;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Shortest(pub f64);
 
+impl Shortest {
+    /// `x` rounded to 4 significant digits, for messages (`-28.2`, not
+    /// `-28.20201007867259`).
+    ///
+    /// ```
+    /// assert_eq!(ke_friction::Shortest::rounded(-28.20201007867259).to_string(), "-28.2");
+    /// ```
+    pub fn rounded(x: f64) -> Shortest {
+        Shortest(format!("{x:.3e}").parse().unwrap_or(x))
+    }
+}
+
 impl fmt::Display for Shortest {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // Rust's `{}` and `{:e}` both print the shortest round-trip digits.

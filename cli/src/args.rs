@@ -234,18 +234,13 @@ pub fn load_table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'st
     }
 }
 
-/// `x` to 4 significant digits, for messages (`-28.2`, not `-28.20201007867259`).
-pub fn short(x: f64) -> Shortest {
-    Shortest(format!("{x:.3e}").parse().unwrap_or(x))
-}
-
 /// Prints where a table's measured error of μ is largest.
 pub fn print_worst(acc: &ke_friction::Accuracy) -> Result<(), Failure> {
     outln!(
         "worst at psi = {}, theta = {}, F* = {}",
-        short(acc.worst[0]),
-        short(acc.worst[1]),
-        short(acc.worst[2])
+        Shortest::rounded(acc.worst[0]),
+        Shortest::rounded(acc.worst[1]),
+        Shortest::rounded(acc.worst[2])
     )
 }
 
@@ -529,8 +524,8 @@ impl PaperRange {
         errln!(
             "warning: {which} outside the range the paper covers (F* <= {}, h* >= 0): F* up to {}, h* down to {}; the model is extrapolated there",
             Shortest(PAPER_F_STAR_MAX),
-            short(self.f_star_max),
-            short(self.h_star_min)
+            Shortest::rounded(self.f_star_max),
+            Shortest::rounded(self.h_star_min)
         );
     }
 }

@@ -100,7 +100,7 @@ pub enum BuildError {
     /// spline's end conditions need.
     #[error(
         "model evaluation failed at psi = {}, theta = {}, F* = {}, a ghost node beyond the F* range [{}, {}]: {error}; with more F* nodes the ghost nodes lie closer to the range (or lower its upper end)",
-        Shortest(*.psi), Shortest(*.theta), short(*.f_star), Shortest(.range.0), Shortest(.range.1)
+        Shortest(*.psi), Shortest(*.theta), Shortest::rounded(*.f_star), Shortest(.range.0), Shortest(.range.1)
     )]
     Ghost {
         /// ψ of the node.
@@ -136,11 +136,6 @@ pub enum BuildError {
     /// at a ghost node far outside the domain.
     #[error("the built table cannot be stored: {0} (try f64 precision, more nodes or a narrower range)")]
     Unstorable(TableError),
-}
-
-/// `x` to 4 significant digits, for messages.
-fn short(x: f64) -> Shortest {
-    Shortest(format!("{x:.3e}").parse().unwrap_or(x))
 }
 
 /// Below this relative error of μ, rounding the coefficients to f32 (24
