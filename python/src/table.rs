@@ -52,7 +52,7 @@ impl TableCore {
     fn load(path: std::path::PathBuf) -> PyResult<TableCore> {
         // The read's errors name the path themselves.
         let bytes = Table::read_file(&path).map_err(raise)?;
-        TableCore::decoded(bytes).map_err(|e| crate::error::exception(e.kind(), format!("{}: {e}", path.display())))
+        TableCore::decoded(bytes).map_err(|e| raise(e.in_file(&path)))
     }
 
     /// The table of a table file's contents (as `load` reads them).

@@ -152,8 +152,10 @@ pub enum TableError {
 
 impl TableError {
     /// This error as the error of the file at `path` (once: an error that
-    /// names its file already is returned as it is).
-    pub(crate) fn in_file(self, path: &std::path::Path) -> TableError {
+    /// names its file already is returned as it is), for a caller that read
+    /// the file's bytes itself and decoded them with
+    /// [`Table::from_bytes`](crate::Table::from_bytes).
+    pub fn in_file(self, path: &std::path::Path) -> TableError {
         match self {
             e @ (TableError::Io { .. } | TableError::File { .. }) => e,
             e => TableError::File {
