@@ -38,6 +38,7 @@
 #[cfg(feature = "builder")]
 pub mod build;
 mod curve;
+mod distribution;
 mod error;
 #[cfg(feature = "builder")]
 pub mod export;
@@ -54,6 +55,10 @@ mod spline;
 pub mod table;
 
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
+pub use distribution::{
+    Density, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES, PEARSON_KURTOSIS_MAX,
+    PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
+};
 pub use error::ErrorKind;
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use num::Shortest;

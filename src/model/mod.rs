@@ -2,7 +2,7 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
-mod quadrature;
+pub(crate) mod quadrature;
 mod surface;
 
 use crate::num::Shortest;

@@ -26,6 +26,12 @@ pub(crate) struct Rule {
 }
 
 impl Rule {
+    /// The Gauss–Legendre rule, computed once per process.
+    pub fn shared_legendre() -> &'static Rule {
+        static RULE: std::sync::OnceLock<Rule> = std::sync::OnceLock::new();
+        RULE.get_or_init(Rule::legendre)
+    }
+
     /// Gauss–Legendre on `[0, 1]` (weight 1).
     pub fn legendre() -> Rule {
         Rule::jacobi(0.0)
