@@ -185,13 +185,14 @@ impl serde::Serialize for HeightDistribution {
 }
 
 /// An empirical density of measured heights (MODEL.md §9): the heights are
-/// standardised, binned onto [`KDE_CENTRES`] centres and smoothed by a
+/// standardised, binned onto at most [`KDE_CENTRES`] evenly spaced centres
+/// (no more than four per kernel width) and smoothed by a
 /// Gaussian kernel of Silverman's bandwidth `h = 1.06·n^(−1/5)`, then
 /// rescaled so that the density has mean 0 and variance 1 exactly.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Empirical(Arc<Kde>);
 
-/// Number of bin centres of an [`Empirical`] density.
+/// Most bin centres of an [`Empirical`] density.
 pub const KDE_CENTRES: usize = 2000;
 
 #[derive(Debug, PartialEq)]
@@ -208,6 +209,9 @@ struct Kde {
     /// Kernel width, in standardised units.
     h: f64,
 }
+
+/// Kernels further than this many widths away are left out (e^−40.5).
+const KDE_REACH: f64 = 9.0;
 
 impl Empirical {
     /// The density of `heights` (any unit; NaN entries are skipped). At
@@ -244,8 +248,10 @@ impl Empirical {
             let x = (v - mean) / sd;
             (a.min(x), b.max(x))
         });
-        // Linear binning onto evenly spaced centres.
-        let m = KDE_CENTRES;
+        // Linear binning onto evenly spaced centres, about four per kernel
+        // width (binning then changes the density by ~1e-3 of itself).
+        let h0 = 1.06 * (n as f64).powf(-0.2);
+        let m = (((hi - lo) / (0.25 * h0)).ceil() as usize + 1).clamp(16, KDE_CENTRES);
         let step = (hi - lo) / (m - 1) as f64;
         let mut weights = vec![0.0; m];
         for v in finite() {
@@ -261,7 +267,6 @@ impl Empirical {
         // smoothed density has mean 0 and variance v + h² = 1.
         let cm: f64 = centres.iter().zip(&weights).map(|(c, w)| c * w).sum();
         let cv: f64 = centres.iter().zip(&weights).map(|(c, w)| (c - cm) * (c - cm) * w).sum();
-        let h0 = 1.06 * nf.powf(-0.2);
         let scale = 1.0 / (cv + h0 * h0).sqrt();
         let centres = centres.into_iter().map(|c| (c - cm) * scale).collect();
         Ok(Empirical(Arc::new(Kde {
@@ -413,8 +418,6 @@ pub struct Density {
     /// ln g(x) = ln_norm + shape(x).
     ln_norm: f64,
     mode: f64,
-    /// Power-law decay `g ~ |x|^−p` of unbounded tails (Pearson IV, VI, VII).
-    tail_power: Option<f64>,
 }
 
 impl Density {
@@ -501,7 +504,6 @@ impl Density {
             hi,
             ln_norm: 0.0,
             mode,
-            tail_power: None,
         }
     }
 
@@ -512,7 +514,7 @@ impl Density {
         let (b0, b1, b2) = (4.0 * k - 3.0 * s2, a0, 2.0 * k - 3.0 * s2 - 6.0);
         let disc = b1 * b1 - 4.0 * b0 * b2;
         let tiny = 8.0 * f64::EPSILON;
-        let (ty, shape, lo, hi, tail) = if b2.abs() <= tiny * b0 {
+        let (ty, shape, lo, hi) = if b2.abs() <= tiny * b0 {
             // Gamma: B(x) = B0 + B1·x, the end at −B0/B1.
             let c1 = -a1 / b1;
             let c2 = -(a0 - a1 * b0 / b1) / b1;
@@ -527,7 +529,7 @@ impl Density {
                 c2,
                 inv_e0: b1 / b0,
             };
-            (PearsonType::III, shape, lo, hi, None)
+            (PearsonType::III, shape, lo, hi)
         } else if b2 < 0.0 || disc > tiny * b0 * b0 {
             let sq = disc.sqrt();
             let q = if b1 != 0.0 {
@@ -564,13 +566,13 @@ impl Density {
                     (end(rb, cb), end(ra, ca))
                 };
                 let ty = if sk == 0.0 { PearsonType::II } else { PearsonType::I };
-                (ty, shape, Some(lo), Some(hi), None)
+                (ty, shape, Some(lo), Some(hi))
             } else {
                 // Both roots on one side of 0: the nearer one ends the support.
                 let (near, c) = if ra.abs() < rb.abs() { (ra, ca) } else { (rb, cb) };
                 let e = end(near, c);
                 let (lo, hi) = if near < 0.0 { (Some(e), None) } else { (None, Some(e)) };
-                (PearsonType::VI, shape, lo, hi, Some(a1 / b2))
+                (PearsonType::VI, shape, lo, hi)
             }
         } else if disc.abs() <= tiny * b0 * b0 {
             let r = -b1 / (2.0 * b2);
@@ -585,7 +587,7 @@ impl Density {
                 cv1: -a1 / b2,
                 cv2: (a1 * r + a0) / b2,
             };
-            (PearsonType::V, shape, lo, hi, Some(a1 / b2))
+            (PearsonType::V, shape, lo, hi)
         } else {
             let w = (-disc).sqrt();
             let shape = Shape::Complex {
@@ -597,7 +599,7 @@ impl Density {
                 c4b: -(a0 - a1 * b1 / (2.0 * b2)) * 2.0 / w,
             };
             let ty = if sk == 0.0 { PearsonType::VII } else { PearsonType::IV };
-            (ty, shape, None, None, Some(a1 / b2))
+            (ty, shape, None, None)
         };
         // Near the normal point: every root of B far away.
         let nearest = match (b2.abs() <= tiny * b0, disc < 0.0) {
@@ -637,7 +639,6 @@ impl Density {
             hi,
             ln_norm: 0.0,
             mode,
-            tail_power: tail,
         }
     }
 
@@ -671,8 +672,14 @@ impl Density {
         self.hi
     }
 
-    pub(crate) fn tail_power(&self) -> Option<f64> {
-        self.tail_power
+    /// The scale (in standardised units) on which g may change shape
+    /// without its log-slope showing it: a kernel's width for an empirical
+    /// density, else unlimited.
+    pub(crate) fn smoothness_scale(&self) -> f64 {
+        match &self.shape {
+            Shape::Kde(kde) => kde.h,
+            _ => f64::INFINITY,
+        }
     }
 
     /// ln g(x); −∞ outside the support.
@@ -846,7 +853,7 @@ fn march(g: &Density, x: f64, dir: f64, end: Option<End>, f: &mut impl FnMut(f64
         step = step.max(1e-3 * (1.0 + x.abs()) * f64::EPSILON.sqrt());
         // Far out, panels grow with |x| (power tails) but stay within their
         // distance from 0 for the x^k weights.
-        step = step.min(0.5 * (1.0 + x.abs()));
+        step = step.min(0.5 * (1.0 + x.abs())).min(g.smoothness_scale());
         if let Some(dist) = dist {
             if dist <= 0.0 {
                 return;
@@ -915,22 +922,42 @@ fn kde_value(kde: &Kde, x: f64) -> f64 {
     kde_value_slope(kde, x).0
 }
 
-/// The kernel density and its slope at `x`: kernels further than 9 widths
-/// away (below e^−40) are skipped.
+/// The kernel density and its slope at `x`: the kernels within
+/// [`KDE_REACH`] widths, by a recurrence from the nearest centre (the
+/// centres are evenly spaced: two exponentials per call).
 fn kde_value_slope(kde: &Kde, x: f64) -> (f64, f64) {
-    let h = kde.h;
-    let reach = 9.0 * h;
-    let c = &kde.centres;
-    let lo = c.partition_point(|&v| v < x - reach);
-    let hi = c.partition_point(|&v| v <= x + reach);
+    let (h, c, w) = (kde.h, &kde.centres, &kde.weights);
+    let n = c.len();
+    let delta = (c[n - 1] - c[0]) / (n - 1) as f64;
     let inv_h2 = 1.0 / (h * h);
     let norm = 1.0 / (h * (2.0 * core::f64::consts::PI).sqrt());
+    let reach = (KDE_REACH * h / delta).ceil() as isize;
+    let j0 = ((x - c[0]) / delta)
+        .round()
+        .clamp(-(reach + 1) as f64, (n as isize + reach) as f64) as isize;
+    let t = x - (c[0] + delta * j0 as f64);
+    // Kernel j0 + m: exp(−(t − mδ)²/2h²) = base·r^m·q_m, q_m = exp(−m²δ²/2h²).
+    let base = (-0.5 * t * t * inv_h2).exp();
+    let r = (t * delta * inv_h2).exp();
+    let q = (-0.5 * delta * delta * inv_h2).exp();
     let (mut v, mut dv) = (0.0, 0.0);
-    for i in lo..hi {
-        let t = x - c[i];
-        let k = kde.weights[i] * (-0.5 * t * t * inv_h2).exp();
-        v += k;
-        dv -= k * t * inv_h2;
+    let mut add = |j: isize, k: f64| {
+        if (0..n as isize).contains(&j) {
+            let j = j as usize;
+            let term = w[j] * k;
+            v += term;
+            dv -= term * (x - c[j]) * inv_h2;
+        }
+    };
+    add(j0, base);
+    for (dir, ratio) in [(1isize, r), (-1, 1.0 / r)] {
+        // k_m = base·ratio^m·q^(m²): k_(m+1) = k_m·ratio·q^(2m+1).
+        let (mut k, mut qm) = (base, q);
+        for m in 1..=reach {
+            k *= ratio * qm;
+            qm *= q * q;
+            add(j0 + dir * m, k);
+        }
     }
     (v * norm, dv * norm)
 }

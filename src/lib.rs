@@ -53,6 +53,8 @@ pub mod paper;
 mod params;
 mod spline;
 pub mod table;
+#[cfg(feature = "topography")]
+pub mod topography;
 
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use distribution::{

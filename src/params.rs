@@ -1,5 +1,7 @@
 //! Model parameters: dimensionless (MODEL.md §1) or from physical quantities.
 
+use crate::distribution::HeightDistribution;
+
 /// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
 pub enum Fit {
@@ -121,6 +123,11 @@ pub struct Constants {
     /// name is `model`.
     #[serde(rename = "model")]
     pub kind: Kind,
+    /// The asperity heights' distribution (default
+    /// [`HeightDistribution::Gaussian`]); its record names are
+    /// `distribution`, `skewness` and `kurtosis`.
+    #[serde(flatten)]
+    pub distribution: HeightDistribution,
 }
 
 impl Default for Constants {
@@ -132,6 +139,7 @@ impl Default for Constants {
             eps_star: DEFAULT_EPS_STAR,
             fit: Fit::Consistent,
             kind: Kind::KogutEtsion,
+            distribution: HeightDistribution::Gaussian,
         }
     }
 }
@@ -167,6 +175,12 @@ impl Constants {
         self
     }
 
+    /// Sets the asperity heights' distribution ([`HeightDistribution`]).
+    pub fn distribution(mut self, distribution: HeightDistribution) -> Constants {
+        self.distribution = distribution;
+        self
+    }
+
     /// The parameters at (ψ, θ) with these constants, validated.
     pub fn at(&self, psi: f64, theta: f64) -> Result<Params, ParamError> {
         let p = self.unchecked_at(psi, theta);
@@ -193,7 +207,8 @@ impl Constants {
         check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
         check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
             (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
-        })
+        })?;
+        self.distribution.validate()
     }
 }
 
@@ -279,6 +294,12 @@ impl Params {
     /// Sets the model ([`Kind`]).
     pub fn kind(mut self, kind: Kind) -> Params {
         self.constants.kind = kind;
+        self
+    }
+
+    /// Sets the asperity heights' distribution ([`HeightDistribution`]).
+    pub fn distribution(mut self, distribution: HeightDistribution) -> Params {
+        self.constants.distribution = distribution;
         self
     }
 

@@ -3,7 +3,7 @@
 
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
+use ke_friction::{Constants, ErrorKind, Fit, HeightDistribution, Kind, Model, Params, Physical};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -279,18 +279,89 @@ pub struct ConstantsArgs {
     /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model, MODEL.md §8).
     #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
     pub model: ModelKindArg,
+    /// Distribution of the asperity heights (MODEL.md §9) [default: gaussian; pearson with --skewness or --kurtosis; empirical with --heights].
+    #[arg(long, value_enum)]
+    pub distribution: Option<DistributionArg>,
+    /// Skewness Sk of the heights (ISO Ssk): pearson (K > Sk² + 1, |Sk| ≤ 5) or weibull (-1.1395 < Sk ≤ 2) [default: 0].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub skewness: Option<f64>,
+    /// Kurtosis K of the heights, not excess (ISO Sku; 3 for a Gaussian): pearson, K > Sk² + 1 and ≤ 100 [default: 3].
+    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    pub kurtosis: Option<f64>,
+    /// Measured heights for an empirical density: a text file (one height per line) or a .npy array (at least 100 finite values, any unit).
+    #[arg(long, value_name = "FILE")]
+    pub heights: Option<std::path::PathBuf>,
 }
 
 impl ConstantsArgs {
-    /// The constants the flags ask for (not yet validated).
-    pub fn constants(&self) -> Constants {
+    /// The constants the flags ask for (not yet validated, except the
+    /// distribution's flags, which must agree with each other).
+    pub fn constants(&self) -> Result<Constants, Failure> {
         let d = Constants::default();
-        Constants {
+        Ok(Constants {
             beta: self.beta.unwrap_or(d.beta),
             nu: self.nu.unwrap_or(d.nu),
             eps_star: self.eps_star.unwrap_or(d.eps_star),
             fit: self.fit.into(),
             kind: self.model.into(),
+            distribution: self.distribution()?,
+        })
+    }
+
+    /// The height distribution of `--distribution`, `--skewness`,
+    /// `--kurtosis` and `--heights`, validated.
+    pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
+        let family = match (self.distribution, &self.heights) {
+            (Some(f), _) => f,
+            (None, Some(_)) => DistributionArg::Empirical,
+            (None, None) if self.skewness.is_some() || self.kurtosis.is_some() => DistributionArg::Pearson,
+            (None, None) => DistributionArg::Gaussian,
+        };
+        let refuse = |flag: &str, why: &str| Err(Failure::input(format!("{flag}: {why}")));
+        let shape = |e: ke_friction::ParamError| Failure::input(format!("{}: {e}", flag_of(e.name)));
+        if family != DistributionArg::Empirical && self.heights.is_some() {
+            return refuse("--heights", "only with --distribution empirical");
+        }
+        match family {
+            DistributionArg::Gaussian => {
+                if self.skewness.is_some_and(|v| v != 0.0) || self.kurtosis.is_some_and(|v| v != 3.0) {
+                    return refuse(
+                        if self.skewness.is_some() {
+                            "--skewness"
+                        } else {
+                            "--kurtosis"
+                        },
+                        "the gaussian distribution has skewness 0 and kurtosis 3 (use --distribution pearson)",
+                    );
+                }
+                Ok(HeightDistribution::Gaussian)
+            }
+            DistributionArg::Pearson => {
+                HeightDistribution::pearson(self.skewness.unwrap_or(0.0), self.kurtosis.unwrap_or(3.0)).map_err(shape)
+            }
+            DistributionArg::Weibull => {
+                if self.kurtosis.is_some() {
+                    return refuse(
+                        "--kurtosis",
+                        "not with --distribution weibull (its kurtosis follows from --skewness)",
+                    );
+                }
+                HeightDistribution::weibull(self.skewness.unwrap_or(0.0)).map_err(shape)
+            }
+            DistributionArg::Empirical => {
+                if let Some(flag) = [("--skewness", self.skewness), ("--kurtosis", self.kurtosis)]
+                    .into_iter()
+                    .find_map(|(flag, v)| v.map(|_| flag))
+                {
+                    return refuse(flag, "not with an empirical density (the heights give its shape)");
+                }
+                let Some(path) = &self.heights else {
+                    return refuse("--distribution", "empirical needs --heights FILE");
+                };
+                let heights = crate::heights::read(path)?;
+                HeightDistribution::empirical(&heights)
+                    .map_err(|e| Failure::input(format!("--heights {}: {e}", path.display())))
+            }
         }
     }
 
@@ -394,6 +465,19 @@ impl SiArgs {
     }
 }
 
+/// `--distribution` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum DistributionArg {
+    /// The paper's Gaussian heights.
+    Gaussian,
+    /// The Pearson system from --skewness and --kurtosis.
+    Pearson,
+    /// Weibull from --skewness.
+    Weibull,
+    /// A kernel density of the heights in --heights FILE.
+    Empirical,
+}
+
 /// `--fit` values.
 #[derive(Debug, Clone, Copy, clap::ValueEnum)]
 pub enum FitArg {
@@ -451,11 +535,11 @@ impl ModelArgs {
                 v.ok_or_else(|| Failure::input(format!("{flag}: required (or give the SI inputs, see --help)")))
             };
             self.constants
-                .constants()
+                .constants()?
                 .unchecked_at(required("--psi", self.psi)?, required("--theta", self.theta)?)
         };
-        let c = self.constants.constants();
-        Ok(params.fit(c.fit).kind(c.kind))
+        let c = self.constants.constants()?;
+        Ok(params.fit(c.fit).kind(c.kind).distribution(c.distribution))
     }
 
     /// The validated model, or a message naming the offending flag.
@@ -483,7 +567,21 @@ pub fn describe(p: &Params) -> String {
         Shortest(p.constants.eps_star),
         p.constants.fit.name(),
         p.constants.kind.name()
-    )
+    ) + &describe_distribution(&p.constants.distribution)
+}
+
+/// `, distribution = …, skewness = …, kurtosis = …` for a non-Gaussian
+/// distribution; empty for the Gaussian.
+pub fn describe_distribution(d: &HeightDistribution) -> String {
+    match d {
+        HeightDistribution::Gaussian => String::new(),
+        _ => format!(
+            ", distribution = {}, skewness = {}, kurtosis = {}",
+            d.family(),
+            Shortest::rounded(d.skewness()),
+            Shortest::rounded(d.kurtosis())
+        ),
+    }
 }
 
 /// Where a point lies outside the range the paper covers (F* ≤ 0.1, h* ≥ 0).

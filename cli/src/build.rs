@@ -108,7 +108,7 @@ impl Args {
                 number("--h-star", h_hi)?,
                 whole("--h-star", h_n)?,
             ),
-            constants: self.constants.constants(),
+            constants: self.constants.constants()?,
             precision: match self.precision {
                 PrecisionArg::F32 => Precision::F32,
                 PrecisionArg::F64 => Precision::F64,

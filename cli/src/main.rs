@@ -26,6 +26,7 @@ mod args;
 mod build;
 mod eval;
 mod export;
+mod heights;
 mod info;
 mod lookup;
 mod params;

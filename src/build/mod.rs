@@ -13,7 +13,7 @@ use crate::model::{EvalError, Model, H_LIMIT};
 use crate::num::Shortest;
 use crate::params::{check, Constants, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
-use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, ModelSpec, Payload};
+use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, DistributionSpec, ModelSpec, Payload};
 pub use crate::table::Precision;
 use crate::table::{Table, TableError};
 use rayon::prelude::*;
@@ -217,6 +217,13 @@ impl BuildOptions {
                 Err(BuildError::Range { name, lo, hi })
             }
         };
+        if DistributionSpec::of(&self.constants.distribution).is_none() {
+            return Err(BuildError::Option(ParamError {
+                name: "distribution",
+                value: f64::NAN,
+                range: "gaussian, pearson or weibull (a table does not hold an empirical density: use a curve)",
+            }));
+        }
         range("psi", self.psi, |v| v > 0.0, "> 0")?;
         range("theta", self.theta, |v| v >= 0.0, ">= 0")?;
         range("f_star", self.f_star, |v| v > 0.0, "> 0")?;
@@ -394,6 +401,8 @@ pub fn build(o: &BuildOptions, progress: &dyn Progress) -> Result<Built, BuildEr
     };
     let mut payload = Payload {
         model: ModelSpec::of(&o.constants),
+        // validate() refused an empirical density.
+        distribution: DistributionSpec::of(&o.constants.distribution).unwrap_or_default(),
         axes: [spec(&axes[0], o.psi), spec(&axes[1], o.theta), spec(&axes[2], o.f_star)],
         ln_mu: store(fit_3d(&ln_mu, [np, nt, nf], starts)),
         h_star: store(fit_3d(&h_star, [np, nt, nf], starts)),

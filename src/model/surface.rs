@@ -14,6 +14,7 @@
 
 use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use super::quadrature::{Rule, NODES};
+use crate::distribution::{Density, End, JACOBI_POWER_MAX};
 use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
@@ -33,9 +34,8 @@ pub(crate) struct Surface {
     kind: Kind,
     /// σ_s/σ.
     s: f64,
-    inv_s2: f64,
-    /// 1/(s√(2π)).
-    norm: f64,
+    /// The density of asperity heights φ*.
+    heights: Heights,
     /// ω_c* = s/ψ².
     omega: f64,
     /// y_s* = h* − d*.
@@ -101,11 +101,15 @@ pub(crate) struct Sums {
 
 /// The window of z* that matters for the contact integrals (z* ≥ d*) at
 /// separation `d`: beyond it the density has fallen by `e^−TAIL` from its
-/// largest value on the integrals' range.
+/// largest value on the integrals' range. For a general density, the
+/// support, with `d` and ln φ* at its largest on `[d, ∞)` to tell where
+/// an unbounded tail becomes negligible.
 #[derive(Debug, Clone, Copy)]
 struct Window {
     lo: f64,
     hi: f64,
+    d: f64,
+    ln_ref: f64,
 }
 
 impl Window {
@@ -114,8 +118,248 @@ impl Window {
         Window {
             lo: -cut,
             hi: d.max(0.0).hypot(cut),
+            d,
+            ln_ref: 0.0,
         }
     }
+}
+
+/// At most this many panels per integral (a safeguard: the tails of the
+/// heaviest admissible densities need a few hundred).
+const MAX_PANELS: usize = 100_000;
+/// Step (in units of σ_s) of the central differences that give ∂P*/∂d*
+/// and ∂Fs*/∂d* for densities with a finite end.
+const DIFFERENCE_STEP: f64 = 1e-5;
+/// A tail is negligible once its part falls below this fraction (e^−40).
+const NEGLIGIBLE: f64 = 4.248354255291589e-18;
+
+/// The density of asperity heights φ*(z*) as the integrals see it.
+trait Phi {
+    /// Whether this is a general density (support ends, unbounded tails);
+    /// false for the Gaussian, whose integrals keep their fixed windows.
+    const GENERAL: bool;
+    /// φ*(z).
+    fn phi(&self, z: f64) -> f64;
+    /// `w·φ*'(z)/φ*(z)`: a node's weight for ∂/∂d*.
+    fn dw(&self, w: f64, z: f64) -> f64;
+    /// Panel length in z* at height `z`.
+    fn step(&self, z: f64) -> f64;
+    /// The window of the contact integrals at `d`.
+    fn window(&self, d: f64) -> Window;
+    /// The finite ends of the support (lower, upper), in z*.
+    fn ends(&self) -> (Option<&ZEnd>, Option<&ZEnd>) {
+        (None, None)
+    }
+    /// Where φ* is largest.
+    fn mode(&self) -> f64 {
+        0.0
+    }
+    /// Whether the contact integrals' tail beyond `z` is negligible.
+    fn negligible(&self, _z: f64, _win: Window) -> bool {
+        false
+    }
+    /// The end panel of width `width` at `e`: calls `f(dist, w)` with the
+    /// distance of each node from the end and its weight `w = wt·φ*`.
+    fn end_panel(&self, _e: &ZEnd, _width: f64, _f: impl FnMut(f64, f64)) {}
+}
+
+/// The paper's Gaussian φ*.
+#[derive(Debug, Clone)]
+struct Gauss {
+    s: f64,
+    inv_s2: f64,
+    /// 1/(s√(2π)).
+    norm: f64,
+}
+
+impl Phi for Gauss {
+    const GENERAL: bool = false;
+
+    #[inline(always)]
+    fn phi(&self, z: f64) -> f64 {
+        self.norm * (-0.5 * z * z * self.inv_s2).exp()
+    }
+
+    #[inline(always)]
+    fn dw(&self, w: f64, z: f64) -> f64 {
+        -w * z * self.inv_s2
+    }
+
+    #[inline(always)]
+    fn step(&self, z: f64) -> f64 {
+        let s = self.s;
+        let far = STEP_DECAY * s * s / (z.abs() + s);
+        if far < MAX_STEP * s {
+            far
+        } else {
+            MAX_STEP * s
+        }
+    }
+
+    fn window(&self, d: f64) -> Window {
+        Window::contact(d, self.s)
+    }
+}
+
+/// A finite end of the support in z*: `φ* ~ |z* − z|^power` next to it.
+#[derive(Debug, Clone)]
+struct ZEnd {
+    z: f64,
+    power: f64,
+    /// The end in the standardised density's units.
+    end: End,
+    /// Widest panel (in z*) the Gauss–Jacobi rule may take.
+    jacobi_width: f64,
+    /// Gauss–Jacobi rule with weight `t^power` (when `power < JACOBI_POWER_MAX`).
+    rule: Option<Rule>,
+}
+
+impl ZEnd {
+    /// Whether a panel of `width` reaching this end takes its Gauss–Jacobi rule.
+    fn jacobi(&self, width: f64) -> bool {
+        self.rule.is_some() && width <= self.jacobi_width
+    }
+}
+
+/// Any other density: `φ*(z*) = g(z*/s)/s` (MODEL.md §9).
+#[derive(Debug, Clone)]
+struct General {
+    g: Density,
+    inv_s: f64,
+    ln_inv_s: f64,
+    max_step: f64,
+    mode: f64,
+    lo: Option<ZEnd>,
+    hi: Option<ZEnd>,
+}
+
+impl General {
+    fn new(g: Density, s: f64) -> General {
+        let zend = |e: Option<End>| {
+            e.map(|e| ZEnd {
+                z: s * e.at,
+                power: e.power,
+                end: e,
+                jacobi_width: s * e.jacobi_width,
+                rule: (e.power < JACOBI_POWER_MAX).then(|| Rule::jacobi(e.power)),
+            })
+        };
+        General {
+            lo: zend(g.lower_end()),
+            hi: zend(g.upper_end()),
+            max_step: MAX_STEP * s * g.smoothness_scale().min(1.0),
+            mode: s * g.mode(),
+            inv_s: 1.0 / s,
+            ln_inv_s: -s.ln(),
+            g,
+        }
+    }
+
+    fn ln_phi(&self, z: f64) -> f64 {
+        self.g.ln_pdf(z * self.inv_s) + self.ln_inv_s
+    }
+}
+
+impl Phi for General {
+    const GENERAL: bool = true;
+
+    fn phi(&self, z: f64) -> f64 {
+        self.ln_phi(z).exp()
+    }
+
+    fn dw(&self, w: f64, z: f64) -> f64 {
+        if w == 0.0 {
+            0.0
+        } else {
+            w * self.g.dln_pdf(z * self.inv_s) * self.inv_s
+        }
+    }
+
+    fn step(&self, z: f64) -> f64 {
+        let slope = (self.g.dln_pdf(z * self.inv_s) * self.inv_s).abs();
+        let cap = self.max_step.max(0.5 * z.abs());
+        let step = STEP_DECAY / slope;
+        // At an end of the support the slope is infinite: the end's
+        // Gauss–Jacobi rule holds the singular factor, the rest is smooth.
+        if step < cap && slope.is_finite() {
+            step
+        } else {
+            cap
+        }
+    }
+
+    fn window(&self, d: f64) -> Window {
+        let mut top = d.max(self.mode);
+        if self.lo.as_ref().is_some_and(|e| top == e.z) {
+            // A J-shaped density is infinite at its end: look just inside.
+            top += 1e-6 * (1.0 + top.abs());
+        }
+        let top = match &self.hi {
+            Some(e) if top >= e.z => d,
+            _ => top,
+        };
+        Window {
+            lo: self.lo.as_ref().map_or(f64::NEG_INFINITY, |e| e.z),
+            hi: self.hi.as_ref().map_or(f64::INFINITY, |e| e.z),
+            d,
+            ln_ref: self.ln_phi(top),
+        }
+    }
+
+    fn ends(&self) -> (Option<&ZEnd>, Option<&ZEnd>) {
+        (self.lo.as_ref(), self.hi.as_ref())
+    }
+
+    fn mode(&self) -> f64 {
+        self.mode
+    }
+
+    fn negligible(&self, z: f64, win: Window) -> bool {
+        if z <= self.mode {
+            return false;
+        }
+        let ln = self.ln_phi(z) + 2.0 * (1.0 + (z - win.d).abs() * self.inv_s).ln();
+        ln.is_nan() || ln < win.ln_ref - TAIL
+    }
+
+    fn end_panel(&self, e: &ZEnd, width: f64, mut f: impl FnMut(f64, f64)) {
+        let Some(rule) = &e.rule else { return };
+        // ∫ dist^power·(φ*/dist^power): the rule's weights hold dist^power.
+        let scale = width.powf(e.power + 1.0);
+        for i in 0..NODES {
+            let dist = width * rule.t[i];
+            let ln_regular = self.g.ln_pdf_at_end(e.end, dist * self.inv_s) + self.ln_inv_s - e.power * dist.ln();
+            f(dist, scale * rule.w[i] * ln_regular.exp());
+        }
+    }
+}
+
+/// Which density the integrals use.
+#[derive(Debug, Clone)]
+enum Heights {
+    Gauss(Gauss),
+    General(std::sync::Arc<General>),
+}
+
+/// Which end of the support a panel touches (general densities).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum EndSide {
+    None,
+    Lower,
+    Upper,
+}
+
+/// One panel `[x0, x1]` of an integral in x.
+#[derive(Debug, Clone, Copy)]
+struct Panel {
+    x0: f64,
+    x1: f64,
+    /// It starts at the regime's start (the contact point for x = 0).
+    first: bool,
+    /// It ends at the regime's end (not cut by the window).
+    last: bool,
+    /// It touches an end of the support (Gauss–Jacobi with the end's weight).
+    at_end: EndSide,
 }
 
 /// Adds a node's load `p` and, with an adhesion exponent `b_adh`, its
@@ -157,11 +401,20 @@ impl Surface {
             Fit::Consistent => (load::EP1.0, false),
             Fit::AsPrinted => (FRICTION_ELASTIC.0, true),
         };
-        Surface {
-            kind: p.constants.kind,
+        let gauss = Gauss {
             s,
             inv_s2: 1.0 / (s * s),
             norm: 1.0 / (s * (2.0 * pi).sqrt()),
+        };
+        let heights = if p.constants.distribution.is_gaussian() {
+            Heights::Gauss(gauss)
+        } else {
+            Heights::General(std::sync::Arc::new(General::new(p.constants.distribution.density(), s)))
+        };
+        Surface {
+            kind: p.constants.kind,
+            s,
+            heights,
             omega,
             ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.constants.beta),
             eps: p.constants.eps_star,
@@ -176,15 +429,37 @@ impl Surface {
         }
     }
 
-    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
+    /// P*, Fs* and, if `want_q`, Q* at `d`; without Q*, also their
+    /// d*-derivatives.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
-        let win = Window::contact(d, self.s);
+        match &self.heights {
+            Heights::Gauss(h) => self.evaluate_with(h, d, want_q),
+            Heights::General(h) if want_q || (h.lo.is_none() && h.hi.is_none()) => self.evaluate_with(&**h, d, want_q),
+            Heights::General(h) => {
+                // With a finite end of the support, differentiating under
+                // the integral misses the ends' terms (infinite ones for a
+                // J-shaped density): central differences instead, to about
+                // 1e-10 relative (F* is smooth on the scale σ_s).
+                let mut sums = self.evaluate_with(&**h, d, false);
+                let step = DIFFERENCE_STEP * self.s;
+                let up = self.evaluate_with(&**h, d + step, false);
+                let down = self.evaluate_with(&**h, d - step, false);
+                sums.dp = (up.p - down.p) / (2.0 * step);
+                sums.dfs = (up.fs - down.fs) / (2.0 * step);
+                sums
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn evaluate_with<H: Phi>(&self, h: &H, d: f64, want_q: bool) -> Sums {
+        let win = h.window(d);
         let mut c = match self.kind {
-            Kind::KogutEtsion => self.contact_ke(d, win, want_q),
-            Kind::CebType => self.contact_ceb(d, win, want_q),
+            Kind::KogutEtsion => self.contact_ke(h, d, win, want_q),
+            Kind::CebType => self.contact_ceb(h, d, win, want_q),
         };
         if self.adh_pref != 0.0 {
-            let (j, dj) = self.noncontact(d);
+            let (j, dj) = self.noncontact(h, d);
             c.fs += j;
             c.dfs += dj;
         }
@@ -198,18 +473,18 @@ impl Surface {
     }
 
     /// Contact integrals of MODEL.md §4, without their prefactors.
-    fn contact_ke(&self, d: f64, win: Window, want_q: bool) -> Sums {
+    fn contact_ke<H: Phi>(&self, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
-        let el = self.elastic(d, win, adh, want_q);
+        let el = self.elastic(h, d, win, adh, want_q);
         // A power-law regime [xa, xc]: load x^b_load, adhesion exponent b_adh.
         let regime = |xa: f64, xc: f64, b_load: f64, b_adh: f64, want_q: bool| {
             let law = move |_: f64, lx: f64| (b_load * lx).exp();
-            self.smooth(d, win, xa, xc, law, adh.then_some(b_adh), want_q)
+            self.smooth(h, d, win, xa, xc, law, adh.then_some(b_adh), want_q)
         };
         let ep1a = regime(X_ELASTIC, X0, load::EP1.1, adhesion::EP1.1, want_q);
         let ep1b = regime(X0, X_EP1, load::EP1.1, adhesion::EP1.1, want_q && self.q_unclipped);
         let ep2 = regime(X_EP1, X_PLASTIC, load::EP2.1, adhesion::EP2.1, false);
-        let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, |x, _| x, None, false);
+        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, |x, _| x, None, false);
         let (a1, a2, a3) = (load::EP1.0, load::EP2.0, self.plastic);
         let p = el.p + a1 * (ep1a.p + ep1b.p) + a2 * ep2.p + a3 * pl.p;
         let dp = el.dp + a1 * (ep1a.dp + ep1b.dp) + a2 * ep2.dp + a3 * pl.dp;
@@ -223,13 +498,13 @@ impl Surface {
     /// Contact integrals of the CEB-type model (MODEL.md §8): Hertz load
     /// and `μ_CEB` below x = 1, the volume-conserving load `1.5(2x − 1)`
     /// above, and the Kogut–Etsion adhesion throughout.
-    fn contact_ceb(&self, d: f64, win: Window, want_q: bool) -> Sums {
+    fn contact_ceb<H: Phi>(&self, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
-        let el = self.elastic_ceb(d, win, adh, want_q);
+        let el = self.elastic_ceb(h, d, win, adh, want_q);
         let law = |x: f64, _: f64| 1.5 * (2.0 * x - 1.0);
-        let ep1 = self.smooth(d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
-        let ep2 = self.smooth(d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
-        let pl = self.smooth(d, win, X_PLASTIC, f64::INFINITY, law, None, false);
+        let ep1 = self.smooth(h, d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
+        let ep2 = self.smooth(h, d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
+        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, law, None, false);
         let p = el.p + ep1.p + ep2.p + pl.p;
         let dp = el.dp + ep1.dp + ep2.dp + pl.dp;
         let [c0, c1, c2] = self.adh_coef;
@@ -247,30 +522,31 @@ impl Surface {
     /// The elastic regime of the CEB-type model: `Q̄ = μ_CEB·P̄`, with the
     /// branch `μ2` below the crossing `xc` and `μ1` (which vanishes like
     /// `(1 − x)^½` at x = 1) above it.
-    fn elastic_ceb(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+    fn elastic_ceb<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let xc = self.ceb.x_cross;
         let ceb = &self.ceb;
         let mut acc = Sums::default();
         let m15 = ceb.mu2_power_coefficient();
-        self.panels(d, win, 0.0, xc, |x0, x1, first, _| {
-            if first {
-                self.elastic_first_panel(d, x1, adh, &mut acc);
+        self.panels(h, d, win, 0.0, xc, |p| {
+            if p.first {
+                self.elastic_first_panel(h, d, p.x1, adh, &mut acc);
                 if want_q {
                     // acc.p is so far just ∫₀^x1 x^1.5 φ*, the first panel's load.
                     acc.q += m15 * acc.p;
-                    self.legendre_panel(d, x0, x1, |x, w, _| acc.q += x * ceb.mu2_remainder(x) * w);
+                    self.legendre_panel(h, d, p, |x, w, _| acc.q += x * ceb.mu2_remainder(x) * w);
                 }
             } else {
-                self.legendre_panel(d, x0, x1, |x, w, dw| {
-                    let p = elastic_node(&mut acc, x, x.ln(), w, dw, adh);
+                self.legendre_panel(h, d, p, |x, w, dw| {
+                    let load = elastic_node(&mut acc, x, x.ln(), w, dw, adh);
                     if want_q {
-                        acc.q += (m15 * p + x * ceb.mu2_remainder(x)) * w;
+                        acc.q += (m15 * load + x * ceb.mu2_remainder(x)) * w;
                     }
                 });
             }
         });
-        self.panels(d, win, xc, X_ELASTIC, |x0, x1, _, last| {
-            self.legendre_panel(d, x0, x1, |x, w, dw| {
+        self.panels(h, d, win, xc, X_ELASTIC, |p| {
+            let last = p.last && p.at_end == EndSide::None;
+            self.legendre_panel(h, d, p, |x, w, dw| {
                 elastic_node(&mut acc, x, x.ln(), w, dw, adh);
                 if want_q && !last {
                     acc.q += ceb.mu1_factor(x) * (1.0 - x).sqrt() * w;
@@ -278,11 +554,11 @@ impl Surface {
             });
             if want_q && last {
                 // (1 − x)^½ at x = 1: the mirrored Gauss–Jacobi rule.
-                let width = X_ELASTIC - x0;
+                let width = X_ELASTIC - p.x0;
                 let scale = self.omega * width.powf(1.5);
                 for (t, wt) in self.rules.gj_half.t.iter().zip(&self.rules.gj_half.w) {
                     let x = X_ELASTIC - width * t;
-                    acc.q += scale * wt * self.phi(d + self.omega * x) * ceb.mu1_factor(x);
+                    acc.q += scale * wt * h.phi(d + self.omega * x) * ceb.mu1_factor(x);
                 }
             }
         });
@@ -290,17 +566,17 @@ impl Surface {
     }
 
     /// The fully elastic regime `0 ≤ x < 1` of the Kogut–Etsion model.
-    fn elastic(&self, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+    fn elastic<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let mut acc = Sums::default();
         let b_fric = FRICTION_ELASTIC.1;
-        self.panels(d, win, 0.0, X_ELASTIC, |x0, x1, first, _| {
-            if first {
-                self.elastic_first_panel(d, x1, adh, &mut acc);
+        self.panels(h, d, win, 0.0, X_ELASTIC, |p| {
+            if p.first {
+                self.elastic_first_panel(h, d, p.x1, adh, &mut acc);
                 if want_q {
-                    self.jacobi_panel(d, &self.rules.gj_fric, b_fric, x1, |_, w, _| acc.q += w);
+                    self.jacobi_panel(h, d, &self.rules.gj_fric, b_fric, p.x1, |_, w, _| acc.q += w);
                 }
             } else {
-                self.legendre_panel(d, x0, x1, |x, w, dw| {
+                self.legendre_panel(h, d, p, |x, w, dw| {
                     let lx = x.ln();
                     elastic_node(&mut acc, x, lx, w, dw, adh);
                     if want_q {
@@ -314,13 +590,13 @@ impl Surface {
 
     /// The Hertz load `x^1.5` and the elastic adhesion `x^0.298` (the same
     /// in both models) on the panel `[0, x1]`, by their Gauss–Jacobi rules.
-    fn elastic_first_panel(&self, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
-        self.jacobi_panel(d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+    fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
+        self.jacobi_panel(h, d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
             acc.p += w;
             acc.dp += dw;
         });
         if adh {
-            self.jacobi_panel(d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
+            self.jacobi_panel(h, d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
                 acc.fs += w;
                 acc.dfs += dw;
             });
@@ -331,8 +607,9 @@ impl Surface {
     /// load `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
     /// friction factor `x^1.425·μ_ep(x)`.
     #[allow(clippy::too_many_arguments)]
-    fn smooth(
+    fn smooth<H: Phi>(
         &self,
+        h: &H,
         d: f64,
         win: Window,
         xa: f64,
@@ -342,8 +619,8 @@ impl Surface {
         want_q: bool,
     ) -> Sums {
         let mut acc = Sums::default();
-        self.panels(d, win, xa, xc, |x0, x1, _, _| {
-            self.legendre_panel(d, x0, x1, |x, w, dw| {
+        self.panels(h, d, win, xa, xc, |p| {
+            self.legendre_panel(h, d, p, |x, w, dw| {
                 let lx = x.ln();
                 let p = load(x, lx);
                 add_node(&mut acc, p, lx, w, dw, b_adh);
@@ -357,32 +634,37 @@ impl Surface {
 
     /// The non-contact adhesion integral `J_nc` (MODEL.md §4) and its
     /// d*-derivative, in the gap `g = d* − z* ≥ 0`.
-    fn noncontact(&self, d: f64) -> (f64, f64) {
+    fn noncontact<H: Phi>(&self, h: &H, d: f64) -> (f64, f64) {
+        if H::GENERAL {
+            return self.noncontact_general(h, d);
+        }
+        let s = self.s;
         // The largest gap g = d* − z*, at z* = −hypot(min(d*, 0), cut).
-        let g_max = d + d.min(0.0).hypot(tail_cut(self.s));
+        let g_max = d + d.min(0.0).hypot(tail_cut(s));
         // Asperities above z_hi add less than e^−TAIL of J_nc: there φ* is
         // below e^−TAIL of ε*·(u at z* = 0)^−2 ≲ J_nc, and ∫ (…) dg* ≤ (4/3)ε*.
         // Skipping them keeps the work bounded for large d* (the panels
         // shrink like 1/|z*| far out).
-        let worst = 4.0 * self.norm * (d.max(0.0) + self.s + self.eps).powi(2) / self.eps;
-        let z_hi = self.s * (2.0 * (TAIL + worst.ln().max(0.0))).sqrt();
+        let norm = 1.0 / (s * (2.0 * core::f64::consts::PI).sqrt());
+        let worst = 4.0 * norm * (d.max(0.0) + s + self.eps).powi(2) / self.eps;
+        let z_hi = s * (2.0 * (TAIL + worst.ln().max(0.0))).sqrt();
         let mut g0 = (d - z_hi).max(0.0);
         let (mut j, mut dj) = (0.0, 0.0);
         // Panels [ε(2^k − 1), ε(2^(k+1) − 1)]: each is at least a third of its
         // distance from the pole of u^−2 at g = −ε away, so the rule converges fast.
         let mut width = self.eps + g0;
         while g0 < g_max {
-            let step = self.step(d - g0);
+            let step = h.step(d - g0);
             let w = if width < step { width } else { step };
             let g1 = if g0 + 1.5 * w >= g_max { g_max } else { g0 + w };
-            let h = g1 - g0;
+            let hw = g1 - g0;
             for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
-                let g = g0 + h * t;
+                let g = g0 + hw * t;
                 let z = d - g;
-                let wp = h * wt * self.phi(z);
+                let wp = hw * wt * h.phi(z);
                 let a = asperity::adhesion_noncontact(1.0 + g / self.eps);
                 j += a * wp;
-                dj -= a * wp * z * self.inv_s2;
+                dj += h.dw(a * wp, z);
             }
             g0 = g1;
             width *= 2.0;
@@ -390,11 +672,77 @@ impl Surface {
         (j, dj)
     }
 
-    /// Calls `f(x0, x1, first, last)` for the panels covering `[xa, xc]`
-    /// within the window; `first` marks a panel starting at `xa`, `last` one
-    /// ending at `xc` (not cut by the window).
+    /// `J_nc` for a general density: from the upper end of the support (or
+    /// z* = d*) down to its lower end or until the rest is negligible.
+    fn noncontact_general<H: Phi>(&self, h: &H, d: f64) -> (f64, f64) {
+        let (lo_end, hi_end) = h.ends();
+        let mut g0 = hi_end.map_or(0.0, |e| (d - e.z).max(0.0));
+        let g_max = lo_end.map_or(f64::INFINITY, |e| d - e.z);
+        let (mut j, mut dj) = (0.0, 0.0);
+        let mut width = self.eps + g0;
+        let mut scale = 0.0f64;
+        let mode = h.mode();
+        let eps = self.eps;
+        let add = |j: &mut f64, dj: &mut f64, g: f64, wp: f64| {
+            let z = d - g;
+            let a = asperity::adhesion_noncontact(1.0 + g / eps);
+            *j += a * wp;
+            *dj += h.dw(a * wp, z);
+        };
+        // A first panel at the upper end of the support (below z* = d*).
+        if let Some(e) = hi_end.filter(|_| g0 > 0.0) {
+            let w = width.min(h.step(e.z)).min(0.5 * (g_max - g0));
+            if e.jacobi(w) {
+                h.end_panel(e, w, |dist, wp| add(&mut j, &mut dj, g0 + dist, wp));
+                g0 += w;
+                width = self.eps + g0;
+            }
+        }
+        for _ in 0..MAX_PANELS {
+            if g0 >= g_max {
+                break;
+            }
+            let z0 = d - g0;
+            let mut w = width.min(h.step(z0));
+            if let Some(e) = hi_end {
+                // Graded away from the upper end of the support.
+                let dist = e.z - z0;
+                if dist > 0.0 {
+                    w = w.min(dist);
+                }
+            }
+            if let Some(e) = lo_end {
+                let dist = z0 - e.z;
+                if e.jacobi(w.max(dist)) && w >= 0.5 * dist {
+                    h.end_panel(e, dist, |t, wp| add(&mut j, &mut dj, g_max - t, wp));
+                    break;
+                }
+                w = w.min(0.5 * dist);
+            }
+            let g1 = g0 + w;
+            let hw = g1 - g0;
+            let mut local = 0.0;
+            for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
+                let g = g0 + hw * t;
+                let wp = hw * wt * h.phi(d - g);
+                local += wp * asperity::adhesion_noncontact(1.0 + g / eps);
+                add(&mut j, &mut dj, g, wp);
+            }
+            scale = scale.max(local.abs());
+            g0 = g1;
+            width *= 2.0;
+            if d - g0 < mode && local.abs() <= NEGLIGIBLE * scale {
+                break;
+            }
+        }
+        (j, dj)
+    }
+
+    /// Calls `f(panel)` for the panels covering `[xa, xc]` within the
+    /// window; `first` marks a panel starting at `xa`, `last` one ending at
+    /// `xc` (not cut by the window).
     #[inline(always)]
-    fn panels(&self, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(f64, f64, bool, bool)) {
+    fn panels<H: Phi>(&self, h: &H, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(Panel)) {
         let (om, inv_om) = (self.omega, 1.0 / self.omega);
         let x_lo = (win.lo - d) * inv_om;
         let x_hi = (win.hi - d) * inv_om;
@@ -406,66 +754,120 @@ impl Surface {
         let last_is_end = end == xc;
         let mut x = start;
         let mut first = start == xa;
-        loop {
+        let mut from_end = H::GENERAL && start == x_lo && start > xa;
+        let (lo_end, hi_end) = if H::GENERAL { h.ends() } else { (None, None) };
+        let at_hi_end = H::GENERAL && end == x_hi && hi_end.is_some();
+        for _ in 0..MAX_PANELS {
             // A panel no longer than its distance from x = 0 keeps the
             // branch point of x^b far enough away for geometric convergence.
-            let dx = self.step(d + om * x) * inv_om;
-            let dx = if x > 0.0 && x < dx { x } else { dx };
-            let (x1, last) = if x + 1.5 * dx >= end {
+            let z = d + om * x;
+            let dx = h.step(z) * inv_om;
+            let mut dx = if x > 0.0 && x < dx { x } else { dx };
+            let mut jacobi_end = false;
+            if H::GENERAL {
+                if let Some(e) = lo_end.filter(|_| !from_end) {
+                    // Graded away from the lower end of the support.
+                    dx = dx.min((z - e.z) * inv_om);
+                }
+                if let Some(e) = hi_end {
+                    // Graded towards the upper end: a panel no longer than
+                    // its distance from it, and the one that reaches it by
+                    // the end's Gauss–Jacobi rule where that is exact.
+                    let dist = (e.z - d) * inv_om - x;
+                    let reaches = at_hi_end && (!first || x > 0.0);
+                    if reaches && dx >= 0.5 * dist && e.jacobi(dist * om) {
+                        jacobi_end = true;
+                        dx = dist;
+                    } else {
+                        // Even stretched by 1.5 to the regime's end, the
+                        // panel stays its own length away from the end.
+                        dx = dx.min(dist / 3.0);
+                    }
+                }
+                if from_end {
+                    // The first panel from the lower end of the support:
+                    // Gauss–Jacobi, or a tiny first panel where that is not exact.
+                    let e = lo_end.expect("a lower end");
+                    if !e.jacobi(dx * om) {
+                        dx *= 1e-9;
+                        from_end = false;
+                    }
+                }
+            }
+            let (x1, last) = if jacobi_end || x + 1.5 * dx >= end {
                 (end, true)
             } else {
                 (x + dx, false)
             };
-            f(x, x1, first, last && last_is_end);
-            if last {
+            f(Panel {
+                x0: x,
+                x1,
+                first,
+                last: last && last_is_end,
+                at_end: if jacobi_end {
+                    EndSide::Upper
+                } else if from_end {
+                    EndSide::Lower
+                } else {
+                    EndSide::None
+                },
+            });
+            if last || (H::GENERAL && h.negligible(d + om * x1, win)) {
                 break;
             }
             first = false;
+            from_end = false;
             x = x1;
         }
     }
 
-    /// Panel length in z* at height `z`.
+    /// Gauss–Legendre on the panel (or, at an end of a general density's
+    /// support, Gauss–Jacobi with the end's weight): calls `f(x, w·φ,
+    /// w·φ')` with the weights for `dz* = ω dx`.
     #[inline(always)]
-    fn step(&self, z: f64) -> f64 {
-        let s = self.s;
-        let far = STEP_DECAY * s * s / (z.abs() + s);
-        if far < MAX_STEP * s {
-            far
-        } else {
-            MAX_STEP * s
+    fn legendre_panel<H: Phi>(&self, h: &H, d: f64, p: Panel, mut f: impl FnMut(f64, f64, f64)) {
+        let (x0, x1) = (p.x0, p.x1);
+        if H::GENERAL && p.at_end != EndSide::None {
+            let (lo_end, hi_end) = h.ends();
+            let om = self.omega;
+            let width = om * (x1 - x0);
+            match p.at_end {
+                EndSide::Upper => {
+                    let e = hi_end.expect("an upper end");
+                    h.end_panel(e, width, |dist, w| {
+                        let z = e.z - dist;
+                        f((z - d) / om, w, h.dw(w, z))
+                    });
+                }
+                _ => {
+                    let e = lo_end.expect("a lower end");
+                    h.end_panel(e, width, |dist, w| {
+                        let z = e.z + dist;
+                        f((z - d) / om, w, h.dw(w, z))
+                    });
+                }
+            }
+            return;
         }
-    }
-
-    /// Gaussian density of asperity heights φ*(z*) (MODEL.md §2).
-    #[inline(always)]
-    fn phi(&self, z: f64) -> f64 {
-        self.norm * (-0.5 * z * z * self.inv_s2).exp()
-    }
-
-    /// Gauss–Legendre on `[x0, x1]`: calls `f(x, w·φ, w·φ')` with the
-    /// weights for `dz* = ω dx`.
-    #[inline(always)]
-    fn legendre_panel(&self, d: f64, x0: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
-        let h = self.omega * (x1 - x0);
+        let hw = self.omega * (x1 - x0);
         for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
             let x = x0 + (x1 - x0) * t;
             let z = d + self.omega * x;
-            let w = h * wt * self.phi(z);
-            f(x, w, -w * z * self.inv_s2);
+            let w = hw * wt * h.phi(z);
+            f(x, w, h.dw(w, z));
         }
     }
 
     /// Gauss–Jacobi for `∫₀^x1 x^b (…) dz*`: calls `f(x, w·φ, w·φ')` with
     /// weights that already include `x^b`.
     #[inline(always)]
-    fn jacobi_panel(&self, d: f64, rule: &Rule, b: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
+    fn jacobi_panel<H: Phi>(&self, h: &H, d: f64, rule: &Rule, b: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
         let scale = self.omega * x1.powf(b + 1.0);
         for i in 0..NODES {
             let x = x1 * rule.t[i];
             let z = d + self.omega * x;
-            let w = scale * rule.w[i] * self.phi(z);
-            f(x, w, -w * z * self.inv_s2);
+            let w = scale * rule.w[i] * h.phi(z);
+            f(x, w, h.dw(w, z));
         }
     }
 }
@@ -479,14 +881,17 @@ mod tests {
         /// `I^b[xa, xc]` (MODEL.md §4) with the same panels and rules as the
         /// model's own integrals.
         fn moment(&self, d: f64, b: f64, xa: f64, xc: f64) -> f64 {
-            let win = Window::contact(d, self.s);
+            let Heights::Gauss(h) = &self.heights else {
+                panic!("a Gaussian surface")
+            };
+            let win = h.window(d);
             let rule = Rule::jacobi(b);
             let mut sum = 0.0;
-            self.panels(d, win, xa, xc, |x0, x1, first, _| {
-                if first && xa == 0.0 {
-                    self.jacobi_panel(d, &rule, b, x1, |_, w, _| sum += w);
+            self.panels(h, d, win, xa, xc, |p| {
+                if p.first && xa == 0.0 {
+                    self.jacobi_panel(h, d, &rule, b, p.x1, |_, w, _| sum += w);
                 } else {
-                    self.legendre_panel(d, x0, x1, |x, w, _| sum += x.powf(b) * w);
+                    self.legendre_panel(h, d, p, |x, w, _| sum += x.powf(b) * w);
                 }
             });
             sum

@@ -1,13 +1,19 @@
-//! The table file format, version 1.
+//! The table file format, versions 1 and 2.
 //!
 //! ```text
 //! offset  size  content
 //! 0       8     magic  b"KEFRICTB"
-//! 8       4     format version, u32 little-endian (1)
+//! 8       4     format version, u32 little-endian (1 or 2)
 //! 12      8     payload length N, u64 little-endian
-//! 20      N     payload: a `Payload`, postcard-encoded
+//! 20      N     payload: a `Payload`, postcard-encoded; in version 2
+//!               followed by a `DistributionSpec`, postcard-encoded
 //! 20+N    4     CRC-32 (IEEE) of bytes 0 .. 20+N, u32 little-endian
 //! ```
+//!
+//! Version 2 adds the asperity heights' distribution (MODEL.md §9). A
+//! table for Gaussian heights is written as version 1, byte for byte as
+//! before (so the default table is unchanged and older readers still read
+//! it); a version-1 file is a Gaussian table.
 //!
 //! Nothing may follow the checksum. postcard's wire format is stable and
 //! specified (floats little-endian IEEE 754, lengths as varints); bincode is
@@ -49,14 +55,18 @@
 //! finite slope, from every kernel; `src/table/tests.rs` and the fuzz
 //! targets in `fuzz/` check each point with crafted files.
 
+use crate::distribution::HeightDistribution;
 use crate::params::{Constants, Fit, Kind};
 use serde::de::{self, EnumAccess, VariantAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// The first eight bytes of every table file.
 pub const MAGIC: [u8; 8] = *b"KEFRICTB";
-/// The format version this crate writes and reads.
-pub const VERSION: u32 = 1;
+/// The newest format version this crate writes and reads (tables for
+/// non-Gaussian heights).
+pub const VERSION: u32 = 2;
+/// The version of tables for Gaussian heights (and of every older table).
+pub const VERSION_GAUSSIAN: u32 = 1;
 const HEADER: usize = 20;
 
 /// The largest |ln μ| coefficient a table may have, in either precision:
@@ -94,7 +104,7 @@ pub enum TableError {
     #[error("not a ke-friction table: wrong magic bytes")]
     WrongMagic,
     /// A format version this crate cannot read.
-    #[error("unsupported table format version {found} (this build reads version {VERSION})")]
+    #[error("unsupported table format version {found} (this build reads versions {VERSION_GAUSSIAN} and {VERSION})")]
     UnsupportedVersion {
         /// The version in the file.
         found: u32,
@@ -308,7 +318,72 @@ impl ModelSpec {
             eps_star: self.eps_star,
             fit,
             kind,
+            distribution: crate::HeightDistribution::Gaussian,
         })
+    }
+}
+
+/// The asperity heights' distribution a table was built for (format
+/// version 2; version 1 is Gaussian).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct DistributionSpec {
+    /// 0 = Gaussian, 1 = Pearson, 2 = Weibull.
+    pub family: u8,
+    /// Skewness (Pearson, Weibull).
+    pub skewness: f64,
+    /// Kurtosis, not excess (Pearson).
+    pub kurtosis: f64,
+}
+
+impl Default for DistributionSpec {
+    fn default() -> DistributionSpec {
+        DistributionSpec {
+            family: 0,
+            skewness: 0.0,
+            kurtosis: 3.0,
+        }
+    }
+}
+
+impl DistributionSpec {
+    /// The stored form of a distribution; `None` for an empirical density,
+    /// which tables do not hold.
+    pub fn of(d: &HeightDistribution) -> Option<DistributionSpec> {
+        Some(match *d {
+            _ if d.is_gaussian() => DistributionSpec::default(),
+            HeightDistribution::Pearson { skewness, kurtosis } => DistributionSpec {
+                family: 1,
+                skewness,
+                kurtosis,
+            },
+            HeightDistribution::Weibull { skewness } => DistributionSpec {
+                family: 2,
+                skewness,
+                kurtosis: 0.0,
+            },
+            _ => return None,
+        })
+    }
+
+    /// The distribution these values describe, or why the code is invalid
+    /// (the values are checked by `HeightDistribution::validate`).
+    pub fn distribution(&self) -> Result<HeightDistribution, String> {
+        match self.family {
+            0 => Ok(HeightDistribution::Gaussian),
+            1 => Ok(HeightDistribution::Pearson {
+                skewness: self.skewness,
+                kurtosis: self.kurtosis,
+            }),
+            2 => Ok(HeightDistribution::Weibull {
+                skewness: self.skewness,
+            }),
+            f => Err(format!("unknown distribution code {f}")),
+        }
+    }
+
+    /// Whether this is the Gaussian (a version-1 table).
+    pub fn is_gaussian(&self) -> bool {
+        self.family == 0
     }
 }
 
@@ -435,16 +510,25 @@ pub struct Payload {
     pub build: BuildSpec,
     /// Measured accuracy.
     pub accuracy: Accuracy,
+    /// The heights' distribution: stored after the payload, in version 2 only.
+    #[serde(skip)]
+    pub distribution: DistributionSpec,
 }
 
 /// Serialises a payload into a complete table file (the builder's, and
 /// the tests' forgeries).
 #[cfg(any(feature = "builder", test))]
 pub fn encode(payload: &Payload) -> Vec<u8> {
-    let body = postcard::to_allocvec(payload).expect("postcard serialises plain data");
+    let mut body = postcard::to_allocvec(payload).expect("postcard serialises plain data");
+    let version = if payload.distribution.is_gaussian() {
+        VERSION_GAUSSIAN
+    } else {
+        body.extend(postcard::to_allocvec(&payload.distribution).expect("postcard serialises plain data"));
+        VERSION
+    };
     let mut out = Vec::with_capacity(HEADER + body.len() + 4);
     out.extend_from_slice(&MAGIC);
-    out.extend_from_slice(&VERSION.to_le_bytes());
+    out.extend_from_slice(&version.to_le_bytes());
     out.extend_from_slice(&(body.len() as u64).to_le_bytes());
     out.extend_from_slice(&body);
     let crc = crc32fast::hash(&out);
@@ -486,7 +570,7 @@ fn header(bytes: &[u8]) -> Result<u64, TableError> {
         return Err(TableError::WrongMagic);
     }
     let version = u32::from_le_bytes(bytes[8..12].try_into().expect("4 bytes"));
-    if version != VERSION {
+    if version != VERSION && version != VERSION_GAUSSIAN {
         return Err(TableError::UnsupportedVersion { found: version });
     }
     Ok(u64::from_le_bytes(bytes[12..20].try_into().expect("8 bytes")))
@@ -514,8 +598,19 @@ pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
     if stored != computed {
         return Err(TableError::Checksum { stored, computed });
     }
-    let (payload, rest) =
+    let (mut payload, mut rest) =
         postcard::take_from_bytes::<Payload>(&bytes[HEADER..end]).map_err(|e| TableError::Payload(e.to_string()))?;
+    if bytes[8..12] == VERSION.to_le_bytes() {
+        let (spec, after) = postcard::take_from_bytes::<DistributionSpec>(rest)
+            .map_err(|e| TableError::Payload(format!("distribution: {e}")))?;
+        if spec.is_gaussian() {
+            return Err(TableError::Payload(
+                "a version-2 table for Gaussian heights (they are version 1)".into(),
+            ));
+        }
+        payload.distribution = spec;
+        rest = after;
+    }
     if !rest.is_empty() {
         return Err(TableError::Payload(format!(
             "{} unread bytes after the payload",

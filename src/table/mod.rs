@@ -383,7 +383,11 @@ impl Table {
         let bad = |m: String| Err(TableError::Inconsistent(m));
         let layout = Layout::new(&payload.axes).map_err(TableError::Inconsistent)?;
         let [psi, theta, f_star] = layout.ranges;
-        let constants = payload.model.constants().map_err(TableError::Inconsistent)?;
+        let constants = payload
+            .model
+            .constants()
+            .map_err(TableError::Inconsistent)?
+            .distribution(payload.distribution.distribution().map_err(TableError::Inconsistent)?);
         constants
             .validate()
             .map_err(|e| TableError::Inconsistent(format!("model constants: {e}")))?;

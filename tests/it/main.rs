@@ -12,8 +12,11 @@ mod curve;
 #[path = "../forge.rs"]
 mod forge;
 mod hardening_numerics;
+mod nongaussian;
 mod paper_statements;
 mod properties;
 mod reference_points;
 mod reference_values;
 mod table_lookup;
+mod topography_read;
+mod topography_stats;

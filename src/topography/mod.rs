@@ -1,0 +1,128 @@
+//! Measured surfaces (MODEL.md §10): height maps and profiles read from
+//! files (ISO 25178-72 X3P, `.npy`, text), their statistics, and the
+//! equivalent surface of two rough surfaces.
+//!
+//! Feature `topography` (the CLI and the Python package enable it; the
+//! light runtime does not).
+
+mod read;
+mod stats;
+
+pub use read::{read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES};
+pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
+
+/// A measured height map (or profile) on a regular grid, in SI units.
+///
+/// Heights are stored row-major: `ny` rows of `nx` points, a row running
+/// along x (rows = y, as in NumPy and X3P). A profile has `ny == 1` and no
+/// `dy`. Missing points (NaN in the file, or masked invalid by the
+/// instrument) are NaN here: kept as missing, never filled.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Topography {
+    heights: Vec<f64>,
+    nx: usize,
+    ny: usize,
+    dx: f64,
+    dy: Option<f64>,
+}
+
+/// Why a [`Topography`] cannot be made from the given heights.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum TopographyError {
+    /// The number of heights is not `nx·ny`, or a size is zero.
+    #[error("{len} heights do not make a {nx} x {ny} grid")]
+    Shape {
+        /// Heights given.
+        len: usize,
+        /// Points along x.
+        nx: usize,
+        /// Points along y.
+        ny: usize,
+    },
+    /// A sampling interval is not finite and > 0.
+    #[error("{name} = {value} is out of range: must be > 0 and finite (metres)")]
+    Interval {
+        /// `"dx"` or `"dy"`.
+        name: &'static str,
+        /// The value given.
+        value: f64,
+    },
+    /// A height is infinite (missing points are NaN).
+    #[error("height at index {index} is infinite (missing points are NaN)")]
+    Infinite {
+        /// Row-major index of the point.
+        index: usize,
+    },
+}
+
+impl Topography {
+    /// A map of `ny` rows of `nx` heights (metres, row-major, NaN =
+    /// missing) with sampling intervals `dx`, `dy` (metres).
+    pub fn map(heights: Vec<f64>, nx: usize, ny: usize, dx: f64, dy: f64) -> Result<Topography, TopographyError> {
+        Topography::new(heights, nx, ny, dx, Some(dy))
+    }
+
+    /// A profile of heights (metres, NaN = missing) sampled every `dx` metres.
+    pub fn profile(heights: Vec<f64>, dx: f64) -> Result<Topography, TopographyError> {
+        let nx = heights.len();
+        Topography::new(heights, nx, 1, dx, None)
+    }
+
+    fn new(heights: Vec<f64>, nx: usize, ny: usize, dx: f64, dy: Option<f64>) -> Result<Topography, TopographyError> {
+        if nx == 0 || ny == 0 || nx.checked_mul(ny) != Some(heights.len()) {
+            return Err(TopographyError::Shape {
+                len: heights.len(),
+                nx,
+                ny,
+            });
+        }
+        for (name, value) in [("dx", Some(dx)), ("dy", dy)] {
+            if let Some(value) = value {
+                if !(value.is_finite() && value > 0.0) {
+                    return Err(TopographyError::Interval { name, value });
+                }
+            }
+        }
+        if let Some(index) = heights.iter().position(|h| h.is_infinite()) {
+            return Err(TopographyError::Infinite { index });
+        }
+        Ok(Topography {
+            heights,
+            nx,
+            ny,
+            dx,
+            dy,
+        })
+    }
+
+    /// The heights, row-major (metres, NaN = missing).
+    pub fn heights(&self) -> &[f64] {
+        &self.heights
+    }
+
+    /// Points along x.
+    pub fn nx(&self) -> usize {
+        self.nx
+    }
+
+    /// Points along y (1 for a profile).
+    pub fn ny(&self) -> usize {
+        self.ny
+    }
+
+    /// Sampling interval along x (metres).
+    pub fn dx(&self) -> f64 {
+        self.dx
+    }
+
+    /// Sampling interval along y (metres); `None` for a profile.
+    pub fn dy(&self) -> Option<f64> {
+        self.dy
+    }
+
+    /// Whether this is a profile (one row, no `dy`).
+    pub fn is_profile(&self) -> bool {
+        self.dy.is_none()
+    }
+}

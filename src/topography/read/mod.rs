@@ -1,0 +1,414 @@
+//! Reading measured surfaces from files (MODEL.md §10): ISO 25178-72 X3P,
+//! NumPy `.npy` and text; and writing X3P ([`write_x3p`]).
+//!
+//! The format comes from the extension (`.x3p`, `.npy`, anything else is
+//! text) unless [`ReadOptions::format`] says otherwise. Heights come out in
+//! metres: X3P stores metres; `.npy` and text heights are multiplied by
+//! [`ReadOptions::z_unit`] (1 by default, i.e. already metres).
+//!
+//! Missing points (NaN in the file, or marked invalid by an X3P validity
+//! mask) stay missing (NaN): never filled. Reads are bounded: a file, or an
+//! X3P member, larger than [`ReadOptions::max_bytes`] (2 GiB by default) is
+//! refused, and sizes declared by a file are checked against its data
+//! before anything is allocated. A bad file gives a [`ReadError`] naming
+//! the file and the problem; nothing panics.
+
+mod npy;
+mod text;
+mod x3p;
+
+use std::fs::File;
+use std::io::{self, Read};
+use std::path::{Path, PathBuf};
+
+use super::{Topography, TopographyError};
+
+pub use x3p::write_x3p;
+
+/// The default bound on the bytes read: a file, or an X3P member once
+/// uncompressed, larger than this is refused (2 GiB).
+pub const MAX_BYTES: u64 = 2 << 30;
+
+/// Relative difference above which an interval given in the options
+/// contradicts the file's own.
+const CONFLICT_REL: f64 = 1e-6;
+
+/// A file format [`read_file`] reads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
+    X3p,
+    /// A NumPy `.npy` array: 1-D = profile, 2-D = map (rows = y); `f4` or
+    /// `f8`, either byte order, C or Fortran order.
+    Npy,
+    /// Text, numbers separated by white space, commas or semicolons (`#`
+    /// starts a comment line; `nan` marks a missing point). By the number
+    /// of columns: 1 = a profile; 2 = `x z` pairs of a profile; 3 = `x y z`
+    /// triples on a regular grid (the intervals come from the grid);
+    /// otherwise a matrix as in [`Format::Matrix`]. A single line is a
+    /// profile.
+    Text,
+    /// Text read as a matrix whatever its number of columns: a line is a
+    /// row (rows = y), a column is x. A single line is a profile.
+    Matrix,
+}
+
+impl Format {
+    /// The format by the file's extension: `.x3p`, `.npy` (any case), else
+    /// [`Format::Text`].
+    pub fn from_path(path: &Path) -> Format {
+        match path.extension().and_then(|e| e.to_str()) {
+            Some(e) if e.eq_ignore_ascii_case("x3p") => Format::X3p,
+            Some(e) if e.eq_ignore_ascii_case("npy") => Format::Npy,
+            _ => Format::Text,
+        }
+    }
+}
+
+/// What [`read_file`] needs beyond the file.
+///
+/// Intervals in the options fill in what the file does not give (a `.npy`
+/// array or a text matrix has none); one that contradicts the file's own is
+/// an error ([`ReadError::Conflict`]), not silently preferred.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReadOptions {
+    /// Sampling interval along x (metres), for files that give none.
+    pub dx: Option<f64>,
+    /// Sampling interval along y (metres), for maps from files that give none.
+    pub dy: Option<f64>,
+    /// Metres per unit of the heights in `.npy` and text files (1 = metres,
+    /// 1e-6 = micrometres). Not applied to X3P, which stores metres.
+    pub z_unit: f64,
+    /// Metres per unit of the x and y columns of `x z` and `x y z` text.
+    pub xy_unit: f64,
+    /// The format; `None` = by extension ([`Format::from_path`]).
+    pub format: Option<Format>,
+    /// The most bytes read from the file, or from one X3P member once
+    /// uncompressed ([`MAX_BYTES`] by default).
+    pub max_bytes: u64,
+}
+
+impl Default for ReadOptions {
+    fn default() -> ReadOptions {
+        ReadOptions {
+            dx: None,
+            dy: None,
+            z_unit: 1.0,
+            xy_unit: 1.0,
+            format: None,
+            max_bytes: MAX_BYTES,
+        }
+    }
+}
+
+/// Why a surface file cannot be read. Every message names the file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ReadError {
+    /// The file cannot be opened or read (see [`ReadError::is_io`]).
+    #[error("cannot read {}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The failure.
+        source: io::Error,
+    },
+    /// The file, or a member of the X3P archive, is over the size bound.
+    #[error("{}: {what} is {bytes} bytes, over the limit of {limit} bytes", path.display())]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// What is too large.
+        what: String,
+        /// Its size (bytes).
+        bytes: u64,
+        /// The bound ([`ReadOptions::max_bytes`]).
+        limit: u64,
+    },
+    /// Not a readable zip archive, or a member is missing or damaged
+    /// (truncated file, bad CRC).
+    #[error("{}: not a readable X3P archive: {detail}", path.display())]
+    Archive {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        detail: String,
+    },
+    /// The X3P `main.xml` is malformed, or lacks or misstates an element.
+    #[error("{}: main.xml: {detail}", path.display())]
+    Xml {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        detail: String,
+    },
+    /// An X3P member's MD5 checksum differs from the one in `main.xml`.
+    #[error("{}: the MD5 checksum of {member} is {actual}, main.xml says {expected}", path.display())]
+    Checksum {
+        /// The file.
+        path: PathBuf,
+        /// The archive member.
+        member: String,
+        /// The checksum in `main.xml` (hex).
+        expected: String,
+        /// The checksum of the member (hex).
+        actual: String,
+    },
+    /// Sizes disagree: the data with the sizes declared for it, the rows
+    /// of a matrix, or there is no data.
+    #[error("{}: inconsistent sizes: {detail}", path.display())]
+    Size {
+        /// The file.
+        path: PathBuf,
+        /// What disagrees.
+        detail: String,
+    },
+    /// Something valid but not read here: a data type (dtype), a feature
+    /// type, an axis type, volumetric data.
+    #[error("{}: unsupported: {detail}", path.display())]
+    Unsupported {
+        /// The file.
+        path: PathBuf,
+        /// What is not supported.
+        detail: String,
+    },
+    /// A malformed `.npy` file.
+    #[error("{}: not a readable .npy file: {detail}", path.display())]
+    Npy {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        detail: String,
+    },
+    /// A text file's line that cannot be read (a field that is not a
+    /// number, an infinite value, a row of another length, not UTF-8).
+    #[error("{}, line {line}: {detail}", path.display())]
+    Text {
+        /// The file.
+        path: PathBuf,
+        /// The line (from 1).
+        line: usize,
+        /// What is wrong.
+        detail: String,
+    },
+    /// `x z` or `x y z` text whose points are not on a regular grid.
+    #[error("{}: not a regular grid: {detail}", path.display())]
+    Irregular {
+        /// The file.
+        path: PathBuf,
+        /// What is irregular.
+        detail: String,
+    },
+    /// Neither the file nor the options give a sampling interval.
+    #[error("{}: the file gives no sampling interval {name}: set ReadOptions::{name} (metres)", path.display())]
+    NeedInterval {
+        /// The file.
+        path: PathBuf,
+        /// `"dx"` or `"dy"`.
+        name: &'static str,
+    },
+    /// An interval in the options contradicts the file's own.
+    #[error("{}: the file gives {name} = {file:e} m, the options {option:e} m", path.display())]
+    Conflict {
+        /// The file.
+        path: PathBuf,
+        /// `"dx"` or `"dy"`.
+        name: &'static str,
+        /// The file's interval (metres).
+        file: f64,
+        /// The options' interval (metres).
+        option: f64,
+    },
+    /// A unit in the options is not finite and non-zero (`z_unit`) or
+    /// positive (`xy_unit`).
+    #[error("{}: ReadOptions::{name} = {value} is out of range", path.display())]
+    Options {
+        /// The file.
+        path: PathBuf,
+        /// The option.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The data read do not make a topography (an infinite height, an
+    /// interval out of range).
+    #[error("{}: {source}", path.display())]
+    Topography {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: TopographyError,
+    },
+}
+
+impl ReadError {
+    /// The file the error is about.
+    pub fn path(&self) -> &Path {
+        match self {
+            ReadError::Io { path, .. }
+            | ReadError::TooLarge { path, .. }
+            | ReadError::Archive { path, .. }
+            | ReadError::Xml { path, .. }
+            | ReadError::Checksum { path, .. }
+            | ReadError::Size { path, .. }
+            | ReadError::Unsupported { path, .. }
+            | ReadError::Npy { path, .. }
+            | ReadError::Text { path, .. }
+            | ReadError::Irregular { path, .. }
+            | ReadError::NeedInterval { path, .. }
+            | ReadError::Conflict { path, .. }
+            | ReadError::Options { path, .. }
+            | ReadError::Topography { path, .. } => path,
+        }
+    }
+
+    /// Whether the file could not be read at all (an I/O failure), as
+    /// opposed to a file read whose content is bad or unsupported.
+    pub fn is_io(&self) -> bool {
+        matches!(self, ReadError::Io { .. })
+    }
+}
+
+/// Reads a height map or profile from `path` (see the module docs for the
+/// formats, units and bounds).
+///
+/// ```no_run
+/// use ke_friction::topography::{read_file, ReadOptions};
+/// // A text matrix of heights in micrometres, sampled every 0.5 µm.
+/// let options = ReadOptions { dx: Some(0.5e-6), dy: Some(0.5e-6), z_unit: 1e-6, ..ReadOptions::default() };
+/// let surface = read_file("surface.txt".as_ref(), &options)?;
+/// println!("{} x {} points", surface.nx(), surface.ny());
+/// # Ok::<(), ke_friction::topography::ReadError>(())
+/// ```
+pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadError> {
+    let cx = Ctx { path };
+    for (name, value, ok) in [
+        ("z_unit", options.z_unit, options.z_unit != 0.0),
+        ("xy_unit", options.xy_unit, options.xy_unit > 0.0),
+    ] {
+        if !(value.is_finite() && ok) {
+            return Err(ReadError::Options {
+                path: path.to_path_buf(),
+                name,
+                value,
+            });
+        }
+    }
+    let bytes = cx.read_bounded(options.max_bytes)?;
+    match options.format.unwrap_or_else(|| Format::from_path(path)) {
+        Format::X3p => x3p::read(&cx, &bytes, options),
+        Format::Npy => npy::read(&cx, &bytes, options),
+        Format::Text => text::read(&cx, &bytes, options, false),
+        Format::Matrix => text::read(&cx, &bytes, options, true),
+    }
+}
+
+/// The file being read, for the readers' errors.
+struct Ctx<'a> {
+    path: &'a Path,
+}
+
+impl Ctx<'_> {
+    fn path(&self) -> PathBuf {
+        self.path.to_path_buf()
+    }
+
+    fn io(&self, source: io::Error) -> ReadError {
+        ReadError::Io {
+            path: self.path(),
+            source,
+        }
+    }
+
+    fn too_large(&self, what: impl Into<String>, bytes: u64, limit: u64) -> ReadError {
+        ReadError::TooLarge {
+            path: self.path(),
+            what: what.into(),
+            bytes,
+            limit,
+        }
+    }
+
+    fn size(&self, detail: impl Into<String>) -> ReadError {
+        ReadError::Size {
+            path: self.path(),
+            detail: detail.into(),
+        }
+    }
+
+    fn unsupported(&self, detail: impl Into<String>) -> ReadError {
+        ReadError::Unsupported {
+            path: self.path(),
+            detail: detail.into(),
+        }
+    }
+
+    fn topography(&self, source: TopographyError) -> ReadError {
+        ReadError::Topography {
+            path: self.path(),
+            source,
+        }
+    }
+
+    /// The whole file, if it is at most `limit` bytes.
+    fn read_bounded(&self, limit: u64) -> Result<Vec<u8>, ReadError> {
+        let file = File::open(self.path).map_err(|e| self.io(e))?;
+        let len = file.metadata().map_err(|e| self.io(e))?.len();
+        if len > limit {
+            return Err(self.too_large("the file", len, limit));
+        }
+        let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
+        file.take(limit.saturating_add(1))
+            .read_to_end(&mut bytes)
+            .map_err(|e| self.io(e))?;
+        if bytes.len() as u64 > limit {
+            return Err(self.too_large("the file", bytes.len() as u64, limit));
+        }
+        Ok(bytes)
+    }
+
+    /// The interval `name` from the file's value or else the options'.
+    fn interval(&self, name: &'static str, file: Option<f64>, option: Option<f64>) -> Result<f64, ReadError> {
+        let agree = |a: f64, b: f64| (a - b).abs() <= CONFLICT_REL * a.abs().max(b.abs());
+        match (file, option) {
+            (Some(file), Some(option)) if !agree(file, option) => Err(ReadError::Conflict {
+                path: self.path(),
+                name,
+                file,
+                option,
+            }),
+            (Some(value), _) | (None, Some(value)) => Ok(value),
+            (None, None) => Err(ReadError::NeedInterval {
+                path: self.path(),
+                name,
+            }),
+        }
+    }
+
+    /// A profile (`ny == 1`, with no y interval given by the file) or a map.
+    fn make(
+        &self,
+        heights: Vec<f64>,
+        (nx, ny): (usize, usize),
+        (dx, dy): (Option<f64>, Option<f64>),
+        options: &ReadOptions,
+        profile: bool,
+    ) -> Result<Topography, ReadError> {
+        let dx = self.interval("dx", dx, options.dx)?;
+        if profile {
+            Topography::profile(heights, dx)
+        } else {
+            let dy = self.interval("dy", dy, options.dy)?;
+            Topography::map(heights, nx, ny, dx, dy)
+        }
+        .map_err(|e| self.topography(e))
+    }
+}
+
+/// `text`, cut to at most `max` characters for an error message.
+fn clip(text: &str, max: usize) -> String {
+    match text.char_indices().nth(max) {
+        Some((i, _)) => format!("{}…", &text[..i]),
+        None => text.to_string(),
+    }
+}

@@ -1,0 +1,572 @@
+//! ISO 25178-72 X3P (formerly ISO 5436-2 XML): a zip archive holding
+//! `main.xml` (the axes, sizes, data link and checksums) and the binary
+//! point data (`bindata/data.bin`: little-endian values, x fastest, then
+//! y), with an optional validity mask (one bit per point, least
+//! significant bit first, 1 = valid).
+//!
+//! Read: feature types SUR (surface) and PRF (profile), incremental x and
+//! y axes, z data types D (f64), F (f32), L (i32), I (i16); a height is
+//! `offset + increment · value` with the CZ axis's Increment (default 1)
+//! and Offset (default 0), for every type. `MD5ChecksumPointData` and
+//! `MD5ChecksumValidPoints` are checked where present; the archive's
+//! `md5checksum.hex` (Record4) is not.
+
+use std::io::{Cursor, Read, Write};
+use std::path::Path;
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use md5::{Digest, Md5};
+use roxmltree::{Document, Node};
+use zip::write::SimpleFileOptions;
+use zip::{CompressionMethod, ZipArchive, ZipWriter};
+
+use super::{clip, Ctx, ReadError, ReadOptions};
+use crate::topography::Topography;
+
+/// The bound on `main.xml` (bytes).
+const MAX_XML: u64 = 16 << 20;
+/// The data member's usual name, and the validity mask's.
+const DATA_BIN: &str = "bindata/data.bin";
+const VALID_BIN: &str = "bindata/valid.bin";
+
+/// A z data type: D, F, L or I.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum ZType {
+    D,
+    F,
+    L,
+    I,
+}
+
+impl ZType {
+    fn from_char(c: char) -> Option<ZType> {
+        match c {
+            'D' => Some(ZType::D),
+            'F' => Some(ZType::F),
+            'L' => Some(ZType::L),
+            'I' => Some(ZType::I),
+            _ => None,
+        }
+    }
+
+    fn letter(self) -> char {
+        match self {
+            ZType::D => 'D',
+            ZType::F => 'F',
+            ZType::L => 'L',
+            ZType::I => 'I',
+        }
+    }
+
+    fn size(self) -> usize {
+        match self {
+            ZType::D => 8,
+            ZType::F | ZType::L => 4,
+            ZType::I => 2,
+        }
+    }
+
+    /// The value of one little-endian item (`bytes.len() == self.size()`).
+    fn decode(self, bytes: &[u8]) -> f64 {
+        match (self, bytes) {
+            (ZType::D, &[a, b, c, d, e, f, g, h]) => f64::from_le_bytes([a, b, c, d, e, f, g, h]),
+            (ZType::F, &[a, b, c, d]) => f64::from(f32::from_le_bytes([a, b, c, d])),
+            (ZType::L, &[a, b, c, d]) => f64::from(i32::from_le_bytes([a, b, c, d])),
+            (ZType::I, &[a, b]) => f64::from(i16::from_le_bytes([a, b])),
+            _ => f64::NAN,
+        }
+    }
+}
+
+fn archive_err(cx: &Ctx, detail: impl std::fmt::Display) -> ReadError {
+    ReadError::Archive {
+        path: cx.path(),
+        detail: detail.to_string(),
+    }
+}
+
+fn xml_err(cx: &Ctx, detail: impl Into<String>) -> ReadError {
+    ReadError::Xml {
+        path: cx.path(),
+        detail: detail.into(),
+    }
+}
+
+/// The lower-case hex of the MD5 of `bytes`.
+fn md5_hex(bytes: &[u8]) -> String {
+    Md5::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Reads an X3P file's content (`bytes`, the whole file).
+pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
+    let mut zip = ZipArchive::new(Cursor::new(bytes)).map_err(|e| archive_err(cx, e))?;
+    let xml = member(cx, &mut zip, "main.xml", None, MAX_XML.min(options.max_bytes))?;
+    let xml = String::from_utf8(xml).map_err(|e| xml_err(cx, format!("not UTF-8: {e}")))?;
+    let doc = Document::parse(&xml).map_err(|e| xml_err(cx, e.to_string()))?;
+    let root = doc.root_element();
+    if root.tag_name().name() != "ISO5436_2" {
+        return Err(xml_err(
+            cx,
+            format!("the root element is {}, not ISO5436_2", root.tag_name().name()),
+        ));
+    }
+    let x = Xml { cx };
+
+    let record1 = x.child(root, "Record1")?;
+    let profile = match x.text(record1, "FeatureType")? {
+        "SUR" => false,
+        "PRF" => true,
+        other => {
+            return Err(cx.unsupported(format!(
+                "FeatureType {} (only SUR surfaces and PRF profiles are read)",
+                clip(other, 20)
+            )))
+        }
+    };
+    let axes = x.child(record1, "Axes")?;
+    let dx = x.increment(x.child(axes, "CX")?, "CX")?;
+    let dy = if profile {
+        None
+    } else {
+        x.increment(x.child(axes, "CY")?, "CY")?
+    };
+    let cz = x.child(axes, "CZ")?;
+    if let Some(kind) = x.opt_text(cz, "AxisType") {
+        if kind != "A" {
+            return Err(cx.unsupported(format!("CZ AxisType {} (must be A)", clip(kind, 20))));
+        }
+    }
+    let z_type = x.text(cz, "DataType")?;
+    let mut letters = z_type.chars();
+    let z_type = match (letters.next(), letters.next()) {
+        (Some(c), None) => ZType::from_char(c),
+        _ => None,
+    }
+    .ok_or_else(|| {
+        cx.unsupported(format!(
+            "CZ DataType {} (only D, F, L and I are read)",
+            clip(z_type, 20)
+        ))
+    })?;
+    let increment = x.number(cz, "CZ", "Increment")?.unwrap_or(1.0);
+    let offset = x.number(cz, "CZ", "Offset")?.unwrap_or(0.0);
+    if increment == 0.0 {
+        return Err(xml_err(cx, "CZ Increment is 0"));
+    }
+
+    let record3 = x.child(root, "Record3")?;
+    let dims = x.child(record3, "MatrixDimension")?;
+    let [nx, ny, nz] = ["SizeX", "SizeY", "SizeZ"].map(|name| x.size(dims, name));
+    let (nx, ny, nz) = (nx?, ny?, nz?);
+    if nz != 1 {
+        return Err(cx.unsupported(format!("SizeZ = {nz} (volumetric data; only SizeZ = 1 is read)")));
+    }
+    if profile && ny != 1 {
+        return Err(cx.size(format!("a profile (FeatureType PRF) with SizeY = {ny}, not 1")));
+    }
+    let points = nx.saturating_mul(ny);
+    if points == 0 {
+        return Err(cx.size(format!("SizeX x SizeY = {nx} x {ny}: no points")));
+    }
+    let data_bytes = points.saturating_mul(z_type.size() as u64);
+    if data_bytes > options.max_bytes {
+        return Err(cx.too_large(
+            format!(
+                "the point data declared in main.xml ({nx} x {ny} of type {})",
+                z_type.letter()
+            ),
+            data_bytes,
+            options.max_bytes,
+        ));
+    }
+    let n = usize::try_from(points).map_err(|_| cx.too_large("the point data", data_bytes, options.max_bytes))?;
+
+    let link = x.child(record3, "DataLink")?;
+    let data_name = x.text(link, "PointDataLink")?;
+    let data = member(cx, &mut zip, data_name, Some(data_bytes), options.max_bytes)?;
+    if let Some(expected) = x.opt_text(link, "MD5ChecksumPointData") {
+        check_md5(cx, data_name, &data, expected)?;
+    }
+    let mut heights: Vec<f64> = data
+        .chunks_exact(z_type.size())
+        .map(|raw| offset + increment * z_type.decode(raw))
+        .collect();
+    drop(data);
+
+    let valid_name = match x.opt_text(link, "ValidPointsLink") {
+        Some(name) => Some(name),
+        None => zip.index_for_name(VALID_BIN).map(|_| VALID_BIN),
+    };
+    if let Some(valid_name) = valid_name {
+        let mask = member(cx, &mut zip, valid_name, Some(points.div_ceil(8)), options.max_bytes)?;
+        if let Some(expected) = x.opt_text(link, "MD5ChecksumValidPoints") {
+            check_md5(cx, valid_name, &mask, expected)?;
+        }
+        for (i, h) in heights.iter_mut().enumerate() {
+            if mask[i / 8] >> (i % 8) & 1 == 0 {
+                *h = f64::NAN;
+            }
+        }
+    }
+    // nx, ny <= n, which fits a usize.
+    let ny = ny as usize;
+    cx.make(heights, (n / ny, ny), (dx, dy), options, profile)
+}
+
+/// The content of the archive's member `name`: exactly `expected` bytes if
+/// given (checked before reading), at most `limit` bytes.
+fn member(
+    cx: &Ctx,
+    zip: &mut ZipArchive<Cursor<&[u8]>>,
+    name: &str,
+    expected: Option<u64>,
+    limit: u64,
+) -> Result<Vec<u8>, ReadError> {
+    let file = zip
+        .by_name(name)
+        .map_err(|e| archive_err(cx, format!("member {}: {e}", clip(name, 80))))?;
+    let size = file.size();
+    if let Some(expected) = expected {
+        if size != expected {
+            return Err(cx.size(format!(
+                "{} holds {size} bytes, main.xml's sizes and data type make {expected}",
+                clip(name, 80)
+            )));
+        }
+    }
+    if size > limit {
+        return Err(cx.too_large(format!("member {}", clip(name, 80)), size, limit));
+    }
+    // The declared size is a claim: grow past 64 MiB only as data come.
+    let mut bytes = Vec::with_capacity(usize::try_from(size.min(1 << 26)).unwrap_or(0));
+    file.take(size.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| archive_err(cx, format!("member {}: {e}", clip(name, 80))))?;
+    if bytes.len() as u64 != size {
+        return Err(archive_err(
+            cx,
+            format!(
+                "member {} holds {} bytes, its header says {size}",
+                clip(name, 80),
+                bytes.len()
+            ),
+        ));
+    }
+    Ok(bytes)
+}
+
+fn check_md5(cx: &Ctx, name: &str, bytes: &[u8], expected: &str) -> Result<(), ReadError> {
+    let actual = md5_hex(bytes);
+    if actual.eq_ignore_ascii_case(expected) {
+        Ok(())
+    } else {
+        Err(ReadError::Checksum {
+            path: cx.path(),
+            member: clip(name, 80),
+            expected: clip(expected, 40),
+            actual,
+        })
+    }
+}
+
+/// Lookups in `main.xml`, elements by local name (any namespace).
+struct Xml<'c, 'p> {
+    cx: &'c Ctx<'p>,
+}
+
+impl Xml<'_, '_> {
+    fn opt_child<'a, 'i>(&self, node: Node<'a, 'i>, name: &str) -> Option<Node<'a, 'i>> {
+        node.children().find(|c| c.is_element() && c.tag_name().name() == name)
+    }
+
+    fn child<'a, 'i>(&self, node: Node<'a, 'i>, name: &str) -> Result<Node<'a, 'i>, ReadError> {
+        self.opt_child(node, name)
+            .ok_or_else(|| xml_err(self.cx, format!("no {name} in {}", node.tag_name().name())))
+    }
+
+    /// The trimmed text of the child `name`, if there is one and it is
+    /// not empty.
+    fn opt_text<'a>(&self, node: Node<'a, '_>, name: &str) -> Option<&'a str> {
+        self.opt_child(node, name)
+            .map(|c| c.text().unwrap_or("").trim())
+            .filter(|t| !t.is_empty())
+    }
+
+    fn text<'a>(&self, node: Node<'a, '_>, name: &str) -> Result<&'a str, ReadError> {
+        self.child(node, name).map(|c| c.text().unwrap_or("").trim())
+    }
+
+    /// A finite number, if the child `name` of the axis `axis` is there.
+    fn number(&self, node: Node, axis: &str, name: &str) -> Result<Option<f64>, ReadError> {
+        let Some(text) = self.opt_text(node, name) else {
+            return Ok(None);
+        };
+        match text.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(Some(v)),
+            _ => Err(xml_err(
+                self.cx,
+                format!("{axis} {name} '{}' is not a finite number", clip(text, 40)),
+            )),
+        }
+    }
+
+    /// An x or y axis's increment (metres): incremental axes only.
+    fn increment(&self, axis: Node, name: &str) -> Result<Option<f64>, ReadError> {
+        let kind = self.text(axis, "AxisType")?;
+        if kind != "I" {
+            return Err(self.cx.unsupported(format!(
+                "{name} AxisType {} (only incremental axes, I, are read)",
+                clip(kind, 20)
+            )));
+        }
+        self.number(axis, name, "Increment")
+    }
+
+    fn size(&self, node: Node, name: &str) -> Result<u64, ReadError> {
+        let text = self.text(node, name)?;
+        text.parse::<u64>().map_err(|_| {
+            xml_err(
+                self.cx,
+                format!("MatrixDimension {name} '{}' is not a size", clip(text, 40)),
+            )
+        })
+    }
+}
+
+/// Writes `t` as an ISO 25178-72 X3P file at `path`, heights stored with
+/// the z data type `z_type`: `'D'` (f64, exact), `'F'` (f32), `'L'` (i32)
+/// or `'I'` (i16).
+///
+/// A map is FeatureType SUR, a profile PRF (SizeY = 1). For the integer
+/// types the heights are quantised over the type's full range (CZ
+/// Increment = range / (2ⁿ − 1), Offset = the lowest height minus
+/// Increment · the type's minimum): within Increment / 2 of the heights.
+/// Missing (NaN) points are marked invalid in `bindata/valid.bin` (and are
+/// NaN in float data). `main.xml` has Records 1–4 as the standard and the
+/// SurfaceTopography and openGPS readers expect; `md5checksum.hex` holds
+/// the MD5 of `main.xml`.
+///
+/// Errors: `InvalidInput` for another `z_type`, or heights beyond f32's
+/// range with `'F'`; otherwise I/O failures.
+pub fn write_x3p(t: &Topography, path: &Path, z_type: char) -> std::io::Result<()> {
+    let bytes = x3p_bytes(t, z_type)?;
+    std::fs::write(path, bytes)
+}
+
+fn invalid_input(message: String) -> std::io::Error {
+    std::io::Error::new(std::io::ErrorKind::InvalidInput, message)
+}
+
+/// The X3P file of `t` (see [`write_x3p`]).
+fn x3p_bytes(t: &Topography, z_type: char) -> std::io::Result<Vec<u8>> {
+    let z = ZType::from_char(z_type)
+        .ok_or_else(|| invalid_input(format!("X3P z data type {z_type:?}: must be D, F, L or I")))?;
+    let heights = t.heights();
+    let (lo, hi) = heights
+        .iter()
+        .filter(|h| !h.is_nan())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
+            (lo.min(h), hi.max(h))
+        });
+    let (lo, hi) = if lo <= hi { (lo, hi) } else { (0.0, 0.0) };
+
+    let mut data = Vec::with_capacity(heights.len() * z.size());
+    let (increment, offset) = match z {
+        ZType::D => {
+            heights.iter().for_each(|h| data.extend(h.to_le_bytes()));
+            (1.0, 0.0)
+        }
+        ZType::F => {
+            for &h in heights {
+                let v = h as f32;
+                if v.is_infinite() {
+                    return Err(invalid_input(format!("height {h:e} m is beyond f32's range")));
+                }
+                data.extend(v.to_le_bytes());
+            }
+            (1.0, 0.0)
+        }
+        ZType::L | ZType::I => {
+            let (min, max) = match z {
+                ZType::L => (f64::from(i32::MIN), f64::from(i32::MAX)),
+                _ => (f64::from(i16::MIN), f64::from(i16::MAX)),
+            };
+            let range = if hi > lo { hi - lo } else { lo.abs().max(1e-12) };
+            let increment = range / (max - min);
+            let offset = lo - min * increment;
+            for &h in heights {
+                // Missing points: any value (the mask marks them).
+                let raw = if h.is_nan() {
+                    min
+                } else {
+                    ((h - lo) / increment).round().clamp(0.0, max - min) + min
+                };
+                // In range by the clamp: the casts are exact.
+                match z {
+                    ZType::L => data.extend((raw as i32).to_le_bytes()),
+                    _ => data.extend((raw as i16).to_le_bytes()),
+                }
+            }
+            (increment, offset)
+        }
+    };
+    let missing = heights.iter().any(|h| h.is_nan());
+    let valid = missing.then(|| {
+        let mut bits = vec![0u8; heights.len().div_ceil(8)];
+        for (i, h) in heights.iter().enumerate() {
+            if !h.is_nan() {
+                bits[i / 8] |= 1 << (i % 8);
+            }
+        }
+        bits
+    });
+
+    let xml = main_xml(t, z, increment, offset, &data, valid.as_deref());
+    let mut zip = ZipWriter::new(Cursor::new(Vec::new()));
+    let file_options = SimpleFileOptions::default()
+        .compression_method(CompressionMethod::Deflated)
+        .large_file(data.len() as u64 >= u64::from(u32::MAX));
+    let checksum = format!("{} *main.xml\n", md5_hex(xml.as_bytes()).to_uppercase());
+    let mut members = vec![("main.xml", xml.as_bytes()), (DATA_BIN, &data[..])];
+    if let Some(valid) = &valid {
+        members.push((VALID_BIN, valid));
+    }
+    members.push(("md5checksum.hex", checksum.as_bytes()));
+    for (name, content) in members {
+        zip.start_file(name, file_options).map_err(std::io::Error::other)?;
+        zip.write_all(content)?;
+    }
+    Ok(zip.finish().map_err(std::io::Error::other)?.into_inner())
+}
+
+/// An indented XML document, element by element (the texts written here
+/// need no escaping).
+struct XmlOut {
+    s: String,
+    depth: usize,
+}
+
+impl XmlOut {
+    fn indent(&mut self) {
+        self.s.extend(std::iter::repeat_n("  ", self.depth));
+    }
+
+    fn open(&mut self, tag: &str) -> &mut XmlOut {
+        self.indent();
+        self.s.push_str(&format!("<{tag}>\n"));
+        self.depth += 1;
+        self
+    }
+
+    fn close(&mut self, tag: &str) -> &mut XmlOut {
+        self.depth -= 1;
+        self.indent();
+        self.s.push_str(&format!("</{tag}>\n"));
+        self
+    }
+
+    fn leaf(&mut self, tag: &str, text: impl std::fmt::Display) -> &mut XmlOut {
+        self.indent();
+        self.s.push_str(&format!("<{tag}>{text}</{tag}>\n"));
+        self
+    }
+
+    /// An x, y or z axis.
+    fn axis(&mut self, tag: &str, kind: char, data_type: char, increment: f64, offset: f64) -> &mut XmlOut {
+        // xsd:double, shortest round trip: `1e-7`, `2.5e-11`; whole numbers plain.
+        let num = |v: f64| {
+            if v.fract() == 0.0 && v.abs() < 1e15 {
+                format!("{v}")
+            } else {
+                format!("{v:e}")
+            }
+        };
+        self.open(tag)
+            .leaf("AxisType", kind)
+            .leaf("DataType", data_type)
+            .leaf("Increment", num(increment))
+            .leaf("Offset", num(offset))
+            .close(tag)
+    }
+}
+
+/// The `main.xml` of an X3P file.
+fn main_xml(t: &Topography, z: ZType, increment: f64, offset: f64, data: &[u8], valid: Option<&[u8]>) -> String {
+    const NS: &str = "http://www.opengps.eu/2008/ISO5436_2";
+    let date = now_iso8601();
+    let version = env!("CARGO_PKG_VERSION");
+    let mut x = XmlOut {
+        s: format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<p:ISO5436_2 xmlns:p=\"{NS}\" \
+             xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" \
+             xsi:schemaLocation=\"{NS} {NS}/ISO5436_2_XML.xsd\">\n"
+        ),
+        depth: 1,
+    };
+    x.open("Record1")
+        .leaf("Revision", "ISO5436 - 2000")
+        .leaf("FeatureType", if t.is_profile() { "PRF" } else { "SUR" })
+        .open("Axes")
+        .axis("CX", 'I', 'D', t.dx(), 0.0)
+        .axis("CY", 'I', 'D', t.dy().unwrap_or(t.dx()), 0.0)
+        .axis("CZ", 'A', z.letter(), increment, offset)
+        .close("Axes")
+        .close("Record1");
+    x.open("Record2")
+        .leaf("Date", &date)
+        .leaf("Creator", "ke-friction")
+        .open("Instrument")
+        .leaf("Manufacturer", "ke-friction")
+        .leaf("Model", "write_x3p")
+        .leaf("Serial", "not available")
+        .leaf("Version", version)
+        .close("Instrument")
+        .leaf("CalibrationDate", &date)
+        .open("ProbingSystem")
+        .leaf("Type", "Software")
+        .leaf("Identification", "ke-friction write_x3p")
+        .close("ProbingSystem")
+        .leaf("Comment", format!("Written by ke-friction {version}."))
+        .close("Record2");
+    x.open("Record3")
+        .open("MatrixDimension")
+        .leaf("SizeX", t.nx())
+        .leaf("SizeY", t.ny())
+        .leaf("SizeZ", 1)
+        .close("MatrixDimension")
+        .open("DataLink")
+        .leaf("PointDataLink", DATA_BIN)
+        .leaf("MD5ChecksumPointData", md5_hex(data).to_uppercase());
+    if let Some(valid) = valid {
+        x.leaf("ValidPointsLink", VALID_BIN)
+            .leaf("MD5ChecksumValidPoints", md5_hex(valid).to_uppercase());
+    }
+    x.close("DataLink").close("Record3");
+    x.open("Record4")
+        .leaf("ChecksumFile", "md5checksum.hex")
+        .close("Record4");
+    x.s.push_str("</p:ISO5436_2>\n");
+    x.s
+}
+
+/// The current UTC time as ISO 8601 (`2024-05-01T12:00:00+00:00`).
+fn now_iso8601() -> String {
+    let secs = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let (days, rem) = ((secs / 86_400) as i64, secs % 86_400);
+    // Days since 1970-01-01 to the civil date (H. Hinnant's algorithm).
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + i64::from(month <= 2);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}+00:00",
+        rem / 3600,
+        rem / 60 % 60,
+        rem % 60
+    )
+}

@@ -1,0 +1,1297 @@
+//! Surface statistics (MODEL.md §10): σ, Sk, K, the spectral moments m0,
+//! m2, m4 and the Greenwood–Williamson parameters derived from them (α, η,
+//! R, β, σ_s, y_s), and the equivalent surface of two rough surfaces.
+//!
+//! The default (finite-difference) path makes two passes over the heights
+//! and allocates nothing of the map's size: the first pass gathers the sums
+//! of the least-squares plane fit, the second computes, in one sweep of
+//! three rows at a time, the central moments of the detrended heights and
+//! the first and second differences along x and y. The plane enters the
+//! first differences only as a constant (its slope per sample), subtracted
+//! in the loop; it does not enter the second differences. Sums run in short
+//! blocks of four lanes and the block sums are added with Neumaier's
+//! compensated summation, so that the results agree with a float64 NumPy
+//! reference (`tools/surface_reference.py`) to about 1e-13 relative.
+
+use super::Topography;
+use crate::ErrorKind;
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use std::f64::consts::PI;
+use std::fmt;
+
+/// 16/π − 3√3 + 1 = 0.89680576…: α must exceed it (σ_s real, MODEL.md §10).
+const ALPHA_MIN: f64 = 16.0 / PI - 3.0 * 1.732_050_807_568_877_2 + 1.0;
+/// Fewest points along a direction (x, and y for a map).
+const MIN_ALONG: usize = 16;
+/// Fewest valid (non-missing) points.
+const MIN_VALID: usize = 100;
+/// Fewest valid first or second differences along a direction.
+const MIN_DIFFERENCES: usize = 16;
+/// Below this bandwidth α the surface is not an isotropic Gaussian one.
+const ALPHA_GAUSSIAN: f64 = 1.5;
+/// The isotropy band of m20/m02 and m40/m04.
+const ISOTROPY: (f64, f64) = (0.8, 1.25);
+/// Sampling intervals of two surfaces differing by more than this
+/// (relative) are reported by [`combine`].
+const INTERVAL_TOLERANCE: f64 = 0.01;
+
+/// How the heights are detrended before their statistics are taken.
+///
+/// Every fit is a least-squares fit over the valid (non-missing) points
+/// only. The plane (or line) changes the first differences only by its
+/// constant slope and leaves the second differences unchanged.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Detrend {
+    /// The least-squares plane z = a + b·x + c·y for a map; for a profile
+    /// (no y) this is the least-squares line z = a + b·x. The default.
+    #[default]
+    Plane,
+    /// The least-squares line z = a + b·x: for a profile the same as
+    /// [`Detrend::Plane`]; for a map a single tilt along x fitted over the
+    /// whole map (no tilt along y is removed, and rows are not levelled
+    /// one by one).
+    Line,
+    /// The mean height only (z = a): no tilt removed. The choice for
+    /// periodic data analysed with [`Derivative::Spectral`].
+    Mean,
+}
+
+/// How the slope and curvature moments m2, m4 are estimated.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Derivative {
+    /// Non-periodic finite differences (MODEL.md §10, the default):
+    /// m20 = mean(((z\[i+1\] − z\[i\])/Δx)²) over every adjacent pair along x
+    /// whose two points are valid, m40 = mean(((z\[i+1\] − 2z\[i\] + z\[i−1\])/Δx²)²)
+    /// over every interior triple of valid points; m02, m04 the same along
+    /// y with Δy. These equal SurfaceTopography's Rdq², Rddq².
+    #[default]
+    FiniteDifference,
+    /// Periodic spectral moments: the detrended heights are taken as one
+    /// period in each direction and m20 = Σ (2π·f_x)²·|Z|²/N², m40 =
+    /// Σ (2π·f_x)⁴·|Z|²/N² (and m02, m04 with f_y) over the discrete
+    /// Fourier transform Z of the N heights, the Nyquist term dropped.
+    /// Exact for band-limited periodic data; refuses missing points. Use
+    /// it with [`Detrend::Mean`]: a fitted plane makes periodic data
+    /// non-periodic.
+    Spectral,
+}
+
+/// Options of [`Topography::stats`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct StatsOptions {
+    /// How the heights are detrended (default: the least-squares plane,
+    /// or line for a profile).
+    pub detrend: Detrend,
+    /// How m2 and m4 are estimated (default: finite differences).
+    pub derivative: Derivative,
+}
+
+/// Something to know about a result that is still returned.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Warning {
+    /// α < 1.5: not an isotropic Gaussian surface (α ≥ 1.5 for one), so
+    /// the relations of MODEL.md §10 are approximate.
+    LowBandwidth {
+        /// The bandwidth α.
+        alpha: f64,
+    },
+    /// A ratio m20/m02 or m40/m04 outside 0.8–1.25: the surface is
+    /// anisotropic, and the relations assume isotropy.
+    Anisotropy {
+        /// `"m20/m02"` or `"m40/m04"`.
+        ratio: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// [`combine`]: the two surfaces were sampled at intervals differing by
+    /// more than 1 %, so their m2, m4 belong to different bands.
+    IntervalMismatch {
+        /// `"dx"` or `"dy"`.
+        name: &'static str,
+        /// The interval of the first surface (metres).
+        first: f64,
+        /// The interval of the second surface (metres).
+        second: f64,
+    },
+}
+
+impl Warning {
+    /// A short snake_case name of the warning: `"low_bandwidth"`,
+    /// `"anisotropy"` or `"interval_mismatch"`.
+    pub const fn kind(&self) -> &'static str {
+        match self {
+            Warning::LowBandwidth { .. } => "low_bandwidth",
+            Warning::Anisotropy { .. } => "anisotropy",
+            Warning::IntervalMismatch { .. } => "interval_mismatch",
+        }
+    }
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Warning::LowBandwidth { alpha } => write!(
+                f,
+                "the bandwidth alpha = {alpha} is below 1.5: this is not an isotropic Gaussian surface, \
+                 so the summit density, radius and beta are approximate"
+            ),
+            Warning::Anisotropy { ratio, value } => write!(
+                f,
+                "{ratio} = {value} is outside 0.8-1.25: the surface is anisotropic, \
+                 and the relations assume an isotropic surface"
+            ),
+            Warning::IntervalMismatch { name, first, second } => write!(
+                f,
+                "the two surfaces have {name} = {first} m and {second} m (differing by more than 1 %): \
+                 their slope and curvature moments belong to different bands; the result keeps the first's"
+            ),
+        }
+    }
+}
+
+/// A warning is recorded as `{"kind": "...", "message": "...", ...}` with
+/// its values (`alpha`, `ratio` and `value`, or `name`, `first` and
+/// `second`).
+impl Serialize for Warning {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(None)?;
+        map.serialize_entry("kind", self.kind())?;
+        map.serialize_entry("message", &self.to_string())?;
+        match self {
+            Warning::LowBandwidth { alpha } => map.serialize_entry("alpha", alpha)?,
+            Warning::Anisotropy { ratio, value } => {
+                map.serialize_entry("ratio", ratio)?;
+                map.serialize_entry("value", value)?;
+            }
+            Warning::IntervalMismatch { name, first, second } => {
+                map.serialize_entry("name", name)?;
+                map.serialize_entry("first", first)?;
+                map.serialize_entry("second", second)?;
+            }
+        }
+        map.end()
+    }
+}
+
+/// Why the statistics of a surface cannot be taken.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum StatsError {
+    /// Fewer than 16 points along a direction.
+    #[error("{name} = {count} is out of range: at least 16 points are needed along {direction}")]
+    TooFewPoints {
+        /// `"nx"` or `"ny"`.
+        name: &'static str,
+        /// `"x"` or `"y"`.
+        direction: &'static str,
+        /// Points along that direction.
+        count: usize,
+    },
+    /// Fewer than 100 valid (non-missing) points.
+    #[error("{valid} valid points is out of range: at least 100 are needed ({missing} missing)")]
+    TooFewValid {
+        /// Valid points.
+        valid: usize,
+        /// Missing points.
+        missing: usize,
+    },
+    /// Fewer than 16 valid first or second differences along a direction
+    /// (too many missing points in between).
+    #[error("{count} valid differences for {name} is out of range: at least 16 are needed (too many missing points)")]
+    TooFewDifferences {
+        /// `"m20"`, `"m40"`, `"m02"` or `"m04"`.
+        name: &'static str,
+        /// Valid differences.
+        count: usize,
+    },
+    /// The valid points lie on one line, so the plane (or line) fit is
+    /// undetermined.
+    #[error("the valid points lie on one line: the {detrend:?} fit is undetermined (use Detrend::Mean)")]
+    Undetermined {
+        /// The detrending asked for.
+        detrend: Detrend,
+    },
+    /// The detrended heights are constant (σ = 0 to rounding).
+    #[error("sigma = {sigma} m is out of range: the detrended heights are constant (no roughness), must be > 0")]
+    Constant {
+        /// σ of the detrended heights (metres).
+        sigma: f64,
+    },
+    /// α ≤ 0.8968 (β ≤ 0.01928): σ_s would be imaginary.
+    #[error(
+        "alpha = {alpha} is out of range: must be > 0.8968 (beta = {beta} must be > 0.01928), \
+         else sigma_s is imaginary"
+    )]
+    Bandwidth {
+        /// The bandwidth α = m0·m4/m2².
+        alpha: f64,
+        /// β = α^½/(16√(3π)).
+        beta: f64,
+    },
+    /// Spectral moments of a surface with missing points.
+    #[error("{missing} missing points: the spectral estimate needs every point (use Derivative::FiniteDifference)")]
+    MissingPoints {
+        /// Missing points.
+        missing: usize,
+    },
+    /// [`combine`] of a profile with a map.
+    #[error("cannot combine a profile with a map: both must be profiles or both maps")]
+    Mismatch,
+    /// A result that is not finite and > 0 (heights or intervals so large
+    /// or so small that the powers overflow or underflow, or a slope of 0).
+    #[error("{name} = {value} is out of range: must be > 0 and finite")]
+    OutOfRange {
+        /// The quantity (`"m0"`, `"m2"`, `"m4"`, `"m20"`, `"kurtosis"`…).
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+}
+
+impl StatsError {
+    /// What kind of failure this is (see [`ErrorKind`]).
+    pub fn kind(&self) -> ErrorKind {
+        match self {
+            StatsError::OutOfRange { value, .. } => ErrorKind::of_value(*value),
+            StatsError::Bandwidth { alpha, .. } => ErrorKind::of_value(*alpha),
+            StatsError::Mismatch | StatsError::MissingPoints { .. } => ErrorKind::Argument,
+            _ => ErrorKind::Domain,
+        }
+    }
+}
+
+/// The statistics of a surface and the model's inputs derived from them
+/// (MODEL.md §10), in SI units. The field names are the JSON record's.
+///
+/// m2, m4 come from the shortest wavelengths in the data: α, β, R and η
+/// depend on the sampling intervals (always reported with them) and on
+/// any filtering, and compare only at the same band.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[non_exhaustive]
+pub struct SurfaceStats {
+    /// Valid (non-missing) points.
+    pub points: usize,
+    /// Missing points.
+    pub missing: usize,
+    /// Points along x.
+    pub nx: usize,
+    /// Points along y (1 for a profile).
+    pub ny: usize,
+    /// Sampling interval along x (m).
+    pub dx: f64,
+    /// Sampling interval along y (m); `None` for a profile.
+    pub dy: Option<f64>,
+    /// σ (Sq): root-mean-square of the detrended heights (m).
+    pub sigma: f64,
+    /// Sk (Ssk): skewness of the detrended heights (dimensionless).
+    pub skewness: f64,
+    /// K (Sku): kurtosis of the detrended heights, not excess (3 for a
+    /// Gaussian; dimensionless).
+    pub kurtosis: f64,
+    /// m20: mean square slope along x (dimensionless).
+    pub m20: f64,
+    /// m02: mean square slope along y (dimensionless); `None` for a profile.
+    pub m02: Option<f64>,
+    /// m40: mean square curvature along x (1/m²).
+    pub m40: f64,
+    /// m04: mean square curvature along y (1/m²); `None` for a profile.
+    pub m04: Option<f64>,
+    /// m2: m20 for a profile, (m20 + m02)/2 for a map (dimensionless).
+    pub m2: f64,
+    /// m4: m40 for a profile, (m40 + m04)/2 for a map (1/m²).
+    pub m4: f64,
+    /// α = m0·m4/m2², the bandwidth, with m0 = σ² (dimensionless).
+    pub alpha: f64,
+    /// η = m4/(6π√3·m2), the summit density (1/m²).
+    pub eta: f64,
+    /// R = 0.375·(π/m4)^½, the mean summit radius (m).
+    pub radius: f64,
+    /// β = ηRσ = α^½/(16√(3π)) (dimensionless).
+    pub beta: f64,
+    /// σ_s = σ·(1 − 0.8968/α)^½, the standard deviation of the summit
+    /// heights (m), with 0.8968 = 16/π − 3√3 + 1.
+    pub sigma_s: f64,
+    /// y_s = 4·(m0/(πα))^½, the mean summit height above the mean plane (m).
+    pub y_s: f64,
+    /// m20/m02 (dimensionless, 1 if isotropic); `None` for a profile.
+    pub anisotropy_m2: Option<f64>,
+    /// m40/m04 (dimensionless, 1 if isotropic); `None` for a profile.
+    pub anisotropy_m4: Option<f64>,
+    /// What to know about these values.
+    pub warnings: Vec<Warning>,
+}
+
+impl Topography {
+    /// The statistics of the surface (MODEL.md §10): detrended as
+    /// `options.detrend` says, m2 and m4 estimated as `options.derivative`
+    /// says, missing (NaN) points left out of every sum (and every
+    /// difference that touches one).
+    ///
+    /// Refused: fewer than 16 points along x (or y, for a map), fewer than
+    /// 100 valid points or 16 valid differences along a direction, constant
+    /// heights, and α ≤ 0.8968; warned: α < 1.5 and anisotropy.
+    ///
+    /// ```
+    /// use ke_friction::topography::{StatsOptions, Topography};
+    /// let n = 64;
+    /// let dx = 1e-6;
+    /// let heights: Vec<f64> = (0..n * n)
+    ///     .map(|k| {
+    ///         let (x, y) = ((k % n) as f64, (k / n) as f64);
+    ///         1e-7 * ((x * 0.7).sin() + (y * 0.9).cos() + (x * 0.31 + y * 0.27).sin())
+    ///     })
+    ///     .collect();
+    /// let surface = Topography::map(heights, n, n, dx, dx)?;
+    /// let stats = surface.stats(&StatsOptions::default())?;
+    /// assert!(stats.sigma > 0.0 && stats.alpha > 1.0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn stats(&self, options: &StatsOptions) -> Result<SurfaceStats, StatsError> {
+        let (nx, ny) = (self.nx, self.ny);
+        if nx < MIN_ALONG {
+            return Err(StatsError::TooFewPoints {
+                name: "nx",
+                direction: "x",
+                count: nx,
+            });
+        }
+        if !self.is_profile() && ny < MIN_ALONG {
+            return Err(StatsError::TooFewPoints {
+                name: "ny",
+                direction: "y",
+                count: ny,
+            });
+        }
+        let Some(z0) = self.heights.iter().copied().find(|h| !h.is_nan()) else {
+            return Err(StatsError::TooFewValid {
+                valid: 0,
+                missing: self.heights.len(),
+            });
+        };
+        let fit = dispatch::fit_sums(self, z0);
+        let points = fit.n.value() as usize;
+        let missing = self.heights.len() - points;
+        if points < MIN_VALID {
+            return Err(StatsError::TooFewValid { valid: points, missing });
+        }
+        let detrend = match options.detrend {
+            Detrend::Plane if self.is_profile() => Detrend::Line,
+            other => other,
+        };
+        let plane = fit.solve(detrend)?;
+
+        let sums = match options.derivative {
+            Derivative::FiniteDifference => {
+                if missing == 0 {
+                    dispatch::sweep::<false>(self, z0, &plane)
+                } else {
+                    dispatch::sweep::<true>(self, z0, &plane)
+                }
+            }
+            Derivative::Spectral => {
+                if missing > 0 {
+                    return Err(StatsError::MissingPoints { missing });
+                }
+                spectral(self, z0, &plane)
+            }
+        };
+
+        // Central moments of the detrended heights (their mean is 0 to
+        // rounding; it is removed all the same).
+        let n = points as f64;
+        let mean = sums.moments[0].value() / n;
+        let s2 = sums.moments[1].value() / n;
+        let s3 = sums.moments[2].value() / n;
+        let s4 = sums.moments[3].value() / n;
+        let mu2 = s2 - mean * mean;
+        let mu3 = s3 - 3.0 * mean * s2 + 2.0 * mean * mean * mean;
+        let mu4 = s4 - 4.0 * mean * s3 + 6.0 * mean * mean * s2 - 3.0 * mean * mean * mean * mean;
+        let m0 = mu2;
+        let sigma = m0.max(0.0).sqrt();
+        if !m0.is_finite() {
+            return Err(StatsError::OutOfRange { name: "m0", value: m0 });
+        }
+        // Constant: σ at the rounding level of the heights (a plane, after
+        // a plane fit, leaves residuals of a few ulps).
+        if sigma <= 1e-13 * fit.scale || m0 <= 0.0 {
+            return Err(StatsError::Constant { sigma });
+        }
+        let skewness = mu3 / (m0 * sigma);
+        let kurtosis = mu4 / (m0 * m0);
+        finite("skewness", skewness)?;
+        positive("kurtosis", kurtosis)?;
+
+        let (m20, m40, m02, m04) = sums.derivatives(self)?;
+        let (m2, m4) = match (m02, m04) {
+            (Some(m02), Some(m04)) => (0.5 * (m20 + m02), 0.5 * (m40 + m04)),
+            _ => (m20, m40),
+        };
+        let anisotropy_m2 = m02.map(|m02| m20 / m02);
+        let anisotropy_m4 = m04.map(|m04| m40 / m04);
+        let derived = Derived::new(m0, m2, m4)?;
+        let mut stats = SurfaceStats {
+            points,
+            missing,
+            nx,
+            ny,
+            dx: self.dx,
+            dy: self.dy,
+            sigma,
+            skewness,
+            kurtosis,
+            m20,
+            m02,
+            m40,
+            m04,
+            m2,
+            m4,
+            alpha: derived.alpha,
+            eta: derived.eta,
+            radius: derived.radius,
+            beta: derived.beta,
+            sigma_s: derived.sigma_s,
+            y_s: derived.y_s,
+            anisotropy_m2,
+            anisotropy_m4,
+            warnings: Vec::new(),
+        };
+        stats.warn();
+        Ok(stats)
+    }
+}
+
+impl SurfaceStats {
+    /// Adds the warnings that follow from α and the anisotropy ratios.
+    fn warn(&mut self) {
+        if self.alpha < ALPHA_GAUSSIAN {
+            self.warnings.push(Warning::LowBandwidth { alpha: self.alpha });
+        }
+        for (ratio, value) in [("m20/m02", self.anisotropy_m2), ("m40/m04", self.anisotropy_m4)] {
+            if let Some(value) = value {
+                if !(ISOTROPY.0..=ISOTROPY.1).contains(&value) {
+                    self.warnings.push(Warning::Anisotropy { ratio, value });
+                }
+            }
+        }
+    }
+}
+
+/// The equivalent surface of two independent rough surfaces pressed
+/// together, against a flat (the composite of Greenwood & Tripp): the sum
+/// of their heights, each measured from its own mean plane toward the
+/// other surface.
+///
+/// Variances and slope and curvature moments add, and so do the third and
+/// fourth cumulants:
+///
+/// - m0 = σ² = σa² + σb²; m20, m02, m40, m04, m2 and m4 add likewise;
+/// - Sk·σ³ = Ska·σa³ + Skb·σb³;
+/// - (K − 3)·σ⁴ = (Ka − 3)·σa⁴ + (Kb − 3)·σb⁴;
+///
+/// and α, η, R, β, σ_s, y_s follow from m0, m2, m4 as for one surface
+/// (refused if α ≤ 0.8968). The result keeps the points, sizes and sampling
+/// intervals of `a`: both surfaces should be sampled alike (same band),
+/// and a warning is added if dx (or dy) differ by more than 1 %. Both must
+/// be profiles or both maps.
+pub fn combine(a: &SurfaceStats, b: &SurfaceStats) -> Result<SurfaceStats, StatsError> {
+    let add = |x: Option<f64>, y: Option<f64>| -> Result<Option<f64>, StatsError> {
+        match (x, y) {
+            (Some(x), Some(y)) => Ok(Some(x + y)),
+            (None, None) => Ok(None),
+            _ => Err(StatsError::Mismatch),
+        }
+    };
+    let dy = add(a.dy, b.dy).map(|_| a.dy)?;
+    let m02 = add(a.m02, b.m02)?;
+    let m04 = add(a.m04, b.m04)?;
+    let (va, vb) = (a.sigma * a.sigma, b.sigma * b.sigma);
+    let m0 = va + vb;
+    positive("m0", m0)?;
+    let sigma = m0.sqrt();
+    let skewness = (a.skewness * va * a.sigma + b.skewness * vb * b.sigma) / (m0 * sigma);
+    let kurtosis = 3.0 + ((a.kurtosis - 3.0) * va * va + (b.kurtosis - 3.0) * vb * vb) / (m0 * m0);
+    finite("skewness", skewness)?;
+    positive("kurtosis", kurtosis)?;
+    let m20 = a.m20 + b.m20;
+    let m40 = a.m40 + b.m40;
+    let m2 = a.m2 + b.m2;
+    let m4 = a.m4 + b.m4;
+    let derived = Derived::new(m0, m2, m4)?;
+    let mut stats = SurfaceStats {
+        points: a.points,
+        missing: a.missing,
+        nx: a.nx,
+        ny: a.ny,
+        dx: a.dx,
+        dy,
+        sigma,
+        skewness,
+        kurtosis,
+        m20,
+        m02,
+        m40,
+        m04,
+        m2,
+        m4,
+        alpha: derived.alpha,
+        eta: derived.eta,
+        radius: derived.radius,
+        beta: derived.beta,
+        sigma_s: derived.sigma_s,
+        y_s: derived.y_s,
+        anisotropy_m2: m02.map(|m02| m20 / m02),
+        anisotropy_m4: m04.map(|m04| m40 / m04),
+        warnings: Vec::new(),
+    };
+    stats.warn();
+    for (name, first, second) in [("dx", Some(a.dx), Some(b.dx)), ("dy", a.dy, b.dy)] {
+        if let (Some(first), Some(second)) = (first, second) {
+            if (first - second).abs() > INTERVAL_TOLERANCE * first.abs().max(second.abs()) {
+                stats.warnings.push(Warning::IntervalMismatch { name, first, second });
+            }
+        }
+    }
+    Ok(stats)
+}
+
+fn finite(name: &'static str, value: f64) -> Result<f64, StatsError> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(StatsError::OutOfRange { name, value })
+    }
+}
+
+fn positive(name: &'static str, value: f64) -> Result<f64, StatsError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(StatsError::OutOfRange { name, value })
+    }
+}
+
+/// α, η, R, β, σ_s, y_s from m0, m2, m4 (MODEL.md §10).
+struct Derived {
+    alpha: f64,
+    eta: f64,
+    radius: f64,
+    beta: f64,
+    sigma_s: f64,
+    y_s: f64,
+}
+
+impl Derived {
+    fn new(m0: f64, m2: f64, m4: f64) -> Result<Derived, StatsError> {
+        positive("m0", m0)?;
+        positive("m2", m2)?;
+        finite("m4", m4)?;
+        let alpha = m0 * m4 / (m2 * m2);
+        let beta = alpha.max(0.0).sqrt() / (16.0 * (3.0 * PI).sqrt());
+        if !(alpha > ALPHA_MIN && alpha.is_finite()) {
+            return Err(StatsError::Bandwidth { alpha, beta });
+        }
+        let derived = Derived {
+            alpha,
+            eta: m4 / (6.0 * PI * 3f64.sqrt() * m2),
+            radius: 0.375 * (PI / m4).sqrt(),
+            beta,
+            sigma_s: m0.sqrt() * (1.0 - ALPHA_MIN / alpha).sqrt(),
+            y_s: 4.0 * (m0 / (PI * alpha)).sqrt(),
+        };
+        positive("eta", derived.eta)?;
+        positive("radius", derived.radius)?;
+        positive("sigma_s", derived.sigma_s)?;
+        positive("y_s", derived.y_s)?;
+        Ok(derived)
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Summation.
+
+/// Lanes of the inner loops (independent partial sums, vectorised).
+const LANES: usize = 4;
+/// Points per block: lane sums are folded into the compensated totals
+/// after each block, so no plain running sum grows beyond BLOCK/LANES terms.
+const BLOCK: usize = 512;
+
+/// Neumaier's compensated sum.
+#[derive(Debug, Clone, Copy, Default)]
+struct Sum {
+    sum: f64,
+    comp: f64,
+}
+
+impl Sum {
+    #[inline]
+    fn add(&mut self, x: f64) {
+        let t = self.sum + x;
+        if self.sum.abs() >= x.abs() {
+            self.comp += (self.sum - t) + x;
+        } else {
+            self.comp += (x - t) + self.sum;
+        }
+        self.sum = t;
+    }
+
+    fn value(&self) -> f64 {
+        self.sum + self.comp
+    }
+}
+
+/// `(value, 1)` for a valid value, `(0, 0)` for a missing one (NaN); with
+/// `MASKED == false` every value is valid.
+#[inline(always)]
+fn mask<const MASKED: bool>(x: f64) -> (f64, f64) {
+    if MASKED && x.is_nan() {
+        (0.0, 0.0)
+    } else {
+        (x, 1.0)
+    }
+}
+
+/// Sums `K` quantities over the points of `M` slices of the same length,
+/// `kernel` giving the `K` terms from the `M` values at one index: four
+/// lanes (a chunk of four indices at a time, vectorised), folded into
+/// compensated totals every [`BLOCK`] indices.
+#[inline(always)]
+#[allow(clippy::needless_range_loop)] // lanes by index: the shape that vectorises
+fn sum_slices<const M: usize, const K: usize>(
+    inputs: [&[f64]; M],
+    totals: &mut [Sum; K],
+    kernel: impl Fn([f64; M]) -> [f64; K],
+) {
+    let len = inputs.iter().map(|s| s.len()).min().unwrap_or(0);
+    let mut start = 0;
+    while start < len {
+        let end = (start + BLOCK).min(len);
+        let block = inputs.map(|s| &s[start..end]);
+        let n = end - start;
+        let full = n - n % LANES;
+        let mut lanes = [[0.0f64; LANES]; K];
+        let mut c = 0;
+        while c < full {
+            let chunk = block.map(|s| &s[c..c + LANES]);
+            for l in 0..LANES {
+                let terms = kernel(std::array::from_fn(|m| chunk[m][l]));
+                for k in 0..K {
+                    lanes[k][l] += terms[k];
+                }
+            }
+            c += LANES;
+        }
+        for i in full..n {
+            let terms = kernel(std::array::from_fn(|m| block[m][i]));
+            for k in 0..K {
+                lanes[k][0] += terms[k];
+            }
+        }
+        for k in 0..K {
+            totals[k].add((lanes[k][0] + lanes[k][2]) + (lanes[k][1] + lanes[k][3]));
+        }
+        start = end;
+    }
+}
+
+/// The two passes compiled twice: for any x86-64 CPU (SSE2), and for one
+/// with AVX2 (wider vectors), chosen at run time. The code and the order of
+/// every operation are the same (no fused multiply-adds), so the results are
+/// the same bit for bit.
+mod dispatch {
+    use super::{FitSums, Plane, Sweep, Topography};
+
+    #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+    fn avx2() -> bool {
+        std::is_x86_feature_detected!("avx2")
+    }
+
+    /// [`super::fit_sums`].
+    pub(super) fn fit_sums(t: &Topography, z0: f64) -> FitSums {
+        #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+        if avx2() {
+            // SAFETY: the CPU supports AVX2 (just detected).
+            return unsafe { fit_sums_avx2(t, z0) };
+        }
+        super::fit_sums(t, z0)
+    }
+
+    /// [`super::sweep`].
+    pub(super) fn sweep<const MASKED: bool>(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
+        #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+        if avx2() {
+            // SAFETY: the CPU supports AVX2 (just detected).
+            return unsafe { sweep_avx2::<MASKED>(t, z0, plane) };
+        }
+        super::sweep::<MASKED>(t, z0, plane)
+    }
+
+    /// [`super::fit_sums`] with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must support AVX2.
+    #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+    #[target_feature(enable = "avx2")]
+    unsafe fn fit_sums_avx2(t: &Topography, z0: f64) -> FitSums {
+        super::fit_sums(t, z0)
+    }
+
+    /// [`super::sweep`] with AVX2.
+    ///
+    /// # Safety
+    /// The CPU must support AVX2.
+    #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
+    #[target_feature(enable = "avx2")]
+    unsafe fn sweep_avx2<const MASKED: bool>(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
+        super::sweep::<MASKED>(t, z0, plane)
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Pass 1: the sums of the least-squares fit.
+
+/// Sums over the valid points, with u = i − (nx − 1)/2 and v = j − (ny −
+/// 1)/2 the centred sample indices and z' = z − z0.
+#[derive(Default)]
+struct FitSums {
+    n: Sum,
+    su: Sum,
+    sv: Sum,
+    suu: Sum,
+    svv: Sum,
+    suv: Sum,
+    sz: Sum,
+    suz: Sum,
+    svz: Sum,
+    /// |z0| + rms(z − z0) (metres): the scale of the rounding of the
+    /// detrended heights.
+    scale: f64,
+}
+
+/// The fitted trend z − z0 = a + b·u + c·v (per sample index).
+struct Plane {
+    a: f64,
+    b: f64,
+    c: f64,
+}
+
+fn centred(n: usize) -> impl Fn(usize) -> f64 {
+    let centre = 0.5 * (n as f64 - 1.0);
+    move |i| i as f64 - centre
+}
+
+#[inline(always)]
+fn fit_sums(t: &Topography, z0: f64) -> FitSums {
+    let (nx, ny) = (t.nx, t.ny);
+    let u_of = centred(nx);
+    let v_of = centred(ny);
+    let u: Vec<f64> = (0..nx).map(&u_of).collect();
+    let mut fit = FitSums::default();
+    let mut szz = Sum::default();
+    for (j, row) in t.heights.chunks_exact(nx).enumerate() {
+        let v = v_of(j);
+        let mut row_sums = [Sum::default(); 6];
+        sum_slices([row, &u], &mut row_sums, |[z, u]| {
+            let (z, w) = mask::<true>(z - z0);
+            let uw = u * w;
+            [w, uw, uw * u, z, uw * z, z * z]
+        });
+        let [n, su, suu, sz, suz, zz] = row_sums.map(|s| s.value());
+        fit.n.add(n);
+        fit.su.add(su);
+        fit.suu.add(suu);
+        fit.sz.add(sz);
+        fit.suz.add(suz);
+        fit.sv.add(v * n);
+        fit.svv.add(v * v * n);
+        fit.suv.add(v * su);
+        fit.svz.add(v * sz);
+        szz.add(zz);
+    }
+    let n = fit.n.value();
+    fit.scale = z0.abs() + if n > 0.0 { (szz.value() / n).sqrt() } else { 0.0 };
+    fit
+}
+
+impl FitSums {
+    fn solve(&self, detrend: Detrend) -> Result<Plane, StatsError> {
+        let n = self.n.value();
+        let (su, sv, sz) = (self.su.value(), self.sv.value(), self.sz.value());
+        let cuu = self.suu.value() - su * su / n;
+        let cvv = self.svv.value() - sv * sv / n;
+        let cuv = self.suv.value() - su * sv / n;
+        let cuz = self.suz.value() - su * sz / n;
+        let cvz = self.svz.value() - sv * sz / n;
+        let (b, c) = match detrend {
+            Detrend::Mean => (0.0, 0.0),
+            Detrend::Line => {
+                if cuu.is_nan() || cuu <= 0.0 {
+                    return Err(StatsError::Undetermined { detrend });
+                }
+                (cuz / cuu, 0.0)
+            }
+            Detrend::Plane => {
+                let det = cuu * cvv - cuv * cuv;
+                if det.is_nan() || det <= 1e-12 * cuu * cvv {
+                    return Err(StatsError::Undetermined { detrend });
+                }
+                ((cuz * cvv - cvz * cuv) / det, (cvz * cuu - cuz * cuv) / det)
+            }
+        };
+        Ok(Plane {
+            a: (sz - b * su - c * sv) / n,
+            b,
+            c,
+        })
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Pass 2: moments of the detrended heights and the differences.
+
+/// The sums of the second pass.
+#[derive(Default)]
+struct Sweep {
+    /// Σr, Σr², Σr³, Σr⁴ of the detrended heights r.
+    moments: [Sum; 4],
+    /// Σ d², Σ e², count(d), count(e) along x: d the first differences of
+    /// the detrended heights, e the second differences.
+    x: [Sum; 4],
+    /// The same along y (zero for a profile).
+    y: [Sum; 4],
+    /// Spectral moments instead: m20, m40, m02, m04 directly.
+    spectral: Option<[f64; 4]>,
+}
+
+impl Sweep {
+    /// m20, m40, and for a map m02, m04.
+    fn derivatives(&self, t: &Topography) -> Result<(f64, f64, Option<f64>, Option<f64>), StatsError> {
+        if let Some([m20, m40, m02, m04]) = self.spectral {
+            positive("m20", m20)?;
+            finite("m40", m40)?;
+            return Ok(match t.dy {
+                Some(_) => (m20, m40, Some(positive("m02", m02)?), Some(finite("m04", m04)?)),
+                None => (m20, m40, None, None),
+            });
+        }
+        let (m20, m40) = moments_of(&self.x, t.dx, "m20", "m40")?;
+        match t.dy {
+            Some(dy) => {
+                let (m02, m04) = moments_of(&self.y, dy, "m02", "m04")?;
+                Ok((m20, m40, Some(m02), Some(m04)))
+            }
+            None => Ok((m20, m40, None, None)),
+        }
+    }
+}
+
+/// The mean squares of the first and second differences along one
+/// direction, over the sampling interval h squared and to the fourth.
+fn moments_of(sums: &[Sum; 4], h: f64, m2: &'static str, m4: &'static str) -> Result<(f64, f64), StatsError> {
+    let [d2, e2, nd, ne] = sums.map(|s| s.value());
+    for (name, count) in [(m2, nd), (m4, ne)] {
+        if count < MIN_DIFFERENCES as f64 {
+            return Err(StatsError::TooFewDifferences {
+                name,
+                count: count as usize,
+            });
+        }
+    }
+    let h2 = h * h;
+    let m2v = positive(m2, d2 / nd / h2)?;
+    let m4v = finite(m4, e2 / ne / (h2 * h2))?;
+    Ok((m2v, m4v))
+}
+
+/// The second pass: every row once, with its neighbours above and below.
+#[inline(always)]
+fn sweep<const MASKED: bool>(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
+    let (nx, ny) = (t.nx, t.ny);
+    let u_of = centred(nx);
+    let v_of = centred(ny);
+    // The plane's x part, b·u, for one row (a row's worth, not a map's).
+    let lin: Vec<f64> = (0..nx).map(|i| plane.b * u_of(i)).collect();
+    let mut out = Sweep::default();
+    let rows: Vec<&[f64]> = t.heights.chunks_exact(nx).collect();
+    for (j, &row) in rows.iter().enumerate() {
+        // Moments of r = (z − z0) − (a + c·v + b·u).
+        let p = plane.a + plane.c * v_of(j);
+        sum_slices([row, &lin], &mut out.moments, |[z, l]| {
+            let (r, _) = mask::<MASKED>((z - z0) - (p + l));
+            let r2 = r * r;
+            [r, r2, r2 * r, r2 * r2]
+        });
+        // Along x: first differences (less the plane's slope b) and
+        // second differences, centred at i + 1.
+        differences::<MASKED>(&mut out.x, row, plane.b);
+        // Along y: between this row and the one before, and centred on
+        // this row.
+        if j >= 1 {
+            let prev = rows[j - 1];
+            if let Some(&next) = rows.get(j + 1) {
+                let mut s = [Sum::default(); 4];
+                sum_slices([prev, row, next], &mut s, |[z0, z1, z2]| {
+                    let (d, wd) = mask::<MASKED>((z1 - z0) - plane.c);
+                    let (e, we) = mask::<MASKED>((z2 - z1) - (z1 - z0));
+                    [d * d, e * e, wd, we]
+                });
+                for (total, s) in out.y.iter_mut().zip(&s) {
+                    total.add(s.value());
+                }
+            } else {
+                let mut s = [Sum::default(); 2];
+                sum_slices([prev, row], &mut s, |[z0, z1]| {
+                    let (d, wd) = mask::<MASKED>((z1 - z0) - plane.c);
+                    [d * d, wd]
+                });
+                out.y[0].add(s[0].value());
+                out.y[2].add(s[1].value());
+            }
+        }
+    }
+    out
+}
+
+/// First and second differences along a line `z` of n ≥ 3 points: Σd²,
+/// Σe² and their counts added to `totals`, d = (z\[i+1\] − z\[i\]) − slope,
+/// e = (z\[i+2\] − z\[i+1\]) − (z\[i+1\] − z\[i\]) (differences of neighbours
+/// first: exact for heights with a large offset).
+#[inline(always)]
+fn differences<const MASKED: bool>(totals: &mut [Sum; 4], z: &[f64], slope: f64) {
+    let n = z.len();
+    if n < 3 {
+        return;
+    }
+    let mut s = [Sum::default(); 4];
+    sum_slices([&z[..n - 2], &z[1..n - 1], &z[2..]], &mut s, |[z0, z1, z2]| {
+        let (d, wd) = mask::<MASKED>((z1 - z0) - slope);
+        let (e, we) = mask::<MASKED>((z2 - z1) - (z1 - z0));
+        [d * d, e * e, wd, we]
+    });
+    // The last pair.
+    let (d, wd) = mask::<MASKED>((z[n - 1] - z[n - 2]) - slope);
+    s[0].add(d * d);
+    s[2].add(wd);
+    for (total, s) in totals.iter_mut().zip(&s) {
+        total.add(s.value());
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The spectral path.
+
+/// Moments of the heights as in [`sweep`], m2 and m4 from the discrete
+/// Fourier transforms of the rows and the columns of the detrended heights
+/// (no missing points): the mean over rows of the per-row moments equals
+/// the 2-D spectral sum Σ (2π·f_x)^p·|Z|²/N² by Parseval's theorem along y.
+fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
+    let (nx, ny) = (t.nx, t.ny);
+    let mut out = sweep_moments_only(t, z0, plane);
+    let u_of = centred(nx);
+    let v_of = centred(ny);
+    let residual = |i: usize, j: usize, z: f64| (z - z0) - (plane.a + plane.c * v_of(j) + plane.b * u_of(i));
+
+    let fft = Fft::new(nx);
+    let mut buf = vec![Complex::ZERO; nx];
+    let mut scratch = fft.scratch();
+    let (mut m20, mut m40) = (Sum::default(), Sum::default());
+    for (j, row) in t.heights.chunks_exact(nx).enumerate() {
+        for (i, (b, &z)) in buf.iter_mut().zip(row).enumerate() {
+            *b = Complex::new(residual(i, j, z), 0.0);
+        }
+        fft.forward(&mut buf, &mut scratch);
+        let (s2, s4) = line_moments(&buf, t.dx);
+        m20.add(s2);
+        m40.add(s4);
+    }
+    let mut result = [m20.value() / ny as f64, m40.value() / ny as f64, 0.0, 0.0];
+
+    if let Some(dy) = t.dy {
+        // Columns, gathered a few at a time (one cache line of each row).
+        const COLUMNS: usize = 8;
+        let fft = Fft::new(ny);
+        let mut scratch = fft.scratch();
+        let mut cols = vec![vec![Complex::ZERO; ny]; COLUMNS];
+        let (mut m02, mut m04) = (Sum::default(), Sum::default());
+        let mut i0 = 0;
+        while i0 < nx {
+            let width = COLUMNS.min(nx - i0);
+            for (j, row) in t.heights.chunks_exact(nx).enumerate() {
+                for (k, col) in cols.iter_mut().take(width).enumerate() {
+                    let i = i0 + k;
+                    col[j] = Complex::new(residual(i, j, row[i]), 0.0);
+                }
+            }
+            for col in cols.iter_mut().take(width) {
+                fft.forward(col, &mut scratch);
+                let (s2, s4) = line_moments(col, dy);
+                m02.add(s2);
+                m04.add(s4);
+            }
+            i0 += width;
+        }
+        result[2] = m02.value() / nx as f64;
+        result[3] = m04.value() / nx as f64;
+    }
+    out.spectral = Some(result);
+    out
+}
+
+/// Σ (2π·f_k)²·|X_k|²/N² and Σ (2π·f_k)⁴·|X_k|²/N² over the transform X
+/// of one line of N points spaced h, the Nyquist term (k = N/2, N even)
+/// dropped.
+fn line_moments(x: &[Complex], h: f64) -> (f64, f64) {
+    let n = x.len();
+    let (mut s2, mut s4) = (Sum::default(), Sum::default());
+    let scale = 2.0 * PI / (n as f64 * h);
+    for (k, xk) in x.iter().enumerate().skip(1) {
+        if 2 * k == n {
+            continue;
+        }
+        let kk = if 2 * k < n { k } else { n - k };
+        let w = (scale * kk as f64).powi(2);
+        let p = xk.norm_sqr();
+        s2.add(w * p);
+        s4.add(w * w * p);
+    }
+    let n2 = (n as f64) * (n as f64);
+    (s2.value() / n2, s4.value() / n2)
+}
+
+/// The moments of the detrended heights alone (no missing points).
+fn sweep_moments_only(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
+    let nx = t.nx;
+    let u_of = centred(nx);
+    let v_of = centred(t.ny);
+    let lin: Vec<f64> = (0..nx).map(|i| plane.b * u_of(i)).collect();
+    let mut out = Sweep::default();
+    for (j, row) in t.heights.chunks_exact(nx).enumerate() {
+        let p = plane.a + plane.c * v_of(j);
+        sum_slices([row, &lin], &mut out.moments, |[z, l]| {
+            let r = (z - z0) - (p + l);
+            let r2 = r * r;
+            [r, r2, r2 * r, r2 * r2]
+        });
+    }
+    out
+}
+
+// ---------------------------------------------------------------------------
+// A small FFT: iterative radix 2, and Bluestein's chirp-z for other lengths.
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Complex {
+    re: f64,
+    im: f64,
+}
+
+impl Complex {
+    const ZERO: Complex = Complex { re: 0.0, im: 0.0 };
+
+    fn new(re: f64, im: f64) -> Complex {
+        Complex { re, im }
+    }
+
+    /// e^{−iπ·num/den}, from the reduced angle.
+    fn unit(num: f64, den: f64) -> Complex {
+        let (s, c) = (PI * num / den).sin_cos();
+        Complex { re: c, im: -s }
+    }
+
+    fn mul(self, o: Complex) -> Complex {
+        Complex {
+            re: self.re * o.re - self.im * o.im,
+            im: self.re * o.im + self.im * o.re,
+        }
+    }
+
+    fn conj(self) -> Complex {
+        Complex {
+            re: self.re,
+            im: -self.im,
+        }
+    }
+
+    fn norm_sqr(self) -> f64 {
+        self.re * self.re + self.im * self.im
+    }
+}
+
+/// Radix-2 transform of a power-of-two length.
+struct Radix2 {
+    n: usize,
+    /// e^{−2πik/n}, k < n/2.
+    twiddles: Vec<Complex>,
+    /// The bit-reversal permutation.
+    reversed: Vec<usize>,
+}
+
+impl Radix2 {
+    fn new(n: usize) -> Radix2 {
+        let bits = n.trailing_zeros();
+        let twiddles = (0..n / 2).map(|k| Complex::unit(2.0 * k as f64, n as f64)).collect();
+        let reversed = (0..n)
+            .map(|i| {
+                if bits == 0 {
+                    0
+                } else {
+                    i.reverse_bits() >> (usize::BITS - bits)
+                }
+            })
+            .collect();
+        Radix2 { n, twiddles, reversed }
+    }
+
+    fn forward(&self, x: &mut [Complex]) {
+        let n = self.n;
+        for (i, &r) in self.reversed.iter().enumerate() {
+            if i < r {
+                x.swap(i, r);
+            }
+        }
+        let mut len = 2;
+        while len <= n {
+            let half = len / 2;
+            let step = n / len;
+            for block in x.chunks_exact_mut(len) {
+                let (lo, hi) = block.split_at_mut(half);
+                for (k, (a, b)) in lo.iter_mut().zip(hi.iter_mut()).enumerate() {
+                    let w = self.twiddles[k * step];
+                    let t = b.mul(w);
+                    *b = Complex::new(a.re - t.re, a.im - t.im);
+                    *a = Complex::new(a.re + t.re, a.im + t.im);
+                }
+            }
+            len *= 2;
+        }
+    }
+}
+
+/// A forward DFT of any length n ≥ 1.
+enum Fft {
+    Radix2(Radix2),
+    Bluestein {
+        n: usize,
+        inner: Radix2,
+        /// e^{−iπk²/n}, k < n.
+        chirp: Vec<Complex>,
+        /// The transform of the conjugate chirp, wrapped to the inner length.
+        kernel: Vec<Complex>,
+    },
+}
+
+impl Fft {
+    fn new(n: usize) -> Fft {
+        if n.is_power_of_two() {
+            return Fft::Radix2(Radix2::new(n));
+        }
+        let m = (2 * n - 1).next_power_of_two();
+        let inner = Radix2::new(m);
+        // k² mod 2n keeps the angle small (and exact).
+        let chirp: Vec<Complex> = (0..n)
+            .map(|k| {
+                let k2 = ((k as u128 * k as u128) % (2 * n as u128)) as f64;
+                Complex::unit(k2, n as f64)
+            })
+            .collect();
+        let mut kernel = vec![Complex::ZERO; m];
+        for (k, w) in chirp.iter().enumerate() {
+            kernel[k] = w.conj();
+            if k > 0 {
+                kernel[m - k] = w.conj();
+            }
+        }
+        inner.forward(&mut kernel);
+        Fft::Bluestein {
+            n,
+            inner,
+            chirp,
+            kernel,
+        }
+    }
+
+    fn scratch(&self) -> Vec<Complex> {
+        match self {
+            Fft::Radix2(_) => Vec::new(),
+            Fft::Bluestein { inner, .. } => vec![Complex::ZERO; inner.n],
+        }
+    }
+
+    /// X_k = Σ x_j·e^{−2πijk/n}, in place.
+    fn forward(&self, x: &mut [Complex], scratch: &mut [Complex]) {
+        match self {
+            Fft::Radix2(r) => r.forward(x),
+            Fft::Bluestein {
+                n,
+                inner,
+                chirp,
+                kernel,
+            } => {
+                let m = inner.n;
+                scratch.fill(Complex::ZERO);
+                for ((s, xv), w) in scratch.iter_mut().zip(x.iter()).zip(chirp) {
+                    *s = xv.mul(*w);
+                }
+                inner.forward(scratch);
+                // Convolution, then the inverse transform as the conjugate
+                // of the forward transform of the conjugate.
+                for (s, k) in scratch.iter_mut().zip(kernel) {
+                    *s = s.mul(*k).conj();
+                }
+                inner.forward(scratch);
+                let scale = 1.0 / m as f64;
+                for ((xv, s), w) in x.iter_mut().zip(scratch.iter()).zip(chirp).take(*n) {
+                    let y = Complex::new(s.re * scale, -s.im * scale);
+                    *xv = y.mul(*w);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dft(x: &[Complex]) -> Vec<Complex> {
+        let n = x.len();
+        (0..n)
+            .map(|k| {
+                let mut acc = Complex::ZERO;
+                for (j, v) in x.iter().enumerate() {
+                    let w = Complex::unit(2.0 * ((j * k) % n) as f64, n as f64);
+                    let t = v.mul(w);
+                    acc = Complex::new(acc.re + t.re, acc.im + t.im);
+                }
+                acc
+            })
+            .collect()
+    }
+
+    #[test]
+    fn fft_matches_the_dft() {
+        for n in [1usize, 2, 8, 16, 17, 30, 100, 128, 243] {
+            let x: Vec<Complex> = (0..n)
+                .map(|j| Complex::new((j as f64 * 0.37).sin() + 0.1 * j as f64, (j as f64 * 1.3).cos()))
+                .collect();
+            let want = dft(&x);
+            let fft = Fft::new(n);
+            let mut got = x.clone();
+            let mut scratch = fft.scratch();
+            fft.forward(&mut got, &mut scratch);
+            let norm: f64 = want.iter().map(|c| c.norm_sqr()).sum::<f64>().sqrt();
+            for (g, w) in got.iter().zip(&want) {
+                let err = ((g.re - w.re).powi(2) + (g.im - w.im).powi(2)).sqrt();
+                assert!(err <= 1e-13 * norm, "n = {n}: {g:?} vs {w:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn alpha_min_is_the_constant() {
+        assert!((ALPHA_MIN - 0.896_805_76).abs() < 1e-8);
+        assert!((ALPHA_MIN - (16.0 / PI - 3.0 * 3f64.sqrt() + 1.0)).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,241 @@
+//! Non-Gaussian asperity heights (MODEL.md §9): the model against the
+//! independent mpmath reference (`tools/nongaussian_reference.py`), the
+//! Gaussian reduction, curves and tables for a Pearson distribution, and
+//! bad input.
+use crate::common::rel;
+use ke_friction::build::{build, BuildOptions, Precision};
+use ke_friction::{Constants, Curve, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
+use serde_json::Value;
+
+fn model(psi: f64, theta: f64, d: HeightDistribution) -> Model {
+    Model::new(Constants::default().distribution(d).at(psi, theta).unwrap()).unwrap()
+}
+
+fn mu(m: &Model, f_star: f64) -> f64 {
+    m.at_f_star(f_star).unwrap().mu.unwrap()
+}
+
+/// 39 points across the (Sk, K) box, every Pearson type (J-shaped type I,
+/// both sides of the gamma line and of the type-V line), Weibull and the
+/// Gaussian, to ≤ 1e-9 relative (measured: ~1e-14).
+#[test]
+fn mu_matches_the_independent_reference_across_the_box() {
+    let doc: Value = serde_json::from_str(include_str!("../data/nongaussian_reference.json")).unwrap();
+    let points = doc.as_array().unwrap();
+    assert!(points.len() >= 39);
+    let mut worst = (0.0f64, String::new());
+    for p in points {
+        let f = |k: &str| p[k].as_f64().unwrap();
+        let dist = match p["distribution"].as_str().unwrap() {
+            "gaussian" => HeightDistribution::Gaussian,
+            "pearson" => HeightDistribution::pearson(f("skewness"), f("kurtosis")).unwrap(),
+            "weibull" => HeightDistribution::weibull(f("skewness")).unwrap(),
+            other => panic!("unknown distribution {other}"),
+        };
+        if let Some(t) = p["pearson_type"].as_str() {
+            assert_eq!(dist.density().pearson_type().unwrap().name(), t, "{p}");
+        }
+        let c = model(f("psi"), f("theta"), dist).at_f_star(f("f_star")).unwrap();
+        let e = rel(c.mu.unwrap(), f("mu")).max(rel(c.h_star, f("h_star")));
+        if e > worst.0 {
+            worst = (e, p.to_string());
+        }
+    }
+    assert!(worst.0 <= 1e-9, "worst {:e} at {}", worst.0, worst.1);
+}
+
+/// The numbers: ψ = 1, θ = 0.001, F* = 1e-4.
+#[test]
+fn peaked_and_skewed_heights_change_mu_by_factors() {
+    let at = |d| mu(&model(1.0, 1e-3, d), 1e-4);
+    let gauss = at(HeightDistribution::Gaussian);
+    assert!(rel(gauss, 0.7567111956) < 1e-9);
+    assert!(rel(at(HeightDistribution::pearson(0.0, 8.0).unwrap()), 0.2529016383) < 1e-9);
+    assert!(rel(at(HeightDistribution::pearson(-0.5, 3.375).unwrap()), 1.004869931) < 1e-9);
+    // Pearson(0, 3) is the Gaussian, bit for bit.
+    assert_eq!(at(HeightDistribution::pearson(0.0, 3.0).unwrap()), gauss);
+}
+
+/// The general integrator (every node through the Pearson closed forms)
+/// next to the Gaussian one: a Pearson distribution 1e-9 away from the
+/// normal point moves μ by ~1e-9, no more.
+#[test]
+fn the_general_integrator_reduces_to_the_gaussian_one() {
+    for (psi, theta, f_star) in [
+        (0.5, 0.0, 1e-3),
+        (1.0, 1e-3, 1e-4),
+        (2.0, 3e-3, 0.03),
+        (4.0, 1e-4, 1e-5),
+    ] {
+        let gauss = mu(&model(psi, theta, HeightDistribution::Gaussian), f_star);
+        for (sk, k) in [(1e-9, 3.0), (0.0, 3.0 + 1e-9), (0.0, 3.0 - 1e-9), (-1e-9, 3.0 + 1e-9)] {
+            let near = mu(&model(psi, theta, HeightDistribution::pearson(sk, k).unwrap()), f_star);
+            assert!(rel(near, gauss) < 2e-8, "({sk}, {k}) at psi {psi}: {near} vs {gauss}");
+        }
+    }
+}
+
+/// Curves from a non-Gaussian model keep the curve's accuracy contract.
+/// (A density bounded below is not smooth where the contact plane passes
+/// its lower end — F* ≈ 0.055 for the J-shaped (0.8, 2.5) at ψ = 1 — and a
+/// curve across that point is refused with an accuracy error.)
+#[test]
+fn curves_from_pearson_and_weibull_models_meet_the_contract() {
+    for (d, hi) in [
+        (HeightDistribution::pearson(0.0, 8.0).unwrap(), 0.1),
+        (HeightDistribution::pearson(0.8, 2.5).unwrap(), 0.04),
+        (HeightDistribution::weibull(-0.5).unwrap(), 0.1),
+    ] {
+        let m = model(1.0, 1e-3, d.clone());
+        let curve = Curve::from_model(&m, 1e-5, hi).unwrap();
+        for i in 0..60 {
+            let f = 1e-5 * (hi / 1e-5f64).powf((i as f64 + 0.37) / 60.0);
+            let want = mu(&m, f);
+            let got = curve.mu(f).unwrap();
+            assert!(rel(got, want) <= CURVE_ACCURACY, "{d:?} at F* = {f}: {got} vs {want}");
+        }
+    }
+}
+
+/// A kernel density of Gaussian samples gives about the Gaussian μ, and
+/// its moments are exactly standardised.
+#[test]
+fn an_empirical_density_of_gaussian_heights_is_close_to_the_gaussian() {
+    // Deterministic normal samples by the inverse CDF on a stratified grid.
+    let n = 20_000;
+    let heights: Vec<f64> = (0..n)
+        .map(|i| {
+            let u = (i as f64 + 0.5) / n as f64;
+            inverse_normal(u) * 3e-7 + 1e-6
+        })
+        .collect();
+    let d = HeightDistribution::empirical(&heights).unwrap();
+    let [m0, mean, var, _, _] = d.density().moments();
+    assert!((m0 - 1.0).abs() < 1e-10 && mean.abs() < 1e-10 && (var - 1.0).abs() < 1e-9);
+    let m = model(1.0, 1e-3, d);
+    let gauss = model(1.0, 1e-3, HeightDistribution::Gaussian);
+    for f in [1e-3, 1e-2] {
+        assert!(rel(mu(&m, f), mu(&gauss, f)) < 0.03, "F* = {f}");
+    }
+}
+
+/// Acklam's rational approximation of the normal quantile (1e-9 relative).
+#[allow(clippy::excessive_precision)]
+fn inverse_normal(p: f64) -> f64 {
+    let a = [
+        -3.969683028665376e1,
+        2.209460984245205e2,
+        -2.759285104469687e2,
+        1.383577518672690e2,
+        -3.066479806614716e1,
+        2.506628277459239,
+    ];
+    let b = [
+        -5.447609879822406e1,
+        1.615858368580409e2,
+        -1.556989798598866e2,
+        6.680131188771972e1,
+        -1.328068155288572e1,
+    ];
+    let c = [
+        -7.784894002430293e-3,
+        -3.223964580411365e-1,
+        -2.400758277161838,
+        -2.549732539343734,
+        4.374664141464968,
+        2.938163982698783,
+    ];
+    let d = [
+        7.784695709041462e-3,
+        3.224671290700398e-1,
+        2.445134137142996,
+        3.754408661907416,
+    ];
+    let tail = |q: f64| {
+        (((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q + c[5])
+            / ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1.0)
+    };
+    if p < 0.02425 {
+        tail((-2.0 * p.ln()).sqrt())
+    } else if p > 1.0 - 0.02425 {
+        -tail((-2.0 * (1.0 - p).ln()).sqrt())
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q
+            / (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1.0)
+    }
+}
+
+/// A table for a Pearson distribution records it (format version 2),
+/// answers like its model, and is told apart from a Gaussian one; a
+/// Gaussian table is still version 1.
+#[test]
+fn a_pearson_table_records_its_distribution() {
+    let d = HeightDistribution::pearson(-0.5, 3.375).unwrap();
+    let options = BuildOptions {
+        nodes: [9, 9, 13],
+        psi: (0.8, 2.0),
+        theta: (0.0, 0.002),
+        f_star: (1e-4, 0.05),
+        samples: 100,
+        tolerance: 0.05,
+        precision: Precision::F64,
+        constants: Constants::default().distribution(d.clone()),
+        ..BuildOptions::default()
+    };
+    let bytes = build(&options, &()).unwrap().bytes;
+    assert_eq!(bytes[8..12], 2u32.to_le_bytes());
+    let table = Table::from_bytes(&bytes).unwrap();
+    assert_eq!(table.domain().constants.distribution, d);
+    let exact = mu(&model(1.3, 1e-3, d), 3e-3);
+    assert!(rel(table.mu(1.3, 1e-3, 3e-3).unwrap(), exact) < 0.05);
+    let json = serde_json::to_value(table.info()).unwrap();
+    assert_eq!(json["distribution"], "pearson");
+    assert_eq!(json["kurtosis"], 3.375);
+    assert_eq!(
+        Table::embedded().domain().constants.distribution,
+        HeightDistribution::Gaussian
+    );
+    assert_eq!(include_bytes!("../../tables/default.kft")[8..12], 1u32.to_le_bytes());
+}
+
+/// Inadmissible distributions are errors naming the bound, never panics.
+#[test]
+fn bad_distributions_are_refused_naming_the_bound() {
+    for (sk, k, name) in [
+        (0.5, 1.25, "kurtosis"),
+        (0.0, 1.0, "kurtosis"),
+        (f64::NAN, 3.0, "skewness"),
+        (0.0, f64::NAN, "kurtosis"),
+        (0.0, f64::INFINITY, "kurtosis"),
+        (9.0, 100.0, "skewness"),
+    ] {
+        let e = HeightDistribution::pearson(sk, k).unwrap_err();
+        assert_eq!(e.name, name, "({sk}, {k})");
+        let p = Params::new(1.0, 1e-3).distribution(HeightDistribution::Pearson {
+            skewness: sk,
+            kurtosis: k,
+        });
+        assert!(Model::new(p).is_err());
+    }
+    assert!(HeightDistribution::pearson(0.5, 1.2500001).is_ok());
+    for sk in [-1.14, 2.01, f64::NAN] {
+        assert_eq!(HeightDistribution::weibull(sk).unwrap_err().name, "skewness");
+    }
+    assert!(HeightDistribution::empirical(&[1.0; 500])
+        .unwrap_err()
+        .to_string()
+        .contains("constant"));
+    assert!(HeightDistribution::empirical(&(0..99).map(f64::from).collect::<Vec<_>>()).is_err());
+    let mut h: Vec<f64> = (0..200).map(f64::from).collect();
+    h[3] = f64::INFINITY;
+    assert!(HeightDistribution::empirical(&h).is_err());
+    h[3] = f64::NAN; // a missing point is skipped
+    assert_eq!(HeightDistribution::empirical(&h).unwrap().family(), "empirical");
+    let options = BuildOptions {
+        constants: Constants::default().distribution(HeightDistribution::empirical(&h[..150]).unwrap()),
+        ..BuildOptions::default()
+    };
+    assert!(options.validate().unwrap_err().to_string().contains("empirical"));
+}

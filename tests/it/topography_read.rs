@@ -1,0 +1,904 @@
+//! The surface readers (feature `topography`): X3P round trips through the
+//! library's writer for every z data type, profiles, Δx ≠ Δy and the
+//! validity mask; X3P files built here independently (a stored zip and
+//! main.xml of our own); `.npy` in both byte orders and memory orders;
+//! text columns, matrices and `x y z` grids; and every kind of bad file
+//! giving its error, never a panic.
+
+use std::path::Path;
+
+use ke_friction::topography::{read_file, write_x3p, Format, ReadError, ReadOptions, Topography};
+
+use crate::common::TempDir;
+
+fn opts() -> ReadOptions {
+    ReadOptions::default()
+}
+
+/// A deterministic map with structure in both directions, heights ~1 µm.
+fn sample_map(nx: usize, ny: usize, dx: f64, dy: f64) -> Topography {
+    let heights = (0..nx * ny)
+        .map(|k| {
+            let (i, j) = ((k % nx) as f64, (k / nx) as f64);
+            1e-6 * ((0.7 * i).sin() + 0.3 * (1.3 * j).cos() + 0.01 * i * j / (nx * ny) as f64)
+        })
+        .collect();
+    Topography::map(heights, nx, ny, dx, dy).unwrap()
+}
+
+/// Both NaN or equal within `tol`.
+fn assert_heights(got: &[f64], want: &[f64], tol: f64) {
+    assert_eq!(got.len(), want.len());
+    for (k, (g, w)) in got.iter().zip(want).enumerate() {
+        assert!(
+            (g.is_nan() && w.is_nan()) || (g - w).abs() <= tol,
+            "point {k}: got {g:e}, want {w:e} (tol {tol:e})"
+        );
+    }
+}
+
+fn read_err(path: &Path, options: &ReadOptions) -> ReadError {
+    let err = read_file(path, options).expect_err("the file must be refused");
+    let message = err.to_string();
+    let name = path.file_name().unwrap().to_str().unwrap();
+    assert!(message.contains(name), "message does not name the file: {message}");
+    assert_eq!(err.path(), path);
+    assert!(!err.is_io(), "{message}");
+    err
+}
+
+// ---------------------------------------------------------------- X3P
+
+/// The tolerance of a round trip through z data type `z` for heights
+/// spanning `range`.
+fn tolerance(z: char, range: f64, max: f64) -> f64 {
+    match z {
+        'D' => 0.0,
+        'F' => max * f64::from(f32::EPSILON),
+        'L' => 0.51 * range / (f64::from(u32::MAX)) + 1e-15 * max,
+        _ => 0.51 * range / f64::from(u16::MAX) + 1e-15 * max,
+    }
+}
+
+fn range_of(h: &[f64]) -> (f64, f64) {
+    let finite = h.iter().filter(|v| !v.is_nan());
+    let lo = finite.clone().fold(f64::INFINITY, |a, &b| a.min(b));
+    let hi = finite.fold(f64::NEG_INFINITY, |a, &b| a.max(b));
+    (hi - lo, lo.abs().max(hi.abs()))
+}
+
+#[test]
+fn x3p_round_trip_every_z_type_with_dx_ne_dy() {
+    let dir = TempDir::new("x3p-round-trip");
+    let t = sample_map(37, 23, 0.5e-6, 1.25e-6);
+    let (range, max) = range_of(t.heights());
+    for z in ['D', 'F', 'L', 'I'] {
+        let path = dir.join(&format!("map-{z}.x3p"));
+        write_x3p(&t, &path, z).unwrap();
+        let r = read_file(&path, &opts()).unwrap();
+        assert_eq!(
+            (r.nx(), r.ny(), r.dx(), r.dy()),
+            (37, 23, 0.5e-6, Some(1.25e-6)),
+            "type {z}"
+        );
+        assert!(!r.is_profile());
+        assert_heights(r.heights(), t.heights(), tolerance(z, range, max));
+        if z == 'D' {
+            assert_eq!(r, t, "D is exact");
+        }
+    }
+}
+
+#[test]
+fn x3p_profiles_and_masks() {
+    let dir = TempDir::new("x3p-profile-mask");
+    let mut h: Vec<f64> = (0..101).map(|i| 2e-7 * (0.2 * f64::from(i)).sin() - 3e-6).collect();
+    h[0] = f64::NAN;
+    h[50] = f64::NAN;
+    h[100] = f64::NAN;
+    let profile = Topography::profile(h, 0.1e-6).unwrap();
+    let mut m = sample_map(9, 7, 1e-6, 2e-6).heights().to_vec();
+    for k in [0, 8, 9, 31, 62] {
+        m[k] = f64::NAN;
+    }
+    let map = Topography::map(m, 9, 7, 1e-6, 2e-6).unwrap();
+    for t in [profile, map] {
+        let (range, max) = range_of(t.heights());
+        for z in ['D', 'F', 'L', 'I'] {
+            let path = dir.join(&format!("masked-{z}.x3p"));
+            write_x3p(&t, &path, z).unwrap();
+            let r = read_file(&path, &opts()).unwrap();
+            assert_eq!((r.nx(), r.ny(), r.dx(), r.dy()), (t.nx(), t.ny(), t.dx(), t.dy()));
+            assert_eq!(r.is_profile(), t.is_profile());
+            assert_heights(r.heights(), t.heights(), tolerance(z, range, max));
+        }
+    }
+}
+
+#[test]
+fn x3p_writer_refuses_bad_arguments() {
+    let dir = TempDir::new("x3p-writer-args");
+    let t = sample_map(3, 3, 1.0, 1.0);
+    let err = write_x3p(&t, &dir.join("a.x3p"), 'Q').unwrap_err();
+    assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+    let big = Topography::profile(vec![1e300, 0.0], 1.0).unwrap();
+    let err = write_x3p(&big, &dir.join("b.x3p"), 'F').unwrap_err();
+    assert_eq!(err.kind(), std::io::ErrorKind::InvalidInput);
+    // A constant (and an all-missing) surface quantises without trouble.
+    for h in [vec![2e-6; 4], vec![f64::NAN; 4]] {
+        let t = Topography::profile(h.clone(), 1e-6).unwrap();
+        write_x3p(&t, &dir.join("c.x3p"), 'I').unwrap();
+        let r = read_file(&dir.join("c.x3p"), &opts()).unwrap();
+        assert_heights(r.heights(), &h, 1e-18);
+    }
+}
+
+/// An independent X3P encoder: `main.xml` from a template with fields to
+/// override, and an uncompressed (stored) zip.
+struct X3p {
+    feature: &'static str,
+    z_type: &'static str,
+    cx: &'static str,
+    cy: &'static str,
+    cz_extra: String,
+    size: (u64, u64, u64),
+    md5: Option<String>,
+    valid_link: Option<&'static str>,
+    data: Vec<u8>,
+    valid: Option<Vec<u8>>,
+}
+
+impl X3p {
+    /// A 3 × 2 SUR map of f64, x interval 1 µm, y 2 µm.
+    fn new(values: &[f64]) -> X3p {
+        X3p {
+            feature: "SUR",
+            z_type: "D",
+            cx: "<AxisType>I</AxisType><DataType>D</DataType><Increment>1e-6</Increment><Offset>0</Offset>",
+            cy: "<AxisType>I</AxisType><DataType>D</DataType><Increment>2.0E-6</Increment><Offset>0</Offset>",
+            cz_extra: String::new(),
+            size: (3, 2, 1),
+            md5: None,
+            valid_link: None,
+            data: values.iter().flat_map(|v| v.to_le_bytes()).collect(),
+            valid: None,
+        }
+    }
+
+    fn xml(&self) -> String {
+        let md5 = self
+            .md5
+            .as_ref()
+            .map(|m| format!("<MD5ChecksumPointData>{m}</MD5ChecksumPointData>"))
+            .unwrap_or_default();
+        let valid = self
+            .valid_link
+            .map(|l| format!("<ValidPointsLink>{l}</ValidPointsLink>"))
+            .unwrap_or_default();
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?>
+<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2">
+ <Record1><Revision>ISO5436 - 2000</Revision><FeatureType>{}</FeatureType>
+  <Axes><CX>{}</CX><CY>{}</CY><CZ><AxisType>A</AxisType><DataType>{}</DataType>{}</CZ></Axes></Record1>
+ <Record2><Date>2024-01-01T00:00:00+00:00</Date></Record2>
+ <Record3><MatrixDimension><SizeX>{}</SizeX><SizeY>{}</SizeY><SizeZ>{}</SizeZ></MatrixDimension>
+  <DataLink><PointDataLink>bindata/data.bin</PointDataLink>{md5}{valid}</DataLink></Record3>
+ <Record4><ChecksumFile>md5checksum.hex</ChecksumFile></Record4>
+</p:ISO5436_2>
+"#,
+            self.feature, self.cx, self.cy, self.z_type, self.cz_extra, self.size.0, self.size.1, self.size.2
+        )
+    }
+
+    fn bytes(&self) -> Vec<u8> {
+        let xml = self.xml();
+        let mut members: Vec<(&str, &[u8])> = vec![("main.xml", xml.as_bytes()), ("bindata/data.bin", &self.data)];
+        if let Some(valid) = &self.valid {
+            members.push(("bindata/valid.bin", valid));
+        }
+        stored_zip(&members)
+    }
+
+    fn write(&self, dir: &TempDir, name: &str) -> std::path::PathBuf {
+        let path = dir.join(name);
+        std::fs::write(&path, self.bytes()).unwrap();
+        path
+    }
+}
+
+/// A zip archive of uncompressed (stored) members.
+fn stored_zip(members: &[(&str, &[u8])]) -> Vec<u8> {
+    let mut out = Vec::new();
+    let mut central = Vec::new();
+    for (name, data) in members {
+        let offset = out.len() as u32;
+        let crc = crc32fast::hash(data);
+        let fields = |v: &mut Vec<u8>| {
+            v.extend(20u16.to_le_bytes()); // version needed
+            v.extend(0u16.to_le_bytes()); // flags
+            v.extend(0u16.to_le_bytes()); // stored
+            v.extend(0u16.to_le_bytes()); // time
+            v.extend(0x21u16.to_le_bytes()); // date: 1980-01-01
+            v.extend(crc.to_le_bytes());
+            v.extend((data.len() as u32).to_le_bytes());
+            v.extend((data.len() as u32).to_le_bytes());
+            v.extend((name.len() as u16).to_le_bytes());
+            v.extend(0u16.to_le_bytes()); // extra
+        };
+        out.extend(0x0403_4b50u32.to_le_bytes());
+        fields(&mut out);
+        out.extend(name.as_bytes());
+        out.extend(*data);
+        central.extend(0x0201_4b50u32.to_le_bytes());
+        central.extend(20u16.to_le_bytes()); // made by
+        fields(&mut central);
+        central.extend([0; 8]); // comment length, disk, internal, external attributes (part)
+        central.extend([0; 2]);
+        central.extend(offset.to_le_bytes());
+        central.extend(name.as_bytes());
+    }
+    let (cd_offset, cd_len) = (out.len() as u32, central.len() as u32);
+    out.extend(central);
+    out.extend(0x0605_4b50u32.to_le_bytes());
+    out.extend([0; 4]);
+    out.extend((members.len() as u16).to_le_bytes());
+    out.extend((members.len() as u16).to_le_bytes());
+    out.extend(cd_len.to_le_bytes());
+    out.extend(cd_offset.to_le_bytes());
+    out.extend([0; 2]);
+    out
+}
+
+#[test]
+fn x3p_independent_encoder() {
+    let dir = TempDir::new("x3p-independent");
+    let v = [1e-6, -2e-6, 3.5e-6, f64::NAN, 0.0, 7e-7];
+    // Plain: NaN in float data is missing; Δx and Δy from the axes.
+    let path = X3p::new(&v).write(&dir, "plain.x3p");
+    let t = read_file(&path, &opts()).unwrap();
+    assert_eq!((t.nx(), t.ny(), t.dx(), t.dy()), (3, 2, 1e-6, Some(2e-6)));
+    assert_heights(t.heights(), &v, 0.0);
+
+    // The z increment and offset apply to float data too.
+    let mut f = X3p::new(&v);
+    f.cz_extra = "<Increment>2</Increment><Offset>1e-6</Offset>".into();
+    let t = read_file(&f.write(&dir, "scaled.x3p"), &opts()).unwrap();
+    let want: Vec<f64> = v.iter().map(|h| 1e-6 + 2.0 * h).collect();
+    assert_heights(t.heights(), &want, 0.0);
+
+    // Integer types: z = offset + increment · value; the mask (bit per
+    // point, LSB first, 1 = valid) makes points missing.
+    let raw: [i16; 6] = [-32768, -1, 0, 1, 32767, 5];
+    let mut x = X3p::new(&[]);
+    x.z_type = "I";
+    x.data = raw.iter().flat_map(|v| v.to_le_bytes()).collect();
+    x.cz_extra = "<Increment>1e-9</Increment><Offset>-2e-6</Offset>".into();
+    x.valid_link = Some("bindata/valid.bin");
+    x.valid = Some(vec![0b0011_1011]);
+    let t = read_file(&x.write(&dir, "int16.x3p"), &opts()).unwrap();
+    let want: Vec<f64> = raw
+        .iter()
+        .enumerate()
+        .map(|(k, &r)| if k == 2 { f64::NAN } else { -2e-6 + 1e-9 * f64::from(r) })
+        .collect();
+    assert_heights(t.heights(), &want, 0.0);
+
+    let raw: [i32; 6] = [i32::MIN, -7, 0, 9, i32::MAX, 123_456];
+    x.z_type = "L";
+    x.data = raw.iter().flat_map(|v| v.to_le_bytes()).collect();
+    x.valid = Some(vec![0b1111_1110]); // point 0 missing, padding bits ignored
+    x.valid_link = None; // bindata/valid.bin is used without a link too
+    let t = read_file(&x.write(&dir, "int32.x3p"), &opts()).unwrap();
+    let want: Vec<f64> = raw
+        .iter()
+        .enumerate()
+        .map(|(k, &r)| if k == 0 { f64::NAN } else { -2e-6 + 1e-9 * f64::from(r) })
+        .collect();
+    assert_heights(t.heights(), &want, 0.0);
+
+    let raw: [f32; 6] = [1.5e-6, -0.25e-6, f32::NAN, 0.0, 3e-6, 1e-7];
+    let mut x = X3p::new(&[]);
+    x.z_type = "F";
+    x.data = raw.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let t = read_file(&x.write(&dir, "f32.x3p"), &opts()).unwrap();
+    let want: Vec<f64> = raw.iter().map(|&r| f64::from(r)).collect();
+    assert_heights(t.heights(), &want, 0.0);
+
+    // A profile; without CY.
+    let mut p = X3p::new(&[1.0, 2.0, 3.0]);
+    p.feature = "PRF";
+    p.size = (3, 1, 1);
+    p.cy = "<AxisType>I</AxisType>";
+    let t = read_file(&p.write(&dir, "profile.x3p"), &opts()).unwrap();
+    assert!(t.is_profile());
+    assert_eq!((t.nx(), t.dx(), t.heights()), (3, 1e-6, &[1.0, 2.0, 3.0][..]));
+
+    // No increment in the file: the options give it, or the error says so.
+    let mut n = X3p::new(&v);
+    n.cy = "<AxisType>I</AxisType>";
+    let path = n.write(&dir, "no-dy.x3p");
+    match read_err(&path, &opts()) {
+        ReadError::NeedInterval { name: "dy", .. } => {}
+        e => panic!("{e}"),
+    }
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            dy: Some(3e-6),
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert_eq!(t.dy(), Some(3e-6));
+    // An option contradicting the file is an error; an agreeing one is fine.
+    let path = X3p::new(&v).write(&dir, "with-dx.x3p");
+    assert!(read_file(
+        &path,
+        &ReadOptions {
+            dx: Some(1e-6),
+            ..opts()
+        }
+    )
+    .is_ok());
+    match read_err(
+        &path,
+        &ReadOptions {
+            dx: Some(1.1e-6),
+            ..opts()
+        },
+    ) {
+        ReadError::Conflict { name: "dx", .. } => {}
+        e => panic!("{e}"),
+    }
+}
+
+#[test]
+fn x3p_checksums() {
+    let dir = TempDir::new("x3p-md5");
+    // The MD5 of 48 zero bytes (from Python's hashlib), either case.
+    let md5 = "b203621a65475445e6fcdca717c667b5";
+    let mut x = X3p::new(&[0.0; 6]);
+    x.md5 = Some(md5.into());
+    assert!(read_file(&x.write(&dir, "right.x3p"), &opts()).is_ok());
+    x.md5 = Some(md5.to_uppercase());
+    assert!(read_file(&x.write(&dir, "right-upper.x3p"), &opts()).is_ok());
+    // The library's writer's checksum.
+    let t = Topography::profile(vec![1e-6, 2e-6], 1e-6).unwrap();
+    let good = dir.join("good.x3p");
+    write_x3p(&t, &good, 'D').unwrap();
+    assert!(read_file(&good, &opts()).is_ok());
+    // One byte of data changed: refused.
+    x.data[3] ^= 1;
+    match read_err(&x.write(&dir, "wrong.x3p"), &opts()) {
+        ReadError::Checksum {
+            member,
+            expected,
+            actual,
+            ..
+        } => {
+            assert_eq!(member, "bindata/data.bin");
+            assert_eq!(expected, md5.to_uppercase());
+            assert_ne!(actual, md5);
+        }
+        e => panic!("{e}"),
+    }
+}
+
+#[test]
+fn x3p_bad_files() {
+    let dir = TempDir::new("x3p-bad");
+    let v = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+    let check = |x: &X3p, name: &str, want: fn(&ReadError) -> bool| {
+        let path = x.write(&dir, name);
+        let err = read_err(&path, &opts());
+        assert!(want(&err), "{name}: {err}");
+    };
+    // Sizes that do not match the data.
+    let mut x = X3p::new(&v);
+    x.size = (4, 2, 1);
+    check(&x, "size.x3p", |e| matches!(e, ReadError::Size { .. }));
+    x.size = (0, 2, 1);
+    check(&x, "zero.x3p", |e| matches!(e, ReadError::Size { .. }));
+    // Sizes declaring more than the bound, refused before allocating.
+    x.size = (1_000_000, 1_000_000, 1);
+    check(&x, "huge.x3p", |e| matches!(e, ReadError::TooLarge { .. }));
+    x.size = (u64::MAX, 3, 1);
+    check(&x, "overflow.x3p", |e| matches!(e, ReadError::TooLarge { .. }));
+    // A mask of the wrong size.
+    let mut x = X3p::new(&v);
+    x.valid = Some(vec![0xff, 0xff]);
+    check(&x, "mask-size.x3p", |e| matches!(e, ReadError::Size { .. }));
+    // A mask link to no member.
+    x.valid = None;
+    x.valid_link = Some("bindata/nothere.bin");
+    check(&x, "mask-link.x3p", |e| matches!(e, ReadError::Archive { .. }));
+    // Unsupported types.
+    let mut x = X3p::new(&v);
+    x.z_type = "C";
+    check(&x, "dtype.x3p", |e| matches!(e, ReadError::Unsupported { .. }));
+    let mut x = X3p::new(&v);
+    x.feature = "PCL";
+    check(&x, "pcl.x3p", |e| matches!(e, ReadError::Unsupported { .. }));
+    let mut x = X3p::new(&v);
+    x.cx = "<AxisType>A</AxisType><DataType>D</DataType>";
+    check(&x, "absolute-x.x3p", |e| matches!(e, ReadError::Unsupported { .. }));
+    let mut x = X3p::new(&v);
+    x.size = (3, 1, 2);
+    check(&x, "volume.x3p", |e| matches!(e, ReadError::Unsupported { .. }));
+    // A profile of two rows.
+    let mut x = X3p::new(&v);
+    x.feature = "PRF";
+    check(&x, "prf-rows.x3p", |e| matches!(e, ReadError::Size { .. }));
+    // Bad XML values.
+    let mut x = X3p::new(&v);
+    x.cz_extra = "<Increment>abc</Increment>".into();
+    check(&x, "increment.x3p", |e| matches!(e, ReadError::Xml { .. }));
+    x.cz_extra = "<Increment>0</Increment>".into();
+    check(&x, "zero-increment.x3p", |e| matches!(e, ReadError::Xml { .. }));
+    let mut x = X3p::new(&v);
+    x.cx = "<AxisType>I</AxisType><Increment>-1e-6</Increment>";
+    check(&x, "negative-dx.x3p", |e| matches!(e, ReadError::Topography { .. }));
+    // An infinite height.
+    let x = X3p::new(&[1.0, f64::INFINITY, 0.0, 0.0, 0.0, 0.0]);
+    check(&x, "infinite.x3p", |e| matches!(e, ReadError::Topography { .. }));
+
+    // Not XML; no main.xml; not a zip.
+    let path = dir.join("not-xml.x3p");
+    std::fs::write(&path, stored_zip(&[("main.xml", b"<a><b></a>")])).unwrap();
+    assert!(matches!(read_err(&path, &opts()), ReadError::Xml { .. }));
+    std::fs::write(&path, stored_zip(&[("other.xml", b"<a/>")])).unwrap();
+    assert!(matches!(read_err(&path, &opts()), ReadError::Archive { .. }));
+    std::fs::write(&path, b"just text").unwrap();
+    assert!(matches!(read_err(&path, &opts()), ReadError::Archive { .. }));
+
+    // Truncated archives (the library's writer, deflated): refused, at
+    // every length.
+    let t = sample_map(4, 3, 1e-6, 1e-6);
+    let good = dir.join("good.x3p");
+    write_x3p(&t, &good, 'D').unwrap();
+    let bytes = std::fs::read(&good).unwrap();
+    let cut = dir.join("truncated.x3p");
+    std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+    assert!(matches!(read_err(&cut, &opts()), ReadError::Archive { .. }));
+    // (New files: rewriting one in place can wait for the disk.)
+    for len in 0..bytes.len() {
+        let cut = dir.join(&format!("cut-{len}.x3p"));
+        std::fs::write(&cut, &bytes[..len]).unwrap();
+        read_err(&cut, &opts());
+    }
+    // Damaged bytes: an error or (a flip in a name or a date) a read, never
+    // a panic; a flip in the point data is caught by the CRC or the MD5.
+    for k in 0..bytes.len() {
+        let flipped = dir.join(&format!("flip-{k}.x3p"));
+        let mut b = bytes.clone();
+        b[k] ^= 0x20;
+        std::fs::write(&flipped, &b).unwrap();
+        if let Ok(r) = read_file(&flipped, &opts()) {
+            assert_eq!(r.heights().len(), 12, "flip at {k}");
+        }
+    }
+    // The byte bound.
+    let small = ReadOptions {
+        max_bytes: 100,
+        ..opts()
+    };
+    assert!(matches!(read_err(&good, &small), ReadError::TooLarge { .. }));
+}
+
+// ---------------------------------------------------------------- .npy
+
+/// A `.npy` file (format 1.0).
+fn npy(descr: &str, fortran: bool, shape: &[usize], data: &[u8]) -> Vec<u8> {
+    let shape = match shape {
+        [n] => format!("({n},)"),
+        _ => format!(
+            "({})",
+            shape.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")
+        ),
+    };
+    let order = if fortran { "True" } else { "False" };
+    let mut header = format!("{{'descr': '{descr}', 'fortran_order': {order}, 'shape': {shape}, }}");
+    while (10 + header.len() + 1) % 64 != 0 {
+        header.push(' ');
+    }
+    header.push('\n');
+    let mut out = b"\x93NUMPY\x01\x00".to_vec();
+    out.extend((header.len() as u16).to_le_bytes());
+    out.extend(header.as_bytes());
+    out.extend(data);
+    out
+}
+
+#[test]
+fn npy_orders_and_types() {
+    let dir = TempDir::new("npy");
+    let (nx, ny) = (5, 3);
+    // Row-major heights: h[j][i] = j·10 + i (µm), one missing.
+    let mut want: Vec<f64> = (0..nx * ny).map(|k| 1e-6 * ((k / nx) * 10 + k % nx) as f64).collect();
+    want[7] = f64::NAN;
+    let options = ReadOptions {
+        dx: Some(1e-6),
+        dy: Some(2e-6),
+        ..opts()
+    };
+    let fortran: Vec<f64> = (0..nx * ny).map(|k| want[(k % ny) * nx + k / ny]).collect();
+    let cases: Vec<(&str, &str, bool, Vec<u8>)> = vec![
+        (
+            "c-f8-le",
+            "<f8",
+            false,
+            want.iter().flat_map(|v| v.to_le_bytes()).collect(),
+        ),
+        (
+            "c-f8-be",
+            ">f8",
+            false,
+            want.iter().flat_map(|v| v.to_be_bytes()).collect(),
+        ),
+        (
+            "c-f4-le",
+            "<f4",
+            false,
+            want.iter().flat_map(|&v| (v as f32).to_le_bytes()).collect(),
+        ),
+        (
+            "c-f4-be",
+            ">f4",
+            false,
+            want.iter().flat_map(|&v| (v as f32).to_be_bytes()).collect(),
+        ),
+        (
+            "f-f8-le",
+            "<f8",
+            true,
+            fortran.iter().flat_map(|v| v.to_le_bytes()).collect(),
+        ),
+        (
+            "f-f4-be",
+            ">f4",
+            true,
+            fortran.iter().flat_map(|&v| (v as f32).to_be_bytes()).collect(),
+        ),
+    ];
+    for (name, descr, fortran, data) in cases {
+        let path = dir.join(&format!("{name}.npy"));
+        std::fs::write(&path, npy(descr, fortran, &[ny, nx], &data)).unwrap();
+        let t = read_file(&path, &options).unwrap();
+        assert_eq!((t.nx(), t.ny(), t.dx(), t.dy()), (nx, ny, 1e-6, Some(2e-6)), "{name}");
+        let tol = if descr.ends_with('4') {
+            3e-5 * f64::from(f32::EPSILON)
+        } else {
+            0.0
+        };
+        assert_heights(t.heights(), &want, tol);
+    }
+    // A 1-D array is a profile; z_unit scales it.
+    let path = dir.join("profile.npy");
+    let data: Vec<u8> = [1.0f64, 2.0, 3.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+    std::fs::write(&path, npy("<f8", false, &[3], &data)).unwrap();
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            dx: Some(1e-7),
+            z_unit: 1e-6,
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert!(t.is_profile());
+    assert_eq!(t.heights(), &[1e-6, 2e-6, 3e-6]);
+    // No interval: the error names the option.
+    match read_err(&path, &opts()) {
+        ReadError::NeedInterval { name: "dx", .. } => {
+            assert!(read_err(&path, &opts()).to_string().contains("ReadOptions::dx"))
+        }
+        e => panic!("{e}"),
+    }
+    // The format option overrides the extension.
+    let renamed = dir.join("profile.dat");
+    std::fs::copy(&path, &renamed).unwrap();
+    let t = read_file(
+        &renamed,
+        &ReadOptions {
+            dx: Some(1e-7),
+            format: Some(Format::Npy),
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert_eq!(t.nx(), 3);
+}
+
+#[test]
+fn npy_bad_files() {
+    let dir = TempDir::new("npy-bad");
+    let options = ReadOptions {
+        dx: Some(1.0),
+        dy: Some(1.0),
+        ..opts()
+    };
+    let data: Vec<u8> = (0..6).flat_map(|v| f64::from(v).to_le_bytes()).collect();
+    let check = |name: &str, bytes: Vec<u8>, want: fn(&ReadError) -> bool| {
+        let path = dir.join(name);
+        std::fs::write(&path, bytes).unwrap();
+        let err = read_err(&path, &options);
+        assert!(want(&err), "{name}: {err}");
+    };
+    check("int.npy", npy("<i4", false, &[6], &data[..24]), |e| {
+        matches!(e, ReadError::Unsupported { .. })
+    });
+    check("complex.npy", npy("<c16", false, &[3], &data), |e| {
+        matches!(e, ReadError::Unsupported { .. })
+    });
+    check("3d.npy", npy("<f8", false, &[1, 2, 3], &data), |e| {
+        matches!(e, ReadError::Unsupported { .. })
+    });
+    check("short.npy", npy("<f8", false, &[2, 4], &data), |e| {
+        matches!(e, ReadError::Size { .. })
+    });
+    check("long.npy", npy("<f8", false, &[5], &data), |e| {
+        matches!(e, ReadError::Size { .. })
+    });
+    check("huge.npy", npy("<f8", false, &[1 << 40, 1 << 40], &data), |e| {
+        matches!(e, ReadError::Size { .. })
+    });
+    check("empty.npy", npy("<f8", false, &[0], &[]), |e| {
+        matches!(e, ReadError::Size { .. })
+    });
+    check("magic.npy", b"NUMPY\x01\x00".to_vec(), |e| {
+        matches!(e, ReadError::Npy { .. })
+    });
+    let mut bad = npy("<f8", false, &[6], &data);
+    bad[20] = b'#';
+    check("header.npy", bad, |e| matches!(e, ReadError::Npy { .. }));
+    let mut infinite = data.clone();
+    infinite[..8].copy_from_slice(&f64::INFINITY.to_le_bytes());
+    check("infinite.npy", npy("<f8", false, &[6], &infinite), |e| {
+        matches!(e, ReadError::Topography { .. })
+    });
+    // Every truncation and every flipped byte: an error or a read, never
+    // a panic.
+    let good = npy(">f4", true, &[2, 3], &data[..24]);
+    for len in 0..good.len() {
+        let path = dir.join(&format!("cut-{len}.npy"));
+        std::fs::write(&path, &good[..len]).unwrap();
+        read_err(&path, &options);
+    }
+    for k in 0..good.len() {
+        let path = dir.join(&format!("flip-{k}.npy"));
+        let mut b = good.clone();
+        b[k] ^= 0x41;
+        std::fs::write(&path, &b).unwrap();
+        let _ = read_file(&path, &options);
+    }
+}
+
+// ---------------------------------------------------------------- text
+
+fn write_text(dir: &TempDir, name: &str, text: &str) -> std::path::PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn text_column_matrix_and_pairs() {
+    let dir = TempDir::new("text");
+    // One column: a profile; comments, blank lines, nan.
+    let path = write_text(&dir, "col.txt", "# heights (um)\n1.5\n\n-2\nnan\n3e-1\n");
+    let options = ReadOptions {
+        dx: Some(0.5e-6),
+        z_unit: 1e-6,
+        ..opts()
+    };
+    let t = read_file(&path, &options).unwrap();
+    assert!(t.is_profile());
+    assert_heights(t.heights(), &[1.5e-6, -2e-6, f64::NAN, 0.3e-6], 1e-21);
+    // A matrix, white space or commas: rows = y.
+    let options = ReadOptions {
+        dx: Some(1e-6),
+        dy: Some(2e-6),
+        ..opts()
+    };
+    for (name, text) in [
+        ("m.txt", "1 2 3 4\n5 6 7 8\n"),
+        ("m.csv", "1,2,3,4\r\n5, 6,7 ,8\r\n"),
+        ("m.dat", "\u{feff}1;2;3;4\n\t5\t6\t7\t8"),
+    ] {
+        let t = read_file(&write_text(&dir, name, text), &options).unwrap();
+        assert_eq!((t.nx(), t.ny(), t.dx(), t.dy()), (4, 2, 1e-6, Some(2e-6)), "{name}");
+        assert_eq!(t.heights(), &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0]);
+    }
+    // Three columns read as a matrix on request.
+    let path = write_text(&dir, "three.txt", "1 2 3\n4 5 6\n");
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            format: Some(Format::Matrix),
+            ..options.clone()
+        },
+    )
+    .unwrap();
+    assert_eq!((t.nx(), t.ny()), (3, 2));
+    // A single line: a profile.
+    let t = read_file(&write_text(&dir, "line.txt", "1 2 3 4 5\n"), &options).unwrap();
+    assert!(t.is_profile());
+    assert_eq!(t.nx(), 5);
+    // `x z` pairs: a profile whose interval comes from x (xy_unit scales
+    // it), in any order.
+    let path = write_text(&dir, "xz.txt", "0.2 3\n0 1\n0.1 2\n0.3 nan\n");
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            xy_unit: 1e-6,
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert!(t.is_profile());
+    assert!((t.dx() - 0.1e-6).abs() < 1e-18);
+    assert_heights(t.heights(), &[1.0, 2.0, 3.0, f64::NAN], 0.0);
+    // A matrix needs both intervals.
+    match read_err(
+        &write_text(&dir, "need.txt", "1 2\n3 4\n5 6\n7 8\n"),
+        &ReadOptions {
+            format: Some(Format::Matrix),
+            dx: Some(1.0),
+            ..opts()
+        },
+    ) {
+        ReadError::NeedInterval { name: "dy", .. } => {}
+        e => panic!("{e}"),
+    }
+}
+
+#[test]
+fn text_xyz_grid() {
+    let dir = TempDir::new("xyz");
+    // A 4 × 3 grid, Δx = 0.1, Δy = 0.25 (µm), y descending and shuffled,
+    // coordinates printed with rounding.
+    let (nx, ny) = (4, 3);
+    let mut lines = Vec::new();
+    for j in (0..ny).rev() {
+        for i in [2, 0, 3, 1] {
+            let z = if (i, j) == (1, 1) {
+                "NaN".to_string()
+            } else {
+                format!("{}", j * 10 + i)
+            };
+            lines.push(format!("{:.7} {:.7} {z}", 0.1 * i as f64 + 5.0, 0.25 * j as f64 - 1.0));
+        }
+    }
+    let path = write_text(&dir, "grid.xyz", &format!("# x y z\n{}\n", lines.join("\n")));
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            xy_unit: 1e-6,
+            z_unit: 1e-9,
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert_eq!((t.nx(), t.ny()), (nx, ny));
+    assert!((t.dx() - 0.1e-6).abs() < 1e-15 && (t.dy().unwrap() - 0.25e-6).abs() < 1e-15);
+    let want: Vec<f64> = (0..nx * ny)
+        .map(|k| {
+            if k == nx + 1 {
+                f64::NAN
+            } else {
+                1e-9 * ((k / nx) * 10 + k % nx) as f64
+            }
+        })
+        .collect();
+    assert_heights(t.heights(), &want, 1e-24);
+
+    // Irregular grids: refused.
+    let irregular = |name: &str, text: &str| match read_err(&write_text(&dir, name, text), &opts()) {
+        ReadError::Irregular { .. } => {}
+        e => panic!("{name}: {e}"),
+    };
+    irregular(
+        "jitter.xyz",
+        "0 0 1\n1 0 1\n2.05 0 1\n3 0 1\n0 1 1\n1 1 1\n2 1 1\n3 1 1\n",
+    );
+    irregular("missing.xyz", "0 0 1\n1 0 1\n2 0 1\n0 1 1\n1 1 1\n");
+    irregular("gap.xyz", "0 0 1\n1 0 1\n3 0 1\n0 1 1\n1 1 1\n3 1 1\n");
+    irregular("duplicate.xyz", "0 0 1\n1 0 1\n1 0 2\n0 1 1\n");
+    irregular("scatter.xyz", "0 0 1\n0.3 0.9 1\n1.7 0.2 1\n2.2 1.4 1\n");
+    irregular("xz-repeat.txt", "0 1\n1 2\n1 3\n2 4\n");
+    // A single row of points: the y interval from the options.
+    let path = write_text(&dir, "row.xyz", "0 5 1\n1 5 2\n2 5 3\n");
+    assert!(matches!(
+        read_err(&path, &opts()),
+        ReadError::NeedInterval { name: "dy", .. }
+    ));
+    let t = read_file(
+        &path,
+        &ReadOptions {
+            dy: Some(1.0),
+            ..opts()
+        },
+    )
+    .unwrap();
+    assert_eq!((t.nx(), t.ny(), t.dx()), (3, 1, 1.0));
+    // NaN coordinates: refused with the line.
+    match read_err(&write_text(&dir, "nan-x.xyz", "0 0 1\nnan 0 1\n"), &opts()) {
+        ReadError::Text { line: 2, .. } => {}
+        e => panic!("{e}"),
+    }
+}
+
+#[test]
+fn text_bad_files() {
+    let dir = TempDir::new("text-bad");
+    let options = ReadOptions {
+        dx: Some(1.0),
+        dy: Some(1.0),
+        ..opts()
+    };
+    let line_of = |name: &str, text: &[u8]| -> (usize, String) {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        match read_err(&path, &options) {
+            ReadError::Text { line, detail, .. } => (line, detail),
+            e => panic!("{name}: {e}"),
+        }
+    };
+    let (line, detail) = line_of("word.txt", b"1 2\n3 4\n\n5 abc\n");
+    assert_eq!(line, 4);
+    assert!(detail.contains("abc"), "{detail}");
+    assert_eq!(line_of("inf.txt", b"1\ninf\n").0, 2);
+    assert_eq!(line_of("ragged.txt", b"1 2 3 4\n5 6 7 8\n9 10 11\n").0, 3);
+    assert_eq!(line_of("binary.txt", b"1 2\n3 4\n\xff\xfe\n").0, 3);
+    assert_eq!(line_of("commas.txt", b"# header\n,,\n").0, 2);
+    assert_eq!(line_of("commas-later.txt", b"1\n2\n ; \n").0, 3);
+    let path = write_text(&dir, "empty.txt", "# nothing\n\n");
+    assert!(matches!(read_err(&path, &options), ReadError::Size { .. }));
+    // Every byte of an `x y z` file and of a matrix replaced by a
+    // separator, a digit, a letter, a comment or a line break: an error or
+    // a read, never a panic.
+    let mut k = 0;
+    for good in [
+        "0 0 1\n1 0 2\n0 1 3\n1 1 4\n",
+        "1,2,3,4\n5,6,7,8\n",
+        "0 1\n1 2\n2 nan\n",
+    ] {
+        for at in 0..good.len() {
+            for c in [b' ', b',', b'\n', b'7', b'x', b'#', b'.', b'-'] {
+                let mut b = good.as_bytes().to_vec();
+                b[at] = c;
+                k += 1;
+                let path = dir.join(&format!("mutant-{k}.txt"));
+                std::fs::write(&path, &b).unwrap();
+                let _ = read_file(&path, &options);
+            }
+        }
+    }
+    // Bad options.
+    let path = write_text(&dir, "ok.txt", "1\n2\n");
+    let bad = ReadOptions {
+        z_unit: f64::NAN,
+        ..options.clone()
+    };
+    assert!(matches!(
+        read_err(&path, &bad),
+        ReadError::Options { name: "z_unit", .. }
+    ));
+    let bad = ReadOptions {
+        dx: Some(-1.0),
+        ..options.clone()
+    };
+    assert!(matches!(read_err(&path, &bad), ReadError::Topography { .. }));
+}
+
+#[test]
+fn io_errors_are_told_apart() {
+    let dir = TempDir::new("io");
+    let path = dir.join("does-not-exist.x3p");
+    let err = read_file(&path, &opts()).unwrap_err();
+    assert!(err.is_io(), "{err}");
+    assert!(err.to_string().contains("does-not-exist.x3p"));
+    // A directory is an I/O failure too (cannot be read).
+    let err = read_file(&dir.0, &opts()).unwrap_err();
+    assert!(err.is_io(), "{err}");
+}
