@@ -2,7 +2,7 @@
 //! in-domain parameters (ψ ∈ [0.5, 8], θ ∈ [0, 0.01], h* ∈ [0, 3],
 //! F* ∈ [1e-5, 0.1] log-uniform), fixed seed.
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use ke_friction::{Model, Params};
+use ke_friction::{Constants, HeightDistribution, Model, Params};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -42,5 +42,43 @@ fn bench_model(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_model);
+/// `at_f_star` for the same (ψ, θ, F*) points with each height
+/// distribution (MODEL.md §9): the same-run ratio to the Gaussian is the
+/// figure that matters (the issue asks ≤ 3× for Pearson).
+fn bench_distributions(c: &mut Criterion) {
+    let mut rng = ChaCha8Rng::seed_from_u64(9);
+    let points: Vec<(f64, f64, f64)> = (0..32)
+        .map(|_| {
+            let psi = 0.5 * 8f64.powf(rng.gen::<f64>());
+            let theta = 3e-3 * rng.gen::<f64>();
+            (psi, theta, 1e-4 * 500f64.powf(rng.gen::<f64>()))
+        })
+        .collect();
+    let mut group = c.benchmark_group("distribution");
+    for (name, d) in [
+        ("gaussian", HeightDistribution::Gaussian),
+        ("pearson_0_8", HeightDistribution::pearson(0.0, 8.0).unwrap()),
+        ("pearson_-0.5_3.375", HeightDistribution::pearson(-0.5, 3.375).unwrap()),
+        ("pearson_0.3_3.2", HeightDistribution::pearson(0.3, 3.2).unwrap()),
+        ("weibull_0", HeightDistribution::weibull(0.0).unwrap()),
+    ] {
+        let ms: Vec<(Model, f64)> = points
+            .iter()
+            .map(|&(psi, theta, f)| {
+                let p = Constants::default().distribution(d.clone()).at(psi, theta).unwrap();
+                (Model::new(p).unwrap(), f)
+            })
+            .collect();
+        let mut i = 0;
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                i = (i + 1) % ms.len();
+                black_box(ms[i].0.at_f_star(black_box(ms[i].1)).unwrap())
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_model, bench_distributions);
 criterion_main!(benches);

@@ -279,6 +279,15 @@ pub struct ConstantsArgs {
     /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model, MODEL.md §8).
     #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
     pub model: ModelKindArg,
+    #[command(flatten)]
+    pub heights: DistributionArgs,
+}
+
+/// The height distribution's flags (MODEL.md §9), shared by `eval`,
+/// `build`, `plot` (through [`ConstantsArgs`]) and `lookup` (to check the
+/// table's).
+#[derive(Debug, Clone, clap::Args)]
+pub struct DistributionArgs {
     /// Distribution of the asperity heights (MODEL.md §9) [default: gaussian; pearson with --skewness or --kurtosis; empirical with --heights].
     #[arg(long, value_enum)]
     pub distribution: Option<DistributionArg>,
@@ -304,65 +313,8 @@ impl ConstantsArgs {
             eps_star: self.eps_star.unwrap_or(d.eps_star),
             fit: self.fit.into(),
             kind: self.model.into(),
-            distribution: self.distribution()?,
+            distribution: self.heights.distribution()?,
         })
-    }
-
-    /// The height distribution of `--distribution`, `--skewness`,
-    /// `--kurtosis` and `--heights`, validated.
-    pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
-        let family = match (self.distribution, &self.heights) {
-            (Some(f), _) => f,
-            (None, Some(_)) => DistributionArg::Empirical,
-            (None, None) if self.skewness.is_some() || self.kurtosis.is_some() => DistributionArg::Pearson,
-            (None, None) => DistributionArg::Gaussian,
-        };
-        let refuse = |flag: &str, why: &str| Err(Failure::input(format!("{flag}: {why}")));
-        let shape = |e: ke_friction::ParamError| Failure::input(format!("{}: {e}", flag_of(e.name)));
-        if family != DistributionArg::Empirical && self.heights.is_some() {
-            return refuse("--heights", "only with --distribution empirical");
-        }
-        match family {
-            DistributionArg::Gaussian => {
-                if self.skewness.is_some_and(|v| v != 0.0) || self.kurtosis.is_some_and(|v| v != 3.0) {
-                    return refuse(
-                        if self.skewness.is_some() {
-                            "--skewness"
-                        } else {
-                            "--kurtosis"
-                        },
-                        "the gaussian distribution has skewness 0 and kurtosis 3 (use --distribution pearson)",
-                    );
-                }
-                Ok(HeightDistribution::Gaussian)
-            }
-            DistributionArg::Pearson => {
-                HeightDistribution::pearson(self.skewness.unwrap_or(0.0), self.kurtosis.unwrap_or(3.0)).map_err(shape)
-            }
-            DistributionArg::Weibull => {
-                if self.kurtosis.is_some() {
-                    return refuse(
-                        "--kurtosis",
-                        "not with --distribution weibull (its kurtosis follows from --skewness)",
-                    );
-                }
-                HeightDistribution::weibull(self.skewness.unwrap_or(0.0)).map_err(shape)
-            }
-            DistributionArg::Empirical => {
-                if let Some(flag) = [("--skewness", self.skewness), ("--kurtosis", self.kurtosis)]
-                    .into_iter()
-                    .find_map(|(flag, v)| v.map(|_| flag))
-                {
-                    return refuse(flag, "not with an empirical density (the heights give its shape)");
-                }
-                let Some(path) = &self.heights else {
-                    return refuse("--distribution", "empirical needs --heights FILE");
-                };
-                let heights = crate::heights::read(path)?;
-                HeightDistribution::empirical(&heights)
-                    .map_err(|e| Failure::input(format!("--heights {}: {e}", path.display())))
-            }
-        }
     }
 
     /// The dimensionless constants given (they conflict with SI inputs).
@@ -462,6 +414,70 @@ impl SiArgs {
             };
             Failure::input(format!("{flag}: {e}"))
         })
+    }
+}
+
+impl DistributionArgs {
+    /// The height distribution of `--distribution`, `--skewness`,
+    /// `--kurtosis` and `--heights`, validated.
+    pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
+        let family = match (self.distribution, &self.heights) {
+            (Some(f), _) => f,
+            (None, Some(_)) => DistributionArg::Empirical,
+            (None, None) if self.skewness.is_some() || self.kurtosis.is_some() => DistributionArg::Pearson,
+            (None, None) => DistributionArg::Gaussian,
+        };
+        let refuse = |flag: &str, why: &str| Err(Failure::input(format!("{flag}: {why}")));
+        let shape = |e: ke_friction::ParamError| Failure::input(format!("{}: {e}", flag_of(e.name)));
+        if family != DistributionArg::Empirical && self.heights.is_some() {
+            return refuse("--heights", "only with --distribution empirical");
+        }
+        match family {
+            DistributionArg::Gaussian => {
+                if self.skewness.is_some_and(|v| v != 0.0) || self.kurtosis.is_some_and(|v| v != 3.0) {
+                    return refuse(
+                        if self.skewness.is_some() {
+                            "--skewness"
+                        } else {
+                            "--kurtosis"
+                        },
+                        "the gaussian distribution has skewness 0 and kurtosis 3 (use --distribution pearson)",
+                    );
+                }
+                Ok(HeightDistribution::Gaussian)
+            }
+            DistributionArg::Pearson => {
+                HeightDistribution::pearson(self.skewness.unwrap_or(0.0), self.kurtosis.unwrap_or(3.0)).map_err(shape)
+            }
+            DistributionArg::Weibull => {
+                if self.kurtosis.is_some() {
+                    return refuse(
+                        "--kurtosis",
+                        "not with --distribution weibull (its kurtosis follows from --skewness)",
+                    );
+                }
+                HeightDistribution::weibull(self.skewness.unwrap_or(0.0)).map_err(shape)
+            }
+            DistributionArg::Empirical => {
+                if let Some(flag) = [("--skewness", self.skewness), ("--kurtosis", self.kurtosis)]
+                    .into_iter()
+                    .find_map(|(flag, v)| v.map(|_| flag))
+                {
+                    return refuse(flag, "not with an empirical density (the heights give its shape)");
+                }
+                let Some(path) = &self.heights else {
+                    return refuse("--distribution", "empirical needs --heights FILE");
+                };
+                let heights = crate::heights::read(path)?;
+                HeightDistribution::empirical(&heights)
+                    .map_err(|e| Failure::input(format!("--heights {}: {e}", path.display())))
+            }
+        }
+    }
+
+    /// Whether any of the flags is given.
+    pub fn any(&self) -> bool {
+        self.distribution.is_some() || self.skewness.is_some() || self.kurtosis.is_some() || self.heights.is_some()
     }
 }
 

@@ -1,7 +1,7 @@
 //! `kefric lookup`: μ, ∂μ/∂F* and h* from a table, for one point or for
 //! CSV rows streamed from stdin.
 
-use crate::args::{flag_of, load_table, parse_f64, Failure, PaperRange, SiArgs};
+use crate::args::{flag_of, load_table, parse_f64, DistributionArgs, Failure, PaperRange, SiArgs};
 use ke_friction::Shortest;
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
@@ -37,6 +37,9 @@ pub struct Args {
     pub exact: bool,
     #[command(flatten)]
     pub si: SiArgs,
+    /// The distribution the lookup is for: refused unless it is the table's.
+    #[command(flatten)]
+    pub distribution: DistributionArgs,
 }
 
 /// μ, ∂μ/∂F* and h* at one point.
@@ -60,6 +63,7 @@ fn row(table: &Table, exact: bool, psi: f64, theta: f64, f_star: f64) -> Result<
 pub fn run(args: Args) -> Result<(), Failure> {
     let table = load_table(args.table.as_deref())?;
     let table = &*table;
+    check_distribution(&args.distribution, table)?;
     if args.csv {
         if args.si.any() {
             return Err(Failure::input(
@@ -102,6 +106,41 @@ pub fn run(args: Args) -> Result<(), Failure> {
     paper.note(f_star, r.h_star);
     paper.warn();
     Ok(())
+}
+
+/// Refuses a distribution other than the table's (as the SI inputs'
+/// β, ν, ε* are refused when they are not the table's).
+fn check_distribution(flags: &DistributionArgs, table: &Table) -> Result<(), Failure> {
+    if !flags.any() {
+        return Ok(());
+    }
+    let asked = flags.distribution()?;
+    let held = &table.domain().constants.distribution;
+    if asked.is_gaussian() && held.is_gaussian() || &asked == held {
+        return Ok(());
+    }
+    let flag = if flags.heights.is_some() {
+        "--heights"
+    } else if flags.kurtosis.is_some() {
+        "--kurtosis"
+    } else if flags.skewness.is_some() {
+        "--skewness"
+    } else {
+        "--distribution"
+    };
+    let describe = |d: &ke_friction::HeightDistribution| match d.family() {
+        "gaussian" => "gaussian".to_string(),
+        family => format!(
+            "{family} (skewness {}, kurtosis {})",
+            Shortest::rounded(d.skewness()),
+            Shortest::rounded(d.kurtosis())
+        ),
+    };
+    Err(Failure::input(format!(
+        "{flag}: the table holds {} heights, not {} (build a table for them with kefric build, or use kefric eval)",
+        describe(held),
+        describe(&asked)
+    )))
 }
 
 /// ψ and θ from the flags, or from the SI inputs (whose β, ν and ε* must

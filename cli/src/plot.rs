@@ -1,5 +1,5 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
-//! map. PNG or SVG by the output file's extension.
+//! map, μ(F*) for non-Gaussian heights. PNG or SVG by the output file's extension.
 
 use crate::args::{
     check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
@@ -33,6 +33,8 @@ enum What {
     Curve(CurveArgs),
     /// A heat map of a table's relative error of μ over (ψ, F*) at one θ, against direct integration.
     TableError(TableErrorArgs),
+    /// μ against F* (1e-5 to 0.1) for Gaussian and Pearson (Sk, K) asperity heights (MODEL.md §9), with their standardised densities g(x) on a log axis below. Not part of `plot all`.
+    Distributions(DistributionsArgs),
     /// Write fig3.png … fig6.png (PNG) into a directory.
     All(AllArgs),
 }
@@ -90,6 +92,18 @@ struct TableErrorArgs {
 }
 
 #[derive(Debug, clap::Args)]
+struct DistributionsArgs {
+    /// Plasticity index ψ of the μ(F*) panel.
+    #[arg(long, value_parser = parse_f64, default_value_t = 1.0, allow_hyphen_values = true)]
+    psi: f64,
+    /// Adhesion parameter θ of the μ(F*) panel.
+    #[arg(long, value_parser = parse_f64, default_value_t = 0.001, allow_hyphen_values = true)]
+    theta: f64,
+    #[command(flatten)]
+    out: Out,
+}
+
+#[derive(Debug, clap::Args)]
 struct AllArgs {
     /// Directory for fig3.png … fig6.png (created, with its parents, if missing; existing files are replaced).
     #[arg(long, value_name = "DIR")]
@@ -123,6 +137,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let table = load_table(a.table.as_deref())?;
             let map = figures::table_error(&table, a.theta, MAP_CELLS.0, MAP_CELLS.1).map_err(failure)?;
             map.save_scaled(out, scale).map_err(failure)?;
+            wrote(out)?;
+            Ok(())
+        }
+        What::Distributions(a) => {
+            let (out, scale) = output(&a.out)?;
+            let page = figures::distributions_page(a.psi, a.theta).map_err(failure)?;
+            page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())
         }

@@ -1,19 +1,23 @@
 //! `kefric validate`: the paper's statements against this model, as Markdown.
 
 use crate::args::Failure;
+use ke_friction::paper::nongaussian::nongaussian_statements;
 use ke_friction::paper::{statements, stretches, Statement, Verdict, RULES};
 
 /// Compare this model with the statements of the paper (MODEL.md §7, §8)
 /// and print a Markdown table (`kefric validate > docs/validation.md`).
 /// Takes no options: the model's defaults (β = 0.04, ν = 0.3, ε* = 0.004)
-/// and the paper's θ and ψ, over the loads the paper plots.
+/// and the paper's θ and ψ, over the loads the paper plots. A second
+/// section sets the literature's statements on non-Gaussian heights
+/// (MODEL.md §9) against this model.
 #[derive(Debug, clap::Args)]
 pub struct Args {}
 
 /// Runs `kefric validate`.
 pub fn run(_args: Args) -> Result<(), Failure> {
     let rows = statements().map_err(|e| Failure::of("validate", e.kind(), e))?;
-    out!("{}", markdown(&rows))?;
+    let nongaussian = nongaussian_statements().map_err(|e| Failure::of("validate", e.kind(), e))?;
+    out!("{}{}", markdown(&rows), literature(&nongaussian))?;
     Ok(())
 }
 
@@ -65,6 +69,56 @@ fn markdown(rows: &[Statement]) -> String {
     let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
     out.push_str(&format!(
         "\n{} of {} statements agree, {} partly, {} differ.\n\n## Criteria\n\n",
+        count(Verdict::Agrees),
+        rows.len(),
+        count(Verdict::Partly),
+        count(Verdict::Differs)
+    ));
+    for (i, r) in rows.iter().enumerate() {
+        out.push_str(&format!("{}. {}.\n", i + 1, r.criterion));
+    }
+    out
+}
+
+/// The verdict cell of a row.
+fn verdict_cell(r: &Statement) -> String {
+    let cell = |s: &str| s.replace('|', "\\|");
+    match r.verdict {
+        Verdict::Agrees => "agrees".to_string(),
+        Verdict::Partly => match &r.holds_for {
+            Some(c) => format!("**partly**: only for {}", stretches(c)),
+            None => "**partly**".to_string(),
+        },
+        Verdict::Differs if r.note.is_empty() => "**differs**".to_string(),
+        Verdict::Differs => format!("**differs**: {}", cell(r.note)),
+    }
+}
+
+/// The section on non-Gaussian heights: the literature's statements of
+/// MODEL.md §9, their table and criteria.
+fn literature(rows: &[Statement]) -> String {
+    let cell = |s: &str| s.replace('|', "\\|");
+    let mut out = String::from(
+        "\n## Non-Gaussian heights: statements from the literature (MODEL.md §9)\n\n\
+         Statements from abstracts of other models' non-Gaussian extensions, computed \
+         with this model (β = 0.04, ν = 0.3, ε* = 0.004; Pearson or Weibull asperity \
+         heights, standardised and scaled by σ_s). Scans over loads run from F* = 1e-5 \
+         to 0.1 at 20 loads per decade.\n\n",
+    );
+    out.push_str("| # | The literature says | This model | Verdict |\n");
+    out.push_str("|---|---|---|---|\n");
+    for (i, r) in rows.iter().enumerate() {
+        out.push_str(&format!(
+            "| {} | {} | {} | {} |\n",
+            i + 1,
+            cell(r.paper),
+            cell(&r.computed),
+            verdict_cell(r)
+        ));
+    }
+    let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
+    out.push_str(&format!(
+        "\n{} of {} statements agree, {} partly, {} differ.\n\n### Criteria\n\n",
         count(Verdict::Agrees),
         rows.len(),
         count(Verdict::Partly),
