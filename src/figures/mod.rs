@@ -4,7 +4,8 @@
 //!
 //! Each figure is first computed as data ([`Page`], [`ErrorMap`]: the
 //! types of `chart.rs`), by `paper.rs` (the paper's figures) or
-//! `compare.rs` (a table against direct integration), then drawn by
+//! `compare.rs` (a table against direct integration) or `distributions.rs`
+//! (non-Gaussian heights, not one of the paper's), then drawn by
 //! `render.rs` ([`Page::save`], [`ErrorMap::save`]), the only part that
 //! knows plotters.
 //!
@@ -21,11 +22,16 @@
 
 mod chart;
 mod compare;
+mod distributions;
 mod paper;
 mod render;
 
 pub use chart::{Chart, ChartAxis, Corner, ErrorMap, LineStyle, Markers, Page, Series, Shape, BLACK_INDEX, PALETTE};
 pub use compare::{curve_page, table_error};
+pub use distributions::{
+    distribution_set, distributions_page, DENSITY_X, DENSITY_Y, DISTRIBUTIONS_F_STAR, DISTRIBUTIONS_LOADS,
+    DISTRIBUTION_SET,
+};
 pub use paper::paper_sweep;
 
 use crate::build::BuildError;

@@ -5,6 +5,8 @@
 //! [`statements`] gives one [`Statement`] per claim; `kefric validate`
 //! prints them as `docs/validation.md`, and `tests/it/paper_statements.rs`
 //! asserts MODEL.md's numbers with the same sweeps and fits.
+//! [`nongaussian::nongaussian_statements`] does the same for the
+//! literature's statements on non-Gaussian heights (MODEL.md §9).
 //!
 //! The sweeps and fits behind the numbers are in [`fits`], whose docs
 //! define how the power-law exponents are fitted.
@@ -98,6 +100,7 @@ fn short(x: f64) -> String {
 }
 
 pub mod fits;
+pub mod nongaussian;
 
 use fits::{
     adhesion_ratio_at, adhesion_ratio_crossing, exponent_n, friction_peak, holds_where, ke_over_ceb_at, plotted_loads,

@@ -239,3 +239,27 @@ fn bad_distributions_are_refused_naming_the_bound() {
     };
     assert!(options.validate().unwrap_err().to_string().contains("empirical"));
 }
+
+/// MODEL.md §9's literature statements, at single points (the full scans
+/// are `kefric validate`'s second section): Tayebi & Polycarpou's "high
+/// kurtosis and positive skewness lower μ" holds at ψ = 1, θ = 1e-3,
+/// F* = 1e-4; negative skewness raises μ at light load, and at ψ = 2 the
+/// ratio reverses below 1 at F* = 0.1 (it crosses near F* ≈ 0.067).
+#[test]
+fn literature_statements_hold_at_light_load_and_one_reverses_near_0_07() {
+    use ke_friction::paper::nongaussian::tayebi_ratio;
+    let r = tayebi_ratio(1.0, 1e-3, 1e-4).unwrap();
+    assert!(r < 1.0, "mu(0.5, 5)/mu_G = {r}");
+    let neg = model(2.0, 1e-3, HeightDistribution::pearson(-0.5, 3.375).unwrap());
+    let gauss = model(2.0, 1e-3, HeightDistribution::Gaussian);
+    let ratio = |f: f64| mu(&neg, f) / mu(&gauss, f);
+    assert!(
+        ratio(1e-4) > ratio(0.05) && ratio(0.05) > 1.0,
+        "{} {}",
+        ratio(1e-4),
+        ratio(0.05)
+    );
+    assert!(ratio(0.1) < 1.0, "{}", ratio(0.1));
+    let statements = ke_friction::paper::nongaussian::nongaussian_statements().unwrap();
+    assert_eq!(statements.len(), 10);
+}

@@ -212,3 +212,44 @@ fn table_error_help_states_the_default_and_the_tables_ranges() {
         assert!(help.contains(text), "{text:?} not in {help}");
     }
 }
+
+/// `plot distributions` draws μ(F*) for the Gaussian and the Pearson set
+/// over their densities, as a PNG of the default size; bad values name
+/// their flag (exit 2), and nothing is written for them.
+#[test]
+fn distributions_draws_a_png_and_bad_flags_exit_2() {
+    let dir = TempDir::new("distributions");
+    let o = kefric(&["plot", "distributions", "--out", &dir.arg("d.png")]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png(&dir.join("d.png"));
+    let o = kefric(&[
+        "plot",
+        "distributions",
+        "--psi",
+        "2",
+        "--theta",
+        "0.003",
+        "--scale",
+        "1",
+        "--out",
+        &dir.arg("d2.png"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_png_size(&dir.join("d2.png"), (1000, 750));
+    for (flag, value, out) in [
+        ("--psi", "x", "bad.png"),
+        ("--psi", "-1", "bad.png"),
+        ("--theta", "1e9", "bad.png"),
+        ("--out", "", "bad.jpg"),
+    ] {
+        let mut args = vec!["plot", "distributions"];
+        if !value.is_empty() {
+            args.extend([flag, value]);
+        }
+        let path = dir.arg(out);
+        args.extend(["--out", &path]);
+        let o = kefric(&args);
+        assert_bad_input(&o, flag);
+        assert!(!dir.join(out).exists(), "{flag} {value}: wrote {out}");
+    }
+}
