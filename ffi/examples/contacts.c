@@ -53,6 +53,29 @@ int main(void) {
     if (kef_curve_mu(curve, 0.5, &out) == KEF_ERR_DOMAIN)
         printf("expected error: %s\n", kef_last_error());
 
+    /* Peaked (leptokurtic) heights: the Pearson distribution of skewness 0
+     * and kurtosis 8, by direct integration at psi = 1, theta = 0.001,
+     * F* = 1e-4 (0.2529016383; 0.7567111956 for Gaussian heights). A pair
+     * outside the Pearson region (K <= Sk^2 + 1) is refused, the handle kept. */
+    kef_constants *peaked = kef_constants_new();
+    if (peaked == NULL) return 1;
+    check(kef_constants_set_distribution(peaked, KEF_DIST_PEARSON, 0.0, 8.0), "kef_constants_set_distribution");
+    if (kef_constants_set_distribution(peaked, KEF_DIST_PEARSON, 0.5, 1.2) != KEF_ERR_DOMAIN) {
+        fprintf(stderr, "kef_constants_set_distribution accepted kurtosis 1.2 at skewness 0.5\n");
+        return 1;
+    }
+    printf("expected error: %s\n", kef_last_error());
+    int family;
+    double skewness, kurtosis, peaked_mu;
+    check(kef_constants_distribution(peaked, &family, &skewness, &kurtosis), "kef_constants_distribution");
+    check(kef_model_mu_with(peaked, 1.0, 0.001, 1e-4, &peaked_mu), "kef_model_mu_with");
+    printf("pearson family=%d skewness=%g kurtosis=%g mu=%.10f\n", family, skewness, kurtosis, peaked_mu);
+    if (family != KEF_DIST_PEARSON || fabs(peaked_mu - 0.2529016383) > 1e-9) {
+        fprintf(stderr, "Pearson(0, 8): mu = %.12f, family %d\n", peaked_mu, family);
+        return 1;
+    }
+    kef_constants_free(peaked);
+
     /* The inner loop: loads of many contacts, one lookup each. Loads
      * spread log-uniformly over the curve's range (1e-5 to 0.1). */
     double *f = malloc(CONTACTS * sizeof *f), *mu = malloc(CONTACTS * sizeof *mu);

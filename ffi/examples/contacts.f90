@@ -15,6 +15,8 @@ program contacts
   type(c_ptr) :: curve, constants
   real(c_double) :: few(3) = [1d-3, 0.5d0, 1d-2], out(3)
   integer(c_size_t) :: n_nan
+  integer(c_int) :: family
+  real(c_double) :: sk, ku
   integer :: i, r
   integer(8) :: t0, t1, rate
 
@@ -42,6 +44,18 @@ program contacts
   print '(a)', 'expected error: ' // kef_error_message()
   if (kef_model_mu_with(constants, psi, theta, 1d-2, m) /= KEF_OK) stop 5
   print '(a, f10.7)', 'mu with the printed fit at f_star = 0.01: ', m
+  ! Peaked heights: the Pearson distribution of skewness 0 and kurtosis 8
+  ! (mu = 0.2529016383 at psi = 1, theta = 0.001, F* = 1e-4); a pair with
+  ! kurtosis <= skewness**2 + 1 refused.
+  if (kef_constants_set_distribution(constants, KEF_DIST_PEARSON, 0d0, 8d0) /= KEF_OK) stop 6
+  if (kef_constants_set_distribution(constants, KEF_DIST_PEARSON, 0.5d0, 1.2d0) /= KEF_ERR_DOMAIN) stop 6
+  print '(a)', 'expected error: ' // kef_error_message()
+  if (kef_constants_distribution(constants, family, sk, ku) /= KEF_OK) stop 6
+  if (family /= KEF_DIST_PEARSON .or. sk /= 0d0 .or. ku /= 8d0) stop 6
+  if (kef_constants_set_fit(constants, kef_c_string("consistent")) /= KEF_OK) stop 6
+  if (kef_model_mu_with(constants, 1d0, 1d-3, 1d-4, m) /= KEF_OK) stop 6
+  if (abs(m - 0.2529016383d0) > 1d-9) stop 6
+  print '(a, f12.10)', 'mu with Pearson(0, 8) heights at f_star = 1e-4: ', m
   call kef_constants_free(constants)
 
   allocate(f(n), mu(n))

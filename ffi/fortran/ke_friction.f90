@@ -23,7 +23,8 @@ module ke_friction
             kef_constants_new, kef_constants_free, kef_constants_set_beta, kef_constants_set_nu, &
             kef_constants_set_eps_star, kef_constants_set_fit, kef_constants_set_model, &
             kef_constants_beta, kef_constants_nu, kef_constants_eps_star, kef_constants_fit, &
-            kef_constants_model, kef_last_error, kef_error_message, kef_c_string, &
+            kef_constants_model, kef_constants_set_distribution, kef_constants_set_heights, &
+            kef_constants_distribution, kef_last_error, kef_error_message, kef_c_string, &
             kef_version, kef_version_string, kef_table_domain, kef_table_h_star, kef_table_h_star_batch, &
             kef_params_from_physical
   public :: c_int, c_double, c_size_t, c_ptr, c_associated
@@ -35,6 +36,12 @@ module ke_friction
   integer(c_int), parameter, public :: KEF_ERR_TABLE = 4
   integer(c_int), parameter, public :: KEF_ERR_INTERNAL = 5
   integer(c_int), parameter, public :: KEF_ERR_NO_MU = 6
+  ! Height distribution families (kef_constants_set_distribution,
+  ! kef_constants_distribution).
+  integer(c_int), parameter, public :: KEF_DIST_GAUSSIAN = 0
+  integer(c_int), parameter, public :: KEF_DIST_PEARSON = 1
+  integer(c_int), parameter, public :: KEF_DIST_WEIBULL = 2
+  integer(c_int), parameter, public :: KEF_DIST_EMPIRICAL = 3
 
   interface
     function kef_last_error() bind(c, name="kef_last_error")
@@ -339,6 +346,37 @@ module ke_friction
       import :: c_ptr
       type(c_ptr), value :: constants
       type(c_ptr) :: kef_constants_model
+    end function
+
+    ! family: KEF_DIST_GAUSSIAN (skewness, kurtosis ignored), KEF_DIST_PEARSON
+    ! (kurtosis not excess: 3 for a Gaussian; K > Sk**2 + 1) or KEF_DIST_WEIBULL
+    ! (kurtosis ignored: it follows from the skewness).
+    function kef_constants_set_distribution(constants, family, skewness, kurtosis) &
+        bind(c, name="kef_constants_set_distribution")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      integer(c_int), value :: family
+      real(c_double), value :: skewness, kurtosis
+      integer(c_int) :: kef_constants_set_distribution
+    end function
+
+    ! An empirical density of n measured heights (copied; NaN skipped; >= 100 finite).
+    function kef_constants_set_heights(constants, heights, n) bind(c, name="kef_constants_set_heights")
+      import :: c_ptr, c_double, c_size_t, c_int
+      type(c_ptr), value :: constants
+      real(c_double), dimension(*), intent(in) :: heights
+      integer(c_size_t), value :: n
+      integer(c_int) :: kef_constants_set_heights
+    end function
+
+    ! family: a KEF_DIST_* code; kurtosis not excess.
+    function kef_constants_distribution(constants, family, skewness, kurtosis) &
+        bind(c, name="kef_constants_distribution")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      integer(c_int), intent(out) :: family
+      real(c_double), intent(out) :: skewness, kurtosis
+      integer(c_int) :: kef_constants_distribution
     end function
 
     function c_strlen(s) bind(c, name="strlen")

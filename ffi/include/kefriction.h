@@ -19,9 +19,12 @@
  * dimensionless: psi (plasticity index), theta = dgamma/(sigma H),
  * f_star = F/(A_n H), mu (static friction coefficient).
  *
- * Model constants (beta, nu, eps_star, fit, model) are a kef_constants
- * handle: kef_constants_new, the kef_constants_set_* setters, and the
- * *_with functions (NULL: the defaults).
+ * Model constants (beta, nu, eps_star, fit, model, the height
+ * distribution) are a kef_constants handle: kef_constants_new, the
+ * kef_constants_set_* setters, and the *_with functions (NULL: the
+ * defaults). The heights' distribution is Gaussian unless set by
+ * kef_constants_set_distribution (KEF_DIST_PEARSON, KEF_DIST_WEIBULL) or
+ * kef_constants_set_heights (an empirical density).
  *
  * Threads: tables and curves are immutable after creation; any number of
  * threads may use one at once. Free one only when no thread uses it. A
@@ -61,8 +64,27 @@
 // outweighs the contact load), or no positive μ.
 #define KEF_ERR_NO_MU 6
 
-// The model constants (opaque): β, ν, ε*, the friction fit and the model,
-// always valid (each setter checks its value). New constants get new
+// Height distribution family (kef_constants_set_distribution,
+// kef_constants_distribution): the paper's Gaussian, the default
+// (skewness 0, kurtosis 3).
+#define KEF_DIST_GAUSSIAN 0
+
+// Height distribution family: the Pearson system from skewness Sk and
+// kurtosis K (not excess: 3 for a Gaussian), admissible where
+// K > Sk² + 1, |Sk| <= 5 and K <= 100. Pearson(0, 3) is the Gaussian.
+#define KEF_DIST_PEARSON 1
+
+// Height distribution family: a standardised Weibull distribution of
+// skewness Sk in (-1.1395, 2]; its kurtosis follows from Sk.
+#define KEF_DIST_WEIBULL 2
+
+// Height distribution family: an empirical (kernel) density of measured
+// heights, set by kef_constants_set_heights (not by
+// kef_constants_set_distribution).
+#define KEF_DIST_EMPIRICAL 3
+
+// The model constants (opaque): β, ν, ε*, the friction fit, the model
+// and the asperity heights' distribution, always valid (each setter checks its value). New constants get new
 // setters, so the handle grows without breaking the ABI. A function
 // taking `const kef_constants *` reads NULL as the defaults. Not
 // synchronised: set it on one thread, then share it read-only.
@@ -404,7 +426,7 @@ int kef_model_mu_with(const kef_constants *constants,
                       double *mu);
 
 // New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,
-// fit "consistent", model "ke"), to free with kef_constants_free. NULL
+// fit "consistent", model "ke", Gaussian heights), to free with kef_constants_free. NULL
 // only if a panic was caught.
 kef_constants *kef_constants_new(void);
 
@@ -484,6 +506,55 @@ const char *kef_constants_fit(const kef_constants *constants);
 // # Safety
 // `constants` is NULL or a live kef_constants.
 const char *kef_constants_model(const kef_constants *constants);
+
+// Sets the asperity heights' distribution (MODEL.md §9) to `family`:
+// KEF_DIST_GAUSSIAN (the default; `skewness` and `kurtosis` ignored),
+// KEF_DIST_PEARSON (skewness Sk and kurtosis K, not excess: 3 for a
+// Gaussian; admissible where K > Sk² + 1, |Sk| <= 5, K <= 100) or
+// KEF_DIST_WEIBULL (skewness Sk in (-1.1395, 2]; `kurtosis` ignored: it
+// follows from Sk). Checked at once: KEF_ERR_DOMAIN for a value outside
+// its admissible region (the message names it and the bound, e.g.
+// "kurtosis = 1.2 is out of range: must be > skewness² + 1 ..."),
+// KEF_ERR_ARGUMENT for NaN or ±inf where it is read, an unknown family,
+// KEF_DIST_EMPIRICAL (see kef_constants_set_heights) or a NULL handle;
+// the handle is unchanged on failure.
+//
+// # Safety
+// As kef_constants_set_beta.
+int kef_constants_set_distribution(kef_constants *constants,
+                                   int family,
+                                   double skewness,
+                                   double kurtosis);
+
+// Sets the asperity heights' distribution to the empirical (kernel)
+// density of `n` measured heights (any unit; NaN entries are skipped as
+// missing points): at least 100 finite values, not all equal, no ±inf.
+// The data are copied (the density is built at once; the array may be
+// freed after the call). KEF_ERR_DOMAIN for too few heights or constant
+// ones, KEF_ERR_ARGUMENT for an infinite height, a NULL handle, or
+// `heights` NULL with `n` > 0; the handle is unchanged on failure.
+// kef_constants_distribution then gives KEF_DIST_EMPIRICAL and the
+// heights' skewness and kurtosis.
+//
+// # Safety
+// As kef_constants_set_beta; `heights` NULL or valid for `n` reads.
+int kef_constants_set_heights(kef_constants *constants, const double *heights, size_t n);
+
+// The asperity heights' distribution of `constants` (NULL: the default,
+// the Gaussian): its family into `*family` (a KEF_DIST_* code), its
+// skewness into `*skewness` and its kurtosis (not excess) into
+// `*kurtosis`: 0 and 3 for the Gaussian, the values set for Pearson, the
+// kurtosis its skewness implies for Weibull (2.717 at Sk = 0), the
+// heights' own for an empirical density. KEF_ERR_ARGUMENT for a NULL
+// output (no output written then).
+//
+// # Safety
+// `constants` is NULL or a live kef_constants; the outputs NULL or
+// writable.
+int kef_constants_distribution(const kef_constants *constants,
+                               int *family,
+                               double *skewness,
+                               double *kurtosis);
 
 #ifdef __cplusplus
 }  // extern "C"

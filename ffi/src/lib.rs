@@ -27,8 +27,8 @@
 #![allow(non_camel_case_types)]
 
 use ke_friction::{
-    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, Kind, LookupError, Model, OnError, ParamError, Params,
-    Physical, Table, TableError,
+    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, HeightDistribution, Kind, LookupError, Model, OnError,
+    ParamError, Params, Physical, Table, TableError,
 };
 use std::borrow::Cow;
 use std::cell::Cell;
@@ -57,6 +57,22 @@ pub const KEF_ERR_INTERNAL: c_int = 5;
 /// outweighs the contact load), or no positive μ.
 pub const KEF_ERR_NO_MU: c_int = 6;
 
+/// Height distribution family (kef_constants_set_distribution,
+/// kef_constants_distribution): the paper's Gaussian, the default
+/// (skewness 0, kurtosis 3).
+pub const KEF_DIST_GAUSSIAN: c_int = 0;
+/// Height distribution family: the Pearson system from skewness Sk and
+/// kurtosis K (not excess: 3 for a Gaussian), admissible where
+/// K > Sk² + 1, |Sk| <= 5 and K <= 100. Pearson(0, 3) is the Gaussian.
+pub const KEF_DIST_PEARSON: c_int = 1;
+/// Height distribution family: a standardised Weibull distribution of
+/// skewness Sk in (-1.1395, 2]; its kurtosis follows from Sk.
+pub const KEF_DIST_WEIBULL: c_int = 2;
+/// Height distribution family: an empirical (kernel) density of measured
+/// heights, set by kef_constants_set_heights (not by
+/// kef_constants_set_distribution).
+pub const KEF_DIST_EMPIRICAL: c_int = 3;
+
 /// A table of μ(ψ, θ, F*) (opaque). Immutable; may be shared across threads.
 pub struct kef_table(Cow<'static, Table>);
 
@@ -67,8 +83,8 @@ static DEFAULT: OnceLock<kef_table> = OnceLock::new();
 /// shared across threads.
 pub struct kef_curve(Curve);
 
-/// The model constants (opaque): β, ν, ε*, the friction fit and the model,
-/// always valid (each setter checks its value). New constants get new
+/// The model constants (opaque): β, ν, ε*, the friction fit, the model
+/// and the asperity heights' distribution, always valid (each setter checks its value). New constants get new
 /// setters, so the handle grows without breaking the ABI. A function
 /// taking `const kef_constants *` reads NULL as the defaults. Not
 /// synchronised: set it on one thread, then share it read-only.
@@ -266,6 +282,7 @@ pointee!(*const kef_curve => &'a Curve, |p| p.as_ref().map(|c| &c.0));
 pointee!(*mut kef_constants => &'a mut Constants, |p| p.as_mut().map(|c| &mut c.0));
 pointee!(*mut f64 => &'a mut f64, |p| p.as_mut());
 pointee!(*mut usize => &'a mut usize, |p| p.as_mut());
+pointee!(*mut c_int => &'a mut c_int, |p| p.as_mut());
 pointee!(*const c_char => &'a CStr, |p| (!p.is_null()).then(|| CStr::from_ptr(p)));
 
 /// The defaults, for a NULL `const kef_constants *`.
@@ -489,6 +506,49 @@ fn fit_named(name: &CStr) -> Result<Fit, Failure> {
 /// The model named `name`.
 fn kind_named(name: &CStr) -> Result<Kind, Failure> {
     named("model", name, Kind::from_name, &Kind::ALL, Kind::name)
+}
+
+/// The distribution of family `family` (a `KEF_DIST_*` code other than
+/// [`KEF_DIST_EMPIRICAL`]) with `skewness` and `kurtosis` (the latter read
+/// by [`KEF_DIST_PEARSON`] alone, neither by [`KEF_DIST_GAUSSIAN`]),
+/// validated.
+fn distribution(family: c_int, skewness: f64, kurtosis: f64) -> Result<HeightDistribution, Failure> {
+    match family {
+        KEF_DIST_GAUSSIAN => Ok(HeightDistribution::Gaussian),
+        KEF_DIST_PEARSON => Ok(HeightDistribution::pearson(skewness, kurtosis)?),
+        KEF_DIST_WEIBULL => Ok(HeightDistribution::weibull(skewness)?),
+        KEF_DIST_EMPIRICAL => Err(Failure::argument(
+            "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights".into(),
+        )),
+        other => Err(Failure::argument(format!(
+            "family {other} is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
+        ))),
+    }
+}
+
+/// The `KEF_DIST_*` code of a distribution.
+fn family_code(d: &HeightDistribution) -> c_int {
+    match d {
+        HeightDistribution::Gaussian => KEF_DIST_GAUSSIAN,
+        HeightDistribution::Pearson { .. } => KEF_DIST_PEARSON,
+        HeightDistribution::Weibull { .. } => KEF_DIST_WEIBULL,
+        HeightDistribution::Empirical(_) => KEF_DIST_EMPIRICAL,
+        // A family added to the core after this binding.
+        _ => -1,
+    }
+}
+
+/// Writes the distribution's family, skewness and kurtosis.
+fn describe(d: &HeightDistribution, family: &mut c_int, skewness: &mut f64, kurtosis: &mut f64) -> Result<(), Failure> {
+    let code = family_code(d);
+    if code < 0 {
+        return Err(Failure {
+            code: KEF_ERR_INTERNAL,
+            message: format!("the distribution family \"{}\" has no KEF_DIST_* code", d.family()),
+        });
+    }
+    (*family, *skewness, *kurtosis) = (code, d.skewness(), d.kurtosis());
+    Ok(())
 }
 
 /// `name` as a C string for the life of the program (one allocation per
@@ -988,7 +1048,7 @@ pub unsafe extern "C" fn kef_model_mu_with(
 }
 
 /// New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,
-/// fit "consistent", model "ke"), to free with kef_constants_free. NULL
+/// fit "consistent", model "ke", Gaussian heights), to free with kef_constants_free. NULL
 /// only if a panic was caught.
 #[no_mangle]
 pub extern "C" fn kef_constants_new() -> *mut kef_constants {
@@ -1104,4 +1164,70 @@ pub unsafe extern "C" fn kef_constants_fit(constants: *const kef_constants) -> *
 #[no_mangle]
 pub unsafe extern "C" fn kef_constants_model(constants: *const kef_constants) -> *const c_char {
     ffi!(constants => static_c(constants.kind.name()))
+}
+
+/// Sets the asperity heights' distribution (MODEL.md §9) to `family`:
+/// KEF_DIST_GAUSSIAN (the default; `skewness` and `kurtosis` ignored),
+/// KEF_DIST_PEARSON (skewness Sk and kurtosis K, not excess: 3 for a
+/// Gaussian; admissible where K > Sk² + 1, |Sk| <= 5, K <= 100) or
+/// KEF_DIST_WEIBULL (skewness Sk in (-1.1395, 2]; `kurtosis` ignored: it
+/// follows from Sk). Checked at once: KEF_ERR_DOMAIN for a value outside
+/// its admissible region (the message names it and the bound, e.g.
+/// "kurtosis = 1.2 is out of range: must be > skewness² + 1 ..."),
+/// KEF_ERR_ARGUMENT for NaN or ±inf where it is read, an unknown family,
+/// KEF_DIST_EMPIRICAL (see kef_constants_set_heights) or a NULL handle;
+/// the handle is unchanged on failure.
+///
+/// # Safety
+/// As kef_constants_set_beta.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_distribution(
+    constants: *mut kef_constants,
+    family: c_int,
+    skewness: f64,
+    kurtosis: f64,
+) -> c_int {
+    ffi!(constants => update(constants, |c| Ok(c.distribution(distribution(family, skewness, kurtosis)?))))
+}
+
+/// Sets the asperity heights' distribution to the empirical (kernel)
+/// density of `n` measured heights (any unit; NaN entries are skipped as
+/// missing points): at least 100 finite values, not all equal, no ±inf.
+/// The data are copied (the density is built at once; the array may be
+/// freed after the call). KEF_ERR_DOMAIN for too few heights or constant
+/// ones, KEF_ERR_ARGUMENT for an infinite height, a NULL handle, or
+/// `heights` NULL with `n` > 0; the handle is unchanged on failure.
+/// kef_constants_distribution then gives KEF_DIST_EMPIRICAL and the
+/// heights' skewness and kurtosis.
+///
+/// # Safety
+/// As kef_constants_set_beta; `heights` NULL or valid for `n` reads.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_heights(
+    constants: *mut kef_constants,
+    heights: *const f64,
+    n: usize,
+) -> c_int {
+    ffi!(constants, heights[n] => update(constants, |c| Ok(c.distribution(HeightDistribution::empirical(heights)?))))
+}
+
+/// The asperity heights' distribution of `constants` (NULL: the default,
+/// the Gaussian): its family into `*family` (a KEF_DIST_* code), its
+/// skewness into `*skewness` and its kurtosis (not excess) into
+/// `*kurtosis`: 0 and 3 for the Gaussian, the values set for Pearson, the
+/// kurtosis its skewness implies for Weibull (2.717 at Sk = 0), the
+/// heights' own for an empirical density. KEF_ERR_ARGUMENT for a NULL
+/// output (no output written then).
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants; the outputs NULL or
+/// writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_distribution(
+    constants: *const kef_constants,
+    family: *mut c_int,
+    skewness: *mut f64,
+    kurtosis: *mut f64,
+) -> c_int {
+    ffi!(constants, family, skewness, kurtosis => describe(&constants.distribution, family, skewness, kurtosis))
 }

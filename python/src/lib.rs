@@ -3,13 +3,15 @@
 //! GIL released. `pysrc/ke_friction/__init__.py` adds NumPy broadcasting,
 //! argument checks and the documented Python API on top.
 //!
-//! One module per class (`table.rs`, `curve.rs`, `model.rs`); the core's
+//! One module per class (`table.rs`, `curve.rs`, `model.rs`,
+//! `distribution.rs`); the core's
 //! errors become Python exceptions in `error.rs` alone; the batch and
 //! thread machinery is `parallel.rs`; `convert.rs` turns arguments and the
 //! core's records between the two languages.
 
 mod convert;
 mod curve;
+mod distribution;
 mod error;
 mod model;
 mod parallel;
@@ -22,6 +24,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<table::TableCore>()?;
     m.add_class::<curve::CurveCore>()?;
     m.add_class::<model::ModelCore>()?;
+    m.add_class::<distribution::DistributionCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

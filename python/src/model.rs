@@ -2,6 +2,7 @@
 //! physical inputs.
 
 use crate::convert::{record, same_len, slice, slice_mut};
+use crate::distribution::DistributionCore;
 use crate::error::{raise, value_error, Failure};
 use crate::parallel::{cut, MODEL_WORK};
 use ke_friction::{Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
@@ -24,9 +25,11 @@ fn by_name<T: Copy>(arg: &str, value: &str, all: &[T], name_of: fn(T) -> &'stati
 #[pymethods]
 impl ModelCore {
     /// The model at (ψ, θ); each constant left out (None) is the core's
-    /// default (`Constants::default()`, see `DEFAULTS`).
+    /// default (`Constants::default()`, see `DEFAULTS`; the Gaussian for
+    /// `distribution`, which the Python layer resolves from its arguments).
     #[new]
-    #[pyo3(signature = (psi, theta, beta=None, nu=None, eps_star=None, fit=None, model=None))]
+    #[pyo3(signature = (psi, theta, beta=None, nu=None, eps_star=None, fit=None, model=None, distribution=None))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         psi: f64,
         theta: f64,
@@ -35,6 +38,7 @@ impl ModelCore {
         eps_star: Option<f64>,
         fit: Option<&str>,
         model: Option<&str>,
+        distribution: Option<PyRef<'_, DistributionCore>>,
     ) -> PyResult<ModelCore> {
         let mut c = Constants::default();
         if let Some(fit) = fit {
@@ -46,6 +50,9 @@ impl ModelCore {
         c.beta = beta.unwrap_or(c.beta);
         c.nu = nu.unwrap_or(c.nu);
         c.eps_star = eps_star.unwrap_or(c.eps_star);
+        if let Some(d) = distribution {
+            c.distribution = d.dist.clone();
+        }
         Model::new(c.unchecked_at(psi, theta)).map(ModelCore).map_err(raise)
     }
 
@@ -109,7 +116,8 @@ impl ModelCore {
     }
 
     /// The model's parameters: the core's `Params` record (psi, theta,
-    /// beta, nu, eps_star, fit, model).
+    /// beta, nu, eps_star, fit, model, distribution, skewness, kurtosis,
+    /// and heights, their number, for an empirical density).
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         record(py, serde_json::to_string(self.0.params()))
     }
@@ -149,7 +157,8 @@ pub fn params_from_physical<'py>(
 }
 
 /// The core's default constants (`Constants::default()`: beta, nu,
-/// eps_star, fit, model), for `_core.DEFAULTS`.
+/// eps_star, fit, model, distribution, skewness, kurtosis), for
+/// `_core.DEFAULTS`.
 pub fn defaults(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
     record(py, serde_json::to_string(&Constants::default()))
 }

@@ -14,7 +14,7 @@ def test_everything_public_is_documented():
         obj = getattr(kf, name)
         if callable(obj):
             assert obj.__doc__ and len(obj.__doc__) > 40, name
-    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact]:
+    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact, kf.HeightDistribution]:
         for attr, value in vars(cls).items():
             if not attr.startswith("_"):
                 doc = getattr(value, "__doc__", None) or getattr(getattr(value, "__func__", None), "__doc__", None)
@@ -37,5 +37,6 @@ def test_stubs_and_py_typed_ship_with_the_package():
     pkg = pathlib.Path(kf.__file__).parent
     assert (pkg / "py.typed").exists() and (pkg / "_core.pyi").exists()
     stub = (pkg / "_core.pyi").read_text()
-    for name in ["class TableCore", "class CurveCore", "class ModelCore", "def params_from_physical"]:
+    for name in ["class TableCore", "class CurveCore", "class ModelCore", "class DistributionCore",
+                 "def params_from_physical"]:
         assert name in stub, name

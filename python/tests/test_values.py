@@ -152,11 +152,13 @@ def test_info_is_the_record_of_kefric_info_and_of_the_export(table, tmp_path):
 
 
 def test_model_defaults_and_params_are_the_librarys_records():
-    assert set(kf.DEFAULTS) == {"beta", "nu", "eps_star", "fit", "model"}
+    assert set(kf.DEFAULTS) == {"beta", "nu", "eps_star", "fit", "model", "distribution", "skewness", "kurtosis"}
+    assert (kf.DEFAULTS["distribution"], kf.DEFAULTS["skewness"], kf.DEFAULTS["kurtosis"]) == ("gaussian", 0.0, 3.0)
     with pytest.raises(TypeError):
         kf.DEFAULTS["beta"] = 1.0  # read-only
     p = kf.Model(1.0, 0.001).params
-    assert list(p) == ["psi", "theta", "beta", "nu", "eps_star", "fit", "model"]
+    assert list(p) == ["psi", "theta", "beta", "nu", "eps_star", "fit", "model", "distribution", "skewness",
+                       "kurtosis"]
     assert p == {"psi": 1.0, "theta": 0.001, **kf.DEFAULTS}
     # A constant left out or None is the default; one given is kept.
     assert kf.Model(1.0, 0.001, beta=None, fit=None).params == p
@@ -171,7 +173,8 @@ def test_params_from_physical_is_kefric_params():
     p = kf.params_from_physical(**si)
     flags = [x for k, v in si.items() for x in ("--" + k.replace("_", "-"), repr(v))]
     row = kefric("params", *flags)[0]
-    assert set(p) == set(row) == {"psi", "theta", "beta", "nu", "eps_star", "fit", "model"}
+    assert set(p) == set(row) == {"psi", "theta", "beta", "nu", "eps_star", "fit", "model", "distribution",
+                                  "skewness", "kurtosis"}
     for key in ["psi", "theta", "beta", "nu", "eps_star"]:
         assert p[key] == pytest.approx(row[key], rel=SAME_REL), key
     assert (p["fit"], p["model"]) == (row["fit"], row["model"]) == (kf.DEFAULTS["fit"], kf.DEFAULTS["model"])

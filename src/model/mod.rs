@@ -71,6 +71,10 @@ pub enum EvalError {
     },
 }
 
+/// Largest |ln F*(h*) − ln F*| at which the root search may stop on a
+/// vanishing step (a converged Newton step leaves ~1e-15).
+const SOLVE_RESIDUAL: f64 = 1e-9;
+
 /// |h*| beyond this is rejected: far outside any physical contact, and the
 /// integrals would lose all precision to cancellation in `z* − d*`.
 pub const H_LIMIT: f64 = 1e6;
@@ -186,8 +190,14 @@ impl Model {
         for _ in 0..ITERATIONS {
             let (f, df) = self.force(h);
             let mut next;
+            // |ln F*(h) − ln f|: a step-size convergence counts only with a
+            // small residual (a derivative that is off, e.g. at a kink where
+            // the contact plane passes an end of a bounded density, must not
+            // stop the search).
+            let mut residual = f64::INFINITY;
             if f > 0.0 && f.is_finite() {
                 let g = f.ln() - target;
+                residual = g.abs();
                 if g == 0.0 {
                     return Ok(h);
                 }
@@ -230,8 +240,18 @@ impl Model {
                 next = -H_LIMIT;
             }
             let tol = 2.0 * f64::EPSILON * h.abs().max(1.0);
-            if (next - h).abs() <= tol || (bracketed && hi - lo <= tol) {
+            if (bracketed && hi - lo <= tol) || ((next - h).abs() <= tol && residual <= SOLVE_RESIDUAL) {
                 return Ok(next);
+            }
+            if (next - h).abs() <= tol {
+                // Newton stalled away from the root: bisect, or widen the search.
+                next = if bracketed {
+                    0.5 * (lo + hi)
+                } else if lo.is_finite() {
+                    lo + max_step
+                } else {
+                    hi - max_step
+                };
             }
             h = next;
         }

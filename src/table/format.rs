@@ -348,6 +348,7 @@ impl Default for DistributionSpec {
 impl DistributionSpec {
     /// The stored form of a distribution; `None` for an empirical density,
     /// which tables do not hold.
+    #[cfg(any(feature = "builder", test))]
     pub fn of(d: &HeightDistribution) -> Option<DistributionSpec> {
         Some(match *d {
             _ if d.is_gaussian() => DistributionSpec::default(),

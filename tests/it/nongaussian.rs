@@ -263,3 +263,20 @@ fn literature_statements_hold_at_light_load_and_one_reverses_near_0_07() {
     let statements = ke_friction::paper::nongaussian::nongaussian_statements().unwrap();
     assert_eq!(statements.len(), 10);
 }
+
+/// A U-shaped bounded density (Sk = 1, K = 2.5): every solved load is the
+/// load asked for (a derivative that is off at the ends' kinks must not
+/// end the search early).
+#[test]
+fn solved_loads_are_the_loads_asked_for_with_a_u_shaped_density() {
+    let m = model(1.0, 1e-3, HeightDistribution::pearson(1.0, 2.5).unwrap());
+    for f in [1e-4, 1e-3, 0.01, 0.03, 0.04] {
+        let c = m.at_f_star(f).unwrap();
+        assert!(rel(c.f_star, f) < 1e-9, "asked {f}, got {}", c.f_star);
+    }
+    // Near F* = 0.1 the plane passes the upper end, where the density is
+    // infinite and F*(h*) has an infinite slope: h* to the last bit still
+    // leaves F* ~1e-6 off.
+    let c = m.at_f_star(0.1).unwrap();
+    assert!(rel(c.f_star, 0.1) < 1e-5, "got {}", c.f_star);
+}

@@ -141,3 +141,248 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
         kef_constants_free(c);
     }
 }
+
+/// The distribution of `c` as (family, skewness, kurtosis).
+///
+/// # Safety
+/// `c` is NULL or a live handle.
+unsafe fn distribution_of(c: *const kef_constants) -> (i32, f64, f64) {
+    let (mut family, mut sk, mut k) = (-9, f64::NAN, f64::NAN);
+    // SAFETY: the caller's handle, local outputs.
+    assert_eq!(
+        unsafe { kef_constants_distribution(c, &mut family, &mut sk, &mut k) },
+        KEF_OK
+    );
+    (family, sk, k)
+}
+
+#[test]
+fn the_heights_distribution_reaches_the_model() {
+    let c = kef_constants_new();
+    // SAFETY (every call): a live handle or NULL, local doubles.
+    unsafe {
+        assert_eq!(distribution_of(c), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
+        assert_eq!(distribution_of(null()), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
+        let mut gauss = 0.0;
+        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut gauss), KEF_OK);
+        assert!((gauss - 0.7567111956).abs() < 1e-9, "{gauss}");
+
+        // Pearson(0, 8) and Pearson(-0.5, 3.375): the reference values.
+        for (sk, k, want) in [(0.0, 8.0, 0.2529016383), (-0.5, 3.375, 1.004869931)] {
+            assert_eq!(
+                kef_constants_set_distribution(c, KEF_DIST_PEARSON, sk, k),
+                KEF_OK,
+                "{}",
+                last_error()
+            );
+            assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, sk, k));
+            let mut mu = 0.0;
+            assert_eq!(
+                kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
+                KEF_OK,
+                "{}",
+                last_error()
+            );
+            assert!((mu - want).abs() < 1e-9, "Pearson({sk}, {k}): {mu}");
+            // A curve of the same constants agrees.
+            let curve = kef_curve_from_model_with(c, 1.0, 0.001, 1e-5, 1e-3);
+            assert!(!curve.is_null(), "{}", last_error());
+            let mut from_curve = 0.0;
+            assert_eq!(kef_curve_mu(curve, 1e-4, &mut from_curve), KEF_OK);
+            assert!((from_curve / mu - 1.0).abs() < 1e-6, "{from_curve} {mu}");
+            kef_curve_free(curve);
+        }
+        // Pearson(0, 3) is the Gaussian, to the bit.
+        assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 3.0), KEF_OK);
+        let mut normal = 0.0;
+        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut normal), KEF_OK);
+        assert_eq!(normal, gauss);
+
+        // Weibull: the kurtosis argument is ignored; the getter gives the
+        // one the skewness implies.
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_WEIBULL, 0.0, f64::NAN),
+            KEF_OK,
+            "{}",
+            last_error()
+        );
+        let (family, sk, k) = distribution_of(c);
+        assert_eq!((family, sk), (KEF_DIST_WEIBULL, 0.0));
+        assert!((k - 2.717).abs() < 1e-3, "{k}");
+        let expected = ke_friction::Model::new(
+            ke_friction::Constants::default()
+                .distribution(ke_friction::HeightDistribution::weibull(0.0).unwrap())
+                .at(1.0, 0.001)
+                .unwrap(),
+        )
+        .unwrap()
+        .at_f_star(1e-4)
+        .unwrap()
+        .mu
+        .unwrap();
+        let mut weibull = 0.0;
+        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut weibull), KEF_OK);
+        assert_eq!(weibull, expected);
+
+        // The Gaussian ignores both numbers.
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_GAUSSIAN, 9.0, f64::NAN),
+            KEF_OK
+        );
+        assert_eq!(distribution_of(c), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
+        kef_constants_free(c);
+    }
+}
+
+#[test]
+fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
+    let c = kef_constants_new();
+    // SAFETY (every call): a live handle or NULL, local arrays.
+    unsafe {
+        assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 8.0), KEF_OK);
+        // K <= Sk² + 1: the Pearson bound.
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 1.2),
+            KEF_ERR_DOMAIN
+        );
+        assert!(
+            last_error().starts_with("kurtosis = 1.2 is out of range: must be > skewness² + 1"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_PEARSON, 6.0, 50.0),
+            KEF_ERR_DOMAIN
+        );
+        assert!(
+            last_error().starts_with("skewness = 6 is out of range: must be in [-5, 5]"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 101.0),
+            KEF_ERR_DOMAIN
+        );
+        assert!(
+            last_error().starts_with("kurtosis = 101 is out of range: must be <= 100"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_PEARSON, f64::NAN, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert!(last_error().starts_with("skewness = NaN"), "{}", last_error());
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_WEIBULL, 2.5, 0.0),
+            KEF_ERR_DOMAIN
+        );
+        assert!(
+            last_error().starts_with("skewness = 2.5 is out of range: must be in (-1.1395, 2]"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
+        assert!(last_error().starts_with("family 7 is unknown"), "{}", last_error());
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert!(last_error().contains("kef_constants_set_heights"), "{}", last_error());
+        assert_eq!(
+            kef_constants_set_distribution(null_mut(), KEF_DIST_PEARSON, 0.0, 8.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert_eq!(last_error(), "constants is NULL");
+        assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
+
+        // Heights: NULL with n > 0, too few, constant, infinite.
+        assert_eq!(kef_constants_set_heights(c, null(), 200), KEF_ERR_ARGUMENT);
+        assert_eq!(last_error(), "heights is NULL");
+        assert_eq!(kef_constants_set_heights(c, null(), 0), KEF_ERR_DOMAIN);
+        assert!(
+            last_error().starts_with("heights = 0 is out of range"),
+            "{}",
+            last_error()
+        );
+        let few: Vec<f64> = (0..99).map(f64::from).collect();
+        assert_eq!(kef_constants_set_heights(c, few.as_ptr(), few.len()), KEF_ERR_DOMAIN);
+        assert!(last_error().contains("at least 100 finite values"), "{}", last_error());
+        let flat = vec![2.5; 500];
+        assert_eq!(kef_constants_set_heights(c, flat.as_ptr(), flat.len()), KEF_ERR_DOMAIN);
+        assert!(last_error().contains("constant"), "{}", last_error());
+        let mut inf: Vec<f64> = (0..500).map(|i| f64::from(i).sin()).collect();
+        inf[7] = f64::INFINITY;
+        assert_eq!(kef_constants_set_heights(c, inf.as_ptr(), inf.len()), KEF_ERR_ARGUMENT);
+        assert!(last_error().starts_with("heights = inf"), "{}", last_error());
+        assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
+
+        // NULL outputs of the getter.
+        let (mut family, mut sk) = (-9, 0.0);
+        assert_eq!(
+            kef_constants_distribution(c, &mut family, &mut sk, null_mut()),
+            KEF_ERR_ARGUMENT
+        );
+        assert_eq!(last_error(), "kurtosis is NULL");
+        assert_eq!(family, -9);
+        kef_constants_free(c);
+    }
+}
+
+#[test]
+fn measured_heights_give_an_empirical_density_and_are_copied() {
+    // Deterministic pseudo-random heights, NaN (missing points) among them.
+    let mut state = 7u64;
+    let mut heights: Vec<f64> = (0..4000)
+        .map(|_| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let u = ((state >> 11) as f64 + 0.5) / 9007199254740992.0;
+            // Exponential-ish heights: skewed.
+            -u.ln()
+        })
+        .collect();
+    heights[10] = f64::NAN;
+    let c = kef_constants_new();
+    // SAFETY (every call): a live handle, a local array of `len` doubles.
+    unsafe {
+        assert_eq!(
+            kef_constants_set_heights(c, heights.as_ptr(), heights.len()),
+            KEF_OK,
+            "{}",
+            last_error()
+        );
+        let want = ke_friction::HeightDistribution::empirical(&heights).unwrap();
+        let (family, sk, k) = distribution_of(c);
+        assert_eq!((family, sk, k), (KEF_DIST_EMPIRICAL, want.skewness(), want.kurtosis()));
+        assert!(sk > 1.0, "{sk}");
+        let mut mu = 0.0;
+        assert_eq!(
+            kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
+            KEF_OK,
+            "{}",
+            last_error()
+        );
+        // Changing (and dropping) the caller's array changes nothing.
+        heights.iter_mut().for_each(|h| *h = 0.0);
+        drop(heights);
+        let mut again = 0.0;
+        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut again), KEF_OK);
+        assert_eq!(again, mu);
+        let expected = ke_friction::Model::new(
+            ke_friction::Constants::default()
+                .distribution(want)
+                .at(1.0, 0.001)
+                .unwrap(),
+        )
+        .unwrap()
+        .at_f_star(1e-4)
+        .unwrap()
+        .mu
+        .unwrap();
+        assert_eq!(mu, expected);
+        kef_constants_free(c);
+    }
+}

@@ -90,6 +90,13 @@ fn the_header_is_current() {
         "int kef_table_h_star(const kef_table *table,",
         "int kef_table_h_star_batch(const kef_table *table,",
         "int kef_params_from_physical(double e1,",
+        "#define KEF_DIST_GAUSSIAN 0",
+        "#define KEF_DIST_PEARSON 1",
+        "#define KEF_DIST_WEIBULL 2",
+        "#define KEF_DIST_EMPIRICAL 3",
+        "int kef_constants_set_distribution(kef_constants *constants,",
+        "int kef_constants_set_heights(kef_constants *constants, const double *heights, size_t n);",
+        "int kef_constants_distribution(const kef_constants *constants,",
     ] {
         assert!(text.contains(name), "the header lacks {name}");
     }

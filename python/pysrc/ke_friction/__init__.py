@@ -8,6 +8,9 @@ theta = dgamma/(sigma H) and the roughness (beta, nu, eps_star):
   (nanoseconds per point; the default table is built in);
 * :class:`Curve` -- mu(F*) of one surface pair (fixed psi and theta);
 * :class:`Model` -- the model by direct integration (microseconds);
+* :class:`HeightDistribution` -- the asperity heights' distribution a
+  :class:`Model` takes: Gaussian (the paper's), Pearson (skewness and
+  kurtosis), Weibull, or the empirical density of measured heights;
 * :func:`params_from_physical` -- psi, theta, beta, nu, eps_star from SI inputs.
 
 Lookups take Python floats (and return a float) or array-likes, which
@@ -49,7 +52,8 @@ import numpy.typing as npt
 
 from . import _core
 
-__all__ = ["Table", "Curve", "Model", "Contact", "TableError", "params_from_physical", "CURVE_ACCURACY", "DEFAULTS"]
+__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "TableError", "params_from_physical",
+           "CURVE_ACCURACY", "DEFAULTS"]
 
 #: The package's version: the library's (the Rust crate's).
 __version__: str = _core.__version__
@@ -68,8 +72,9 @@ TableError = _core.TableError
 CURVE_ACCURACY: float = _core.CURVE_ACCURACY
 
 #: The model constants a :class:`Model` takes unless told otherwise, from
-#: the library (read-only): ``beta``, ``nu``, ``eps_star``, ``fit`` and
-#: ``model``, by the names of its records.
+#: the library (read-only): ``beta``, ``nu``, ``eps_star``, ``fit``,
+#: ``model``, ``distribution``, ``skewness`` and ``kurtosis``, by the names
+#: of its records.
 DEFAULTS: "types.MappingProxyType[str, Any]" = types.MappingProxyType(_core.DEFAULTS)
 
 #: What lookups take: a number or anything :func:`numpy.asarray` turns into
@@ -363,6 +368,10 @@ class Table:
         * ``beta``, ``nu``, ``eps_star``: the model constants it was built with;
           ``model``: ``"ke"`` (Kogut-Etsion) or ``"ceb"`` (CEB-type);
           ``fit``: ``"consistent"`` or ``"as-printed"`` (see :class:`Model`);
+          ``distribution``, ``skewness``, ``kurtosis``: the asperity heights'
+          distribution (``"gaussian"`` unless built with another; see
+          :class:`HeightDistribution`), and ``heights``, their number, for
+          an empirical one;
         * ``tolerance``: the largest relative error of mu it promises;
         * ``accuracy``: its error of mu against direct integration measured
           at build time, ``max_rel`` and ``p99_rel``, at ``samples`` random
@@ -392,7 +401,10 @@ class Table:
 
     def __repr__(self) -> str:
         i = self.info
-        return (f"Table(model={i['model']!r}, fit={i['fit']!r}, psi={i['psi']}, theta={i['theta']}, "
+        shape = ""
+        if i.get("distribution", "gaussian") != "gaussian":
+            shape = f"distribution={i['distribution']!r}, skewness={i['skewness']!r}, kurtosis={i['kurtosis']!r}, "
+        return (f"Table(model={i['model']!r}, fit={i['fit']!r}, {shape}psi={i['psi']}, theta={i['theta']}, "
                 f"f_star={i['f_star']}, tolerance={i['tolerance']})")
 
 
@@ -529,6 +541,250 @@ class Curve:
         return f"Curve(range={self.range})"
 
 
+def _distribution_of(family: str, skewness: Optional[float], kurtosis: Optional[float],
+                     heights: Optional[np.ndarray]) -> "HeightDistribution":
+    """A pickled :class:`HeightDistribution`: its family and what made it."""
+    if family == "gaussian":
+        return HeightDistribution.gaussian()
+    if family == "pearson":
+        return HeightDistribution.pearson(skewness, kurtosis)
+    if family == "weibull":
+        return HeightDistribution.weibull(skewness)
+    return HeightDistribution.empirical(heights)
+
+
+def _heights_array(heights: Any) -> np.ndarray:
+    """``heights`` as a new flat, read-only float64 array (a copy: later
+    changes to the caller's array change nothing)."""
+    if isinstance(heights, (numbers.Number, str, bytes)) or heights is None:
+        raise TypeError(f"heights must be an array of measured heights, not {type(heights).__name__}")
+    a = np.asarray(heights)
+    if a.dtype.kind not in "iuf":
+        raise TypeError(f"heights must be an array of real numbers, not {type(heights).__name__}"
+                        + (f" of {a.dtype}" if isinstance(heights, np.ndarray) else ""))
+    flat = np.array(a, dtype=np.float64, order="C").reshape(-1)
+    flat.setflags(write=False)
+    return flat
+
+
+class HeightDistribution:
+    """The distribution of the asperity heights (MODEL.md section 9): a
+    standardised density g (mean 0, variance 1) that the model scales by
+    the asperities' standard deviation.
+
+    * :meth:`gaussian` -- the paper's Gaussian (the default);
+    * :meth:`pearson` -- the Pearson system from skewness Sk and kurtosis K
+      (not excess: 3 for a Gaussian), admissible where K > Sk**2 + 1,
+      |Sk| <= 5 and K <= 100; Pearson(0, 3) is the Gaussian;
+    * :meth:`weibull` -- a Weibull distribution of skewness Sk in
+      (-1.1395, 2] (its kurtosis follows from Sk);
+    * :meth:`empirical` -- a kernel density of measured heights (at least
+      100 finite values, any unit; NaN marks a missing point).
+
+    Inadmissible values raise ValueError naming the argument and its bound.
+    Pass one to :class:`Model` (``distribution=``). Immutable; it pickles
+    as what made it (an empirical one with its heights, so it is rebuilt
+    to the bit), and ``copy`` and ``deepcopy`` give it itself.
+
+    >>> d = HeightDistribution.pearson(0.0, 8.0)
+    >>> d.family, d.skewness, d.kurtosis, d.pearson_type
+    ('pearson', 0.0, 8.0, 'VII')
+    >>> round(d.pdf(0.0), 6) > HeightDistribution.gaussian().pdf(0.0)
+    True
+    """
+
+    __slots__ = ("_core", "_heights")
+
+    def __init__(self, core: Any, heights: Optional[np.ndarray] = None) -> None:
+        self._core = core
+        self._heights = heights
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        family = self.family
+        if family == "empirical":
+            return _distribution_of, (family, None, None, self._heights)
+        return _distribution_of, (family, self.skewness, self.kurtosis if family == "pearson" else None, None)
+
+    def __copy__(self) -> "HeightDistribution":
+        return self
+
+    def __deepcopy__(self, memo: Any) -> "HeightDistribution":
+        return self
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, HeightDistribution):
+            return NotImplemented
+        return bool(self._core.same(other._core))
+
+    def __hash__(self) -> int:
+        return hash((self.family, self.skewness, self.kurtosis))
+
+    @staticmethod
+    def gaussian() -> "HeightDistribution":
+        """The paper's Gaussian (skewness 0, kurtosis 3): the default."""
+        return HeightDistribution(_core.DistributionCore.gaussian())
+
+    @staticmethod
+    def pearson(skewness: float = 0.0, kurtosis: float = 3.0) -> "HeightDistribution":
+        """The Pearson distribution of ``skewness`` Sk and ``kurtosis`` K
+        (not excess: 3 for a Gaussian). ValueError outside K > Sk**2 + 1,
+        |Sk| <= 5, K <= 100 (or for NaN), naming the argument and the bound."""
+        _check_real(skewness=skewness, kurtosis=kurtosis)
+        return HeightDistribution(_core.DistributionCore.pearson(float(skewness), float(kurtosis)))
+
+    @staticmethod
+    def weibull(skewness: float = 0.0) -> "HeightDistribution":
+        """The standardised Weibull distribution of ``skewness`` Sk in
+        (-1.1395, 2] (its kurtosis follows: 2.717 at Sk = 0); ValueError
+        outside."""
+        _check_real(skewness=skewness)
+        return HeightDistribution(_core.DistributionCore.weibull(float(skewness)))
+
+    @staticmethod
+    def empirical(heights: ArrayLike) -> "HeightDistribution":
+        """The empirical (kernel) density of measured ``heights``: an array
+        of any shape (a height map is flattened), dtype convertible to
+        float64, any unit; NaN entries are skipped as missing points.
+        ValueError for fewer than 100 finite heights, constant ones or an
+        infinite one; TypeError for non-numeric input. The heights are
+        copied and kept (:attr:`heights`, pickling)."""
+        flat = _heights_array(heights)
+        return HeightDistribution(_core.DistributionCore.empirical(flat), flat)
+
+    @property
+    def family(self) -> str:
+        """The family: ``"gaussian"``, ``"pearson"``, ``"weibull"`` or ``"empirical"``."""
+        return self._core.family()
+
+    @property
+    def skewness(self) -> float:
+        """The skewness Sk (for an empirical density, the heights')."""
+        return self._core.skewness()
+
+    @property
+    def kurtosis(self) -> float:
+        """The kurtosis K, not excess (3 for a Gaussian; for Weibull the one
+        its skewness implies; for an empirical density, the heights')."""
+        return self._core.kurtosis()
+
+    @property
+    def is_gaussian(self) -> bool:
+        """Whether the model treats it as the paper's Gaussian (the Gaussian,
+        or Pearson(0, 3) exactly)."""
+        return self._core.is_gaussian()
+
+    @property
+    def heights(self) -> Optional[np.ndarray]:
+        """The heights of an empirical density (a read-only float64 copy,
+        flattened, NaN included), else None."""
+        return self._heights
+
+    @property
+    def bandwidth(self) -> Optional[float]:
+        """The kernel width of an empirical density (standardised units), else None."""
+        return self._core.bandwidth()
+
+    @property
+    def support(self) -> Tuple[float, float]:
+        """The standardised density's support (lo, hi), infinite where unbounded."""
+        return self._core.support()
+
+    @property
+    def mode(self) -> float:
+        """Where the standardised density is largest (for a J-shaped one,
+        the end where it is unbounded)."""
+        return self._core.mode()
+
+    @property
+    def pearson_type(self) -> Optional[str]:
+        """The Pearson type (``"0"`` for the normal, ``"I"`` ... ``"VII"``)
+        of a Pearson density or the Gaussian; None for the other families."""
+        return self._core.pearson_type()
+
+    def moments(self) -> Tuple[float, float, float, float, float]:
+        """(mass, mean, variance, skewness, kurtosis) of the standardised
+        density by the model's quadrature: (1, 0, 1, Sk, K) to about 1e-12
+        for light tails."""
+        return self._core.moments()
+
+    def _eval(self, x: ArrayLike, into: Any) -> Any:
+        scalar = _is_scalar(x)
+        shape, (flat,) = _arrays(("x",), (x,))
+        out = np.empty(flat.size)
+        into(flat, out)
+        return float(out[0]) if scalar else out.reshape(shape)[()]
+
+    def pdf(self, x: ArrayLike) -> Any:
+        """The standardised density g(x) (0 outside the support): a float
+        for a number, a float64 array of x's shape for an array-like."""
+        return self._eval(x, self._core.pdf_into)
+
+    def ln_pdf(self, x: ArrayLike) -> Any:
+        """ln g(x) (-inf outside the support); as :meth:`pdf`."""
+        return self._eval(x, self._core.ln_pdf_into)
+
+    def __repr__(self) -> str:
+        family = self.family
+        if family == "pearson":
+            return f"HeightDistribution.pearson({self.skewness!r}, {self.kurtosis!r})"
+        if family == "weibull":
+            return f"HeightDistribution.weibull({self.skewness!r})"
+        if family == "empirical":
+            return f"HeightDistribution.empirical(<{self._core.heights()} heights>)"
+        return "HeightDistribution.gaussian()"
+
+
+_FAMILIES = ("gaussian", "pearson", "weibull", "empirical")
+
+
+def _resolve(distribution: Any, skewness: Any, kurtosis: Any, heights: Any) -> Optional[HeightDistribution]:
+    """The distribution of :class:`Model`'s arguments, by the CLI's rules
+    (None for the Gaussian left out)."""
+    given = (("skewness", skewness), ("kurtosis", kurtosis), ("heights", heights))
+    if isinstance(distribution, HeightDistribution):
+        for name, value in given:
+            if value is not None:
+                raise ValueError(f"{name}: not with a HeightDistribution as distribution (it has its own)")
+        return distribution
+    if distribution is not None and not isinstance(distribution, str):
+        raise TypeError(f"distribution must be a str or a HeightDistribution, not {type(distribution).__name__}")
+    _check_real(**{k: v for k, v in given[:2] if v is not None})
+    if distribution is not None:
+        family = distribution
+    elif heights is not None:
+        family = "empirical"
+    elif skewness is not None or kurtosis is not None:
+        family = "pearson"
+    else:
+        return None
+    if family not in _FAMILIES:
+        raise ValueError(f"distribution = {family!r}: must be " + ", ".join(map(repr, _FAMILIES[:-1]))
+                         + f" or {_FAMILIES[-1]!r}")
+    if family != "empirical" and heights is not None:
+        raise ValueError(f"heights: only with distribution='empirical' (not {family!r})")
+    if family == "gaussian":
+        for name, value, normal in (("skewness", skewness, 0.0), ("kurtosis", kurtosis, 3.0)):
+            if value is not None and value != normal:
+                raise ValueError(f"{name} = {value!r}: the gaussian distribution has skewness 0 and kurtosis 3 "
+                                 "(use distribution='pearson')")
+        return HeightDistribution.gaussian()
+    if family == "pearson":
+        return HeightDistribution.pearson(0.0 if skewness is None else skewness, 3.0 if kurtosis is None else kurtosis)
+    if family == "weibull":
+        d = HeightDistribution.weibull(0.0 if skewness is None else skewness)
+        # The kurtosis its skewness implies (Model(**m.params)) agrees; another conflicts.
+        if kurtosis is not None and float(kurtosis) != d.kurtosis:
+            raise ValueError(f"kurtosis = {kurtosis!r}: not with distribution='weibull' (its kurtosis follows "
+                             f"from skewness: {d.kurtosis!r})")
+        return d
+    for name, value in given[:2]:
+        if value is not None:
+            raise ValueError(f"{name}: not with an empirical density (the heights give its shape)")
+    if heights is None:
+        raise ValueError("distribution = 'empirical' needs heights (an array of measured heights)")
+    return HeightDistribution.empirical(heights)
+
+
 @dataclasses.dataclass(frozen=True)
 class Contact:
     """The model at one separation or force (floats) or many (arrays):
@@ -557,37 +813,59 @@ class Model:
     A constant left out (or None) is the library's default,
     :data:`DEFAULTS`: beta = {beta!r}, nu = {nu!r}, eps_star = {eps_star!r},
     fit = {fit!r}, model = {model!r}.
+
+    The asperity heights' distribution (MODEL.md section 9, see
+    :class:`HeightDistribution`), as the CLI's flags: Gaussian by default;
+    Pearson when ``skewness`` or ``kurtosis`` (not excess: 3 for a
+    Gaussian) is given; empirical when ``heights`` (measured heights, an
+    array of any shape and real dtype) is given; or
+    ``distribution="gaussian"``, ``"pearson"``, ``"weibull"`` (skewness
+    alone) or ``"empirical"`` (heights alone), or a
+    :class:`HeightDistribution` (then none of the three). A conflicting
+    combination raises ValueError naming the argument; an inadmissible
+    value (kurtosis <= skewness**2 + 1, too few heights, ...) raises the
+    library's ValueError naming it and its bound.
     Invalid values raise ValueError naming the parameter and its range.
     Wrong types raise TypeError. Array work runs with the GIL released,
     and with ``threads=None`` (or a number) on several threads from 8
     points (as :meth:`Table.mu`): near 2x on two cores. The parameters
-    are attributes too (``Model(1.0, 0.001).beta``); a model pickles as
-    its parameters, and ``copy`` and ``deepcopy`` give the model itself.
+    are attributes too (``Model(1.0, 0.001).beta``, ``.distribution``,
+    ``.skewness``, ``.kurtosis``); a model pickles as its parameters (with
+    its :class:`HeightDistribution`, an empirical one with its heights),
+    and ``copy`` and ``deepcopy`` give the model itself.
 
     >>> c = Model(1.0, 0.001).at_f_star(0.01)      # solve F*(h*) = 0.01
     >>> round(c.h_star, 6), round(c.mu, 6)
     (1.469241, 0.525211)
     >>> Model(1.0, 0.001).at_h_star([0.0, 1.0, 2.0]).mu.shape
     (3,)
+    >>> round(Model(1.0, 0.001, kurtosis=8.0).at_f_star(1e-4).mu, 6)   # peaked heights
+    0.252902
     """
 
-    __slots__ = ("_core", "_params")
+    __slots__ = ("_core", "_params", "_distribution")
 
     def __init__(self, psi: float, theta: float, beta: Optional[float] = None, nu: Optional[float] = None,
-                 eps_star: Optional[float] = None, fit: Optional[str] = None, model: Optional[str] = None) -> None:
+                 eps_star: Optional[float] = None, fit: Optional[str] = None, model: Optional[str] = None,
+                 distribution: Union[str, "HeightDistribution", None] = None, skewness: Optional[float] = None,
+                 kurtosis: Optional[float] = None, heights: Optional[ArrayLike] = None) -> None:
         _check_real(psi=psi, theta=theta)
         _check_real(**{k: v for k, v in (("beta", beta), ("nu", nu), ("eps_star", eps_star)) if v is not None})
         for name, value in (("fit", fit), ("model", model)):
             if value is not None and not isinstance(value, str):
                 raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+        dist = _resolve(distribution, skewness, kurtosis, heights)
         self._core = _core.ModelCore(float(psi), float(theta), None if beta is None else float(beta),
                                      None if nu is None else float(nu),
-                                     None if eps_star is None else float(eps_star), fit, model)
+                                     None if eps_star is None else float(eps_star), fit, model,
+                                     None if dist is None else dist._core)
+        self._distribution = dist
         self._params: Dict[str, Any] = self._core.params()
 
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
         p = self._params
-        return Model, (p["psi"], p["theta"], p["beta"], p["nu"], p["eps_star"], p["fit"], p["model"])
+        return Model, (p["psi"], p["theta"], p["beta"], p["nu"], p["eps_star"], p["fit"], p["model"],
+                       self._distribution)
 
     def __copy__(self) -> "Model":
         return self
@@ -599,7 +877,10 @@ class Model:
     def params(self) -> Dict[str, Any]:
         """The model's parameters, a new dict each time, by the library's
         record names (what ``kefric params --json`` prints): psi, theta,
-        beta, nu, eps_star, fit and model."""
+        beta, nu, eps_star, fit, model, distribution, skewness, kurtosis
+        (and heights, their number, for an empirical density). ``Model(**p)``
+        rebuilds the model but for an empirical density (whose heights are
+        not in the record: use :attr:`height_distribution`)."""
         return dict(self._params)
 
     psi = property(lambda self: self._params["psi"], doc="The plasticity index psi (a float).")
@@ -610,6 +891,18 @@ class Model:
                         doc="The intermolecular distance eps/sigma (a float).")
     fit = property(lambda self: self._params["fit"], doc='The fit: "consistent" or "as-printed".')
     model = property(lambda self: self._params["model"], doc='The model: "ke" (Kogut-Etsion) or "ceb" (CEB-type).')
+    distribution = property(lambda self: self._params["distribution"],
+                            doc='The heights\' distribution family: "gaussian", "pearson", "weibull" or "empirical".')
+    skewness = property(lambda self: self._params["skewness"], doc="The skewness of the heights' distribution.")
+    kurtosis = property(lambda self: self._params["kurtosis"],
+                        doc="The kurtosis (not excess) of the heights' distribution.")
+
+    @property
+    def height_distribution(self) -> HeightDistribution:
+        """The heights' distribution, a :class:`HeightDistribution`."""
+        if self._distribution is None:
+            return HeightDistribution.gaussian()
+        return self._distribution
 
     def _at(self, x: ArrayLike, at_f_star: bool, name: str, out_of_domain: OutOfDomain,
             threads: Optional[int]) -> Contact:
@@ -661,8 +954,9 @@ def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardne
     delta_gamma: energy of adhesion (J/m^2); epsilon: intermolecular
     distance (m). Returns the model's parameters by the library's record
     names, as ``kefric params --json`` prints them: {"psi", "theta",
-    "beta", "nu", "eps_star", "fit", "model"} (the last two the defaults),
-    ready for ``Model(**p)``. Unphysical input raises ValueError naming it.
+    "beta", "nu", "eps_star", "fit", "model", "distribution", "skewness",
+    "kurtosis"} (the last five the defaults: Gaussian heights), ready for
+    ``Model(**p)``. Unphysical input raises ValueError naming it.
 
     >>> p = params_from_physical(e1=200e9, nu1=0.3, e2=200e9, nu2=0.3, hardness=2e9, sigma=100e-9,
     ...                          radius=10e-6, density=4e10, delta_gamma=0.3, epsilon=0.4e-9)
