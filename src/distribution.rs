@@ -19,6 +19,7 @@
 //! ```
 
 use crate::model::quadrature::{Rule, NODES};
+use crate::num::Shortest;
 use crate::params::{check, ParamError};
 use std::sync::Arc;
 
@@ -86,6 +87,93 @@ impl HeightDistribution {
     /// The empirical density of measured `heights` ([`Empirical::new`]).
     pub fn empirical(heights: &[f64]) -> Result<HeightDistribution, ParamError> {
         Ok(HeightDistribution::Empirical(Empirical::new(heights)?))
+    }
+
+    /// The distribution a front end's arguments ask for, by one set of
+    /// rules for every front end (CLI flags, Python keywords): `family` if
+    /// given (one of [`FAMILIES`](Self::FAMILIES)), else empirical with
+    /// `heights`, else Pearson with `skewness` or `kurtosis` (left out: 0
+    /// and 3), else the Gaussian. Weibull takes `skewness` alone (a
+    /// `kurtosis` only if it is the one the skewness implies); the
+    /// Gaussian only skewness 0 and kurtosis 3; `heights` only the
+    /// empirical family, which takes nothing else. Every error names the
+    /// argument ([`DistributionError::name`]).
+    ///
+    /// ```
+    /// use ke_friction::HeightDistribution as D;
+    /// assert_eq!(D::from_arguments(None, None, Some(8.0), None)?, D::pearson(0.0, 8.0)?);
+    /// assert_eq!(D::from_arguments(Some("gaussian"), None, Some(8.0), None).unwrap_err().name(), "kurtosis");
+    /// # Ok::<(), ke_friction::DistributionError>(())
+    /// ```
+    pub fn from_arguments(
+        family: Option<&str>,
+        skewness: Option<f64>,
+        kurtosis: Option<f64>,
+        heights: Option<&[f64]>,
+    ) -> Result<HeightDistribution, DistributionError> {
+        let conflict = |name: &'static str, reason: String| Err(DistributionError::Conflict { name, reason });
+        let family = match (family, heights) {
+            (Some(f), _) => f,
+            (None, Some(_)) => "empirical",
+            (None, None) if skewness.is_some() || kurtosis.is_some() => "pearson",
+            (None, None) => "gaussian",
+        };
+        if !HeightDistribution::FAMILIES.contains(&family) {
+            return conflict(
+                "distribution",
+                format!("must be gaussian, pearson, weibull or empirical (not {family:?})"),
+            );
+        }
+        if family != "empirical" && heights.is_some() {
+            return conflict(
+                "heights",
+                format!("only with the empirical distribution (not {family})"),
+            );
+        }
+        let d = match family {
+            "gaussian" => {
+                for (name, value, normal) in [("skewness", skewness, 0.0), ("kurtosis", kurtosis, 3.0)] {
+                    if value.is_some_and(|v| v != normal) {
+                        return conflict(
+                            name,
+                            "the gaussian distribution has skewness 0 and kurtosis 3 (ask for pearson)".into(),
+                        );
+                    }
+                }
+                HeightDistribution::Gaussian
+            }
+            "pearson" => HeightDistribution::pearson(skewness.unwrap_or(0.0), kurtosis.unwrap_or(3.0))?,
+            "weibull" => {
+                let d = HeightDistribution::weibull(skewness.unwrap_or(0.0))?;
+                if let Some(k) = kurtosis.filter(|&k| k != d.kurtosis()) {
+                    return conflict(
+                        "kurtosis",
+                        format!(
+                            "= {}: not with weibull, whose kurtosis follows from the skewness ({})",
+                            Shortest(k),
+                            Shortest(d.kurtosis())
+                        ),
+                    );
+                }
+                d
+            }
+            _ => {
+                if let Some(name) = [("skewness", skewness), ("kurtosis", kurtosis)]
+                    .into_iter()
+                    .find_map(|(name, v)| v.map(|_| name))
+                {
+                    return conflict(
+                        name,
+                        "not with an empirical density (the heights give its shape)".into(),
+                    );
+                }
+                let Some(heights) = heights else {
+                    return conflict("heights", "the empirical distribution needs measured heights".into());
+                };
+                HeightDistribution::empirical(heights)?
+            }
+        };
+        Ok(d)
     }
 
     /// The family's record name: `"gaussian"`, `"pearson"`, `"weibull"` or `"empirical"`.
@@ -164,6 +252,42 @@ impl HeightDistribution {
             panic!("HeightDistribution::density of an invalid distribution: {e}");
         }
         Density::new(self)
+    }
+}
+
+/// Why a front end's arguments do not make a distribution
+/// ([`HeightDistribution::from_arguments`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DistributionError {
+    /// A value out of its range (the family's bounds).
+    #[error(transparent)]
+    Value(#[from] ParamError),
+    /// Arguments that do not go together, or a missing or unknown one.
+    #[error("{name}{}{reason}", if reason.starts_with('=') { " " } else { ": " })]
+    Conflict {
+        /// The argument at fault: `distribution`, `skewness`, `kurtosis` or `heights`.
+        name: &'static str,
+        /// Why.
+        reason: String,
+    },
+}
+
+impl DistributionError {
+    /// The argument at fault (a front end spells it as its flag or keyword).
+    pub fn name(&self) -> &'static str {
+        match self {
+            DistributionError::Value(e) => e.name,
+            DistributionError::Conflict { name, .. } => name,
+        }
+    }
+
+    /// [`ParamError::kind`] for a value, else [`ErrorKind::Argument`](crate::ErrorKind::Argument).
+    pub fn kind(&self) -> crate::ErrorKind {
+        match self {
+            DistributionError::Value(e) => e.kind(),
+            DistributionError::Conflict { .. } => crate::ErrorKind::Argument,
+        }
     }
 }
 

@@ -58,8 +58,8 @@ pub mod topography;
 
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use distribution::{
-    Density, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES, PEARSON_KURTOSIS_MAX,
-    PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
+    Density, DistributionError, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
+    PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
 pub use error::ErrorKind;
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};

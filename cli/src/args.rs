@@ -419,60 +419,22 @@ impl SiArgs {
 
 impl DistributionArgs {
     /// The height distribution of `--distribution`, `--skewness`,
-    /// `--kurtosis` and `--heights`, validated.
+    /// `--kurtosis` and `--heights`, by the core's rules
+    /// ([`HeightDistribution::from_arguments`]), validated.
     pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
-        let family = match (self.distribution, &self.heights) {
-            (Some(f), _) => f,
-            (None, Some(_)) => DistributionArg::Empirical,
-            (None, None) if self.skewness.is_some() || self.kurtosis.is_some() => DistributionArg::Pearson,
-            (None, None) => DistributionArg::Gaussian,
-        };
-        let refuse = |flag: &str, why: &str| Err(Failure::input(format!("{flag}: {why}")));
-        let shape = |e: ke_friction::ParamError| Failure::input(format!("{}: {e}", flag_of(e.name)));
-        if family != DistributionArg::Empirical && self.heights.is_some() {
-            return refuse("--heights", "only with --distribution empirical");
-        }
-        match family {
-            DistributionArg::Gaussian => {
-                if self.skewness.is_some_and(|v| v != 0.0) || self.kurtosis.is_some_and(|v| v != 3.0) {
-                    return refuse(
-                        if self.skewness.is_some() {
-                            "--skewness"
-                        } else {
-                            "--kurtosis"
-                        },
-                        "the gaussian distribution has skewness 0 and kurtosis 3 (use --distribution pearson)",
-                    );
-                }
-                Ok(HeightDistribution::Gaussian)
+        let heights = self.heights.as_deref().map(crate::heights::read).transpose()?;
+        HeightDistribution::from_arguments(
+            self.distribution.map(DistributionArg::name),
+            self.skewness,
+            self.kurtosis,
+            heights.as_deref(),
+        )
+        .map_err(|e| match (&e, &self.heights) {
+            (ke_friction::DistributionError::Value(_), Some(path)) if e.name() == "heights" => {
+                Failure::input(format!("--heights {}: {e}", path.display()))
             }
-            DistributionArg::Pearson => {
-                HeightDistribution::pearson(self.skewness.unwrap_or(0.0), self.kurtosis.unwrap_or(3.0)).map_err(shape)
-            }
-            DistributionArg::Weibull => {
-                if self.kurtosis.is_some() {
-                    return refuse(
-                        "--kurtosis",
-                        "not with --distribution weibull (its kurtosis follows from --skewness)",
-                    );
-                }
-                HeightDistribution::weibull(self.skewness.unwrap_or(0.0)).map_err(shape)
-            }
-            DistributionArg::Empirical => {
-                if let Some(flag) = [("--skewness", self.skewness), ("--kurtosis", self.kurtosis)]
-                    .into_iter()
-                    .find_map(|(flag, v)| v.map(|_| flag))
-                {
-                    return refuse(flag, "not with an empirical density (the heights give its shape)");
-                }
-                let Some(path) = &self.heights else {
-                    return refuse("--distribution", "empirical needs --heights FILE");
-                };
-                let heights = crate::heights::read(path)?;
-                HeightDistribution::empirical(&heights)
-                    .map_err(|e| Failure::input(format!("--heights {}: {e}", path.display())))
-            }
-        }
+            _ => Failure::input(format!("{}: {e}", flag_of(e.name()))),
+        })
     }
 
     /// Whether any of the flags is given.
@@ -492,6 +454,18 @@ pub enum DistributionArg {
     Weibull,
     /// A kernel density of the heights in --heights FILE.
     Empirical,
+}
+
+impl DistributionArg {
+    /// The family's name, as the core spells it.
+    fn name(self) -> &'static str {
+        match self {
+            DistributionArg::Gaussian => "gaussian",
+            DistributionArg::Pearson => "pearson",
+            DistributionArg::Weibull => "weibull",
+            DistributionArg::Empirical => "empirical",
+        }
+    }
 }
 
 /// `--fit` values.

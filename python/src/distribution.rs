@@ -73,6 +73,24 @@ impl DistributionCore {
             .map_err(raise)
     }
 
+    /// The distribution of `Model`'s keywords, by the core's rules
+    /// (`HeightDistribution::from_arguments`; the error names the keyword).
+    #[staticmethod]
+    #[pyo3(signature = (family, skewness, kurtosis, heights))]
+    fn from_arguments(
+        py: Python<'_>,
+        family: Option<&str>,
+        skewness: Option<f64>,
+        kurtosis: Option<f64>,
+        heights: Option<PyReadonlyArray1<'_, f64>>,
+    ) -> PyResult<DistributionCore> {
+        let heights = heights.map(|h| slice("heights", &h).map(|v| v.to_vec())).transpose()?;
+        py.detach(|| {
+            HeightDistribution::from_arguments(family, skewness, kurtosis, heights.as_deref()).map(DistributionCore::of)
+        })
+        .map_err(raise)
+    }
+
     /// The empirical density of `heights` (NaN skipped), validated.
     #[staticmethod]
     fn empirical(py: Python<'_>, heights: PyReadonlyArray1<'_, f64>) -> PyResult<DistributionCore> {

@@ -38,7 +38,14 @@ macro_rules! core_errors {
     )*};
 }
 
-core_errors!(LookupError, ParamError, EvalError, CurveError, ke_friction::TableError);
+core_errors!(
+    LookupError,
+    ParamError,
+    EvalError,
+    CurveError,
+    ke_friction::TableError,
+    ke_friction::DistributionError
+);
 
 /// The exception of a failure of kind `kind` saying `message`.
 pub fn exception(kind: ErrorKind, message: String) -> PyErr {

@@ -280,3 +280,39 @@ fn solved_loads_are_the_loads_asked_for_with_a_u_shaped_density() {
     let c = m.at_f_star(0.1).unwrap();
     assert!(rel(c.f_star, 0.1) < 1e-5, "got {}", c.f_star);
 }
+
+/// The front ends' rules for a distribution's arguments, in one place.
+#[test]
+fn the_arguments_of_a_distribution_follow_one_set_of_rules() {
+    use HeightDistribution as D;
+    let heights: Vec<f64> = (0..200).map(|i| f64::from(i % 17)).collect();
+    assert_eq!(D::from_arguments(None, None, None, None).unwrap(), D::Gaussian);
+    assert_eq!(
+        D::from_arguments(None, Some(-0.5), None, None).unwrap(),
+        D::pearson(-0.5, 3.0).unwrap()
+    );
+    assert_eq!(
+        D::from_arguments(None, None, None, Some(&heights)).unwrap().family(),
+        "empirical"
+    );
+    let weibull = D::weibull(0.3).unwrap();
+    let implied = weibull.kurtosis();
+    assert_eq!(
+        D::from_arguments(Some("weibull"), Some(0.3), Some(implied), None).unwrap(),
+        weibull
+    );
+    for (family, sk, k, h, name) in [
+        (Some("lognormal"), None, None, None, "distribution"),
+        (Some("gaussian"), Some(0.3), None, None, "skewness"),
+        (Some("weibull"), None, Some(3.0), None, "kurtosis"),
+        (Some("pearson"), None, None, Some(&heights[..]), "heights"),
+        (Some("empirical"), None, None, None, "heights"),
+        (None, Some(0.1), None, Some(&heights[..]), "skewness"),
+        (None, Some(0.5), Some(1.2), None, "kurtosis"),
+        (None, None, None, Some(&heights[..50]), "heights"),
+    ] {
+        let e = D::from_arguments(family, sk, k, h).unwrap_err();
+        assert_eq!(e.name(), name, "{e}");
+        assert!(e.to_string().starts_with(name), "{e}");
+    }
+}

@@ -734,12 +734,10 @@ class HeightDistribution:
         return "HeightDistribution.gaussian()"
 
 
-_FAMILIES = ("gaussian", "pearson", "weibull", "empirical")
-
-
 def _resolve(distribution: Any, skewness: Any, kurtosis: Any, heights: Any) -> Optional[HeightDistribution]:
-    """The distribution of :class:`Model`'s arguments, by the CLI's rules
-    (None for the Gaussian left out)."""
+    """The distribution of :class:`Model`'s arguments, by the core's rules
+    (the CLI's; ``HeightDistribution::from_arguments``), or None when none
+    is given (the Gaussian)."""
     given = (("skewness", skewness), ("kurtosis", kurtosis), ("heights", heights))
     if isinstance(distribution, HeightDistribution):
         for name, value in given:
@@ -748,41 +746,13 @@ def _resolve(distribution: Any, skewness: Any, kurtosis: Any, heights: Any) -> O
         return distribution
     if distribution is not None and not isinstance(distribution, str):
         raise TypeError(f"distribution must be a str or a HeightDistribution, not {type(distribution).__name__}")
-    _check_real(**{k: v for k, v in given[:2] if v is not None})
-    if distribution is not None:
-        family = distribution
-    elif heights is not None:
-        family = "empirical"
-    elif skewness is not None or kurtosis is not None:
-        family = "pearson"
-    else:
+    if all(value is None for _, value in given) and distribution is None:
         return None
-    if family not in _FAMILIES:
-        raise ValueError(f"distribution = {family!r}: must be " + ", ".join(map(repr, _FAMILIES[:-1]))
-                         + f" or {_FAMILIES[-1]!r}")
-    if family != "empirical" and heights is not None:
-        raise ValueError(f"heights: only with distribution='empirical' (not {family!r})")
-    if family == "gaussian":
-        for name, value, normal in (("skewness", skewness, 0.0), ("kurtosis", kurtosis, 3.0)):
-            if value is not None and value != normal:
-                raise ValueError(f"{name} = {value!r}: the gaussian distribution has skewness 0 and kurtosis 3 "
-                                 "(use distribution='pearson')")
-        return HeightDistribution.gaussian()
-    if family == "pearson":
-        return HeightDistribution.pearson(0.0 if skewness is None else skewness, 3.0 if kurtosis is None else kurtosis)
-    if family == "weibull":
-        d = HeightDistribution.weibull(0.0 if skewness is None else skewness)
-        # The kurtosis its skewness implies (Model(**m.params)) agrees; another conflicts.
-        if kurtosis is not None and float(kurtosis) != d.kurtosis:
-            raise ValueError(f"kurtosis = {kurtosis!r}: not with distribution='weibull' (its kurtosis follows "
-                             f"from skewness: {d.kurtosis!r})")
-        return d
-    for name, value in given[:2]:
-        if value is not None:
-            raise ValueError(f"{name}: not with an empirical density (the heights give its shape)")
-    if heights is None:
-        raise ValueError("distribution = 'empirical' needs heights (an array of measured heights)")
-    return HeightDistribution.empirical(heights)
+    _check_real(**{k: v for k, v in given[:2] if v is not None})
+    flat = None if heights is None else _heights_array(heights)
+    core = _core.DistributionCore.from_arguments(distribution, None if skewness is None else float(skewness),
+                                                 None if kurtosis is None else float(kurtosis), flat)
+    return HeightDistribution(core, flat if core.family() == "empirical" else None)
 
 
 @dataclasses.dataclass(frozen=True)
