@@ -212,6 +212,11 @@ impl Model {
                 hi = h;
                 next = f64::NAN;
             }
+            let tol = 2.0 * f64::EPSILON * h.abs().max(1.0);
+            if (next - h).abs() <= tol && residual > SOLVE_RESIDUAL {
+                // Newton stalled away from the root: bisect, or widen the search.
+                next = f64::NAN;
+            }
             let bracketed = lo.is_finite() && hi.is_finite();
             if !(next > lo && next < hi) {
                 next = if bracketed {
@@ -239,19 +244,8 @@ impl Model {
                 }
                 next = -H_LIMIT;
             }
-            let tol = 2.0 * f64::EPSILON * h.abs().max(1.0);
-            if (bracketed && hi - lo <= tol) || ((next - h).abs() <= tol && residual <= SOLVE_RESIDUAL) {
+            if (next - h).abs() <= tol || (bracketed && hi - lo <= tol) {
                 return Ok(next);
-            }
-            if (next - h).abs() <= tol {
-                // Newton stalled away from the root: bisect, or widen the search.
-                next = if bracketed {
-                    0.5 * (lo + hi)
-                } else if lo.is_finite() {
-                    lo + max_step
-                } else {
-                    hi - max_step
-                };
             }
             h = next;
         }
