@@ -10,7 +10,7 @@
 //! ```
 //! use ke_friction::HeightDistribution;
 //! let peaked = HeightDistribution::pearson(0.0, 8.0)?;
-//! let g = peaked.density();
+//! let g = peaked.density()?;
 //! let [mass, mean, var, sk, k] = g.moments();
 //! assert!((mass - 1.0).abs() < 1e-12 && mean.abs() < 1e-12 && (var - 1.0).abs() < 1e-12);
 //! assert!(sk.abs() < 1e-12 && (k - 8.0).abs() < 1e-9);
@@ -145,15 +145,18 @@ impl HeightDistribution {
             "pearson" => HeightDistribution::pearson(skewness.unwrap_or(0.0), kurtosis.unwrap_or(3.0))?,
             "weibull" => {
                 let d = HeightDistribution::weibull(skewness.unwrap_or(0.0))?;
-                if let Some(k) = kurtosis.filter(|&k| k != d.kurtosis()) {
-                    return conflict(
-                        "kurtosis",
-                        format!(
-                            "= {}: not with weibull, whose kurtosis follows from the skewness ({})",
-                            Shortest(k),
-                            Shortest(d.kurtosis())
-                        ),
-                    );
+                if let Some(k) = kurtosis {
+                    let implied = d.kurtosis();
+                    if k != implied {
+                        return conflict(
+                            "kurtosis",
+                            format!(
+                                "= {}: not with weibull, whose kurtosis follows from the skewness ({})",
+                                Shortest(k),
+                                Shortest(implied)
+                            ),
+                        );
+                    }
                 }
                 d
             }
@@ -211,10 +214,7 @@ impl HeightDistribution {
         match self {
             HeightDistribution::Gaussian => 3.0,
             HeightDistribution::Pearson { kurtosis, .. } => *kurtosis,
-            HeightDistribution::Weibull { .. } => match self.validate() {
-                Ok(()) => self.density().moments()[4],
-                Err(_) => f64::NAN,
-            },
+            HeightDistribution::Weibull { .. } => self.density().map_or(f64::NAN, |d| d.moments()[4]),
             HeightDistribution::Empirical(e) => e.0.kurtosis,
         }
     }
@@ -243,15 +243,11 @@ impl HeightDistribution {
         }
     }
 
-    /// The standardised density g (mean 0, variance 1) of a valid distribution.
-    ///
-    /// # Panics
-    /// If the distribution does not [`validate`](Self::validate).
-    pub fn density(&self) -> Density {
-        if let Err(e) = self.validate() {
-            panic!("HeightDistribution::density of an invalid distribution: {e}");
-        }
-        Density::new(self)
+    /// The standardised density g (mean 0, variance 1), or why the
+    /// distribution is not valid ([`validate`](Self::validate)).
+    pub fn density(&self) -> Result<Density, ParamError> {
+        self.validate()?;
+        Ok(Density::new(self))
     }
 }
 
@@ -468,7 +464,21 @@ pub(crate) struct End {
 
 /// An end with `power` below this gets a Gauss–Jacobi rule with that very
 /// weight; above it the density is smooth enough there for graded panels.
-pub(crate) const JACOBI_POWER_MAX: f64 = 2.0;
+const JACOBI_POWER_MAX: f64 = 2.0;
+
+impl End {
+    /// The Gauss–Jacobi rule with this end's weight `t^power`, if the end
+    /// takes one (`power` < [`JACOBI_POWER_MAX`]).
+    pub(crate) fn jacobi_rule(&self) -> Option<Rule> {
+        (self.power < JACOBI_POWER_MAX).then(|| Rule::jacobi(self.power))
+    }
+
+    /// Whether a panel of `width` (standardised units) reaching this end
+    /// takes its Gauss–Jacobi rule.
+    pub(crate) fn takes_jacobi(&self, width: f64) -> bool {
+        self.power < JACOBI_POWER_MAX && width <= self.jacobi_width
+    }
+}
 
 /// `ln g = −e·ln(B(x)/B0) − f·G(x)`, `G(x) = ln(1 + x·k/(B0·(1 − x/r_b)))/k`.
 #[derive(Debug, Clone, Copy)]
@@ -545,7 +555,8 @@ pub struct Density {
 }
 
 impl Density {
-    fn new(dist: &HeightDistribution) -> Density {
+    /// The density of a distribution that validated.
+    pub(crate) fn new(dist: &HeightDistribution) -> Density {
         let mut d = match dist {
             _ if dist.is_gaussian() => Density::plain(Shape::Normal, None, None, 0.0),
             HeightDistribution::Pearson { skewness, kurtosis } => Density::pearson(*skewness, *kurtosis),
@@ -947,8 +958,7 @@ impl Density {
         for dir in [-1.0, 1.0] {
             let end = if dir > 0.0 { self.hi } else { self.lo };
             march(self, start, dir, end, &mut |x0, x1, rule| {
-                sum += panel_sum(self, x0, x1, rule, end, &f);
-                false
+                sum += panel_sum(self, x0, x1, rule, end, &f)
             });
         }
         sum
@@ -966,28 +976,23 @@ pub(crate) enum PanelRule {
 
 /// Walks from `x` in direction `dir` (±1) in panels until the support end
 /// (`end`) or until the density has become negligible; calls `f(x0, x1,
-/// rule)` (with `x0 < x1`). `f` returns true to stop early.
-fn march(g: &Density, x: f64, dir: f64, end: Option<End>, f: &mut impl FnMut(f64, f64, PanelRule) -> bool) {
+/// rule)` (with `x0 < x1`).
+fn march(g: &Density, x: f64, dir: f64, end: Option<End>, f: &mut impl FnMut(f64, f64, PanelRule)) {
     let peak = g.ln_pdf(g.mode).max(g.ln_pdf(x));
     let peak = if peak.is_finite() { peak } else { g.ln_pdf(x) };
     let mut x = x;
     for _ in 0..100_000 {
-        let dist = end.map(|e| (e.at - x) * dir);
         let mut step = 8.0 / g.dln_pdf(x).abs().max(1e-300);
         step = step.max(1e-3 * (1.0 + x.abs()) * f64::EPSILON.sqrt());
         // Far out, panels grow with |x| (power tails) but stay within their
         // distance from 0 for the x^k weights.
         step = step.min(0.5 * (1.0 + x.abs())).min(g.smoothness_scale());
-        if let Some(dist) = dist {
+        if let Some(e) = end {
+            let dist = (e.at - x) * dir;
             if dist <= 0.0 {
                 return;
             }
-            let e = end.unwrap_or(End {
-                at: 0.0,
-                power: 0.0,
-                jacobi_width: 0.0,
-            });
-            if e.power < JACOBI_POWER_MAX && step >= 0.5 * dist && dist <= e.jacobi_width {
+            if step >= 0.5 * dist && e.takes_jacobi(dist) {
                 let (a, b) = if dir > 0.0 { (x, e.at) } else { (e.at, x) };
                 f(a, b, PanelRule::JacobiEnd);
                 return;
@@ -996,15 +1001,12 @@ fn march(g: &Density, x: f64, dir: f64, end: Option<End>, f: &mut impl FnMut(f64
         }
         let x1 = x + dir * step;
         let (a, b) = if dir > 0.0 { (x, x1) } else { (x1, x) };
-        if f(a, b, PanelRule::Legendre) {
-            return;
-        }
+        f(a, b, PanelRule::Legendre);
         x = x1;
         // Negligible: the density times (1 + x²)² has fallen by e^−60.
-        let ln_g = if let Some(e) = end {
-            g.ln_pdf_at_end(e, (e.at - x) * dir)
-        } else {
-            g.ln_pdf(x)
+        let ln_g = match end {
+            Some(e) => g.ln_pdf_at_end(e, (e.at - x) * dir),
+            None => g.ln_pdf(x),
         };
         if ln_g + 2.0 * (1.0 + x * x).ln() < peak - 60.0 || ln_g == f64::NEG_INFINITY {
             return;
@@ -1026,8 +1028,10 @@ fn panel_sum(g: &Density, x0: f64, x1: f64, rule: PanelRule, end: Option<End>, f
                 .sum()
         }
         PanelRule::JacobiEnd => {
-            let Some(e) = end else { return 0.0 };
-            let r = Rule::jacobi(e.power);
+            let Some(r) = end.and_then(|e| e.jacobi_rule().map(|r| (e, r))) else {
+                return 0.0;
+            };
+            let (e, r) = r;
             let upper = e.at == x1;
             // ∫ |x − e|^p·(g/|x − e|^p) over the panel, in the distance t·width.
             (0..NODES)
@@ -1211,15 +1215,9 @@ mod moment_tests {
         ];
         // Near type V: K where D = B1² − 4B0B2 = 0, and just off it.
         let type_v = |sk: f64| {
-            // Sk²(K+3)² = 4(4K − 3Sk²)(2K − 3Sk² − 6): a quadratic in K.
+            // Sk²(K+3)² = 4(4K − 3Sk²)(2K − 3Sk² − 6), by bisection on D
+            // between the gamma line and K = 100.
             let s2 = sk * sk;
-            let (a, b, c) = (
-                s2 - 32.0,
-                6.0 * s2 + 4.0 * (-6.0 * s2 - 24.0 - 12.0 * s2) + 0.0,
-                9.0 * s2 - 12.0 * s2 * (-3.0 * s2 - 6.0),
-            );
-            let _ = (a, b, c);
-            // Solve numerically instead (bisection on D between the gamma line and K = 100).
             let d = |k: f64| {
                 let b1 = sk * (k + 3.0);
                 b1 * b1 - 4.0 * (4.0 * k - 3.0 * s2) * (2.0 * k - 3.0 * s2 - 6.0)
@@ -1249,7 +1247,7 @@ mod moment_tests {
             })
             .collect();
         for &(sk, k) in cases.iter().chain(&near_v) {
-            let g = HeightDistribution::pearson(sk, k).unwrap().density();
+            let g = HeightDistribution::pearson(sk, k).unwrap().density().unwrap();
             let [m0, mean, var, s, kk] = g.moments();
             eprintln!(
                 "({sk}, {k}) {:?}: {m0:.3e} {mean:.3e} {var:.3e} {s:.3e} {kk:.3e} supp {:?} mode {}",
@@ -1266,7 +1264,7 @@ mod moment_tests {
         }
         for sk in [-1.0, -0.5, 0.0, 0.5, 1.0, 2.0] {
             let d = HeightDistribution::weibull(sk).unwrap();
-            let [m0, mean, var, s, kk] = d.density().moments();
+            let [m0, mean, var, s, kk] = d.density().unwrap().moments();
             eprintln!("weibull {sk}: {m0:.3e} {mean:.3e} {var:.3e} {s:.3e} {kk:.3e}");
             assert!((m0 - 1.0).abs() < 1e-12 && mean.abs() < 1e-11 && (var - 1.0).abs() < 1e-11);
             assert!((s - sk).abs() < 1e-10 && (kk - d.kurtosis()).abs() < 1e-10);

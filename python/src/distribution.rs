@@ -21,7 +21,8 @@ impl DistributionCore {
     /// The core of a distribution that validated.
     fn of(dist: HeightDistribution) -> DistributionCore {
         DistributionCore {
-            density: dist.density(),
+            // Every constructor below validated it.
+            density: dist.density().expect("a validated distribution"),
             kurtosis: dist.kurtosis(),
             dist,
         }

@@ -67,7 +67,7 @@ pub fn distributions_page(psi: f64, theta: f64) -> Result<Page, FigureError> {
             shape: SHAPES[i % SHAPES.len()],
             phase: i as f64 / of as f64,
         });
-        let density = d.density();
+        let density = d.density()?;
         let model = Model::new(Constants::default().distribution(d).at(psi, theta)?)?;
         let mut points = Vec::with_capacity(DISTRIBUTIONS_LOADS);
         for k in 0..DISTRIBUTIONS_LOADS {

@@ -14,7 +14,7 @@
 
 use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use super::quadrature::{Rule, NODES};
-use crate::distribution::{Density, End, JACOBI_POWER_MAX};
+use crate::distribution::{Density, End};
 use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
@@ -241,7 +241,7 @@ impl General {
                 power: e.power,
                 end: e,
                 jacobi_width: s * e.jacobi_width,
-                rule: (e.power < JACOBI_POWER_MAX).then(|| Rule::jacobi(e.power)),
+                rule: e.jacobi_rule(),
             })
         };
         General {
@@ -409,7 +409,9 @@ impl Surface {
         let heights = if p.constants.distribution.is_gaussian() {
             Heights::Gauss(gauss)
         } else {
-            Heights::General(std::sync::Arc::new(General::new(p.constants.distribution.density(), s)))
+            // Model::new validated the constants.
+            let g = Density::new(&p.constants.distribution);
+            Heights::General(std::sync::Arc::new(General::new(g, s)))
         };
         Surface {
             kind: p.constants.kind,
