@@ -48,32 +48,30 @@ fn markdown(rows: &[Statement]) -> String {
     out.push_str("| # | The paper says | MODEL.md | This model | Verdict |\n");
     out.push_str("|---|---|---|---|---|\n");
     for (i, r) in rows.iter().enumerate() {
-        let verdict = match r.verdict {
-            Verdict::Agrees => "agrees".to_string(),
-            Verdict::Partly => match &r.holds_for {
-                Some(c) => format!("**partly**: only for {}", stretches(c)),
-                None => "**partly**".to_string(),
-            },
-            Verdict::Differs if r.note.is_empty() => "**differs**".to_string(),
-            Verdict::Differs => format!("**differs**: {}", cell(r.note)),
-        };
         out.push_str(&format!(
             "| {} | {} | {} | {} | {} |\n",
             i + 1,
             cell(r.paper),
             cell(r.model_md),
             cell(&r.computed),
-            verdict
+            verdict_cell(r)
         ));
     }
+    out.push_str(&summary(rows, "##"));
+    out
+}
+
+/// The count of verdicts and the numbered criteria under a `heading`
+/// (`##` or `###`).
+fn summary(rows: &[Statement], heading: &str) -> String {
     let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
-    out.push_str(&format!(
-        "\n{} of {} statements agree, {} partly, {} differ.\n\n## Criteria\n\n",
+    let mut out = format!(
+        "\n{} of {} statements agree, {} partly, {} differ.\n\n{heading} Criteria\n\n",
         count(Verdict::Agrees),
         rows.len(),
         count(Verdict::Partly),
         count(Verdict::Differs)
-    ));
+    );
     for (i, r) in rows.iter().enumerate() {
         out.push_str(&format!("{}. {}.\n", i + 1, r.criterion));
     }
@@ -116,16 +114,6 @@ fn literature(rows: &[Statement]) -> String {
             verdict_cell(r)
         ));
     }
-    let count = |v: Verdict| rows.iter().filter(|r| r.verdict == v).count();
-    out.push_str(&format!(
-        "\n{} of {} statements agree, {} partly, {} differ.\n\n### Criteria\n\n",
-        count(Verdict::Agrees),
-        rows.len(),
-        count(Verdict::Partly),
-        count(Verdict::Differs)
-    ));
-    for (i, r) in rows.iter().enumerate() {
-        out.push_str(&format!("{}. {}.\n", i + 1, r.criterion));
-    }
+    out.push_str(&summary(rows, "###"));
     out
 }
