@@ -204,6 +204,19 @@ pub(super) fn log_range(lo: f64, hi: f64) -> (f64, f64) {
     (10f64.powf(a), 10f64.powf(b))
 }
 
+/// A μ axis for `series`: logarithmic where μ spans more than a factor 10,
+/// else linear from 0.
+pub(super) fn mu_axis(series: &[Series]) -> ChartAxis {
+    let (_, (lo, hi)) = extent(series);
+    let log = hi / lo > 10.0;
+    ChartAxis {
+        title: "μ".into(),
+        log,
+        range: if log { log_range(lo, hi) } else { zero_to(hi) },
+        ticks: None,
+    }
+}
+
 /// A linear range from 0 to a round number above `hi`.
 pub(super) fn zero_to(hi: f64) -> (f64, f64) {
     let step = nice_step(hi / 6.0);

@@ -2,8 +2,7 @@
 //! the lookup overlaid, and a table's error map.
 
 use super::chart::{
-    extent, f_axis, log_range, nice_step, num, pow10, zero_to, Chart, ChartAxis, Corner, ErrorMap, LineStyle, Page,
-    Series,
+    f_axis, mu_axis, nice_step, num, pow10, Chart, ChartAxis, Corner, ErrorMap, LineStyle, Page, Series,
 };
 use super::paper::mu_points;
 use super::FigureError;
@@ -97,22 +96,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>, f_star: Option<(f64, f64
             Series::line(None, rel.iter().map(|&(f, r)| (f, r / unit)).collect(), 1),
         ));
     }
-    let (_, (ylo, yhi)) = extent(&series);
-    let y = if yhi / ylo > 10.0 {
-        ChartAxis {
-            title: "μ".into(),
-            log: true,
-            range: log_range(ylo, yhi),
-            ticks: None,
-        }
-    } else {
-        ChartAxis {
-            title: "μ".into(),
-            log: false,
-            range: zero_to(yhi),
-            ticks: None,
-        }
-    };
+    let y = mu_axis(&series);
     let mut x = f_axis(&series);
     let bottom = bottom.map(|(y, curve)| Chart {
         title: None,

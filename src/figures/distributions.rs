@@ -1,7 +1,8 @@
 //! μ(F*) for non-Gaussian asperity heights (MODEL.md §9), with the
 //! standardised densities g(x) that produce it.
 
-use super::chart::{extent, f_axis, log_range, num, zero_to, Chart, ChartAxis, Corner, Markers, Page, Series, Shape};
+use super::chart::{f_axis, mu_axis, num, Chart, ChartAxis, Corner, Markers, Page, Series};
+use super::paper::SHAPES;
 use super::FigureError;
 use crate::{Constants, HeightDistribution, Model};
 
@@ -26,15 +27,6 @@ pub const DISTRIBUTIONS_F_STAR: (f64, f64) = (1e-5, 0.1);
 pub const DENSITY_X: (f64, f64) = (-5.0, 8.0);
 /// The g range of the density panel (logarithmic).
 pub const DENSITY_Y: (f64, f64) = (1e-8, 1.0);
-
-/// Marker shapes, cycled over the distributions.
-const SHAPES: [Shape; 5] = [
-    Shape::Circle,
-    Shape::Square,
-    Shape::Triangle,
-    Shape::Diamond,
-    Shape::TriangleDown,
-];
 
 /// The Gaussian and the Pearson distributions of [`DISTRIBUTION_SET`],
 /// each with its legend label ("Gaussian", "Sk = 0.5, K = 3.375").
@@ -103,22 +95,7 @@ pub fn distributions_page(psi: f64, theta: f64) -> Result<Page, FigureError> {
             "mu is defined at no load in [{lo:e}, {hi:e}] for psi = {psi}, theta = {theta}"
         )));
     }
-    let (_, (ylo, yhi)) = extent(&mu_series);
-    let y = if yhi / ylo > 10.0 {
-        ChartAxis {
-            title: "μ".into(),
-            log: true,
-            range: log_range(ylo, yhi),
-            ticks: None,
-        }
-    } else {
-        ChartAxis {
-            title: "μ".into(),
-            log: false,
-            range: zero_to(yhi),
-            ticks: None,
-        }
-    };
+    let y = mu_axis(&mu_series);
     let mut x = f_axis(&mu_series);
     x.range.0 = x.range.0.min(lo);
     Ok(Page {

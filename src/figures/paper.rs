@@ -41,8 +41,9 @@ fn psi_label(psi: f64) -> String {
 /// The ψ of Figs. 3 and 4; Fig. 5 uses the first three. Each keeps its
 /// colour and marker shape in every figure.
 const PSIS: [f64; 5] = [0.5, 1.0, 2.0, 4.0, 8.0];
-/// The marker shape of `PSIS[k]` (Figs. 3–5) and of the k-th θ (Fig. 6).
-const SHAPES: [Shape; 5] = [
+/// The marker shape of `PSIS[k]` (Figs. 3–5) and of the k-th θ (Fig. 6),
+/// and the shapes other figures cycle through.
+pub(super) const SHAPES: [Shape; 5] = [
     Shape::Circle,
     Shape::Square,
     Shape::Triangle,

@@ -212,7 +212,7 @@ pub struct Statement {
 impl Verdict {
     /// The verdict of a statement over a range of loads: everywhere,
     /// somewhere, nowhere.
-    fn over(c: &Coverage) -> Verdict {
+    pub(crate) fn over(c: &Coverage) -> Verdict {
         if c.everywhere() {
             Verdict::Agrees
         } else if c.nowhere() {

@@ -8,7 +8,7 @@
 //! paper, J. Tribol. 2004, doi 10.1115/1.1739406); nothing here expects
 //! this model to reproduce them, the rows say where it does.
 
-use super::fits::{holds_where, Coverage};
+use super::fits::holds_where;
 use super::{sig, stretches, PaperError, Statement, Verdict};
 use crate::{Constants, HeightDistribution, Model};
 
@@ -43,16 +43,6 @@ pub fn tayebi_ratio(psi: f64, theta: f64, f_star: f64) -> Result<f64, PaperError
 fn log_slope(m: &Model, f: f64) -> Result<f64, PaperError> {
     let k = 1e-3f64.exp();
     Ok((mu(m, f * k)? / mu(m, f / k)?).ln() / (2e-3))
-}
-
-fn coverage_verdict(c: &Coverage) -> Verdict {
-    if c.everywhere() {
-        Verdict::Agrees
-    } else if c.nowhere() {
-        Verdict::Differs
-    } else {
-        Verdict::Partly
-    }
 }
 
 /// The §9 literature statements: (1) high kurtosis with positive skewness
@@ -147,7 +137,7 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
                 sig(gs, 3)
             ),
             value: c.ends.0,
-            verdict: coverage_verdict(&c),
+            verdict: Verdict::over(&c),
             criterion: "dμ/dF* > 0 (central difference in ln F*) at every load of 1e-5 ≤ F* ≤ 0.1, 20 per decade",
             note: "",
             holds_for: Some(c),
@@ -186,7 +176,7 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
                 }
             ),
             value: r_light,
-            verdict: match coverage_verdict(&c) {
+            verdict: match Verdict::over(&c) {
                 Verdict::Agrees if !magnified => Verdict::Partly,
                 v => v,
             },
