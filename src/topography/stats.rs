@@ -425,21 +425,36 @@ impl Topography {
         positive("kurtosis", kurtosis)?;
 
         let (m20, m40, m02, m04) = sums.derivatives(self)?;
+        SurfaceStats::from_moments(
+            (points, missing, nx, ny, self.dx, self.dy),
+            [m0, skewness, kurtosis],
+            (m20, m02, m40, m04),
+        )
+    }
+}
+
+impl SurfaceStats {
+    /// The record of measured (or combined) moments: m2, m4 (a map's
+    /// averages over x and y), the anisotropy ratios, the quantities of
+    /// MODEL.md §10 that follow from m0, m2, m4, and the warnings.
+    fn from_moments(
+        (points, missing, nx, ny, dx, dy): (usize, usize, usize, usize, f64, Option<f64>),
+        [m0, skewness, kurtosis]: [f64; 3],
+        (m20, m02, m40, m04): (f64, Option<f64>, f64, Option<f64>),
+    ) -> Result<SurfaceStats, StatsError> {
         let (m2, m4) = match (m02, m04) {
             (Some(m02), Some(m04)) => (0.5 * (m20 + m02), 0.5 * (m40 + m04)),
             _ => (m20, m40),
         };
-        let anisotropy_m2 = m02.map(|m02| m20 / m02);
-        let anisotropy_m4 = m04.map(|m04| m40 / m04);
         let derived = Derived::new(m0, m2, m4)?;
         let mut stats = SurfaceStats {
             points,
             missing,
             nx,
             ny,
-            dx: self.dx,
-            dy: self.dy,
-            sigma,
+            dx,
+            dy,
+            sigma: m0.sqrt(),
             skewness,
             kurtosis,
             m20,
@@ -454,16 +469,14 @@ impl Topography {
             beta: derived.beta,
             sigma_s: derived.sigma_s,
             y_s: derived.y_s,
-            anisotropy_m2,
-            anisotropy_m4,
+            anisotropy_m2: m02.map(|m02| m20 / m02),
+            anisotropy_m4: m04.map(|m04| m40 / m04),
             warnings: Vec::new(),
         };
         stats.warn();
         Ok(stats)
     }
-}
 
-impl SurfaceStats {
     /// Adds the warnings that follow from α and the anisotropy ratios.
     fn warn(&mut self) {
         if self.alpha < ALPHA_GAUSSIAN {
@@ -515,38 +528,11 @@ pub fn combine(a: &SurfaceStats, b: &SurfaceStats) -> Result<SurfaceStats, Stats
     let kurtosis = 3.0 + ((a.kurtosis - 3.0) * va * va + (b.kurtosis - 3.0) * vb * vb) / (m0 * m0);
     finite("skewness", skewness)?;
     positive("kurtosis", kurtosis)?;
-    let m20 = a.m20 + b.m20;
-    let m40 = a.m40 + b.m40;
-    let m2 = a.m2 + b.m2;
-    let m4 = a.m4 + b.m4;
-    let derived = Derived::new(m0, m2, m4)?;
-    let mut stats = SurfaceStats {
-        points: a.points,
-        missing: a.missing,
-        nx: a.nx,
-        ny: a.ny,
-        dx: a.dx,
-        dy,
-        sigma,
-        skewness,
-        kurtosis,
-        m20,
-        m02,
-        m40,
-        m04,
-        m2,
-        m4,
-        alpha: derived.alpha,
-        eta: derived.eta,
-        radius: derived.radius,
-        beta: derived.beta,
-        sigma_s: derived.sigma_s,
-        y_s: derived.y_s,
-        anisotropy_m2: m02.map(|m02| m20 / m02),
-        anisotropy_m4: m04.map(|m04| m40 / m04),
-        warnings: Vec::new(),
-    };
-    stats.warn();
+    let mut stats = SurfaceStats::from_moments(
+        (a.points, a.missing, a.nx, a.ny, a.dx, dy),
+        [m0, skewness, kurtosis],
+        (a.m20 + b.m20, m02, a.m40 + b.m40, m04),
+    )?;
     for (name, first, second) in [("dx", Some(a.dx), Some(b.dx)), ("dy", a.dy, b.dy)] {
         if let (Some(first), Some(second)) = (first, second) {
             if (first - second).abs() > INTERVAL_TOLERANCE * first.abs().max(second.abs()) {
