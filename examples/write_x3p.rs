@@ -15,18 +15,13 @@ use std::path::Path;
 
 use ke_friction::topography::{read_file, write_x3p, ReadOptions, Topography};
 
+#[path = "../tests/npy.rs"]
+mod npy;
+
 /// A `.npy` file of f64 heights, shape (ny, nx).
 fn write_npy(path: &Path, heights: &[f64], nx: usize, ny: usize) -> std::io::Result<()> {
-    let mut header = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': ({ny}, {nx}), }}");
-    while (10 + header.len() + 1) % 64 != 0 {
-        header.push(' ');
-    }
-    header.push('\n');
-    let mut out = b"\x93NUMPY\x01\x00".to_vec();
-    out.extend((header.len() as u16).to_le_bytes());
-    out.extend(header.as_bytes());
-    out.extend(heights.iter().flat_map(|h| h.to_le_bytes()));
-    std::fs::write(path, out)
+    let data: Vec<u8> = heights.iter().flat_map(|h| h.to_le_bytes()).collect();
+    std::fs::write(path, npy::npy("<f8", false, &[ny, nx], &data))
 }
 
 /// A rough-looking map: a few incommensurate waves, about a micrometre.

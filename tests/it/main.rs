@@ -13,6 +13,8 @@ mod curve;
 mod forge;
 mod hardening_numerics;
 mod nongaussian;
+#[path = "../npy.rs"]
+mod npy;
 mod paper_statements;
 mod properties;
 mod reference_points;

@@ -10,6 +10,7 @@ use std::path::Path;
 use ke_friction::topography::{read_file, write_x3p, Format, ReadError, ReadOptions, Topography};
 
 use crate::common::TempDir;
+use crate::npy::npy;
 
 fn opts() -> ReadOptions {
     ReadOptions::default()
@@ -486,28 +487,6 @@ fn x3p_bad_files() {
 }
 
 // ---------------------------------------------------------------- .npy
-
-/// A `.npy` file (format 1.0).
-fn npy(descr: &str, fortran: bool, shape: &[usize], data: &[u8]) -> Vec<u8> {
-    let shape = match shape {
-        [n] => format!("({n},)"),
-        _ => format!(
-            "({})",
-            shape.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")
-        ),
-    };
-    let order = if fortran { "True" } else { "False" };
-    let mut header = format!("{{'descr': '{descr}', 'fortran_order': {order}, 'shape': {shape}, }}");
-    while (10 + header.len() + 1) % 64 != 0 {
-        header.push(' ');
-    }
-    header.push('\n');
-    let mut out = b"\x93NUMPY\x01\x00".to_vec();
-    out.extend((header.len() as u16).to_le_bytes());
-    out.extend(header.as_bytes());
-    out.extend(data);
-    out
-}
 
 #[test]
 fn npy_orders_and_types() {
