@@ -863,6 +863,17 @@ impl Density {
         }
     }
 
+    /// ln g(x) and g'(x)/g(x) together (one kernel sum for an empirical
+    /// density, where each alone would cost one).
+    #[inline]
+    pub(crate) fn ln_pdf_and_slope(&self, x: f64) -> (f64, f64) {
+        if let Shape::Kde(kde) = &self.shape {
+            let (v, dv) = kde_value_slope(kde, x);
+            return (v.ln(), dv / v);
+        }
+        (self.ln_pdf(x), self.dln_pdf(x))
+    }
+
     /// ln g at distance `dist ≥ 0` inside the support from its finite end
     /// `e`, computed from the distance itself (no rounding of `e.at ± dist`).
     pub(crate) fn ln_pdf_at_end(&self, e: End, dist: f64) -> f64 {

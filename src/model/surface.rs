@@ -140,8 +140,16 @@ trait Phi {
     const GENERAL: bool;
     /// φ*(z).
     fn phi(&self, z: f64) -> f64;
-    /// `w·φ*'(z)/φ*(z)`: a node's weight for ∂/∂d*.
-    fn dw(&self, w: f64, z: f64) -> f64;
+    /// φ*(z) and what [`dw`](Phi::dw) needs of its slope (one evaluation
+    /// of the density for both).
+    fn phi_slope(&self, z: f64) -> (f64, f64);
+    /// The log-slope φ*'/φ* at `z` alone (nodes of an end's panel).
+    fn slope(&self, _z: f64) -> f64 {
+        0.0
+    }
+    /// `w·φ*'(z)/φ*(z)`: a node's weight for ∂/∂d*, from `slope` of
+    /// [`phi_slope`](Phi::phi_slope).
+    fn dw(&self, w: f64, z: f64, slope: f64) -> f64;
     /// Panel length in z* at height `z`.
     fn step(&self, z: f64) -> f64;
     /// The window of the contact integrals at `d`.
@@ -181,7 +189,12 @@ impl Phi for Gauss {
     }
 
     #[inline(always)]
-    fn dw(&self, w: f64, z: f64) -> f64 {
+    fn phi_slope(&self, z: f64) -> (f64, f64) {
+        (self.phi(z), 0.0)
+    }
+
+    #[inline(always)]
+    fn dw(&self, w: f64, z: f64, _slope: f64) -> f64 {
         -w * z * self.inv_s2
     }
 
@@ -267,11 +280,20 @@ impl Phi for General {
         self.ln_phi(z).exp()
     }
 
-    fn dw(&self, w: f64, z: f64) -> f64 {
+    fn phi_slope(&self, z: f64) -> (f64, f64) {
+        let (ln, slope) = self.g.ln_pdf_and_slope(z * self.inv_s);
+        ((ln + self.ln_inv_s).exp(), slope * self.inv_s)
+    }
+
+    fn slope(&self, z: f64) -> f64 {
+        self.g.dln_pdf(z * self.inv_s) * self.inv_s
+    }
+
+    fn dw(&self, w: f64, _z: f64, slope: f64) -> f64 {
         if w == 0.0 {
             0.0
         } else {
-            w * self.g.dln_pdf(z * self.inv_s) * self.inv_s
+            w * slope
         }
     }
 
@@ -666,7 +688,7 @@ impl Surface {
                 let wp = hw * wt * h.phi(z);
                 let a = asperity::adhesion_noncontact(1.0 + g / self.eps);
                 j += a * wp;
-                dj += h.dw(a * wp, z);
+                dj += h.dw(a * wp, z, 0.0);
             }
             g0 = g1;
             width *= 2.0;
@@ -685,17 +707,21 @@ impl Surface {
         let mut scale = 0.0f64;
         let mode = h.mode();
         let eps = self.eps;
-        let add = |j: &mut f64, dj: &mut f64, g: f64, wp: f64| {
+        // Adds a node of weight `wp` (φ* included) at gap `g`; returns its part of J_nc.
+        let add = |j: &mut f64, dj: &mut f64, g: f64, wp: f64, slope: f64| {
             let z = d - g;
-            let a = asperity::adhesion_noncontact(1.0 + g / eps);
-            *j += a * wp;
-            *dj += h.dw(a * wp, z);
+            let part = asperity::adhesion_noncontact(1.0 + g / eps) * wp;
+            *j += part;
+            *dj += h.dw(part, z, slope);
+            part
         };
         // A first panel at the upper end of the support (below z* = d*).
         if let Some(e) = hi_end.filter(|_| g0 > 0.0) {
             let w = width.min(h.step(e.z)).min(0.5 * (g_max - g0));
             if e.jacobi(w) {
-                h.end_panel(e, w, |dist, wp| add(&mut j, &mut dj, g0 + dist, wp));
+                h.end_panel(e, w, |dist, wp| {
+                    add(&mut j, &mut dj, g0 + dist, wp, h.slope(e.z - dist));
+                });
                 g0 += w;
                 width = self.eps + g0;
             }
@@ -716,7 +742,9 @@ impl Surface {
             if let Some(e) = lo_end {
                 let dist = z0 - e.z;
                 if e.jacobi(w.max(dist)) && w >= 0.5 * dist {
-                    h.end_panel(e, dist, |t, wp| add(&mut j, &mut dj, g_max - t, wp));
+                    h.end_panel(e, dist, |t, wp| {
+                        add(&mut j, &mut dj, g_max - t, wp, h.slope(e.z + t));
+                    });
                     break;
                 }
                 w = w.min(0.5 * dist);
@@ -726,9 +754,8 @@ impl Surface {
             let mut local = 0.0;
             for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
                 let g = g0 + hw * t;
-                let wp = hw * wt * h.phi(d - g);
-                local += wp * asperity::adhesion_noncontact(1.0 + g / eps);
-                add(&mut j, &mut dj, g, wp);
+                let (p, slope) = h.phi_slope(d - g);
+                local += add(&mut j, &mut dj, g, hw * wt * p, slope);
             }
             scale = scale.max(local.abs());
             g0 = g1;
@@ -838,14 +865,14 @@ impl Surface {
                     let e = hi_end.expect("an upper end");
                     h.end_panel(e, width, |dist, w| {
                         let z = e.z - dist;
-                        f((z - d) / om, w, h.dw(w, z))
+                        f((z - d) / om, w, h.dw(w, z, h.slope(z)))
                     });
                 }
                 _ => {
                     let e = lo_end.expect("a lower end");
                     h.end_panel(e, width, |dist, w| {
                         let z = e.z + dist;
-                        f((z - d) / om, w, h.dw(w, z))
+                        f((z - d) / om, w, h.dw(w, z, h.slope(z)))
                     });
                 }
             }
@@ -855,8 +882,9 @@ impl Surface {
         for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
             let x = x0 + (x1 - x0) * t;
             let z = d + self.omega * x;
-            let w = hw * wt * h.phi(z);
-            f(x, w, h.dw(w, z));
+            let (p, slope) = h.phi_slope(z);
+            let w = hw * wt * p;
+            f(x, w, h.dw(w, z, slope));
         }
     }
 
@@ -868,8 +896,9 @@ impl Surface {
         for i in 0..NODES {
             let x = x1 * rule.t[i];
             let z = d + self.omega * x;
-            let w = scale * rule.w[i] * h.phi(z);
-            f(x, w, h.dw(w, z));
+            let (p, slope) = h.phi_slope(z);
+            let w = scale * rule.w[i] * p;
+            f(x, w, h.dw(w, z, slope));
         }
     }
 }
