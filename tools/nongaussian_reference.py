@@ -90,7 +90,7 @@ from mpmath import mp, mpf
 # The single-asperity laws are the Gaussian reference's (tools/reference.py,
 # beside this file): only the height density and its integrals are new here.
 sys.path.insert(0, __import__("os").path.dirname(__file__))
-from reference import D, mu_ep, x0  # noqa: E402
+from reference import D, NoSolution, mu_ep, solve_decreasing, x0  # noqa: E402
 
 mp.dps = 30
 
@@ -666,61 +666,12 @@ class Model:
                     mu=Q / F if F > 0 else None)
 
 
-class NoSolution(Exception):
-    pass
-
-
 def _solve_bracket(g, h_lo=-8, h_hi=12, tol=None):
-    """root of the decreasing g on the positive branch: step 0.5 from h = 0,
-    then Anderson-Bjorck"""
-    step = mpf('0.5')
-    h = mpf(0)
-    gh = g(h)
-    if gh > 0:
-        a, ga = h, gh
-        while True:
-            b = a + step
-            if b > h_hi:
-                raise NoSolution('h* > %s' % h_hi)
-            gb = g(b)
-            if gb <= 0:
-                break
-            a, ga = b, gb
-    else:
-        b, gb = h, gh
-        while True:
-            a = b - step
-            if a < h_lo:
-                raise NoSolution('h* < %s' % h_lo)
-            ga = g(a)
-            if ga > 0:
-                break
-            b, gb = a, ga
-    if gb == 0:
-        return b
-    side = 0
-    for _ in range(200):
-        c = b - gb * (b - a) / (gb - ga)
-        if not (min(a, b) < c < max(a, b)):
-            c = (a + b) / 2
-        gc = g(c)
-        if gc == 0:
-            return c
-        if (gc > 0) == (ga > 0):
-            if side == 1:
-                m = 1 - gc / ga
-                gb = gb * (m if m > 0 else mpf('0.5'))
-            a, ga = c, gc
-            side = 1
-        else:
-            if side == -1:
-                m = 1 - gc / gb
-                ga = ga * (m if m > 0 else mpf('0.5'))
-            b, gb = c, gc
-            side = -1
-        if abs(b - a) < tol:
-            break
-    return a if abs(ga) < abs(gb) else b
+    """root of the decreasing g on the positive branch (reference.py's
+    search: steps of 0.5 from h = 0, then Anderson-Bjorck)"""
+    return solve_decreasing(g, tol,
+                            lambda h: 'h* > %s' % h_hi if h > h_hi else None,
+                            lambda h: 'h* < %s' % h_lo if h < h_lo else None)
 
 
 def solve_mu(psi, theta, dist, sk=None, K=None, f=None, dps=30, coarse=True):

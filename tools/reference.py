@@ -354,7 +354,17 @@ class NoSolution(Exception):
 def solve_h(model, p, f, d_min=-6, d_max=9, tol=mpf(10) ** -22):
     """h* with F*(h*) = f on the positive branch (F decreasing there)."""
     f = mpf(f)
-    g = lambda h: f_only(model, p, h) - f
+    return solve_decreasing(
+        lambda h: f_only(model, p, h) - f, tol,
+        lambda h: 'd* > %s' % d_max if p.d_of_h(h) > d_max else None,
+        lambda h: 'd* < %s' % d_min if p.d_of_h(h) < d_min else None)
+
+
+def solve_decreasing(g, tol, too_high, too_low):
+    """The root of a decreasing g: steps of 0.5 from h = 0 until the sign
+    changes, then Anderson-Bjorck regula falsi to |b - a| < tol.
+    too_high(h) / too_low(h) give a message (NoSolution) where a step
+    leaves the range, else None.  Shared by tools/nongaussian_reference.py."""
     step = mpf('0.5')
     h = mpf(0)
     gh = g(h)
@@ -362,8 +372,8 @@ def solve_h(model, p, f, d_min=-6, d_max=9, tol=mpf(10) ** -22):
         a, ga = h, gh
         while True:
             b = a + step
-            if p.d_of_h(b) > d_max:
-                raise NoSolution('d* > %s' % d_max)
+            if too_high(b):
+                raise NoSolution(too_high(b))
             gb = g(b)
             if gb <= 0:
                 break
@@ -372,8 +382,8 @@ def solve_h(model, p, f, d_min=-6, d_max=9, tol=mpf(10) ** -22):
         b, gb = h, gh
         while True:
             a = b - step
-            if p.d_of_h(a) < d_min:
-                raise NoSolution('d* < %s' % d_min)
+            if too_low(a):
+                raise NoSolution(too_low(a))
             ga = g(a)
             if ga > 0:
                 break
