@@ -28,7 +28,9 @@ use std::sync::Arc;
 ///
 /// Its record names (JSON, the NumPy export, the bindings) are
 /// `distribution` ([`family`](Self::family)), `skewness` and `kurtosis`.
-#[derive(Debug, Clone, PartialEq, Default)]
+///
+/// Equality is as distributions: Pearson(0, 3) equals the Gaussian.
+#[derive(Debug, Clone, Default)]
 #[non_exhaustive]
 pub enum HeightDistribution {
     /// The paper's Gaussian (skewness 0, kurtosis 3).
@@ -283,6 +285,30 @@ impl DistributionError {
         match self {
             DistributionError::Value(e) => e.kind(),
             DistributionError::Conflict { .. } => crate::ErrorKind::Argument,
+        }
+    }
+}
+
+impl PartialEq for HeightDistribution {
+    /// The same distribution: the same family and parameters, or both the
+    /// Gaussian (Pearson(0, 3) is the Gaussian).
+    fn eq(&self, other: &HeightDistribution) -> bool {
+        use HeightDistribution::*;
+        match (self, other) {
+            _ if self.is_gaussian() || other.is_gaussian() => self.is_gaussian() && other.is_gaussian(),
+            (
+                Pearson {
+                    skewness: a,
+                    kurtosis: k,
+                },
+                Pearson {
+                    skewness: b,
+                    kurtosis: l,
+                },
+            ) => a == b && k == l,
+            (Weibull { skewness: a }, Weibull { skewness: b }) => a == b,
+            (Empirical(a), Empirical(b)) => a == b,
+            _ => false,
         }
     }
 }

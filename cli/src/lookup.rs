@@ -116,7 +116,7 @@ fn check_distribution(flags: &DistributionArgs, table: &Table) -> Result<(), Fai
     }
     let asked = flags.distribution()?;
     let held = &table.domain().constants.distribution;
-    if asked.is_gaussian() && held.is_gaussian() || &asked == held {
+    if &asked == held {
         return Ok(());
     }
     let flag = if flags.heights.is_some() {

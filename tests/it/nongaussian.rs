@@ -316,3 +316,20 @@ fn the_arguments_of_a_distribution_follow_one_set_of_rules() {
         assert!(e.to_string().starts_with(name), "{e}");
     }
 }
+
+/// Equality is as distributions: Pearson(0, 3) is the Gaussian.
+#[test]
+fn pearson_0_3_equals_the_gaussian() {
+    assert_eq!(
+        HeightDistribution::pearson(0.0, 3.0).unwrap(),
+        HeightDistribution::Gaussian
+    );
+    assert_ne!(
+        HeightDistribution::pearson(0.0, 3.5).unwrap(),
+        HeightDistribution::Gaussian
+    );
+    assert_ne!(
+        HeightDistribution::pearson(0.0, 3.0).unwrap(),
+        HeightDistribution::weibull(0.0).unwrap()
+    );
+}
