@@ -6,6 +6,18 @@ use kefriction::*;
 use std::ffi::{CStr, CString};
 use std::ptr::{null, null_mut};
 
+/// μ by the core itself at ψ = 1, θ = 0.001 with `constants`, for the C
+/// calls to match.
+fn core_mu(constants: ke_friction::Constants, f_star: f64) -> f64 {
+    let params = constants.at(1.0, 0.001).unwrap();
+    ke_friction::Model::new(params)
+        .unwrap()
+        .at_f_star(f_star)
+        .unwrap()
+        .mu
+        .unwrap()
+}
+
 fn name(p: *const std::ffi::c_char) -> String {
     assert!(!p.is_null());
     // SAFETY: a static NUL-terminated name.
@@ -47,18 +59,12 @@ fn the_handle_round_trips_and_changes_the_model() {
         let mut ceb_mu = 0.0;
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, &mut ceb_mu), KEF_OK);
         assert_ne!(ceb_mu, base);
-        let expected = ke_friction::Model::new(
+        let expected = core_mu(
             ke_friction::Constants::default()
                 .fit(ke_friction::Fit::AsPrinted)
-                .kind(ke_friction::Kind::CebType)
-                .at(1.0, 0.001)
-                .unwrap(),
-        )
-        .unwrap()
-        .at_f_star(0.01)
-        .unwrap()
-        .mu
-        .unwrap();
+                .kind(ke_friction::Kind::CebType),
+            0.01,
+        );
         assert_eq!(ceb_mu, expected);
 
         assert_eq!(kef_constants_set_beta(c, 0.05), KEF_OK);
@@ -209,17 +215,10 @@ fn the_heights_distribution_reaches_the_model() {
         let (family, sk, k) = distribution_of(c);
         assert_eq!((family, sk), (KEF_DIST_WEIBULL, 0.0));
         assert!((k - 2.717).abs() < 1e-3, "{k}");
-        let expected = ke_friction::Model::new(
-            ke_friction::Constants::default()
-                .distribution(ke_friction::HeightDistribution::weibull(0.0).unwrap())
-                .at(1.0, 0.001)
-                .unwrap(),
-        )
-        .unwrap()
-        .at_f_star(1e-4)
-        .unwrap()
-        .mu
-        .unwrap();
+        let expected = core_mu(
+            ke_friction::Constants::default().distribution(ke_friction::HeightDistribution::weibull(0.0).unwrap()),
+            1e-4,
+        );
         let mut weibull = 0.0;
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut weibull), KEF_OK);
         assert_eq!(weibull, expected);
@@ -371,17 +370,7 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
         let mut again = 0.0;
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut again), KEF_OK);
         assert_eq!(again, mu);
-        let expected = ke_friction::Model::new(
-            ke_friction::Constants::default()
-                .distribution(want)
-                .at(1.0, 0.001)
-                .unwrap(),
-        )
-        .unwrap()
-        .at_f_star(1e-4)
-        .unwrap()
-        .mu
-        .unwrap();
+        let expected = core_mu(ke_friction::Constants::default().distribution(want), 1e-4);
         assert_eq!(mu, expected);
         kef_constants_free(c);
     }
