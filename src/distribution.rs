@@ -289,6 +289,27 @@ impl DistributionError {
     }
 }
 
+impl std::fmt::Display for HeightDistribution {
+    /// `gaussian`, `pearson (skewness 0.5, kurtosis 3.375)`, `weibull
+    /// (skewness 0, kurtosis 2.717)` or `empirical (20000 heights, skewness …,
+    /// kurtosis …)`: how every front end names it in text.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.is_gaussian() {
+            return f.write_str("gaussian");
+        }
+        write!(f, "{} (", self.family())?;
+        if let HeightDistribution::Empirical(e) = self {
+            write!(f, "{} heights, ", e.len())?;
+        }
+        write!(
+            f,
+            "skewness {}, kurtosis {})",
+            Shortest::rounded(self.skewness()),
+            Shortest::rounded(self.kurtosis())
+        )
+    }
+}
+
 impl PartialEq for HeightDistribution {
     /// The same distribution: the same family and parameters, or both the
     /// Gaussian (Pearson(0, 3) is the Gaussian).

@@ -557,20 +557,10 @@ pub fn describe(p: &Params) -> String {
         Shortest(p.constants.eps_star),
         p.constants.fit.name(),
         p.constants.kind.name()
-    ) + &describe_distribution(&p.constants.distribution)
-}
-
-/// `, distribution = …, skewness = …, kurtosis = …` for a non-Gaussian
-/// distribution; empty for the Gaussian.
-pub fn describe_distribution(d: &HeightDistribution) -> String {
-    match d {
-        HeightDistribution::Gaussian => String::new(),
-        _ => format!(
-            ", distribution = {}, skewness = {}, kurtosis = {}",
-            d.family(),
-            Shortest::rounded(d.skewness()),
-            Shortest::rounded(d.kurtosis())
-        ),
+    ) + &if p.constants.distribution.is_gaussian() {
+        String::new()
+    } else {
+        format!(", heights = {}", p.constants.distribution)
     }
 }
 

@@ -61,17 +61,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         Shortest(d.constants.nu),
         Shortest(d.constants.eps_star)
     )?;
-    let dist = &d.constants.distribution;
-    if dist.is_gaussian() {
-        outln!("heights:    gaussian")?;
-    } else {
-        outln!(
-            "heights:    {}, skewness = {}, kurtosis = {}",
-            dist.family(),
-            Shortest(dist.skewness()),
-            Shortest::rounded(dist.kurtosis())
-        )?;
-    }
+    outln!("heights:    {}", d.constants.distribution)?;
     outln!(
         "accuracy:   mu max relative error {:.2e} (tolerance {}), 99th percentile {:.2e}, {} points at build",
         acc.max_rel,

@@ -128,18 +128,8 @@ fn check_distribution(flags: &DistributionArgs, table: &Table) -> Result<(), Fai
     } else {
         "--distribution"
     };
-    let describe = |d: &ke_friction::HeightDistribution| match d.family() {
-        "gaussian" => "gaussian".to_string(),
-        family => format!(
-            "{family} (skewness {}, kurtosis {})",
-            Shortest::rounded(d.skewness()),
-            Shortest::rounded(d.kurtosis())
-        ),
-    };
     Err(Failure::input(format!(
-        "{flag}: the table holds {} heights, not {} (build a table for them with kefric build, or use kefric eval)",
-        describe(held),
-        describe(&asked)
+        "{flag}: the table holds {held} heights, not {asked} (build a table for them with kefric build, or use kefric eval)"
     )))
 }
 
