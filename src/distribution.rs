@@ -837,6 +837,17 @@ impl Density {
         self.mode
     }
 
+    /// Below the first and above the second, g only falls away from its
+    /// mass: the mode for the unimodal families, the outermost kernel
+    /// centres for an empirical density (whose outliers make it
+    /// multimodal: a tail may not be cut at the first dip).
+    pub(crate) fn tails(&self) -> (f64, f64) {
+        match &self.shape {
+            Shape::Kde(kde) => (kde.centres[0], kde.centres[kde.centres.len() - 1]),
+            _ => (self.mode, self.mode),
+        }
+    }
+
     /// The Pearson type, for a Pearson density (the Gaussian is
     /// [`PearsonType::Normal`]).
     pub fn pearson_type(&self) -> Option<PearsonType> {
@@ -908,17 +919,6 @@ impl Density {
             }
             _ => -x,
         }
-    }
-
-    /// ln g(x) and g'(x)/g(x) together (one kernel sum for an empirical
-    /// density, where each alone would cost one).
-    #[inline]
-    pub(crate) fn ln_pdf_and_slope(&self, x: f64) -> (f64, f64) {
-        if let Shape::Kde(kde) = &self.shape {
-            let (v, dv) = kde_value_slope(kde, x);
-            return (v.ln(), dv / v);
-        }
-        (self.ln_pdf(x), self.dln_pdf(x))
     }
 
     /// ln g at distance `dist ≥ 0` inside the support from its finite end

@@ -54,6 +54,13 @@ pub fn adhesion_noncontact(u: f64) -> f64 {
     (4.0 / 3.0) * (u2 - 0.25 * u8)
 }
 
+/// d/du of [`adhesion_noncontact`]: `(4/3)(−2u^−3 + 2u^−9)`.
+#[inline]
+pub fn adhesion_noncontact_slope(u: f64) -> f64 {
+    let u3 = 1.0 / (u * u * u);
+    (8.0 / 3.0) * (u3 * u3 * u3 - u3)
+}
+
 /// Depth of first yield on the axis, in contact radii (ν = 0.3).
 const ZETA: f64 = 0.48;
 

@@ -65,8 +65,11 @@ struct Rules {
     gj_load: Rule,
     gj_adh: Rule,
     gj_fric: Rule,
-    /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1).
+    /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1), which is
+    /// also the weight `x^0.5` of the Hertz load's slope.
     gj_half: Rule,
+    /// Gauss–Jacobi rule for `x^−0.702`, the elastic adhesion's slope.
+    gj_adh_slope: Rule,
 }
 
 impl Rules {
@@ -78,6 +81,7 @@ impl Rules {
             gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
             gj_fric: Rule::jacobi(FRICTION_ELASTIC.1),
             gj_half: Rule::jacobi(0.5),
+            gj_adh_slope: Rule::jacobi(adhesion::ELASTIC.1 - 1.0),
         })
     }
 }
@@ -127,9 +131,6 @@ impl Window {
 /// At most this many panels per integral (a safeguard: the tails of the
 /// heaviest admissible densities need a few hundred).
 const MAX_PANELS: usize = 100_000;
-/// Step (in units of σ_s) of the central differences that give ∂P*/∂d*
-/// and ∂Fs*/∂d* for densities with a finite end.
-const DIFFERENCE_STEP: f64 = 1e-5;
 /// A tail is negligible once its part falls below this fraction (e^−40).
 const NEGLIGIBLE: f64 = 4.248354255291589e-18;
 
@@ -140,16 +141,13 @@ trait Phi {
     const GENERAL: bool;
     /// φ*(z).
     fn phi(&self, z: f64) -> f64;
-    /// φ*(z) and what [`dw`](Phi::dw) needs of its slope (one evaluation
-    /// of the density for both).
-    fn phi_slope(&self, z: f64) -> (f64, f64);
-    /// The log-slope φ*'/φ* at `z` alone (nodes of an end's panel).
-    fn slope(&self, _z: f64) -> f64 {
-        0.0
-    }
-    /// `w·φ*'(z)/φ*(z)`: a node's weight for ∂/∂d*, from `slope` of
-    /// [`phi_slope`](Phi::phi_slope).
-    fn dw(&self, w: f64, z: f64, slope: f64) -> f64;
+    /// A node's weight for ∂/∂d* from its weight `w`: for the Gaussian
+    /// `w·φ*'(z)/φ*(z)`, which the laws multiply (differentiating under the
+    /// integral); for a general density `−w/ω`, which the laws' slopes
+    /// multiply (d* moves the laws, not the density: no terms at the ends
+    /// of the support, which may be infinite there), with the laws' jumps
+    /// at the regime boundaries added apart (`Surface::add_jumps`).
+    fn dw(&self, w: f64, z: f64, inv_omega: f64) -> f64;
     /// Panel length in z* at height `z`.
     fn step(&self, z: f64) -> f64;
     /// The window of the contact integrals at `d`.
@@ -158,9 +156,11 @@ trait Phi {
     fn ends(&self) -> (Option<&ZEnd>, Option<&ZEnd>) {
         (None, None)
     }
-    /// Where φ* is largest.
-    fn mode(&self) -> f64 {
-        0.0
+    /// Below the first and above the second, φ* only falls away from the
+    /// mass: where a tail may be cut once it is negligible (the mode for a
+    /// unimodal density; the outermost kernels for an empirical one).
+    fn tails(&self) -> (f64, f64) {
+        (0.0, 0.0)
     }
     /// Whether the contact integrals' tail beyond `z` is negligible.
     fn negligible(&self, _z: f64, _win: Window) -> bool {
@@ -189,12 +189,7 @@ impl Phi for Gauss {
     }
 
     #[inline(always)]
-    fn phi_slope(&self, z: f64) -> (f64, f64) {
-        (self.phi(z), 0.0)
-    }
-
-    #[inline(always)]
-    fn dw(&self, w: f64, z: f64, _slope: f64) -> f64 {
+    fn dw(&self, w: f64, z: f64, _inv_omega: f64) -> f64 {
         -w * z * self.inv_s2
     }
 
@@ -240,8 +235,13 @@ struct General {
     g: Density,
     inv_s: f64,
     ln_inv_s: f64,
+    /// Largest panel near the mass, and anywhere (2 σ_s growing with |z*|
+    /// into power tails; two kernel widths for an empirical density, whose
+    /// outliers are bumps of that width however far out).
     max_step: f64,
+    max_step_far: f64,
     mode: f64,
+    tails: (f64, f64),
     lo: Option<ZEnd>,
     hi: Option<ZEnd>,
 }
@@ -261,7 +261,9 @@ impl General {
             lo: zend(g.lower_end()),
             hi: zend(g.upper_end()),
             max_step: MAX_STEP * s * g.smoothness_scale().min(1.0),
+            max_step_far: MAX_STEP * s * g.smoothness_scale(),
             mode: s * g.mode(),
+            tails: (s * g.tails().0, s * g.tails().1),
             inv_s: 1.0 / s,
             ln_inv_s: -s.ln(),
             g,
@@ -280,30 +282,22 @@ impl Phi for General {
         self.ln_phi(z).exp()
     }
 
-    fn phi_slope(&self, z: f64) -> (f64, f64) {
-        let (ln, slope) = self.g.ln_pdf_and_slope(z * self.inv_s);
-        ((ln + self.ln_inv_s).exp(), slope * self.inv_s)
-    }
-
-    fn slope(&self, z: f64) -> f64 {
-        self.g.dln_pdf(z * self.inv_s) * self.inv_s
-    }
-
-    fn dw(&self, w: f64, _z: f64, slope: f64) -> f64 {
-        if w == 0.0 {
-            0.0
-        } else {
-            w * slope
-        }
+    fn dw(&self, w: f64, _z: f64, inv_omega: f64) -> f64 {
+        -w * inv_omega
     }
 
     fn step(&self, z: f64) -> f64 {
         let slope = (self.g.dln_pdf(z * self.inv_s) * self.inv_s).abs();
-        let cap = self.max_step.max(0.5 * z.abs());
+        let cap = self.max_step.max((0.5 * z.abs()).min(self.max_step_far));
         let step = STEP_DECAY / slope;
-        // At an end of the support the slope is infinite: the end's
-        // Gauss–Jacobi rule holds the singular factor, the rest is smooth.
-        if step < cap && slope.is_finite() {
+        // At an end of the support the slope is infinite (or, a rounding
+        // away, huge): the end's Gauss–Jacobi rule holds the singular
+        // factor, and the rest is smooth on the scale of the support.
+        let at_end = [&self.lo, &self.hi]
+            .into_iter()
+            .flatten()
+            .any(|e| (z - e.z).abs() <= 1e-9 * (1.0 + e.z.abs()));
+        if step < cap && slope.is_finite() && !at_end {
             step
         } else {
             cap
@@ -332,12 +326,12 @@ impl Phi for General {
         (self.lo.as_ref(), self.hi.as_ref())
     }
 
-    fn mode(&self) -> f64 {
-        self.mode
+    fn tails(&self) -> (f64, f64) {
+        self.tails
     }
 
     fn negligible(&self, z: f64, win: Window) -> bool {
-        if z <= self.mode {
+        if z <= self.tails.1 {
             return false;
         }
         let ln = self.ln_phi(z) + 2.0 * (1.0 + (z - win.d).abs() * self.inv_s).ln();
@@ -387,22 +381,27 @@ struct Panel {
 /// Adds a node's load `p` and, with an adhesion exponent `b_adh`, its
 /// adhesion `x^b_adh` (from `lx = ln x`), with weights `w`, `dw`.
 #[inline(always)]
-fn add_node(acc: &mut Sums, p: f64, lx: f64, w: f64, dw: f64, b_adh: Option<f64>) {
+///
+/// The d*-derivatives: for the Gaussian `dw` is `w·φ*'/φ*` and multiplies
+/// the laws; for a general density `dw` is `−w/ω` and multiplies the laws'
+/// slopes (`dp_dx` for the load), see [`Phi::GENERAL`].
+#[allow(clippy::too_many_arguments)]
+fn add_node<H: Phi>(acc: &mut Sums, p: f64, dp_dx: f64, x: f64, lx: f64, w: f64, dw: f64, b_adh: Option<f64>) {
     acc.p += p * w;
-    acc.dp += p * dw;
+    acc.dp += if H::GENERAL { dp_dx * dw } else { p * dw };
     if let Some(b) = b_adh {
         let f = (b * lx).exp();
         acc.fs += f * w;
-        acc.dfs += f * dw;
+        acc.dfs += if H::GENERAL { b * f / x * dw } else { f * dw };
     }
 }
 
 /// Adds the Hertz load `x^1.5` and the elastic adhesion `x^0.298` (both
 /// models) at an interior node; returns `x^1.5`.
 #[inline(always)]
-fn elastic_node(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
+fn elastic_node<H: Phi>(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
     let p = x * x.sqrt();
-    add_node(acc, p, lx, w, dw, adh.then_some(adhesion::ELASTIC.1));
+    add_node::<H>(acc, p, 1.5 * x.sqrt(), x, lx, w, dw, adh.then_some(adhesion::ELASTIC.1));
     p
 }
 
@@ -453,25 +452,11 @@ impl Surface {
         }
     }
 
-    /// P*, Fs* and, if `want_q`, Q* at `d`; without Q*, also their
-    /// d*-derivatives.
+    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
         match &self.heights {
             Heights::Gauss(h) => self.evaluate_with(h, d, want_q),
-            Heights::General(h) if want_q || (h.lo.is_none() && h.hi.is_none()) => self.evaluate_with(&**h, d, want_q),
-            Heights::General(h) => {
-                // With a finite end of the support, differentiating under
-                // the integral misses the ends' terms (infinite ones for a
-                // J-shaped density): central differences instead, to about
-                // 1e-10 relative (F* is smooth on the scale σ_s).
-                let mut sums = self.evaluate_with(&**h, d, false);
-                let step = DIFFERENCE_STEP * self.s;
-                let up = self.evaluate_with(&**h, d + step, false);
-                let down = self.evaluate_with(&**h, d - step, false);
-                sums.dp = (up.p - down.p) / (2.0 * step);
-                sums.dfs = (up.fs - down.fs) / (2.0 * step);
-                sums
-            }
+            Heights::General(h) => self.evaluate_with(&**h, d, want_q),
         }
     }
 
@@ -502,13 +487,16 @@ impl Surface {
         let el = self.elastic(h, d, win, adh, want_q);
         // A power-law regime [xa, xc]: load x^b_load, adhesion exponent b_adh.
         let regime = |xa: f64, xc: f64, b_load: f64, b_adh: f64, want_q: bool| {
-            let law = move |_: f64, lx: f64| (b_load * lx).exp();
+            let law = move |x: f64, lx: f64| {
+                let p = (b_load * lx).exp();
+                (p, b_load * p / x)
+            };
             self.smooth(h, d, win, xa, xc, law, adh.then_some(b_adh), want_q)
         };
         let ep1a = regime(X_ELASTIC, X0, load::EP1.1, adhesion::EP1.1, want_q);
         let ep1b = regime(X0, X_EP1, load::EP1.1, adhesion::EP1.1, want_q && self.q_unclipped);
         let ep2 = regime(X_EP1, X_PLASTIC, load::EP2.1, adhesion::EP2.1, false);
-        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, |x, _| x, None, false);
+        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, |x, _| (x, 1.0), None, false);
         let (a1, a2, a3) = (load::EP1.0, load::EP2.0, self.plastic);
         let p = el.p + a1 * (ep1a.p + ep1b.p) + a2 * ep2.p + a3 * pl.p;
         let dp = el.dp + a1 * (ep1a.dp + ep1b.dp) + a2 * ep2.dp + a3 * pl.dp;
@@ -516,7 +504,44 @@ impl Surface {
         let fs = c0 * el.fs + c1 * (ep1a.fs + ep1b.fs) + c2 * ep2.fs;
         let dfs = c0 * el.dfs + c1 * (ep1a.dfs + ep1b.dfs) + c2 * ep2.dfs;
         let q = FRICTION_ELASTIC.0 * el.q + self.q_ep * (ep1a.q + ep1b.q);
-        Sums { p, dp, fs, dfs, q }
+        let mut sums = Sums { p, dp, fs, dfs, q };
+        if H::GENERAL {
+            // The load laws at the regime boundaries, below and above.
+            let law = |(a, b): (f64, f64), x: f64| a * x.powf(b);
+            let loads = [
+                (law(load::ELASTIC, X_ELASTIC), law(load::EP1, X_ELASTIC)),
+                (law(load::EP1, X_EP1), law(load::EP2, X_EP1)),
+                (law(load::EP2, X_PLASTIC), a3 * X_PLASTIC),
+            ];
+            self.add_jumps(h, d, loads, &mut sums);
+        }
+        sums
+    }
+
+    /// The terms of ∂P*/∂d*, ∂Fs*/∂d* from the jumps of the laws at the
+    /// regime boundaries x = 1, 6, 110, which move with d* (general
+    /// densities, whose derivatives come from the laws' slopes): the load
+    /// `loads[k] = (below, above)` and the contact adhesion (the same in
+    /// both models; none is counted beyond x = 110), each times φ* there.
+    fn add_jumps<H: Phi>(&self, h: &H, d: f64, loads: [(f64, f64); 3], sums: &mut Sums) {
+        let [c0, c1, c2] = self.adh_coef;
+        // adh_coef holds the laws' coefficients: here x^b alone.
+        let law = |(_, b, _): (f64, f64, f64), x: f64| x.powf(b);
+        let adhesion = [
+            (
+                c0 * law(adhesion::ELASTIC, X_ELASTIC),
+                c1 * law(adhesion::EP1, X_ELASTIC),
+            ),
+            (c1 * law(adhesion::EP1, X_EP1), c2 * law(adhesion::EP2, X_EP1)),
+            (c2 * law(adhesion::EP2, X_PLASTIC), 0.0),
+        ];
+        for ((x, (p_below, p_above)), (f_below, f_above)) in
+            [X_ELASTIC, X_EP1, X_PLASTIC].into_iter().zip(loads).zip(adhesion)
+        {
+            let phi = h.phi(d + self.omega * x);
+            sums.dp += (p_below - p_above) * phi;
+            sums.dfs += (f_below - f_above) * phi;
+        }
     }
 
     /// Contact integrals of the CEB-type model (MODEL.md §8): Hertz load
@@ -525,7 +550,7 @@ impl Surface {
     fn contact_ceb<H: Phi>(&self, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
         let el = self.elastic_ceb(h, d, win, adh, want_q);
-        let law = |x: f64, _: f64| 1.5 * (2.0 * x - 1.0);
+        let law = |x: f64, _: f64| (1.5 * (2.0 * x - 1.0), 3.0);
         let ep1 = self.smooth(h, d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
         let ep2 = self.smooth(h, d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
         let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, law, None, false);
@@ -534,13 +559,18 @@ impl Surface {
         let [c0, c1, c2] = self.adh_coef;
         let fs = c0 * el.fs + c1 * ep1.fs + c2 * ep2.fs;
         let dfs = c0 * el.dfs + c1 * ep1.dfs + c2 * ep2.dfs;
-        Sums {
+        let mut sums = Sums {
             p,
             dp,
             fs,
             dfs,
             q: el.q,
+        };
+        if H::GENERAL {
+            // Hertz below x = 1, then 1.5(2x − 1) throughout.
+            self.add_jumps(h, d, [(1.0, 1.5), (0.0, 0.0), (0.0, 0.0)], &mut sums);
         }
+        sums
     }
 
     /// The elastic regime of the CEB-type model: `Q̄ = μ_CEB·P̄`, with the
@@ -561,7 +591,7 @@ impl Surface {
                 }
             } else {
                 self.legendre_panel(h, d, p, |x, w, dw| {
-                    let load = elastic_node(&mut acc, x, x.ln(), w, dw, adh);
+                    let load = elastic_node::<H>(&mut acc, x, x.ln(), w, dw, adh);
                     if want_q {
                         acc.q += (m15 * load + x * ceb.mu2_remainder(x)) * w;
                     }
@@ -571,7 +601,7 @@ impl Surface {
         self.panels(h, d, win, xc, X_ELASTIC, |p| {
             let last = p.last && p.at_end == EndSide::None;
             self.legendre_panel(h, d, p, |x, w, dw| {
-                elastic_node(&mut acc, x, x.ln(), w, dw, adh);
+                elastic_node::<H>(&mut acc, x, x.ln(), w, dw, adh);
                 if want_q && !last {
                     acc.q += ceb.mu1_factor(x) * (1.0 - x).sqrt() * w;
                 }
@@ -602,7 +632,7 @@ impl Surface {
             } else {
                 self.legendre_panel(h, d, p, |x, w, dw| {
                     let lx = x.ln();
-                    elastic_node(&mut acc, x, lx, w, dw, adh);
+                    elastic_node::<H>(&mut acc, x, lx, w, dw, adh);
                     if want_q {
                         acc.q += (b_fric * lx).exp() * w;
                     }
@@ -617,18 +647,33 @@ impl Surface {
     fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
         self.jacobi_panel(h, d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
             acc.p += w;
-            acc.dp += dw;
+            if !H::GENERAL {
+                acc.dp += dw;
+            }
         });
         if adh {
             self.jacobi_panel(h, d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
                 acc.fs += w;
-                acc.dfs += dw;
+                if !H::GENERAL {
+                    acc.dfs += dw;
+                }
             });
+        }
+        if H::GENERAL {
+            // The laws' slopes 1.5·x^0.5 and 0.298·x^−0.702, by their own rules.
+            let b = load::ELASTIC.1;
+            self.jacobi_panel(h, d, &self.rules.gj_half, b - 1.0, x1, |_, _, dw| acc.dp += b * dw);
+            if adh {
+                let b = adhesion::ELASTIC.1;
+                self.jacobi_panel(h, d, &self.rules.gj_adh_slope, b - 1.0, x1, |_, _, dw| {
+                    acc.dfs += b * dw
+                });
+            }
         }
     }
 
     /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
-    /// load `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
+    /// load and its slope `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
     /// friction factor `x^1.425·μ_ep(x)`.
     #[allow(clippy::too_many_arguments)]
     fn smooth<H: Phi>(
@@ -638,7 +683,7 @@ impl Surface {
         win: Window,
         xa: f64,
         xc: f64,
-        load: impl Fn(f64, f64) -> f64,
+        load: impl Fn(f64, f64) -> (f64, f64),
         b_adh: Option<f64>,
         want_q: bool,
     ) -> Sums {
@@ -646,8 +691,8 @@ impl Surface {
         self.panels(h, d, win, xa, xc, |p| {
             self.legendre_panel(h, d, p, |x, w, dw| {
                 let lx = x.ln();
-                let p = load(x, lx);
-                add_node(&mut acc, p, lx, w, dw, b_adh);
+                let (p, dp_dx) = load(x, lx);
+                add_node::<H>(&mut acc, p, dp_dx, x, lx, w, dw, b_adh);
                 if want_q {
                     acc.q += p * asperity::mu_ep(x) * w;
                 }
@@ -702,25 +747,27 @@ impl Surface {
         let (lo_end, hi_end) = h.ends();
         let mut g0 = hi_end.map_or(0.0, |e| (d - e.z).max(0.0));
         let g_max = lo_end.map_or(f64::INFINITY, |e| d - e.z);
-        let (mut j, mut dj) = (0.0, 0.0);
         let mut width = self.eps + g0;
         let mut scale = 0.0f64;
-        let mode = h.mode();
+        let tail = h.tails().0;
         let eps = self.eps;
-        // Adds a node of weight `wp` (φ* included) at gap `g`; returns its part of J_nc.
-        let add = |j: &mut f64, dj: &mut f64, g: f64, wp: f64, slope: f64| {
-            let z = d - g;
-            let part = asperity::adhesion_noncontact(1.0 + g / eps) * wp;
+        // Adds a node of weight `wp` (φ* included) at gap `g`; returns its
+        // part of J_nc. d* moves the law a(1 + (d* − z*)/ε*), not φ*: its
+        // slope a'/ε* here, and a(1)·φ*(d*) for the moving end z* = d*.
+        let add = |j: &mut f64, dj: &mut f64, g: f64, wp: f64| {
+            let u = 1.0 + g / eps;
+            let part = asperity::adhesion_noncontact(u) * wp;
             *j += part;
-            *dj += h.dw(part, z, slope);
+            *dj += asperity::adhesion_noncontact_slope(u) / eps * wp;
             part
         };
+        let (mut j, mut dj) = (0.0, asperity::adhesion_noncontact(1.0) * h.phi(d));
         // A first panel at the upper end of the support (below z* = d*).
         if let Some(e) = hi_end.filter(|_| g0 > 0.0) {
             let w = width.min(h.step(e.z)).min(0.5 * (g_max - g0));
             if e.jacobi(w) {
                 h.end_panel(e, w, |dist, wp| {
-                    add(&mut j, &mut dj, g0 + dist, wp, h.slope(e.z - dist));
+                    add(&mut j, &mut dj, g0 + dist, wp);
                 });
                 g0 += w;
                 width = self.eps + g0;
@@ -743,7 +790,7 @@ impl Surface {
                 let dist = z0 - e.z;
                 if e.jacobi(w.max(dist)) && w >= 0.5 * dist {
                     h.end_panel(e, dist, |t, wp| {
-                        add(&mut j, &mut dj, g_max - t, wp, h.slope(e.z + t));
+                        add(&mut j, &mut dj, g_max - t, wp);
                     });
                     break;
                 }
@@ -754,13 +801,12 @@ impl Surface {
             let mut local = 0.0;
             for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
                 let g = g0 + hw * t;
-                let (p, slope) = h.phi_slope(d - g);
-                local += add(&mut j, &mut dj, g, hw * wt * p, slope);
+                local += add(&mut j, &mut dj, g, hw * wt * h.phi(d - g));
             }
             scale = scale.max(local.abs());
             g0 = g1;
             width *= 2.0;
-            if d - g0 < mode && local.abs() <= NEGLIGIBLE * scale {
+            if d - g0 < tail && local.abs() <= NEGLIGIBLE * scale {
                 break;
             }
         }
@@ -865,14 +911,14 @@ impl Surface {
                     let e = hi_end.expect("an upper end");
                     h.end_panel(e, width, |dist, w| {
                         let z = e.z - dist;
-                        f((z - d) / om, w, h.dw(w, z, h.slope(z)))
+                        f((z - d) / om, w, h.dw(w, z, 1.0 / om))
                     });
                 }
                 _ => {
                     let e = lo_end.expect("a lower end");
                     h.end_panel(e, width, |dist, w| {
                         let z = e.z + dist;
-                        f((z - d) / om, w, h.dw(w, z, h.slope(z)))
+                        f((z - d) / om, w, h.dw(w, z, 1.0 / om))
                     });
                 }
             }
@@ -882,9 +928,8 @@ impl Surface {
         for (t, wt) in self.rules.gl.t.iter().zip(&self.rules.gl.w) {
             let x = x0 + (x1 - x0) * t;
             let z = d + self.omega * x;
-            let (p, slope) = h.phi_slope(z);
-            let w = hw * wt * p;
-            f(x, w, h.dw(w, z, slope));
+            let w = hw * wt * h.phi(z);
+            f(x, w, h.dw(w, z, 1.0 / self.omega));
         }
     }
 
@@ -896,9 +941,8 @@ impl Surface {
         for i in 0..NODES {
             let x = x1 * rule.t[i];
             let z = d + self.omega * x;
-            let (p, slope) = h.phi_slope(z);
-            let w = scale * rule.w[i] * p;
-            f(x, w, h.dw(w, z, slope));
+            let w = scale * rule.w[i] * h.phi(z);
+            f(x, w, h.dw(w, z, 1.0 / self.omega));
         }
     }
 }

@@ -333,3 +333,37 @@ fn pearson_0_3_equals_the_gaussian() {
         HeightDistribution::weibull(0.0).unwrap()
     );
 }
+
+/// dF*/dh* from `Model::force` against a five-point difference of F* for
+/// densities with ends (J- and U-shaped type I, gamma, Weibull), a power
+/// tail and measured heights, on both sides of where the contact plane
+/// passes a support end.
+#[test]
+fn the_force_slope_matches_a_difference_of_the_force() {
+    let heights: Vec<f64> = (0..5000)
+        .map(|i| inverse_normal((i as f64 + 0.5) / 5000.0).powi(3))
+        .collect();
+    for d in [
+        HeightDistribution::pearson(0.8, 2.5).unwrap(),
+        HeightDistribution::pearson(1.0, 2.5).unwrap(),
+        HeightDistribution::pearson(-0.5, 3.375).unwrap(),
+        HeightDistribution::pearson(0.0, 8.0).unwrap(),
+        HeightDistribution::weibull(0.5).unwrap(),
+        HeightDistribution::empirical(&heights).unwrap(),
+    ] {
+        let m = model(1.0, 1e-3, d.clone());
+        for h in [-1.5, -0.5, 0.2, 0.9, 1.6, 2.5, 3.5] {
+            let (f, df) = m.force(h);
+            if f.is_nan() || f.abs() <= 1e-12 {
+                continue;
+            }
+            let step = 1e-3;
+            let at = |k: f64| m.force(h + k * step).0;
+            let want = (at(-2.0) - 8.0 * at(-1.0) + 8.0 * at(1.0) - at(2.0)) / (12.0 * step);
+            assert!(
+                (df - want).abs() <= 1e-6 * want.abs() + 1e-12,
+                "{d} at h* = {h}: {df:e} vs {want:e}"
+            );
+        }
+    }
+}
