@@ -380,6 +380,47 @@ struct Kde {
 /// Kernels further than this many widths away are left out (e^−40.5).
 const KDE_REACH: f64 = 9.0;
 
+impl Kde {
+    /// The kernel density of weighted `atoms` (x, weight; weights summing
+    /// to `total`) lying in `lo..=hi`, with kernel width `h0`: linear binning
+    /// onto evenly spaced centres, about four per kernel width (binning
+    /// then changes the density by ~1e-3 of itself) and at most
+    /// [`KDE_CENTRES`], then standardised so that the smoothed density has
+    /// mean 0 and variance (of the centres) + h² = 1.
+    fn binned(
+        n: usize,
+        [skewness, kurtosis]: [f64; 2],
+        (lo, hi): (f64, f64),
+        h0: f64,
+        atoms: impl Iterator<Item = (f64, f64)>,
+        total: f64,
+    ) -> Kde {
+        let m = (((hi - lo) / (0.25 * h0)).ceil() as usize + 1).clamp(16, KDE_CENTRES);
+        let step = (hi - lo) / (m - 1) as f64;
+        let mut weights = vec![0.0; m];
+        for (x, w) in atoms {
+            let t = (x - lo) / step;
+            let i = (t.floor().max(0.0) as usize).min(m - 2);
+            let f = (t - i as f64).clamp(0.0, 1.0);
+            weights[i] += w * (1.0 - f);
+            weights[i + 1] += w * f;
+        }
+        weights.iter_mut().for_each(|w| *w /= total);
+        let centres: Vec<f64> = (0..m).map(|i| lo + step * i as f64).collect();
+        let cm: f64 = centres.iter().zip(&weights).map(|(c, w)| c * w).sum();
+        let cv: f64 = centres.iter().zip(&weights).map(|(c, w)| (c - cm) * (c - cm) * w).sum();
+        let scale = 1.0 / (cv + h0 * h0).sqrt();
+        Kde {
+            n,
+            skewness,
+            kurtosis,
+            centres: centres.into_iter().map(|c| (c - cm) * scale).collect(),
+            weights,
+            h: h0 * scale,
+        }
+    }
+}
+
 impl Empirical {
     /// The density of `heights` (any unit; NaN entries are skipped). At
     /// least [`EMPIRICAL_MIN_HEIGHTS`] finite heights, not all equal.
@@ -415,35 +456,58 @@ impl Empirical {
             let x = (v - mean) / sd;
             (a.min(x), b.max(x))
         });
-        // Linear binning onto evenly spaced centres, about four per kernel
-        // width (binning then changes the density by ~1e-3 of itself).
         let h0 = 1.06 * (n as f64).powf(-0.2);
-        let m = (((hi - lo) / (0.25 * h0)).ceil() as usize + 1).clamp(16, KDE_CENTRES);
-        let step = (hi - lo) / (m - 1) as f64;
-        let mut weights = vec![0.0; m];
-        for v in finite() {
-            let t = ((v - mean) / sd - lo) / step;
-            let i = (t.floor() as usize).min(m - 2);
-            let f = (t - i as f64).clamp(0.0, 1.0);
-            weights[i] += 1.0 - f;
-            weights[i + 1] += f;
-        }
-        weights.iter_mut().for_each(|w| *w /= nf);
-        let centres: Vec<f64> = (0..m).map(|i| lo + step * i as f64).collect();
-        // Mean and variance of the binned centres, then standardise so the
-        // smoothed density has mean 0 and variance v + h² = 1.
-        let cm: f64 = centres.iter().zip(&weights).map(|(c, w)| c * w).sum();
-        let cv: f64 = centres.iter().zip(&weights).map(|(c, w)| (c - cm) * (c - cm) * w).sum();
-        let scale = 1.0 / (cv + h0 * h0).sqrt();
-        let centres = centres.into_iter().map(|c| (c - cm) * scale).collect();
-        Ok(Empirical(Arc::new(Kde {
-            n,
-            skewness: m3 / (m2 * sd),
-            kurtosis: m4 / (m2 * m2),
-            centres,
-            weights,
-            h: h0 * scale,
-        })))
+        let atoms = finite().map(|v| ((v - mean) / sd, 1.0));
+        let kde = Kde::binned(n, [m3 / (m2 * sd), m4 / (m2 * m2)], (lo, hi), h0, atoms, nf);
+        Ok(Empirical(Arc::new(kde)))
+    }
+
+    /// The density of the sum of two independent heights, `sd`·X + `other_sd`·Y,
+    /// with X of this density and Y of `other` (both standardised): the
+    /// convolution of the two (MODEL.md §10, two rough surfaces). Their
+    /// kernels combine into one Gaussian kernel; their bin centres are
+    /// convolved and binned again (at most [`KDE_CENTRES`]); skewness and
+    /// kurtosis follow from the cumulants, which add. [`Empirical::len`]
+    /// of the sum is the smaller of the two counts.
+    ///
+    /// ```
+    /// use ke_friction::HeightDistribution;
+    /// let a: Vec<f64> = (0..2000).map(|i| ((i as f64) * 0.61).sin()).collect();
+    /// let b: Vec<f64> = (0..3000).map(|i| ((i as f64) * 0.37).cos().powi(3)).collect();
+    /// let (HeightDistribution::Empirical(x), HeightDistribution::Empirical(y)) =
+    ///     (HeightDistribution::empirical(&a)?, HeightDistribution::empirical(&b)?) else { unreachable!() };
+    /// let sum = x.sum(1.0, &y, 2.0)?;
+    /// let d = HeightDistribution::Empirical(sum).density()?;
+    /// let [mass, mean, var, _, _] = d.moments();
+    /// assert!((mass - 1.0).abs() < 1e-9 && mean.abs() < 1e-9 && (var - 1.0).abs() < 1e-9);
+    /// # Ok::<(), ke_friction::ParamError>(())
+    /// ```
+    pub fn sum(&self, sd: f64, other: &Empirical, other_sd: f64) -> Result<Empirical, ParamError> {
+        let positive = |v: f64| v > 0.0;
+        check("sd", sd, "> 0", positive)?;
+        check("other_sd", other_sd, "> 0", positive)?;
+        let (a, b) = (&*self.0, &*other.0);
+        let total = sd.hypot(other_sd);
+        let (wa, wb) = (sd / total, other_sd / total);
+        let h0 = (wa * a.h).hypot(wb * b.h);
+        let ends = |k: &Kde| (k.centres[0], k.centres[k.centres.len() - 1]);
+        let ((alo, ahi), (blo, bhi)) = (ends(a), ends(b));
+        let skewness = wa.powi(3) * a.skewness + wb.powi(3) * b.skewness;
+        let kurtosis = 3.0 + wa.powi(4) * (a.kurtosis - 3.0) + wb.powi(4) * (b.kurtosis - 3.0);
+        let atoms = a.centres.iter().zip(&a.weights).flat_map(|(&ca, &pa)| {
+            b.centres
+                .iter()
+                .zip(&b.weights)
+                .map(move |(&cb, &pb)| (wa * ca + wb * cb, pa * pb))
+        });
+        Ok(Empirical(Arc::new(Kde::binned(
+            a.n.min(b.n),
+            [skewness, kurtosis],
+            (wa * alo + wb * blo, wa * ahi + wb * bhi),
+            h0,
+            atoms,
+            1.0,
+        ))))
     }
 
     /// Number of heights the density was built from.

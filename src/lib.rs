@@ -46,6 +46,7 @@ pub mod export;
 pub mod figures;
 #[cfg(feature = "builder")]
 mod io;
+mod load;
 mod model;
 mod num;
 #[cfg(feature = "paper")]
@@ -62,11 +63,12 @@ pub use distribution::{
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
 pub use error::ErrorKind;
+pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use num::Shortest;
 pub use params::{
-    Constants, Fit, Kind, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
-    EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
+    Constants, Fit, Kind, Materials, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR,
+    DEFAULT_NU, EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
 pub use spline::{Axis, Scale};
 pub use table::{

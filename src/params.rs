@@ -388,6 +388,47 @@ pub struct Physical {
     pub epsilon: f64,
 }
 
+/// The materials and adhesion of two bodies in contact (SI): the
+/// [`Physical`] inputs less the roughness (σ, R, η), which a measured
+/// surface supplies (`topography::Surface`).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Materials {
+    /// Young's modulus of material 1 (the softer one), Pa.
+    pub e1: f64,
+    /// Poisson's ratio of material 1 (the softer one); sets K.
+    pub nu1: f64,
+    /// Young's modulus of material 2, Pa.
+    pub e2: f64,
+    /// Poisson's ratio of material 2.
+    pub nu2: f64,
+    /// Hardness H of the softer material, Pa.
+    pub hardness: f64,
+    /// Energy of adhesion Δγ, J/m².
+    pub delta_gamma: f64,
+    /// Intermolecular distance ε, m.
+    pub epsilon: f64,
+}
+
+impl Materials {
+    /// The physical inputs of these materials on a surface of roughness
+    /// `sigma` (the std of the surface heights, m), `radius` (the summit
+    /// radius R, m) and `density` (the summit density η, 1/m²).
+    pub fn with_roughness(&self, sigma: f64, radius: f64, density: f64) -> Physical {
+        Physical {
+            e1: self.e1,
+            nu1: self.nu1,
+            e2: self.e2,
+            nu2: self.nu2,
+            hardness: self.hardness,
+            sigma,
+            radius,
+            density,
+            delta_gamma: self.delta_gamma,
+            epsilon: self.epsilon,
+        }
+    }
+}
+
 /// An input outside its valid range. The message names the input, its
 /// value and the range, e.g. `theta = -0.2 is out of range: must be >= 0`.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

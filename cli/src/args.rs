@@ -3,7 +3,7 @@
 
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Constants, ErrorKind, Fit, HeightDistribution, Kind, Model, Params, Physical};
+use ke_friction::{Constants, ErrorKind, Fit, HeightDistribution, Kind, Materials, Model, Params};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -323,11 +323,11 @@ impl ConstantsArgs {
     }
 }
 
-/// The SI inputs that give ψ, θ, β, ν and ε* ([`Params::from_physical`]):
-/// all ten together, in place of the dimensionless flags.
+/// The materials' SI flags ([`Materials`]): all seven together. With
+/// `--sigma`, `--radius` and `--density` ([`SiArgs`]) or a measured
+/// surface (`kefric surface`, `--surface`) they give ψ, θ, β, ν and ε*.
 #[derive(Debug, Clone, clap::Args)]
-#[command(next_help_heading = "SI inputs (all ten together, in place of --psi, --theta, --beta, --nu, --eps-star)")]
-pub struct SiArgs {
+pub struct MaterialsArgs {
     /// Young's modulus E₁ of the softer material, Pa (> 0).
     #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
     pub e1: Option<f64>,
@@ -343,15 +343,6 @@ pub struct SiArgs {
     /// Hardness H of the softer material, Pa (> 0).
     #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
     pub hardness: Option<f64>,
-    /// Standard deviation σ of the asperity heights, m (> 0).
-    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
-    pub sigma: Option<f64>,
-    /// Asperity radius of curvature R, m (> 0).
-    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
-    pub radius: Option<f64>,
-    /// Areal density η of asperities, 1/m² (> 0; β = ηRσ must exceed 0.01928).
-    #[arg(long, value_name = "PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
-    pub density: Option<f64>,
     /// Energy of adhesion Δγ, J/m² (≥ 0).
     #[arg(long, value_name = "J_PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
     pub delta_gamma: Option<f64>,
@@ -360,60 +351,102 @@ pub struct SiArgs {
     pub epsilon: Option<f64>,
 }
 
-impl SiArgs {
-    /// The flags and values, in the order of [`Physical`]'s documentation.
-    fn given(&self) -> [(&'static str, Option<f64>); 10] {
+impl MaterialsArgs {
+    /// The flags and values, in the order of [`Materials`]' fields.
+    fn given(&self) -> [(&'static str, Option<f64>); 7] {
         [
             ("--e1", self.e1),
             ("--nu1", self.nu1),
             ("--e2", self.e2),
             ("--nu2", self.nu2),
             ("--hardness", self.hardness),
-            ("--sigma", self.sigma),
-            ("--radius", self.radius),
-            ("--density", self.density),
             ("--delta-gamma", self.delta_gamma),
             ("--epsilon", self.epsilon),
         ]
     }
 
-    /// Whether any SI flag is given.
+    /// Whether any of the flags is given.
     pub fn any(&self) -> bool {
         self.given().iter().any(|(_, v)| v.is_some())
     }
 
-    /// The dimensionless parameters of the SI inputs, or a message naming
-    /// the missing or unphysical one.
-    pub fn params(&self) -> Result<Params, Failure> {
+    /// The materials, or a message naming the first missing flag and
+    /// listing the others that go with it (`extra`: the flags of the
+    /// roughness that go with them, if any).
+    pub fn materials(&self, extra: &[(&'static str, Option<f64>)]) -> Result<Materials, Failure> {
         let given = self.given();
-        if let Some((flag, _)) = given.iter().find(|(_, v)| v.is_none()) {
-            let all: Vec<&str> = given.iter().map(|(f, _)| *f).collect();
+        if let Some((flag, _)) = given.iter().chain(extra).find(|(_, v)| v.is_none()) {
+            let all: Vec<&str> = given.iter().chain(extra).map(|(f, _)| *f).collect();
             return Err(Failure::input(format!(
                 "{flag}: missing: the SI inputs go together ({})",
                 all.join(", ")
             )));
         }
         let v = given.map(|(_, v)| v.unwrap_or_default());
-        let phys = Physical {
+        Ok(Materials {
             e1: v[0],
             nu1: v[1],
             e2: v[2],
             nu2: v[3],
             hardness: v[4],
-            sigma: v[5],
-            radius: v[6],
-            density: v[7],
-            delta_gamma: v[8],
-            epsilon: v[9],
-        };
-        Params::from_physical(&phys).map_err(|e| {
-            let flag = match e.name {
-                n if n.starts_with("beta") => "--density".to_string(),
-                "psi" | "theta" | "nu" | "eps_star" => "SI inputs".to_string(),
-                n => flag_of(n),
-            };
-            Failure::input(format!("{flag}: {e}"))
+            delta_gamma: v[5],
+            epsilon: v[6],
         })
+    }
+}
+
+/// A [`ParamError`] of [`Params::from_physical`] as a failure naming the
+/// flag: `--density` for β (it is the last of η, R, σ one tunes),
+/// `roughness` for the dimensionless results (ψ, θ, ν, ε*).
+pub fn physical_failure(e: ke_friction::ParamError, roughness: &str) -> Failure {
+    let flag = match e.name {
+        n if n.starts_with("beta") => "--density".to_string(),
+        "psi" | "theta" | "nu" | "eps_star" => roughness.to_string(),
+        n => flag_of(n),
+    };
+    Failure::input(format!("{flag}: {e}"))
+}
+
+/// The SI inputs that give ψ, θ, β, ν and ε* ([`Params::from_physical`]):
+/// all ten together, in place of the dimensionless flags.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "SI inputs (all ten together, in place of --psi, --theta, --beta, --nu, --eps-star)")]
+pub struct SiArgs {
+    #[command(flatten)]
+    pub materials: MaterialsArgs,
+    /// Standard deviation σ of the surface heights (Sq), m (> 0).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub sigma: Option<f64>,
+    /// Mean summit radius of curvature R, m (> 0).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub radius: Option<f64>,
+    /// Areal density η of summits, 1/m² (> 0; β = ηRσ must exceed 0.01928).
+    #[arg(long, value_name = "PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub density: Option<f64>,
+}
+
+impl SiArgs {
+    /// The roughness flags and values.
+    fn roughness(&self) -> [(&'static str, Option<f64>); 3] {
+        [
+            ("--sigma", self.sigma),
+            ("--radius", self.radius),
+            ("--density", self.density),
+        ]
+    }
+
+    /// Whether any SI flag is given.
+    pub fn any(&self) -> bool {
+        self.materials.any() || self.roughness().iter().any(|(_, v)| v.is_some())
+    }
+
+    /// The dimensionless parameters of the SI inputs, or a message naming
+    /// the missing or unphysical one.
+    pub fn params(&self) -> Result<Params, Failure> {
+        let materials = self.materials.materials(&self.roughness())?;
+        let [sigma, radius, density] = self.roughness().map(|(_, v)| v.unwrap_or_default());
+        Params::from_physical(&materials.with_roughness(sigma, radius, density))
+            .map_err(|e| physical_failure(e, "SI inputs"))
     }
 }
 
@@ -458,7 +491,7 @@ pub enum DistributionArg {
 
 impl DistributionArg {
     /// The family's name, as the core spells it.
-    fn name(self) -> &'static str {
+    pub fn name(self) -> &'static str {
         match self {
             DistributionArg::Gaussian => "gaussian",
             DistributionArg::Pearson => "pearson",

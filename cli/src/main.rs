@@ -31,6 +31,7 @@ mod info;
 mod lookup;
 mod params;
 mod plot;
+mod surface;
 mod validate;
 mod verify;
 
@@ -70,6 +71,7 @@ enum Command {
     Info(info::Args),
     /// Convert SI inputs to the model's ψ, θ, β, ν, ε*.
     Params(params::Args),
+    Surface(surface::Args),
 }
 
 /// Parses the command line, runs the subcommand, returns the exit status.
@@ -88,6 +90,7 @@ fn run() -> i32 {
         Command::Export(args) => export::run(args),
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
+        Command::Surface(args) => surface::run(args),
     };
     // Whatever the command left in stdout's buffer must be written too.
     match result.and_then(|()| args::flush_stdout()) {

@@ -7,9 +7,11 @@
 
 mod read;
 mod stats;
+mod surface;
 
 pub use read::{read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES};
 pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
+pub use surface::Surface;
 
 /// A measured height map (or profile) on a regular grid, in SI units.
 ///

@@ -433,6 +433,34 @@ impl Topography {
     }
 }
 
+impl Topography {
+    /// The heights less their least-squares plane, line or mean (as
+    /// `detrend` says, fitted over the valid points; a profile's plane is
+    /// its line), row-major, missing points still NaN: the heights whose
+    /// moments [`Topography::stats`] takes, for an empirical density.
+    pub fn detrended(&self, detrend: Detrend) -> Result<Vec<f64>, StatsError> {
+        let Some(z0) = self.heights.iter().copied().find(|h| !h.is_nan()) else {
+            return Err(StatsError::TooFewValid {
+                valid: 0,
+                missing: self.heights.len(),
+            });
+        };
+        let detrend = match detrend {
+            Detrend::Plane if self.is_profile() => Detrend::Line,
+            other => other,
+        };
+        let plane = dispatch::fit_sums(self, z0).solve(detrend)?;
+        let (u_of, v_of) = (centred(self.nx), centred(self.ny));
+        let lin: Vec<f64> = (0..self.nx).map(|i| plane.b * u_of(i)).collect();
+        let mut out = Vec::with_capacity(self.heights.len());
+        for (j, row) in self.heights.chunks_exact(self.nx).enumerate() {
+            let p = plane.a + plane.c * v_of(j);
+            out.extend(row.iter().zip(&lin).map(|(&z, &l)| (z - z0) - (p + l)));
+        }
+        Ok(out)
+    }
+}
+
 impl SurfaceStats {
     /// The record of measured (or combined) moments: m2, m4 (a map's
     /// averages over x and y), the anisotropy ratios, the quantities of

@@ -920,8 +920,10 @@ def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardne
 
     e1, e2: Young's moduli (Pa) of the softer material and the other;
     nu1, nu2: their Poisson's ratios; hardness: H of the softer material
-    (Pa); sigma: standard deviation of the asperity heights (m); radius:
-    asperity radius R (m); density: areal density eta of asperities (1/m^2);
+    (Pa); sigma: standard deviation of the surface heights, Sq (m);
+    radius: mean summit radius R (m); density: areal density eta of
+    summits (1/m^2) (a measured surface gives all three:
+    :class:`Surface`);
     delta_gamma: energy of adhesion (J/m^2); epsilon: intermolecular
     distance (m). Returns the model's parameters by the library's record
     names, as ``kefric params --json`` prints them: {"psi", "theta",

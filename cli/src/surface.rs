@@ -1,0 +1,444 @@
+//! `kefric surface`: a measured surface (or two) → statistics → the
+//! model's inputs (with materials) → μ and the friction force (with a
+//! load). The flags that read a surface ([`SurfaceArgs`]) and take a load
+//! ([`LoadArgs`]) are shared with `eval` and `plot`.
+
+use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg, MaterialsArgs, ModelKindArg};
+use ke_friction::topography::{
+    read_file, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats,
+};
+use ke_friction::{ErrorKind, Friction, Load, Materials, Model, Params, Shortest};
+use std::path::{Path, PathBuf};
+
+/// Statistics of a measured surface and, with materials and a load, μ.
+///
+/// Reads a height map or profile (ISO 25178-72 X3P, .npy, or text: one
+/// column = a profile, a matrix = a map, `x y z` triples on a regular
+/// grid), detrends it, and prints σ (Sq), Sk (Ssk), K (Sku), the spectral
+/// moments m0, m2, m4 and the summit density η, radius R and β of
+/// MODEL.md §10. Two files are two rough surfaces pressed together: their
+/// equivalent surface (heights added) against a flat. With the seven
+/// material flags it prints ψ, θ, β, ν, ε* and the height distribution;
+/// with --force and --area (or --pressure) also F*, μ, the friction force
+/// Q = μF and the separation. β and ψ depend on the sampling intervals,
+/// which are printed beside them.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The surface file, and optionally a second rough surface pressed against it.
+    #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+    pub files: Vec<PathBuf>,
+    #[command(flatten)]
+    pub read: SurfaceArgs,
+    #[command(flatten)]
+    pub materials: MaterialsArgs,
+    /// Height distribution of the model: pearson (from the measured Ssk, Sku), gaussian, weibull (from Ssk) or empirical (the measured heights) [default: pearson].
+    #[arg(long, value_enum)]
+    pub distribution: Option<DistributionArg>,
+    /// Friction row: consistent (MODEL.md §4), or as-printed.
+    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
+    pub fit: FitArg,
+    /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model).
+    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
+    pub model: ModelKindArg,
+    #[command(flatten)]
+    pub load: LoadArgs,
+    /// Print one JSON object (SI units; the library's record names).
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// How a surface file is read and its statistics taken.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "Reading a surface")]
+pub struct SurfaceArgs {
+    /// Sampling interval along x, in --xy-unit (for .npy and text matrices, which have none; X3P and xyz files give their own).
+    #[arg(long, value_name = "DX", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub dx: Option<f64>,
+    /// Sampling interval along y, in --xy-unit [default: --dx].
+    #[arg(long, value_name = "DY", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub dy: Option<f64>,
+    /// Unit of the heights in .npy and text files (X3P stores metres).
+    #[arg(long, value_enum, default_value_t = Unit::M)]
+    pub z_unit: Unit,
+    /// Unit of --dx, --dy and of the x, y columns of xyz text files.
+    #[arg(long, value_enum, default_value_t = Unit::M)]
+    pub xy_unit: Unit,
+    /// Detrending: the least-squares plane (a line for a profile), a line along x, or the mean only.
+    #[arg(long, value_enum, default_value_t = DetrendArg::Plane)]
+    pub detrend: DetrendArg,
+    /// Slope and curvature moments: non-periodic finite differences, or periodic spectral moments (periodic data, no missing points).
+    #[arg(long, value_enum, default_value_t = DerivativeArg::Fd)]
+    pub derivative: DerivativeArg,
+}
+
+/// Length units of the heights and intervals.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Unit {
+    /// Metres.
+    M,
+    /// Millimetres.
+    Mm,
+    /// Micrometres.
+    Um,
+    /// Nanometres.
+    Nm,
+    /// Picometres.
+    Pm,
+}
+
+impl Unit {
+    /// Metres per unit.
+    fn metres(self) -> f64 {
+        match self {
+            Unit::M => 1.0,
+            Unit::Mm => 1e-3,
+            Unit::Um => 1e-6,
+            Unit::Nm => 1e-9,
+            Unit::Pm => 1e-12,
+        }
+    }
+}
+
+/// `--detrend` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum DetrendArg {
+    /// The least-squares plane (a line for a profile).
+    Plane,
+    /// The least-squares line along x.
+    Line,
+    /// The mean height only.
+    Mean,
+}
+
+/// `--derivative` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum DerivativeArg {
+    /// Non-periodic finite differences.
+    Fd,
+    /// Periodic spectral moments.
+    Spectral,
+}
+
+impl SurfaceArgs {
+    /// The options of the statistics.
+    pub fn options(&self) -> StatsOptions {
+        StatsOptions {
+            detrend: match self.detrend {
+                DetrendArg::Plane => Detrend::Plane,
+                DetrendArg::Line => Detrend::Line,
+                DetrendArg::Mean => Detrend::Mean,
+            },
+            derivative: match self.derivative {
+                DerivativeArg::Fd => Derivative::FiniteDifference,
+                DerivativeArg::Spectral => Derivative::Spectral,
+            },
+        }
+    }
+
+    /// The topography in `path`; `flag` names the input in messages.
+    fn read(&self, flag: &str, path: &Path) -> Result<ke_friction::topography::Topography, Failure> {
+        let metres = self.xy_unit.metres();
+        let interval = |name: &str, v: Option<f64>| -> Result<Option<f64>, Failure> {
+            match v {
+                Some(v) if v <= 0.0 => Err(Failure::input(format!(
+                    "--{name}: {} is out of range: must be > 0",
+                    Shortest(v)
+                ))),
+                v => Ok(v.map(|v| v * metres)),
+            }
+        };
+        let dx = interval("dx", self.dx)?;
+        let dy = interval("dy", self.dy)?.or(dx);
+        let options = ReadOptions {
+            dx,
+            dy,
+            z_unit: self.z_unit.metres(),
+            xy_unit: metres,
+            ..ReadOptions::default()
+        };
+        read_file(path, &options).map_err(|e| {
+            let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };
+            let hint = match e {
+                ReadError::NeedInterval { .. } => " (give --dx, and --dy for a map, with --xy-unit)",
+                _ => "",
+            };
+            Failure::of(flag, kind, format!("{e}{hint}"))
+        })
+    }
+
+    /// The surface of one file, or the equivalent surface of two.
+    pub fn surface(&self, flag: &str, files: &[PathBuf]) -> Result<Surface, Failure> {
+        let options = self.options();
+        let stats_failure =
+            |e: ke_friction::topography::StatsError, what: String| Failure::of(format!("{flag} {what}"), e.kind(), e);
+        let name = |p: &PathBuf| p.display().to_string();
+        match files {
+            [one] => Surface::new(self.read(flag, one)?, options).map_err(|e| stats_failure(e, name(one))),
+            [a, b] => {
+                let (ta, tb) = (self.read(flag, a)?, self.read(flag, b)?);
+                // Each surface's own failure names its file; the pair's
+                // (a profile with a map) names both.
+                for (t, p) in [(&ta, a), (&tb, b)] {
+                    t.stats(&options).map_err(|e| stats_failure(e, name(p)))?;
+                }
+                Surface::pair(ta, tb, options).map_err(|e| stats_failure(e, format!("{} + {}", name(a), name(b))))
+            }
+            _ => Err(Failure::input(format!("{flag}: give one surface file or two"))),
+        }
+    }
+}
+
+/// The load's flags: a force on an area, or a pressure.
+#[derive(Debug, Clone, clap::Args)]
+#[command(next_help_heading = "Load (--force with --area, or --pressure)")]
+pub struct LoadArgs {
+    /// Normal force F, N (> 0), on the nominal area --area.
+    #[arg(long, value_name = "N", value_parser = parse_f64, allow_hyphen_values = true, requires = "area", conflicts_with = "pressure")]
+    pub force: Option<f64>,
+    /// Nominal contact area A_n, m² (> 0).
+    #[arg(long, value_name = "M2", value_parser = parse_f64, allow_hyphen_values = true, requires = "force")]
+    pub area: Option<f64>,
+    /// Nominal pressure F/A_n, Pa (> 0), in place of --force and --area.
+    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub pressure: Option<f64>,
+}
+
+impl LoadArgs {
+    /// The load, if one is given, checked (a message names the flag).
+    pub fn load(&self) -> Result<Option<Load>, Failure> {
+        let load = match (self.force, self.area, self.pressure) {
+            (Some(force), Some(area), None) => Load::Force { force, area },
+            (None, None, Some(p)) => Load::Pressure(p),
+            (None, None, None) => return Ok(None),
+            _ => return Err(Failure::input("--force: give --force with --area, or --pressure alone")),
+        };
+        load.pressure().map_err(|e| {
+            Failure::input(format!(
+                "{}: {e}",
+                crate::args::flag_of(e.name.split(' ').next().unwrap_or(e.name))
+            ))
+        })?;
+        Ok(Some(load))
+    }
+}
+
+/// Six significant digits, shortest form.
+fn sig(x: f64) -> Shortest {
+    Shortest(format!("{x:.5e}").parse().unwrap_or(x))
+}
+
+/// The sampling intervals, for beside β and ψ: `dx = 1e-6 m, dy = 1e-6 m`.
+pub fn intervals(s: &SurfaceStats) -> String {
+    match s.dy {
+        Some(dy) => format!("dx = {} m, dy = {} m", sig(s.dx), sig(dy)),
+        None => format!("dx = {} m", sig(s.dx)),
+    }
+}
+
+/// The model's inputs for `materials` on `surface` with the distribution
+/// `family` asks for (`None`: the surface's default, pearson).
+pub fn params(
+    surface: &Surface,
+    materials: &Materials,
+    family: Option<DistributionArg>,
+    fit: FitArg,
+    model: ModelKindArg,
+) -> Result<Params, Failure> {
+    let distribution = surface.distribution(family.map(DistributionArg::name)).map_err(|e| {
+        let hint = if family == Some(DistributionArg::Empirical) {
+            ""
+        } else {
+            " (try --distribution empirical)"
+        };
+        Failure::input(format!("--distribution: the surface's {e}{hint}"))
+    })?;
+    let p = surface
+        .params(materials, distribution)
+        .map_err(|e| physical_failure(e, "the surface with these materials"))?;
+    let p = p.fit(fit.into()).kind(model.into());
+    p.validate()
+        .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
+    Ok(p)
+}
+
+/// Runs `kefric surface`.
+pub fn run(args: Args) -> Result<(), Failure> {
+    let load = args.load.load()?;
+    let surface = args.read.surface("FILE", &args.files)?;
+    let materials = if args.materials.any() {
+        Some(args.materials.materials(&[])?)
+    } else {
+        if let Some(flag) = [
+            (args.distribution.is_some(), "--distribution"),
+            (
+                load.is_some(),
+                if args.load.pressure.is_some() {
+                    "--pressure"
+                } else {
+                    "--force"
+                },
+            ),
+        ]
+        .iter()
+        .find_map(|(given, flag)| given.then_some(*flag))
+        {
+            return Err(Failure::input(format!(
+                "{flag}: needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon)"
+            )));
+        }
+        None
+    };
+    let params = materials
+        .as_ref()
+        .map(|m| params(&surface, m, args.distribution, args.fit, args.model))
+        .transpose()?;
+    let friction: Option<Friction> = match (&load, &params, &materials) {
+        (Some(load), Some(p), Some(m)) => {
+            let model =
+                Model::new(p.clone()).map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
+            Some(load.friction(&model, &surface.physical(m)).map_err(|e| {
+                Failure::of(
+                    if args.load.pressure.is_some() {
+                        "--pressure"
+                    } else {
+                        "--force"
+                    },
+                    e.kind(),
+                    e,
+                )
+            })?)
+        }
+        _ => None,
+    };
+    for w in &surface.stats().warnings {
+        errln!("warning: {w}");
+    }
+    if args.json {
+        #[derive(serde::Serialize)]
+        struct Record<'a> {
+            files: Vec<String>,
+            detrend: Detrend,
+            derivative: Derivative,
+            surface: &'a SurfaceStats,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            parts: Option<Vec<&'a SurfaceStats>>,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            model: Option<&'a Params>,
+            #[serde(skip_serializing_if = "Option::is_none")]
+            friction: Option<&'a Friction>,
+        }
+        let options = surface.options();
+        let record = Record {
+            files: args.files.iter().map(|p| p.display().to_string()).collect(),
+            detrend: options.detrend,
+            derivative: options.derivative,
+            surface: surface.stats(),
+            parts: (surface.parts().len() > 1).then(|| surface.parts().iter().map(|(_, s)| s).collect()),
+            model: params.as_ref(),
+            friction: friction.as_ref(),
+        };
+        outln!(
+            "{}",
+            serde_json::to_string(&record).expect("a surface record serialises")
+        )?;
+        return Ok(());
+    }
+    print_text(&args, &surface, params.as_ref(), friction.as_ref())
+}
+
+fn print_text(
+    args: &Args,
+    surface: &Surface,
+    params: Option<&Params>,
+    friction: Option<&Friction>,
+) -> Result<(), Failure> {
+    let s = surface.stats();
+    let shape = |s: &SurfaceStats| {
+        if s.dy.is_some() {
+            format!("map {} x {}", s.nx, s.ny)
+        } else {
+            format!("profile of {}", s.nx)
+        }
+    };
+    for ((_, own), path) in surface.parts().iter().zip(&args.files) {
+        outln!(
+            "# {}: {}, {}, {} points, {} missing",
+            path.display(),
+            shape(own),
+            intervals(own),
+            own.points,
+            own.missing
+        )?;
+    }
+    let options = surface.options();
+    outln!(
+        "# detrend = {}, derivative = {}{}",
+        serde_json::to_value(options.detrend)
+            .expect("a name")
+            .as_str()
+            .unwrap_or_default(),
+        serde_json::to_value(options.derivative)
+            .expect("a name")
+            .as_str()
+            .unwrap_or_default(),
+        if surface.parts().len() > 1 {
+            "; the equivalent surface of the two (heights added)"
+        } else {
+            ""
+        }
+    )?;
+    let row = |name: &str, value: String, unit: &str| outln!("{name:<28} {value:>14} {unit}");
+    let opt = |v: Option<f64>| v.map_or("-".to_string(), |v| sig(v).to_string());
+    row("sigma (Sq)", sig(s.sigma).to_string(), "m")?;
+    row("skewness (Ssk)", sig(s.skewness).to_string(), "")?;
+    row("kurtosis (Sku)", sig(s.kurtosis).to_string(), "")?;
+    row("m20, slope x", sig(s.m20).to_string(), "")?;
+    row("m02, slope y", opt(s.m02), "")?;
+    row("m40, curvature x", sig(s.m40).to_string(), "1/m²")?;
+    row("m04, curvature y", opt(s.m04), "1/m²")?;
+    row("m2", sig(s.m2).to_string(), "")?;
+    row("m4", sig(s.m4).to_string(), "1/m²")?;
+    row("alpha (bandwidth)", sig(s.alpha).to_string(), "")?;
+    row("eta (summit density)", sig(s.eta).to_string(), "1/m²")?;
+    row("R (summit radius)", sig(s.radius).to_string(), "m")?;
+    row(
+        "beta = eta R sigma",
+        sig(s.beta).to_string(),
+        &format!("(at {})", intervals(s)),
+    )?;
+    row("sigma_s (summit heights)", sig(s.sigma_s).to_string(), "m")?;
+    row("y_s (mean summit height)", sig(s.y_s).to_string(), "m")?;
+    row("m20/m02", opt(s.anisotropy_m2), "")?;
+    row("m40/m04", opt(s.anisotropy_m4), "")?;
+    if let Some(p) = params {
+        outln!("# model inputs (at {}):", intervals(s))?;
+        row("psi", sig(p.psi).to_string(), "")?;
+        row("theta", sig(p.theta).to_string(), "")?;
+        row("beta", sig(p.constants.beta).to_string(), "")?;
+        row("nu", sig(p.constants.nu).to_string(), "")?;
+        row("eps_star", sig(p.constants.eps_star).to_string(), "")?;
+        outln!("{:<28} {}", "heights", p.constants.distribution)?;
+    } else {
+        outln!("# give the materials (--e1 … --epsilon) for psi and theta, and --force --area for mu")?;
+    }
+    if let Some(f) = friction {
+        match (f.force, f.area) {
+            (Some(force), Some(area)) => outln!(
+                "# load: F = {} N on A_n = {} m² ({} Pa)",
+                sig(force),
+                sig(area),
+                sig(f.pressure)
+            )?,
+            _ => outln!("# load: {} Pa", sig(f.pressure))?,
+        }
+        row("F* = F/(A_n H)", sig(f.contact.f_star).to_string(), "")?;
+        row("mu", sig(f.mu).to_string(), "")?;
+        match f.friction_force {
+            Some(q) => row("Q = mu F (friction force)", sig(q).to_string(), "N")?,
+            None => row("mu F/A_n (friction stress)", sig(f.friction_stress).to_string(), "Pa")?,
+        }
+        row("h* (separation / sigma)", sig(f.contact.h_star).to_string(), "")?;
+        row("separation h", sig(f.separation).to_string(), "m")?;
+    }
+    Ok(())
+}

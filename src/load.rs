@@ -1,0 +1,142 @@
+//! A load in SI units (a force on a nominal area, or a pressure) and the
+//! friction it meets: F* = F/(A_n·H) (MODEL.md §1), μ at that F*, the
+//! friction force Q = μ·F and the separation h = h*·σ.
+
+use crate::params::check;
+use crate::{Contact, EvalError, Model, ParamError, Physical};
+
+/// A normal load on a rough contact, in SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Load {
+    /// A normal force (N) on a nominal contact area A_n (m²).
+    Force {
+        /// The normal force F, N (> 0).
+        force: f64,
+        /// The nominal contact area A_n, m² (> 0).
+        area: f64,
+    },
+    /// A nominal pressure F/A_n, Pa (> 0).
+    Pressure(f64),
+}
+
+impl Load {
+    /// The nominal pressure F/A_n (Pa), the load checked: a force and an
+    /// area (or a pressure) finite and > 0.
+    pub fn pressure(&self) -> Result<f64, ParamError> {
+        let positive = |v: f64| v > 0.0;
+        match *self {
+            Load::Force { force, area } => {
+                check("force", force, "> 0 N", positive)?;
+                check("area", area, "> 0 m²", positive)?;
+                let p = force / area;
+                check("pressure (= force/area)", p, "> 0 Pa and finite", positive)?;
+                Ok(p)
+            }
+            Load::Pressure(p) => {
+                check("pressure", p, "> 0 Pa", positive)?;
+                Ok(p)
+            }
+        }
+    }
+
+    /// The dimensionless external force F* = F/(A_n·H) on a softer
+    /// material of hardness `hardness` (Pa).
+    ///
+    /// ```
+    /// use ke_friction::Load;
+    /// // 10 N on 10 mm² against a hardness of 1 GPa.
+    /// let f = Load::Force { force: 10.0, area: 1e-5 }.f_star(1e9)?;
+    /// assert!((f - 1e-3).abs() < 1e-15);
+    /// # Ok::<(), ke_friction::ParamError>(())
+    /// ```
+    pub fn f_star(&self, hardness: f64) -> Result<f64, ParamError> {
+        let p = self.pressure()?;
+        check("hardness", hardness, "> 0 Pa", |v| v > 0.0)?;
+        let f = p / hardness;
+        check("f_star (= pressure/hardness)", f, "> 0 and finite", |v| v > 0.0)?;
+        Ok(f)
+    }
+
+    /// The force F, N (`None` for a pressure).
+    pub fn force(&self) -> Option<f64> {
+        match *self {
+            Load::Force { force, .. } => Some(force),
+            Load::Pressure(_) => None,
+        }
+    }
+
+    /// The friction this load meets on `model`, whose parameters came from
+    /// `physical` ([`crate::Params::from_physical`]): F*, the contact at
+    /// that F* and, in SI units, the separation and the friction force.
+    pub fn friction(&self, model: &Model, physical: &Physical) -> Result<Friction, LoadError> {
+        let pressure = self.pressure()?;
+        let f_star = self.f_star(physical.hardness)?;
+        let contact = model.at_f_star(f_star)?;
+        let mu = contact.mu.ok_or(LoadError::Eval(EvalError::NoMu {
+            f_star,
+            h_star: contact.h_star,
+        }))?;
+        Ok(Friction {
+            force: self.force(),
+            area: match *self {
+                Load::Force { area, .. } => Some(area),
+                Load::Pressure(_) => None,
+            },
+            pressure,
+            mu,
+            friction_force: self.force().map(|f| mu * f),
+            friction_stress: mu * pressure,
+            separation: contact.h_star * physical.sigma,
+            contact,
+        })
+    }
+}
+
+/// The friction a [`Load`] meets ([`Load::friction`]), in SI units and
+/// dimensionless: the record `kefric surface --json` prints (flat) and
+/// Python's `Surface.friction` returns, with these field names.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Friction {
+    /// The normal force F, N (for a [`Load::Force`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub force: Option<f64>,
+    /// The nominal area A_n, m² (for a [`Load::Force`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub area: Option<f64>,
+    /// The nominal pressure F/A_n, Pa.
+    pub pressure: f64,
+    /// The static friction coefficient μ.
+    pub mu: f64,
+    /// The static friction force Q = μ·F, N (for a [`Load::Force`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction_force: Option<f64>,
+    /// The static friction stress μ·F/A_n, Pa.
+    pub friction_stress: f64,
+    /// The separation of the mean surface heights h = h*·σ, m.
+    pub separation: f64,
+    /// The dimensionless contact at F* (h*, d*, P*, Fs*, Q*, F*, μ).
+    #[serde(flatten)]
+    pub contact: Contact,
+}
+
+/// Why a [`Load`] has no friction: a bad load, or the model's error at its F*.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum LoadError {
+    /// The force, area, pressure or the F* they give is out of range.
+    #[error(transparent)]
+    Load(#[from] ParamError),
+    /// The model has no μ at that F* (e.g. beyond the largest F*).
+    #[error(transparent)]
+    Eval(#[from] EvalError),
+}
+
+impl LoadError {
+    /// The error's kind (the load's, or the model's).
+    pub fn kind(&self) -> crate::ErrorKind {
+        match self {
+            LoadError::Load(e) => e.kind(),
+            LoadError::Eval(e) => e.kind(),
+        }
+    }
+}

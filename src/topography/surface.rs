@@ -1,0 +1,142 @@
+//! A measured rough surface as the model sees it (MODEL.md §10): one
+//! topography, or the equivalent surface of two, with its statistics, its
+//! height distribution and, with the materials, the model's inputs.
+
+use super::{combine, StatsError, StatsOptions, SurfaceStats, Topography};
+use crate::{DistributionError, HeightDistribution, Materials, ParamError, Params, Physical};
+
+/// A rough surface against a flat, from measured heights: one topography,
+/// or two rough surfaces pressed together, whose equivalent surface has
+/// the sum of their heights ([`combine`]).
+///
+/// ```
+/// use ke_friction::topography::{StatsOptions, Surface, Topography};
+/// use ke_friction::{Load, Materials, Model};
+/// let n = 128;
+/// let heights: Vec<f64> = (0..n * n)
+///     .map(|k| {
+///         let (x, y) = ((k % n) as f64, (k / n) as f64);
+///         2e-7 * ((x * 0.7).sin() + (y * 0.9).cos() + (x * 0.31 + y * 0.27).sin() + (x * 0.13 - y * 0.41).cos())
+///     })
+///     .collect();
+/// let surface = Surface::new(Topography::map(heights, n, n, 1e-6, 1e-6)?, StatsOptions::default())?;
+/// let materials = Materials {
+///     e1: 70e9, nu1: 0.33, e2: 200e9, nu2: 0.31, hardness: 1e9, delta_gamma: 0.5, epsilon: 0.4e-9,
+/// };
+/// let distribution = surface.distribution(Some("gaussian"))?;
+/// let params = surface.params(&materials, distribution)?;
+/// let friction = Load::Force { force: 10.0, area: 1e-5 }
+///     .friction(&Model::new(params)?, &surface.physical(&materials))?;
+/// assert!(friction.mu > 0.0 && friction.friction_force == Some(10.0 * friction.mu));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Surface {
+    parts: Vec<(Topography, SurfaceStats)>,
+    options: StatsOptions,
+    stats: SurfaceStats,
+}
+
+impl Surface {
+    /// The family of [`Surface::distribution`] when none is named: the
+    /// Pearson density of the measured skewness and kurtosis.
+    pub const DEFAULT_FAMILY: &'static str = "pearson";
+
+    /// One measured surface against a flat, its statistics taken with
+    /// `options`.
+    pub fn new(topography: Topography, options: StatsOptions) -> Result<Surface, StatsError> {
+        let stats = topography.stats(&options)?;
+        Ok(Surface {
+            parts: vec![(topography, stats.clone())],
+            options,
+            stats,
+        })
+    }
+
+    /// Two measured rough surfaces pressed together: the equivalent
+    /// surface of their summed heights against a flat ([`combine`]). Both
+    /// are profiles or both maps, ideally sampled alike (a warning says
+    /// when their intervals differ by more than 1 %).
+    pub fn pair(a: Topography, b: Topography, options: StatsOptions) -> Result<Surface, StatsError> {
+        let (sa, sb) = (a.stats(&options)?, b.stats(&options)?);
+        let stats = combine(&sa, &sb)?;
+        Ok(Surface {
+            parts: vec![(a, sa), (b, sb)],
+            options,
+            stats,
+        })
+    }
+
+    /// The statistics of the surface (of the equivalent surface, for a pair).
+    pub fn stats(&self) -> &SurfaceStats {
+        &self.stats
+    }
+
+    /// The measured topographies (one, or two for a pair) and their own
+    /// statistics.
+    pub fn parts(&self) -> &[(Topography, SurfaceStats)] {
+        &self.parts
+    }
+
+    /// The options the statistics were taken with.
+    pub fn options(&self) -> StatsOptions {
+        self.options
+    }
+
+    /// The height distribution of the surface for a family of
+    /// [`HeightDistribution::FAMILIES`] (`None`:
+    /// [`DEFAULT_FAMILY`](Self::DEFAULT_FAMILY)):
+    ///
+    /// - `"gaussian"`: the paper's;
+    /// - `"pearson"`: the Pearson density of the measured skewness and
+    ///   kurtosis (a pair's from the added cumulants);
+    /// - `"weibull"`: the Weibull density of the measured skewness;
+    /// - `"empirical"`: the kernel density of the detrended heights (a
+    ///   pair's: the convolution of the two, [`crate::Empirical::sum`]).
+    ///
+    /// A measured skewness or kurtosis outside the family's range is an
+    /// error naming it (`skewness` or `kurtosis`).
+    pub fn distribution(&self, family: Option<&str>) -> Result<HeightDistribution, DistributionError> {
+        let family = family.unwrap_or(Self::DEFAULT_FAMILY);
+        let (sk, k) = (self.stats.skewness, self.stats.kurtosis);
+        match family {
+            "gaussian" => Ok(HeightDistribution::Gaussian),
+            "pearson" => Ok(HeightDistribution::pearson(sk, k)?),
+            "weibull" => Ok(HeightDistribution::weibull(sk)?),
+            "empirical" => {
+                let mut densities = Vec::with_capacity(2);
+                for (t, s) in &self.parts {
+                    let heights = t
+                        .detrended(self.options.detrend)
+                        .map_err(|e| DistributionError::Conflict {
+                            name: "heights",
+                            reason: e.to_string(),
+                        })?;
+                    let HeightDistribution::Empirical(e) = HeightDistribution::empirical(&heights)? else {
+                        unreachable!("an empirical distribution")
+                    };
+                    densities.push((e, s.sigma));
+                }
+                let (first, sd) = densities.remove(0);
+                Ok(HeightDistribution::Empirical(match densities.pop() {
+                    None => first,
+                    Some((second, other_sd)) => first.sum(sd, &second, other_sd)?,
+                }))
+            }
+            other => HeightDistribution::from_arguments(Some(other), None, None, None),
+        }
+    }
+
+    /// The physical inputs of `materials` on this surface: σ, R and η from
+    /// its statistics.
+    pub fn physical(&self, materials: &Materials) -> Physical {
+        materials.with_roughness(self.stats.sigma, self.stats.radius, self.stats.eta)
+    }
+
+    /// The model's inputs for `materials` on this surface with height
+    /// distribution `distribution` ([`Params::from_physical`]): ψ, θ, β,
+    /// ν, ε*.
+    pub fn params(&self, materials: &Materials, distribution: HeightDistribution) -> Result<Params, ParamError> {
+        Ok(Params::from_physical(&self.physical(materials))?.distribution(distribution))
+    }
+}
