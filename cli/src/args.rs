@@ -258,6 +258,11 @@ pub struct ModelArgs {
     pub constants: ConstantsArgs,
     #[command(flatten)]
     pub si: SiArgs,
+    /// A measured surface (X3P, .npy or text; give it twice for two rough surfaces pressed together): sigma, R, eta and the height distribution (--distribution, default pearson from its Ssk and Sku) come from it, with the seven material flags (--e1 … --epsilon). See `kefric surface`.
+    #[arg(long, value_name = "FILE", action = clap::ArgAction::Append)]
+    pub surface: Vec<std::path::PathBuf>,
+    #[command(flatten)]
+    pub read: crate::surface::SurfaceArgs,
 }
 
 /// The model constants' flags (β, ν, ε*, fit, model), shared by every
@@ -538,9 +543,13 @@ impl From<ModelKindArg> for Kind {
 }
 
 impl ModelArgs {
-    /// The parameters, dimensionless or from the SI inputs (not both), not
-    /// yet validated.
-    pub fn params(&self) -> Result<Params, Failure> {
+    /// The parameters, and where σ, R and η came from when a surface gave
+    /// them (`sigma, R, eta of FILE at dx = …`: β and ψ hold at those
+    /// sampling intervals only, so outputs print it beside them).
+    pub fn params_and_source(&self) -> Result<(Params, Option<SurfaceSource>), Failure> {
+        if !self.surface.is_empty() {
+            return self.surface_params().map(|(p, source)| (p, Some(source)));
+        }
         let params = if self.si.any() {
             let dimensionless = [("--psi", self.psi), ("--theta", self.theta)];
             if let Some((flag, _)) = dimensionless
@@ -562,19 +571,102 @@ impl ModelArgs {
                 .unchecked_at(required("--psi", self.psi)?, required("--theta", self.theta)?)
         };
         let c = self.constants.constants()?;
-        Ok(params.fit(c.fit).kind(c.kind).distribution(c.distribution))
+        Ok((params.fit(c.fit).kind(c.kind).distribution(c.distribution), None))
+    }
+
+    /// The parameters of `--surface` with the materials: the flags the
+    /// surface supplies (σ, R, η, the distribution's moments) and the
+    /// dimensionless ones are refused beside it.
+    fn surface_params(&self) -> Result<(Params, SurfaceSource), Failure> {
+        let h = &self.constants.heights;
+        let supplied = [
+            ("--psi", self.psi.is_some()),
+            ("--theta", self.theta.is_some()),
+            ("--beta", self.constants.beta.is_some()),
+            ("--nu", self.constants.nu.is_some()),
+            ("--eps-star", self.constants.eps_star.is_some()),
+            ("--sigma", self.si.sigma.is_some()),
+            ("--radius", self.si.radius.is_some()),
+            ("--density", self.si.density.is_some()),
+            ("--skewness", h.skewness.is_some()),
+            ("--kurtosis", h.kurtosis.is_some()),
+            ("--heights", h.heights.is_some()),
+        ];
+        if let Some((flag, _)) = supplied.iter().find(|(_, given)| *given) {
+            return Err(Failure::input(format!(
+                "{flag}: the surface supplies it: give --surface with the seven material flags only"
+            )));
+        }
+        let surface = self.read.surface("--surface", &self.surface)?;
+        let materials = self.si.materials.materials(&[])?;
+        for w in &surface.stats().warnings {
+            errln!("warning: {w}");
+        }
+        let params = crate::surface::params(
+            &surface,
+            &materials,
+            h.distribution,
+            self.constants.fit,
+            self.constants.model,
+        )?;
+        let source = SurfaceSource {
+            files: self.surface.iter().map(|p| p.display().to_string()).collect(),
+            dx: surface.stats().dx,
+            dy: surface.stats().dy,
+        };
+        Ok((params, source))
     }
 
     /// The validated model, or a message naming the offending flag.
     pub fn model(&self) -> Result<Model, Failure> {
-        Model::new(self.params()?).map_err(|e| {
-            let flag = if self.si.any() {
+        self.model_and_source().map(|(m, _)| m)
+    }
+
+    /// The validated model and where σ, R and η came from
+    /// ([`ModelArgs::params_and_source`]).
+    pub fn model_and_source(&self) -> Result<(Model, Option<SurfaceSource>), Failure> {
+        let (params, source) = self.params_and_source()?;
+        let model = Model::new(params).map_err(|e| {
+            let flag = if !self.surface.is_empty() {
+                "the surface with these materials".to_string()
+            } else if self.si.any() {
                 "SI inputs".to_string()
             } else {
                 flag_of(e.name)
             };
             Failure::input(format!("{flag}: {e}"))
-        })
+        })?;
+        Ok((model, source))
+    }
+}
+
+/// The measured surface that gave σ, R and η (`--surface`), and its
+/// sampling intervals (named as in the surface record), at which alone
+/// the β and ψ it gives hold.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct SurfaceSource {
+    /// The surface files.
+    #[serde(rename = "surface")]
+    pub files: Vec<String>,
+    /// Sampling interval along x (m).
+    pub dx: f64,
+    /// Sampling interval along y (m), for a map.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dy: Option<f64>,
+}
+
+impl std::fmt::Display for SurfaceSource {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "sigma, R, eta of {} at dx = {} m",
+            self.files.join(" + "),
+            Shortest(self.dx)
+        )?;
+        match self.dy {
+            Some(dy) => write!(f, ", dy = {} m", Shortest(dy)),
+            None => Ok(()),
+        }
     }
 }
 

@@ -77,7 +77,7 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
 
 /// Runs `kefric eval`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    let model = args.model.model()?;
+    let (model, source) = args.model.model_and_source()?;
     let contacts: Vec<Result<Contact, ke_friction::EvalError>> = if let Some(h) = &args.h_star {
         points("--h-star", h, Spacing::Linear)?
             .into_iter()
@@ -105,14 +105,23 @@ pub fn run(args: Args) -> Result<(), Failure> {
             params: &'a ke_friction::Params,
             #[serde(flatten)]
             contact: &'a Contact,
+            #[serde(flatten, skip_serializing_if = "Option::is_none")]
+            source: Option<&'a crate::args::SurfaceSource>,
         }
         for c in &contacts {
-            let row = Row { params: p, contact: c };
+            let row = Row {
+                params: p,
+                contact: c,
+                source: source.as_ref(),
+            };
             outln!("{}", serde_json::to_string(&row).expect("a contact serialises"))?;
             paper.note(c.f_star, c.h_star);
         }
     } else {
         outln!("# {}", describe(p))?;
+        if let Some(source) = &source {
+            outln!("# {source}")?;
+        }
         outln!(
             "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
             "h*",

@@ -156,13 +156,15 @@ impl SurfaceArgs {
             xy_unit: metres,
             ..ReadOptions::default()
         };
-        read_file(path, &options).map_err(|e| {
-            let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };
-            let hint = match e {
-                ReadError::NeedInterval { .. } => " (give --dx, and --dy for a map, with --xy-unit)",
-                _ => "",
-            };
-            Failure::of(flag, kind, format!("{e}{hint}"))
+        read_file(path, &options).map_err(|e| match e {
+            ReadError::NeedInterval { path, name } => Failure::input(format!(
+                "{flag}: {}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit",
+                path.display()
+            )),
+            e => {
+                let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };
+                Failure::of(flag, kind, e)
+            }
         })
     }
 
@@ -264,7 +266,7 @@ pub fn params(
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let load = args.load.load()?;
-    let surface = args.read.surface("FILE", &args.files)?;
+    let surface = args.read.surface("surface", &args.files)?;
     let materials = if args.materials.any() {
         Some(args.materials.materials(&[])?)
     } else {
@@ -312,6 +314,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
     };
     for w in &surface.stats().warnings {
         errln!("warning: {w}");
+    }
+    if let Some(f) = &friction {
+        let mut paper = crate::args::PaperRange::default();
+        paper.note(f.contact.f_star, f.contact.h_star);
+        paper.warn();
     }
     if args.json {
         #[derive(serde::Serialize)]

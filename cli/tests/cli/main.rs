@@ -8,9 +8,13 @@ mod support;
 // The independent table encoder (crafted files).
 #[path = "../../../tests/forge.rs"]
 mod forge;
+// The independent .npy encoder.
+#[path = "../../../tests/npy.rs"]
+mod npy;
 
 mod cli_eval;
 mod cli_export;
+mod cli_surface;
 mod cli_table;
 mod cli_tools;
 mod corrupted_tables;

@@ -1,0 +1,402 @@
+//! `kefric surface` and `eval --surface`: a measured surface to the
+//! model's inputs and μ, against the library called directly, and bad
+//! input.
+use crate::common::TempDir;
+use crate::support::{assert_bad_input, kefric, stderr};
+use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
+use ke_friction::{Load, Materials, Model};
+use serde_json::Value;
+
+/// Aluminium (softer) on a nickel coating, with adhesion: the pair.
+const MATERIALS: Materials = Materials {
+    e1: 70e9,
+    nu1: 0.33,
+    e2: 200e9,
+    nu2: 0.31,
+    hardness: 1e9,
+    delta_gamma: 0.5,
+    epsilon: 0.4e-9,
+};
+
+const MATERIAL_FLAGS: &[&str] = &[
+    "--e1",
+    "70e9",
+    "--nu1",
+    "0.33",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.31",
+    "--hardness",
+    "1e9",
+    "--delta-gamma",
+    "0.5",
+    "--epsilon",
+    "0.4e-9",
+];
+
+/// A smooth synthetic map (n × n, metres) whose ψ lies in the paper's
+/// range with [`MATERIALS`] at dx = 2 µm: a few long waves, skewed by a
+/// square term.
+fn heights(n: usize, phase: f64) -> Vec<f64> {
+    (0..n * n)
+        .map(|k| {
+            let (x, y) = ((k % n) as f64, (k / n) as f64);
+            let w = (x * 0.31 + phase).sin()
+                + (y * 0.23).cos()
+                + 0.7 * (x * 0.17 - y * 0.29 + phase).sin()
+                + 0.5 * (x * 0.41 + y * 0.37).cos();
+            0.2e-6 * (w + 0.15 * w * w)
+        })
+        .collect()
+}
+
+fn write_npy(dir: &TempDir, name: &str, z: &[f64], n: usize) -> String {
+    let bytes: Vec<u8> = z.iter().flat_map(|v| v.to_le_bytes()).collect();
+    std::fs::write(dir.join(name), crate::npy::npy("<f8", false, &[n, n], &bytes)).unwrap();
+    dir.arg(name)
+}
+
+fn json(args: &[&str]) -> Value {
+    let o = kefric(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+fn run(args: &[&str], extra: &[&str]) -> Vec<String> {
+    let mut all: Vec<String> = args.iter().map(|s| s.to_string()).collect();
+    all.extend(extra.iter().map(|s| s.to_string()));
+    all
+}
+
+fn as_strs(v: &[String]) -> Vec<&str> {
+    v.iter().map(String::as_str).collect()
+}
+
+#[test]
+fn one_surface_force_and_area_give_the_librarys_mu_and_q() {
+    let dir = TempDir::new("surface-one");
+    let n = 96;
+    let z = heights(n, 0.0);
+    let file = write_npy(&dir, "map.npy", &z, n);
+    let args = run(
+        &[
+            "surface",
+            &file,
+            "--dx",
+            "2",
+            "--xy-unit",
+            "um",
+            "--json",
+            "--force",
+            "10",
+            "--area",
+            "1e-5",
+        ],
+        MATERIAL_FLAGS,
+    );
+    let v = json(&as_strs(&args));
+
+    // The library, called directly.
+    let surface = Surface::new(Topography::map(z, n, n, 2e-6, 2e-6).unwrap(), StatsOptions::default()).unwrap();
+    let params = surface.params(&MATERIALS, surface.distribution(None).unwrap()).unwrap();
+    let load = Load::Force {
+        force: 10.0,
+        area: 1e-5,
+    };
+    let friction = load
+        .friction(&Model::new(params.clone()).unwrap(), &surface.physical(&MATERIALS))
+        .unwrap();
+    assert_eq!(v["surface"], serde_json::to_value(surface.stats()).unwrap());
+    assert_eq!(v["model"], serde_json::to_value(&params).unwrap());
+    assert_eq!(v["friction"], serde_json::to_value(friction).unwrap());
+    assert!(v.get("parts").is_none());
+
+    // What the record says: the default distribution is the measured
+    // Pearson one; F* = F/(A_n H); Q = μF; h = h*σ.
+    let s = &v["surface"];
+    assert_eq!(v["model"]["distribution"], "pearson");
+    assert_eq!(v["model"]["skewness"], s["skewness"]);
+    assert_eq!(v["model"]["kurtosis"], s["kurtosis"]);
+    let f = &v["friction"];
+    let num = |v: &Value| v.as_f64().unwrap();
+    assert!((num(&f["f_star"]) / 1e-3 - 1.0).abs() < 1e-12);
+    assert_eq!(num(&f["friction_force"]), num(&f["mu"]) * 10.0);
+    assert!((num(&f["separation"]) / (num(&f["h_star"]) * num(&s["sigma"])) - 1.0).abs() < 1e-15);
+    let psi = num(&v["model"]["psi"]);
+    assert!(
+        (0.5..=8.0).contains(&psi),
+        "psi = {psi}: the test surface should lie in the paper's range"
+    );
+    assert!(num(&f["mu"]) > 0.0);
+    assert_eq!((num(&s["dx"]), num(&s["dy"])), (2e-6, 2e-6));
+}
+
+#[test]
+fn text_output_shows_the_intervals_beside_beta_and_psi() {
+    let dir = TempDir::new("surface-text");
+    let n = 64;
+    let file = write_npy(&dir, "map.npy", &heights(n, 0.3), n);
+    let args = run(&["surface", &file, "--dx", "2e-6", "--pressure", "1e6"], MATERIAL_FLAGS);
+    let o = kefric(&as_strs(&args));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let line = |start: &str| {
+        text.lines()
+            .find(|l| l.starts_with(start))
+            .unwrap_or_else(|| panic!("no line {start:?} in\n{text}"))
+            .to_string()
+    };
+    assert!(
+        line("beta = eta R sigma").contains("dx = 2e-6 m, dy = 2e-6 m"),
+        "{text}"
+    );
+    assert!(line("# model inputs").contains("dx = 2e-6 m, dy = 2e-6 m"), "{text}");
+    assert!(line("heights").contains("pearson (skewness"), "{text}");
+    assert!(line("mu F/A_n (friction stress)").ends_with("Pa"), "{text}");
+    // Without materials: the statistics and a hint, no model.
+    let o = kefric(&["surface", &file, "--dx", "2e-6"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains("sigma (Sq)") && !text.contains("# model inputs"),
+        "{text}"
+    );
+}
+
+#[test]
+fn two_surfaces_are_their_equivalent_surface() {
+    let dir = TempDir::new("surface-pair");
+    let n = 80;
+    let (za, zb) = (
+        heights(n, 0.0),
+        heights(n, 1.1).iter().map(|h| -0.6 * h).collect::<Vec<_>>(),
+    );
+    let a = write_npy(&dir, "a.npy", &za, n);
+    let b = write_npy(&dir, "b.npy", &zb, n);
+    for family in ["pearson", "empirical"] {
+        let args = run(
+            &[
+                "surface",
+                &a,
+                &b,
+                "--dx",
+                "2e-6",
+                "--json",
+                "--force",
+                "5",
+                "--area",
+                "1e-5",
+                "--distribution",
+                family,
+            ],
+            MATERIAL_FLAGS,
+        );
+        let v = json(&as_strs(&args));
+        let surface = Surface::pair(
+            Topography::map(za.clone(), n, n, 2e-6, 2e-6).unwrap(),
+            Topography::map(zb.clone(), n, n, 2e-6, 2e-6).unwrap(),
+            StatsOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(v["surface"], serde_json::to_value(surface.stats()).unwrap());
+        assert_eq!(v["parts"].as_array().map(Vec::len), Some(2));
+        let params = surface
+            .params(&MATERIALS, surface.distribution(Some(family)).unwrap())
+            .unwrap();
+        assert_eq!(v["model"], serde_json::to_value(&params).unwrap());
+        let friction = Load::Force { force: 5.0, area: 1e-5 }
+            .friction(&Model::new(params).unwrap(), &surface.physical(&MATERIALS))
+            .unwrap();
+        assert_eq!(v["friction"]["mu"].as_f64(), Some(friction.mu), "{family}");
+        // Variances add.
+        let var = |s: &Value| s["sigma"].as_f64().unwrap().powi(2);
+        let sum = var(&v["parts"][0]) + var(&v["parts"][1]);
+        assert!((var(&v["surface"]) / sum - 1.0).abs() < 1e-14);
+    }
+}
+
+#[test]
+fn eval_with_a_surface_agrees_with_surface() {
+    let dir = TempDir::new("surface-eval");
+    let n = 64;
+    let z = heights(n, 0.7);
+    let npy = write_npy(&dir, "map.npy", &z, n);
+    // The same map as an X3P file, which carries its own intervals.
+    let x3p = dir.join("map.x3p");
+    write_x3p(&Topography::map(z, n, n, 2e-6, 2e-6).unwrap(), &x3p, 'D').unwrap();
+    let x3p = x3p.display().to_string();
+    let s = json(&as_strs(&run(
+        &["surface", &x3p, "--json", "--pressure", "2e6"],
+        MATERIAL_FLAGS,
+    )));
+    let s_npy = json(&as_strs(&run(
+        &["surface", &npy, "--dx", "2e-6", "--json", "--pressure", "2e6"],
+        MATERIAL_FLAGS,
+    )));
+    assert_eq!(s["friction"], s_npy["friction"]);
+    let e = json(&as_strs(&run(
+        &["eval", "--surface", &x3p, "--f-star", "2e-3", "--json"],
+        MATERIAL_FLAGS,
+    )));
+    for key in [
+        "psi",
+        "theta",
+        "beta",
+        "nu",
+        "eps_star",
+        "distribution",
+        "skewness",
+        "kurtosis",
+    ] {
+        assert_eq!(e[key], s["model"][key], "{key}");
+    }
+    for key in ["mu", "h_star", "f_star"] {
+        assert_eq!(e[key], s["friction"][key], "{key}");
+    }
+    assert_eq!((e["dx"].as_f64(), e["dy"].as_f64()), (Some(2e-6), Some(2e-6)));
+    // The text form prints where σ, R, η came from, with the intervals.
+    let o = kefric(&as_strs(&run(
+        &[
+            "eval",
+            "--surface",
+            &x3p,
+            "--f-star",
+            "2e-3",
+            "--distribution",
+            "gaussian",
+        ],
+        MATERIAL_FLAGS,
+    )));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains(&format!("# sigma, R, eta of {x3p} at dx = 2e-6 m, dy = 2e-6 m")),
+        "{text}"
+    );
+    assert!(!text.contains("heights ="), "gaussian: {text}");
+}
+
+#[test]
+fn bad_input_names_the_flag() {
+    let dir = TempDir::new("surface-bad");
+    let n = 64;
+    let file = write_npy(&dir, "map.npy", &heights(n, 0.0), n);
+    let with = |extra: &[&str]| run(&["surface", &file, "--dx", "2e-6"], extra);
+    let cases: Vec<(Vec<String>, &str)> = vec![
+        (run(&["surface", &file], &[]), "--dx"),
+        (with(&["--dx", "-1"]), "--dx"),
+        (with(&["--force", "10", "--area", "1e-5"]), "--force"),
+        (with(&["--distribution", "gaussian"]), "--distribution"),
+        (
+            run(
+                &with(&["--force", "-1", "--area", "1e-5"])
+                    .iter()
+                    .map(String::as_str)
+                    .collect::<Vec<_>>(),
+                MATERIAL_FLAGS,
+            ),
+            "--force",
+        ),
+        (
+            run(
+                &with(&["--pressure", "0"])
+                    .iter()
+                    .map(String::as_str)
+                    .collect::<Vec<_>>(),
+                MATERIAL_FLAGS,
+            ),
+            "--pressure",
+        ),
+        (with(&["--e1", "70e9"]), "--nu1"),
+        (
+            run(
+                &with(&["--hardness", "-1"])
+                    .iter()
+                    .map(String::as_str)
+                    .collect::<Vec<_>>(),
+                &MATERIAL_FLAGS[..8],
+            ),
+            "--hardness",
+        ),
+        (run(&["surface", &dir.arg("missing.x3p")], &[]), "missing.x3p"),
+        (
+            run(
+                &[
+                    "eval",
+                    "--surface",
+                    &file,
+                    "--dx",
+                    "2e-6",
+                    "--psi",
+                    "1",
+                    "--f-star",
+                    "1e-3",
+                ],
+                MATERIAL_FLAGS,
+            ),
+            "--psi",
+        ),
+        (
+            run(
+                &[
+                    "eval",
+                    "--surface",
+                    &file,
+                    "--dx",
+                    "2e-6",
+                    "--sigma",
+                    "1e-7",
+                    "--f-star",
+                    "1e-3",
+                ],
+                MATERIAL_FLAGS,
+            ),
+            "--sigma",
+        ),
+        (
+            run(
+                &[
+                    "eval",
+                    "--surface",
+                    &file,
+                    "--dx",
+                    "2e-6",
+                    "--kurtosis",
+                    "4",
+                    "--f-star",
+                    "1e-3",
+                ],
+                MATERIAL_FLAGS,
+            ),
+            "--kurtosis",
+        ),
+        (
+            run(&["eval", "--surface", &file, "--dx", "2e-6", "--f-star", "1e-3"], &[]),
+            "--e1",
+        ),
+    ];
+    for (args, needle) in cases {
+        let o = kefric(&as_strs(&args));
+        assert_bad_input(&o, needle);
+    }
+    // A surface whose skewness is beyond Pearson's range: the message says
+    // so and points to the empirical density.
+    let spiky: Vec<f64> = (0..n * n)
+        .map(|k| {
+            if k % 997 == 0 {
+                1e-5
+            } else {
+                1e-8 * ((k as f64) * 0.37).sin()
+            }
+        })
+        .collect();
+    let spiky = write_npy(&dir, "spiky.npy", &spiky, n);
+    let o = kefric(&as_strs(&run(&["surface", &spiky, "--dx", "2e-6"], MATERIAL_FLAGS)));
+    assert_bad_input(&o, "--distribution");
+    assert!(
+        stderr(&o).contains("skewness") && stderr(&o).contains("empirical"),
+        "{}",
+        stderr(&o)
+    );
+}
