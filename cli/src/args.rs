@@ -52,6 +52,11 @@ impl Failure {
         Failure::other(format!("{what}: {}", io_message(e)))
     }
 
+    /// The message.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+
     /// Prints the message as one line on stderr; returns the exit status.
     pub fn report(&self) -> i32 {
         errln!("error: {}", self.message);

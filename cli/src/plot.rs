@@ -2,7 +2,8 @@
 //! map, μ(F*) for non-Gaussian heights. PNG or SVG by the output file's extension.
 
 use crate::args::{
-    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
+    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, DistributionArg, Failure,
+    FitArg, ModelArgs, ModelKindArg,
 };
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::LookupError;
@@ -35,6 +36,8 @@ enum What {
     TableError(TableErrorArgs),
     /// μ against F* (1e-5 to 0.1) for Gaussian and Pearson (Sk, K) asperity heights (MODEL.md §9), with their standardised densities g(x) on a log axis below. Not part of `plot all`.
     Distributions(DistributionsArgs),
+    /// A measured surface (or two pressed together): μ against F* for its Gaussian, Pearson (measured Ssk, Sku) and empirical height densities, with the materials; below, the histogram of its heights (height/σ, log scale) with the fitted densities. Not part of `plot all`.
+    Surface(SurfacePlotArgs),
     /// Write fig3.png … fig6.png (PNG) into a directory.
     All(AllArgs),
 }
@@ -104,6 +107,22 @@ struct DistributionsArgs {
 }
 
 #[derive(Debug, clap::Args)]
+struct SurfacePlotArgs {
+    /// The surface file, and optionally a second rough surface pressed against it (then no histogram: the summed heights are not a sample).
+    #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+    files: Vec<PathBuf>,
+    #[command(flatten)]
+    read: crate::surface::SurfaceArgs,
+    #[command(flatten)]
+    materials: crate::args::MaterialsArgs,
+    /// Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: 1e-5:0.1].
+    #[arg(long, value_name = "LO:HI")]
+    f_star: Option<String>,
+    #[command(flatten)]
+    out: Out,
+}
+
+#[derive(Debug, clap::Args)]
 struct AllArgs {
     /// Directory for fig3.png … fig6.png (created, with its parents, if missing; existing files are replaced).
     #[arg(long, value_name = "DIR")]
@@ -143,6 +162,58 @@ pub fn run(args: Args) -> Result<(), Failure> {
         What::Distributions(a) => {
             let (out, scale) = output(&a.out)?;
             let page = figures::distributions_page(a.psi, a.theta).map_err(failure)?;
+            page.save_scaled(out, scale).map_err(failure)?;
+            wrote(out)?;
+            Ok(())
+        }
+        What::Surface(a) => {
+            let (out, scale) = output(&a.out)?;
+            let range = a.f_star.as_deref().map(f_star_range).transpose()?;
+            let surface = a.read.surface("surface", &a.files)?;
+            let materials = a.materials.materials(&[])?;
+            let mut fits = Vec::new();
+            for family in [
+                DistributionArg::Gaussian,
+                DistributionArg::Pearson,
+                DistributionArg::Empirical,
+            ] {
+                let fit =
+                    crate::surface::params(&surface, &materials, Some(family), FitArg::Consistent, ModelKindArg::Ke)
+                        .and_then(|p| {
+                            ke_friction::Model::new(p)
+                                .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))
+                        });
+                match fit {
+                    Ok(model) => fits.push((model.params().constants.distribution.to_string(), model)),
+                    // A fit the surface does not admit (e.g. a skewness
+                    // beyond Pearson's range) is left out, and said so.
+                    Err(f) if family != DistributionArg::Gaussian => {
+                        errln!("note: no {} fit: {}", family.name(), f.message())
+                    }
+                    Err(f) => return Err(f),
+                }
+            }
+            let standardised = match surface.parts() {
+                [(t, s)] => Some(
+                    t.detrended(surface.options().detrend)
+                        .map_err(|e| Failure::of("surface", e.kind(), e))?
+                        .into_iter()
+                        .map(|z| z / s.sigma)
+                        .collect::<Vec<f64>>(),
+                ),
+                _ => None,
+            };
+            let names: Vec<String> = a
+                .files
+                .iter()
+                .map(|p| {
+                    p.file_name()
+                        .map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into_owned())
+                })
+                .collect();
+            let intervals = format!("at {}", crate::surface::intervals(surface.stats()));
+            let page = figures::surface_page(&names.join(" + "), &intervals, standardised.as_deref(), &fits, range)
+                .map_err(failure)?;
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())

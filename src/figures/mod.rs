@@ -25,6 +25,7 @@ mod compare;
 mod distributions;
 mod paper;
 mod render;
+mod surface;
 
 pub use chart::{Chart, ChartAxis, Corner, ErrorMap, LineStyle, Markers, Page, Series, Shape, BLACK_INDEX, PALETTE};
 pub use compare::{curve_page, table_error};
@@ -33,6 +34,7 @@ pub use distributions::{
     DISTRIBUTION_SET,
 };
 pub use paper::paper_sweep;
+pub use surface::{surface_page, SURFACE_BINS};
 
 use crate::build::BuildError;
 use crate::{EvalError, LookupError, ParamError};

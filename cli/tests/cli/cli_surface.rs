@@ -400,3 +400,50 @@ fn bad_input_names_the_flag() {
         stderr(&o)
     );
 }
+
+#[test]
+fn plot_surface_draws_the_fits_and_the_histogram() {
+    let dir = TempDir::new("surface-plot");
+    let n = 64;
+    let file = write_npy(&dir, "map.npy", &heights(n, 0.2), n);
+    let out = dir.arg("surface.svg");
+    let args = run(
+        &[
+            "plot",
+            "surface",
+            &file,
+            "--dx",
+            "2e-6",
+            "--f-star",
+            "1e-4:1e-2",
+            "--out",
+            &out,
+        ],
+        MATERIAL_FLAGS,
+    );
+    let o = kefric(&as_strs(&args));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&out).unwrap();
+    for text in [
+        "gaussian",
+        "pearson (skewness",
+        "empirical (4096 heights",
+        "measured heights",
+        "map.npy",
+    ] {
+        assert!(svg.contains(text), "no {text:?} in the figure");
+    }
+    assert!(svg.contains("at dx = 2e-6 m, dy = 2e-6 m"), "the intervals beside psi");
+    // Materials are required; a bad range names its flag.
+    assert_bad_input(
+        &kefric(&["plot", "surface", &file, "--dx", "2e-6", "--out", &out]),
+        "--e1",
+    );
+    let args = run(
+        &[
+            "plot", "surface", &file, "--dx", "2e-6", "--f-star", "1:0.1", "--out", &out,
+        ],
+        MATERIAL_FLAGS,
+    );
+    assert_bad_input(&kefric(&as_strs(&args)), "--f-star");
+}
