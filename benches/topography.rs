@@ -3,9 +3,16 @@
 //! (plane detrend, finite differences). Also a 1024² map, the masked path
 //! (1 % of the points missing) and the spectral path at 1024².
 //!
+//! Reading a 4096 × 4096 X3P (`read_file`): the target is ≤ 2 s.
+//! The files are written once per run with `write_x3p` (z types D, f64,
+//! and F, f32; Deflate, as the writer does) into Cargo's bench temporary
+//! directory (`target/tmp/x3p_4096x4096_D.x3p`, `..._F.x3p`), and kept
+//! there for timing the program (`kefric surface FILE`).
+//!
 //! `cargo bench -p ke-friction-bench --bench topography`
+//! (`-- read_x3p` for the reading only)
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use ke_friction::topography::{Derivative, Detrend, StatsOptions, Topography};
+use ke_friction::topography::{read_file, write_x3p, Derivative, Detrend, ReadOptions, StatsOptions, Topography};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -52,5 +59,23 @@ fn bench_stats(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_stats);
+fn bench_read_x3p(c: &mut Criterion) {
+    let mut group = c.benchmark_group("topography");
+    group.sample_size(10);
+    let t = map(4096, 0.0);
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let options = ReadOptions::default();
+    for z_type in ['D', 'F'] {
+        let path = dir.join(format!("x3p_4096x4096_{z_type}.x3p"));
+        write_x3p(&t, &path, z_type).expect("write the X3P file");
+        let back = read_file(&path, &options).expect("read the X3P file");
+        assert_eq!((back.nx(), back.ny()), (4096, 4096));
+        group.bench_function(format!("read_x3p_4096x4096_{z_type}"), |b| {
+            b.iter(|| black_box(read_file(black_box(&path), &options).expect("read")))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench_stats, bench_read_x3p);
 criterion_main!(benches);

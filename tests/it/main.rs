@@ -19,6 +19,7 @@ mod paper_statements;
 mod properties;
 mod reference_points;
 mod reference_values;
+mod surface_friction;
 mod table_lookup;
 mod topography_read;
 mod topography_stats;

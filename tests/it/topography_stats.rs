@@ -27,7 +27,9 @@ fn uniform(seed: u64, k: u64) -> f64 {
     (splitmix64((seed << 32) + k) >> 11) as f64 * 2f64.powi(-53)
 }
 
-fn synthetic(nx: usize, ny: usize, seed: u64, missing: f64) -> Vec<f64> {
+/// A synthetic surface of `tools/surface_reference.py` (also the
+/// end-to-end test's, `surface_friction.rs`).
+pub(crate) fn synthetic(nx: usize, ny: usize, seed: u64, missing: f64) -> Vec<f64> {
     (0..nx * ny)
         .map(|k| {
             let (i, j) = ((k % nx) as f64, (k / nx) as f64);
