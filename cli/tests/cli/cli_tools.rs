@@ -406,12 +406,14 @@ fn every_flag_in_the_readme_is_in_some_help() {
         &["lookup"],
         &["info"],
         &["params"],
+        &["surface"],
         &["export"],
         &["validate"],
         &["plot", "fig3"],
         &["plot", "curve"],
         &["plot", "table-error"],
         &["plot", "all"],
+        &["plot", "surface"],
     ];
     for sub in subs {
         let o = kefric(&[*sub, &["--help"][..]].concat());
