@@ -19,7 +19,7 @@ pub struct DistributionCore {
 
 impl DistributionCore {
     /// The core of a distribution that validated.
-    fn of(dist: HeightDistribution) -> DistributionCore {
+    pub fn of(dist: HeightDistribution) -> DistributionCore {
         DistributionCore {
             // Every constructor below validated it.
             density: dist.density().expect("a validated distribution"),
@@ -98,6 +98,30 @@ impl DistributionCore {
         let heights = slice("heights", &heights)?;
         py.detach(|| HeightDistribution::empirical(&heights).map(DistributionCore::of))
             .map_err(raise)
+    }
+
+    /// The density of `sd`·X + `other_sd`·Y, X and Y of the empirical
+    /// densities of `heights` and `other` (`Empirical::sum`): a pair of
+    /// surfaces' empirical density, rebuilt from its parts.
+    #[staticmethod]
+    fn empirical_sum(
+        py: Python<'_>,
+        heights: PyReadonlyArray1<'_, f64>,
+        sd: f64,
+        other: PyReadonlyArray1<'_, f64>,
+        other_sd: f64,
+    ) -> PyResult<DistributionCore> {
+        let (a, b) = (slice("heights", &heights)?, slice("other", &other)?);
+        py.detach(|| {
+            let (HeightDistribution::Empirical(a), HeightDistribution::Empirical(b)) =
+                (HeightDistribution::empirical(&a)?, HeightDistribution::empirical(&b)?)
+            else {
+                unreachable!("empirical densities")
+            };
+            a.sum(sd, &b, other_sd)
+                .map(|e| DistributionCore::of(HeightDistribution::Empirical(e)))
+        })
+        .map_err(raise)
     }
 
     /// "gaussian", "pearson", "weibull" or "empirical".

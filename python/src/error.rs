@@ -44,8 +44,31 @@ core_errors!(
     EvalError,
     CurveError,
     ke_friction::TableError,
-    ke_friction::DistributionError
+    ke_friction::DistributionError,
+    ke_friction::LoadError,
+    ke_friction::topography::StatsError
 );
+
+/// A surface file that cannot be read is an `Io` failure (`OSError`); one
+/// read whose content is bad or unsupported is the caller's (`ValueError`),
+/// as `kefric surface` has it.
+impl CoreError for ke_friction::topography::ReadError {
+    fn kind(&self) -> ErrorKind {
+        if self.is_io() {
+            ErrorKind::Io
+        } else {
+            ErrorKind::Argument
+        }
+    }
+}
+
+/// Heights that do not make a topography (a shape, an interval, an
+/// infinite height): the caller's argument.
+impl CoreError for ke_friction::topography::TopographyError {
+    fn kind(&self) -> ErrorKind {
+        ErrorKind::Argument
+    }
+}
 
 /// The exception of a failure of kind `kind` saying `message`.
 pub fn exception(kind: ErrorKind, message: String) -> PyErr {

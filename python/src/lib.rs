@@ -4,7 +4,7 @@
 //! argument checks and the documented Python API on top.
 //!
 //! One module per class (`table.rs`, `curve.rs`, `model.rs`,
-//! `distribution.rs`); the core's
+//! `distribution.rs`, `surface.rs`); the core's
 //! errors become Python exceptions in `error.rs` alone; the batch and
 //! thread machinery is `parallel.rs`; `convert.rs` turns arguments and the
 //! core's records between the two languages.
@@ -15,6 +15,7 @@ mod distribution;
 mod error;
 mod model;
 mod parallel;
+mod surface;
 mod table;
 
 use pyo3::prelude::*;
@@ -25,6 +26,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<curve::CurveCore>()?;
     m.add_class::<model::ModelCore>()?;
     m.add_class::<distribution::DistributionCore>()?;
+    m.add_class::<surface::SurfaceCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -14,7 +14,7 @@ def test_everything_public_is_documented():
         obj = getattr(kf, name)
         if callable(obj):
             assert obj.__doc__ and len(obj.__doc__) > 40, name
-    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact, kf.HeightDistribution]:
+    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact, kf.HeightDistribution, kf.Surface]:
         for attr, value in vars(cls).items():
             if not attr.startswith("_"):
                 doc = getattr(value, "__doc__", None) or getattr(getattr(value, "__func__", None), "__doc__", None)

@@ -5,7 +5,7 @@
 # bad element's error, mapped from the library's error kind (ValueError,
 # OSError, TableError, RuntimeError for a bug), with the element's flat
 # index as the exception's attribute `index`.
-from typing import Any, Dict, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -65,6 +65,10 @@ class DistributionCore:
     # Measured heights (NaN skipped); not kept (the Python layer keeps them).
     @staticmethod
     def empirical(heights: _F64) -> DistributionCore: ...
+    # The density of sd*X + other_sd*Y, X and Y of the empirical densities of
+    # heights and other (Empirical::sum): a surface pair's empirical density.
+    @staticmethod
+    def empirical_sum(heights: _F64, sd: float, other: _F64, other_sd: float) -> DistributionCore: ...
     # Model's keywords by the core's rules (HeightDistribution::from_arguments).
     @staticmethod
     def from_arguments(family: Optional[str], skewness: Optional[float], kurtosis: Optional[float],
@@ -96,6 +100,36 @@ class ModelCore:
     # The library's Params record: psi, theta, beta, nu, eps_star, fit, model,
     # distribution, skewness, kurtosis (and heights, a count, if empirical).
     def params(self) -> Dict[str, Any]: ...
+
+# A measured surface (topography::Surface): one topography, or two pressed
+# together. detrend: "plane", "line" or "mean"; derivative: "fd" or
+# "spectral". Materials: (e1, nu1, e2, nu2, hardness, delta_gamma, epsilon).
+class SurfaceCore:
+    # One or two parts (heights row-major in metres, NaN missing, nx, ny, dx,
+    # dy; dy None for a profile).
+    @staticmethod
+    def new(parts: List[Tuple[_F64, int, int, float, Optional[float]]], detrend: str,
+            derivative: str) -> SurfaceCore: ...
+    # The core's reader (OSError if unreadable, ValueError naming the file).
+    @staticmethod
+    def read(path: str, dx: Optional[float], dy: Optional[float], z_unit: float, xy_unit: float, detrend: str,
+             derivative: str) -> SurfaceCore: ...
+    @staticmethod
+    def pair(a: SurfaceCore, b: SurfaceCore, detrend: str, derivative: str) -> SurfaceCore: ...
+    # The SurfaceStats record (as `kefric surface --json` prints "surface").
+    def stats(self) -> Dict[str, Any]: ...
+    def parts(self) -> List[Dict[str, Any]]: ...
+    def is_pair(self) -> bool: ...
+    def topographies(self) -> List[Tuple[_F64, int, int, float, Optional[float]]]: ...
+    def options(self) -> Tuple[str, str]: ...
+    def distribution(self, family: Optional[str] = None) -> DistributionCore: ...
+    # Each part's detrended heights and sigma (what its empirical density is made of).
+    def empirical_parts(self) -> List[Tuple[_F64, float]]: ...
+    # The Params record of the materials with this distribution.
+    def params(self, materials: Tuple[float, ...], distribution: DistributionCore) -> Dict[str, Any]: ...
+    # The Friction record of a load (force with area, or pressure) on model.
+    def friction(self, model: ModelCore, materials: Tuple[float, ...], force: Optional[float],
+                 area: Optional[float], pressure: Optional[float]) -> Dict[str, Any]: ...
 
 # The library's Params record of SI inputs (as `kefric params --json` prints it).
 def params_from_physical(e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,
