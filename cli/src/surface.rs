@@ -119,19 +119,31 @@ pub enum DerivativeArg {
     Spectral,
 }
 
+impl From<DetrendArg> for Detrend {
+    fn from(d: DetrendArg) -> Detrend {
+        match d {
+            DetrendArg::Plane => Detrend::Plane,
+            DetrendArg::Line => Detrend::Line,
+            DetrendArg::Mean => Detrend::Mean,
+        }
+    }
+}
+
+impl From<DerivativeArg> for Derivative {
+    fn from(d: DerivativeArg) -> Derivative {
+        match d {
+            DerivativeArg::Fd => Derivative::FiniteDifference,
+            DerivativeArg::Spectral => Derivative::Spectral,
+        }
+    }
+}
+
 impl SurfaceArgs {
     /// The options of the statistics.
     pub fn options(&self) -> StatsOptions {
         StatsOptions {
-            detrend: match self.detrend {
-                DetrendArg::Plane => Detrend::Plane,
-                DetrendArg::Line => Detrend::Line,
-                DetrendArg::Mean => Detrend::Mean,
-            },
-            derivative: match self.derivative {
-                DerivativeArg::Fd => Derivative::FiniteDifference,
-                DerivativeArg::Spectral => Derivative::Spectral,
-            },
+            detrend: self.detrend.into(),
+            derivative: self.derivative.into(),
         }
     }
 
@@ -448,4 +460,33 @@ fn print_text(
         row("separation h", sig(f.separation).to_string(), "m")?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::ValueEnum;
+
+    #[test]
+    fn flag_values_are_the_cores_names() {
+        let names = |v: &[Option<clap::builder::PossibleValue>]| -> Vec<String> {
+            v.iter().map(|p| p.as_ref().unwrap().get_name().to_string()).collect()
+        };
+        let detrend: Vec<_> = DetrendArg::value_variants()
+            .iter()
+            .map(|d| d.to_possible_value())
+            .collect();
+        let derivative: Vec<_> = DerivativeArg::value_variants()
+            .iter()
+            .map(|d| d.to_possible_value())
+            .collect();
+        assert_eq!(names(&detrend), Detrend::ALL.map(|d| d.name()));
+        assert_eq!(names(&derivative), Derivative::ALL.map(|d| d.name()));
+        for d in DetrendArg::value_variants() {
+            assert_eq!(Detrend::from(*d).name(), d.to_possible_value().unwrap().get_name());
+        }
+        for d in DerivativeArg::value_variants() {
+            assert_eq!(Derivative::from(*d).name(), d.to_possible_value().unwrap().get_name());
+        }
+    }
 }

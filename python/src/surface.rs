@@ -12,27 +12,20 @@ use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use std::path::PathBuf;
 
-/// The detrending called `name` (the CLI's `--detrend` values).
+/// The detrending called `name` (the core's names).
 fn detrend_of(name: &str) -> PyResult<Detrend> {
-    match name {
-        "plane" => Ok(Detrend::Plane),
-        "line" => Ok(Detrend::Line),
-        "mean" => Ok(Detrend::Mean),
-        other => Err(value_error(format!(
-            "detrend = {other:?}: must be \"plane\", \"line\" or \"mean\""
-        ))),
-    }
+    Detrend::from_name(name).ok_or_else(|| {
+        let names: Vec<String> = Detrend::ALL.iter().map(|d| format!("{:?}", d.name())).collect();
+        value_error(format!("detrend = {name:?}: must be one of {}", names.join(", ")))
+    })
 }
 
-/// The derivative estimate called `name` (the CLI's `--derivative` values).
+/// The derivative estimate called `name` (the core's names).
 fn derivative_of(name: &str) -> PyResult<Derivative> {
-    match name {
-        "fd" => Ok(Derivative::FiniteDifference),
-        "spectral" => Ok(Derivative::Spectral),
-        other => Err(value_error(format!(
-            "derivative = {other:?}: must be \"fd\" or \"spectral\""
-        ))),
-    }
+    Derivative::from_name(name).ok_or_else(|| {
+        let names: Vec<String> = Derivative::ALL.iter().map(|d| format!("{:?}", d.name())).collect();
+        value_error(format!("derivative = {name:?}: must be one of {}", names.join(", ")))
+    })
 }
 
 /// The statistics' options of the Python keywords.
@@ -191,16 +184,7 @@ impl SurfaceCore {
     /// `(detrend, derivative)`, by the Python keywords' names.
     fn options(&self) -> (&'static str, &'static str) {
         let o = self.0.options();
-        let detrend = match o.detrend {
-            Detrend::Plane => "plane",
-            Detrend::Line => "line",
-            Detrend::Mean => "mean",
-        };
-        let derivative = match o.derivative {
-            Derivative::FiniteDifference => "fd",
-            Derivative::Spectral => "spectral",
-        };
-        (detrend, derivative)
+        (o.detrend.name(), o.derivative.name())
     }
 
     /// The height distribution of `family` (None: pearson), the core's

@@ -40,8 +40,7 @@ const INTERVAL_TOLERANCE: f64 = 0.01;
 /// Every fit is a least-squares fit over the valid (non-missing) points
 /// only. The plane (or line) changes the first differences only by its
 /// constant slope and leaves the second differences unchanged.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Detrend {
     /// The least-squares plane z = a + b·x + c·y for a map; for a profile
     /// (no y) this is the least-squares line z = a + b·x. The default.
@@ -58,8 +57,7 @@ pub enum Detrend {
 }
 
 /// How the slope and curvature moments m2, m4 are estimated.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Derivative {
     /// Non-periodic finite differences (MODEL.md §10, the default):
     /// m20 = mean(((z\[i+1\] − z\[i\])/Δx)²) over every adjacent pair along x
@@ -76,6 +74,59 @@ pub enum Derivative {
     /// it with [`Detrend::Mean`]: a fitted plane makes periodic data
     /// non-periodic.
     Spectral,
+}
+
+impl Detrend {
+    /// Every detrending, in the order of [`Detrend::name`]'s documentation.
+    pub const ALL: [Detrend; 3] = [Detrend::Plane, Detrend::Line, Detrend::Mean];
+
+    /// The name users type and read (CLI `--detrend`, Python `detrend=`,
+    /// JSON): `"plane"`, `"line"` or `"mean"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Detrend::Plane => "plane",
+            Detrend::Line => "line",
+            Detrend::Mean => "mean",
+        }
+    }
+
+    /// The detrending named `name` (as [`Detrend::name`] spells it), if any.
+    pub fn from_name(name: &str) -> Option<Detrend> {
+        Detrend::ALL.into_iter().find(|d| d.name() == name)
+    }
+}
+
+impl Derivative {
+    /// Every estimate, in the order of [`Derivative::name`]'s documentation.
+    pub const ALL: [Derivative; 2] = [Derivative::FiniteDifference, Derivative::Spectral];
+
+    /// The name users type and read (CLI `--derivative`, Python
+    /// `derivative=`, JSON): `"fd"` or `"spectral"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Derivative::FiniteDifference => "fd",
+            Derivative::Spectral => "spectral",
+        }
+    }
+
+    /// The estimate named `name` (as [`Derivative::name`] spells it), if any.
+    pub fn from_name(name: &str) -> Option<Derivative> {
+        Derivative::ALL.into_iter().find(|d| d.name() == name)
+    }
+}
+
+impl Serialize for Detrend {
+    /// As its [`name`](Detrend::name).
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
+impl Serialize for Derivative {
+    /// As its [`name`](Derivative::name).
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
 }
 
 /// Options of [`Topography::stats`].
