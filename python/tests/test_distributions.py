@@ -234,3 +234,35 @@ def test_distribution_attributes():
     assert kf.HeightDistribution.pearson(0.0, 8.0) != kf.HeightDistribution.pearson(0.0, 8.5)
     assert len({kf.HeightDistribution.pearson(0.0, 8.0), kf.HeightDistribution.pearson(0.0, 8.0)}) == 1
     assert "HeightDistribution" in kf.__all__
+
+
+def test_a_non_gaussian_table_from_kefric_build(tmp_path):
+    """A Pearson table (format version 2) built by the CLI: Python reads
+    its distribution in the record, looks up within the table's tolerance
+    of the Model with the same distribution, and pickles it bit-identically."""
+    import subprocess
+
+    from conftest import KEFRIC
+
+    if not __import__("os").path.exists(KEFRIC):
+        pytest.skip(f"{KEFRIC} is not built")
+    path = tmp_path / "skewed.kft"
+    subprocess.run(
+        [KEFRIC, "build", "--skewness", "-0.5", "--kurtosis", "3.375", "--nodes", "9,9,13", "--psi", "0.8:2",
+         "--theta", "0:0.002", "--f-star", "1e-4:0.05", "--tolerance", "0.05", "--precision", "f64",
+         "--samples", "200", "--quiet", "--out", str(path)],
+        check=True,
+    )
+    table = kf.Table.load(path)
+    info = table.info
+    assert (info["distribution"], info["skewness"], info["kurtosis"]) == ("pearson", -0.5, 3.375)
+    model = kf.Model(1.0, 0.001, skewness=-0.5, kurtosis=3.375)
+    for f in (1e-4, 1e-3, 1e-2):
+        exact = model.at_f_star(f).mu
+        assert abs(float(table.mu(1.0, 0.001, f)) / exact - 1) <= info["tolerance"], f
+    # A Gaussian model is not this table's: its mu differs by far more.
+    gauss = kf.Model(1.0, 0.001).at_f_star(1e-4).mu
+    assert abs(float(table.mu(1.0, 0.001, 1e-4)) / gauss - 1) > 0.1
+    for back in round_trips(table):
+        assert back.info == info
+        assert float(back.mu(1.0, 0.001, 1e-3)) == float(table.mu(1.0, 0.001, 1e-3))
