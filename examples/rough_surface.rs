@@ -23,7 +23,9 @@ const WAVES: usize = 600;
 
 /// A uniform number in [0, 1) from a counter (splitmix64).
 fn uniform(k: u64) -> f64 {
-    let mut z = k.wrapping_add(0x9E37_79B9_7F4A_7C15).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+    let mut z = k
+        .wrapping_add(0x9E37_79B9_7F4A_7C15)
+        .wrapping_mul(0x9E37_79B9_7F4A_7C15);
     z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     ((z ^ (z >> 31)) >> 11) as f64 * 2f64.powi(-53)
@@ -49,7 +51,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut z: Vec<f64> = (0..N * N)
         .map(|p| {
             let (x, y) = ((p % N) as f64 * DX, (p / N) as f64 * DX);
-            waves.iter().map(|&(kx, ky, phase, a)| a * (kx * x + ky * y + phase).cos()).sum()
+            waves
+                .iter()
+                .map(|&(kx, ky, phase, a)| a * (kx * x + ky * y + phase).cos())
+                .sum()
         })
         .collect();
     // Scale to σ = 0.5 µm about the mean.
