@@ -674,19 +674,20 @@ def _solve_bracket(g, h_lo=-8, h_hi=12, tol=None):
                             lambda h: 'h* < %s' % h_lo if h < h_lo else None)
 
 
-def solve_mu(psi, theta, dist, sk=None, K=None, f=None, dps=30, coarse=True):
-    """h* with F*(h*) = f and the model values there.  Returns (h, res, dens)."""
+def solve_mu(psi, theta, dist, sk=None, K=None, f=None, dps=30, coarse=True, beta=0.04, nu=0.3, eps_star=0.004):
+    """h* with F*(h*) = f and the model values there (constants beta, nu,
+    eps_star: the paper's by default).  Returns (h, res, dens)."""
     fm = None
     h0 = None
     if coarse:
         with mp.workdps(15):
             dens = make_density(dist, sk, K)
-            m = Model(psi, theta, dens)
+            m = Model(psi, theta, dens, beta, nu, eps_star)
             fm = mpf(f)
             h0 = _solve_bracket(lambda h: m.f_star(h) - fm, tol=mpf('1e-11'))
     with mp.workdps(dps):
         dens = make_density(dist, sk, K)
-        m = Model(psi, theta, dens)
+        m = Model(psi, theta, dens, beta, nu, eps_star)
         fm = mpf(f)
         g = lambda h: m.f_star(h) - fm
         tol = mpf(10) ** (-(dps - 8))

@@ -116,38 +116,10 @@ def gaussian_mu(p, f):
 
 def pearson_mu(p, f, sk, kurt):
     """h* and the contact at F* = f, Pearson(Sk, K) asperity heights
-    (tools/nongaussian_reference.py), solved as its solve_mu does but with
-    the surface's beta, nu and eps*."""
-    def model():
-        dens = ng.make_density("pearson", sk, kurt)
-        return ng.Model(p["psi"], p["theta"], dens, p["beta"], p["nu"], p["eps_star"]), dens
-
-    with mp.workdps(15):
-        m, _ = model()
-        fm = mpf(f)
-        h0 = ng._solve_bracket(lambda h: m.f_star(h) - fm, tol=mpf("1e-11"))
-    m, dens = model()
-    fm = mpf(f)
-    g = lambda h: m.f_star(h) - fm  # noqa: E731
-    tol = mpf(10) ** (-(mp.dps - 8))
-    a, b = mpf(h0), mpf(h0) + mpf("1e-9")
-    ga, gb = g(a), g(b)
-    h = None
-    for _ in range(12):
-        if gb == ga:
-            h = b
-            break
-        c = b - gb * (b - a) / (gb - ga)
-        a, ga = b, gb
-        b = c
-        gb = g(b)
-        if abs(b - a) < tol:
-            h = b
-            break
-    if h is None or abs(h - mpf(h0)) > mpf("1e-6"):
-        h = ng._solve_bracket(g, tol=tol)
-    r = m.evaluate(h)
-    r["h_star"] = h
+    (tools/nongaussian_reference.py's solve_mu, with the surface's beta, nu
+    and eps*)."""
+    _, r, dens = ng.solve_mu(p["psi"], p["theta"], "pearson", sk, kurt, f, dps=mp.dps,
+                             beta=p["beta"], nu=p["nu"], eps_star=p["eps_star"])
     return r, dens.ptype
 
 
