@@ -63,7 +63,9 @@ pub enum Derivative {
     /// m20 = mean(((z\[i+1\] − z\[i\])/Δx)²) over every adjacent pair along x
     /// whose two points are valid, m40 = mean(((z\[i+1\] − 2z\[i\] + z\[i−1\])/Δx²)²)
     /// over every interior triple of valid points; m02, m04 the same along
-    /// y with Δy. These equal SurfaceTopography's Rdq², Rddq².
+    /// y with Δy. For a profile these equal SurfaceTopography's Rdq²,
+    /// Rddq²; for a map it averages over rows trimmed at the edges (see
+    /// `tools/surface_topography_check.py`).
     #[default]
     FiniteDifference,
     /// Periodic spectral moments: the detrended heights are taken as one
