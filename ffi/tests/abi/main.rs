@@ -29,27 +29,14 @@ fn c_path(p: &std::path::Path) -> CString {
     CString::new(p.to_str().unwrap()).unwrap()
 }
 
+/// The committed header declares the whole API. That it is exactly
+/// cbindgen's output from ffi/src/lib.rs is checked by the package
+/// ffi/header-check (`cargo run -p ke-friction-ffi-header-check`, a CI
+/// stage), which keeps cbindgen out of the test build.
 #[test]
-fn the_header_is_current() {
+fn the_header_declares_the_api() {
     let dir = env!("CARGO_MANIFEST_DIR");
-    let config = cbindgen::Config::from_file(format!("{dir}/cbindgen.toml")).unwrap();
-    let bindings = cbindgen::Builder::new()
-        .with_crate(dir)
-        .with_config(config)
-        .generate()
-        .expect("cbindgen parses ffi/src/lib.rs");
-    let mut generated = Vec::new();
-    bindings.write(&mut generated);
-    let path = format!("{dir}/include/kefriction.h");
-    if std::env::var_os("KEF_BLESS").is_some() {
-        std::fs::write(&path, &generated).unwrap();
-    }
-    let committed = std::fs::read(&path).unwrap_or_default();
-    assert!(
-        committed == generated,
-        "ffi/include/kefriction.h is stale: run KEF_BLESS=1 cargo test --release -p ke-friction-ffi --test abi header"
-    );
-    let text = String::from_utf8(generated).unwrap();
+    let text = std::fs::read_to_string(format!("{dir}/include/kefriction.h")).unwrap();
     for name in [
         "kef_table_default",
         "kef_table_load",
