@@ -405,7 +405,7 @@ impl MaterialsArgs {
     }
 }
 
-/// A [`ParamError`] of [`Params::from_physical`] as a failure naming the
+/// A [`ke_friction::ParamError`] of [`Params::from_physical`] as a failure naming the
 /// flag: `--density` for β (it is the last of η, R, σ one tunes),
 /// `roughness` for the dimensionless results (ψ, θ, ν, ε*).
 pub fn physical_failure(e: ke_friction::ParamError, roughness: &str) -> Failure {
