@@ -881,3 +881,82 @@ fn io_errors_are_told_apart() {
     let err = read_file(&dir.0, &opts()).unwrap_err();
     assert!(err.is_io(), "{err}");
 }
+
+/// An X3P file whose points are listed in main.xml (`DataList`), one
+/// `Datum` each (`""`: an empty one).
+fn x3p_data_list(z_type: &'static str, cz_extra: &str, datums: &[&str]) -> Vec<u8> {
+    let mut x = X3p::new(&[]);
+    x.z_type = z_type;
+    x.cz_extra = cz_extra.into();
+    let xml = x.xml();
+    let list: String = datums
+        .iter()
+        .map(|d| {
+            if d.is_empty() {
+                "<Datum/>".to_string()
+            } else {
+                format!("<Datum>{d}</Datum>")
+            }
+        })
+        .collect();
+    let start = xml.find("<DataLink>").unwrap();
+    let end = xml.find("</DataLink>").unwrap() + "</DataLink>".len();
+    let xml = format!("{}<DataList>{list}</DataList>{}", &xml[..start], &xml[end..]);
+    stored_zip(&[("main.xml", xml.as_bytes())])
+}
+
+#[test]
+fn x3p_data_list_in_main_xml() {
+    let dir = TempDir::new("x3p-data-list");
+    let write = |name: &str, bytes: Vec<u8>| {
+        let path = dir.join(name);
+        std::fs::write(&path, bytes).unwrap();
+        path
+    };
+    // Every z type; an empty Datum is a missing point; the CZ increment
+    // and offset apply.
+    let scale = "<Increment>1e-9</Increment><Offset>-2e-6</Offset>";
+    let cases: [(&str, &[&str], [f64; 6]); 4] = [
+        (
+            "I",
+            &["-32768", "-1", "", "1", "32767", "5"],
+            [-32768.0, -1.0, f64::NAN, 1.0, 32767.0, 5.0],
+        ),
+        (
+            "L",
+            &["-2147483648", "0", "7", "", "2147483647", "-9"],
+            [-2147483648.0, 0.0, 7.0, f64::NAN, 2147483647.0, -9.0],
+        ),
+        (
+            "F",
+            &["1.5", "-0.25", "0.1", "3", "", "1e-3"],
+            [1.5, -0.25, f64::from(0.1f32), 3.0, f64::NAN, f64::from(1e-3f32)],
+        ),
+        (
+            "D",
+            &["1.5", "-0.25", "0.1", "3", "2", ""],
+            [1.5, -0.25, 0.1, 3.0, 2.0, f64::NAN],
+        ),
+    ];
+    for (z, datums, values) in cases {
+        let path = write(&format!("{z}.x3p"), x3p_data_list(z, scale, datums));
+        let t = read_file(&path, &opts()).unwrap();
+        assert_eq!((t.nx(), t.ny(), t.dx(), t.dy()), (3, 2, 1e-6, Some(2e-6)));
+        let want: Vec<f64> = values.iter().map(|v| -2e-6 + 1e-9 * v).collect();
+        assert_heights(t.heights(), &want, 0.0);
+    }
+    // Bad lists name the problem: too few or too many points, a value
+    // that is not of the type (or out of its range), coordinate triples.
+    let bad: [(&str, &[&str], &str); 5] = [
+        ("I", &["1", "2", "3", "4", "5"], "holds 5 points"),
+        ("D", &["1", "2", "3", "4", "5", "6", "7"], "more than the 6 points"),
+        ("I", &["1", "2", "40000", "4", "5", "6"], "Datum 2"),
+        ("D", &["1", "x", "3", "4", "5", "6"], "Datum 1"),
+        ("D", &["0;0;1", "2", "3", "4", "5", "6"], "coordinate lists"),
+    ];
+    for (k, (z, datums, needle)) in bad.into_iter().enumerate() {
+        let path = write(&format!("bad{k}.x3p"), x3p_data_list(z, "", datums));
+        let e = read_err(&path, &opts()).to_string();
+        assert!(e.contains(needle) && e.contains(&format!("bad{k}.x3p")), "{e}");
+    }
+}

@@ -181,36 +181,106 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topo
     }
     let n = usize::try_from(points).map_err(|_| cx.too_large("the point data", data_bytes, options.max_bytes))?;
 
-    let link = x.child(record3, "DataLink")?;
-    let data_name = x.text(link, "PointDataLink")?;
-    let data = member(cx, &mut zip, data_name, Some(data_bytes), options.max_bytes)?;
-    if let Some(expected) = x.opt_text(link, "MD5ChecksumPointData") {
-        check_md5(cx, data_name, &data, expected)?;
-    }
-    let mut heights: Vec<f64> = data
-        .chunks_exact(z_type.size())
-        .map(|raw| offset + increment * z_type.decode(raw))
-        .collect();
-    drop(data);
-
-    let valid_name = match x.opt_text(link, "ValidPointsLink") {
-        Some(name) => Some(name),
-        None => zip.index_for_name(VALID_BIN).map(|_| VALID_BIN),
-    };
-    if let Some(valid_name) = valid_name {
-        let mask = member(cx, &mut zip, valid_name, Some(points.div_ceil(8)), options.max_bytes)?;
-        if let Some(expected) = x.opt_text(link, "MD5ChecksumValidPoints") {
-            check_md5(cx, valid_name, &mask, expected)?;
+    // The point data: binary in a member the DataLink names (with an
+    // optional validity mask), or listed in main.xml (DataList: one Datum
+    // per point, an empty one missing).
+    let heights = if let Some(list) = x.opt_child(record3, "DataList") {
+        data_list(cx, list, z_type, n, (offset, increment))?
+    } else {
+        let link = x
+            .opt_child(record3, "DataLink")
+            .ok_or_else(|| xml_err(cx, "no DataLink or DataList in Record3"))?;
+        let data_name = x.text(link, "PointDataLink")?;
+        let data = member(cx, &mut zip, data_name, Some(data_bytes), options.max_bytes)?;
+        if let Some(expected) = x.opt_text(link, "MD5ChecksumPointData") {
+            check_md5(cx, data_name, &data, expected)?;
         }
-        for (i, h) in heights.iter_mut().enumerate() {
-            if mask[i / 8] >> (i % 8) & 1 == 0 {
-                *h = f64::NAN;
+        let mut heights: Vec<f64> = data
+            .chunks_exact(z_type.size())
+            .map(|raw| offset + increment * z_type.decode(raw))
+            .collect();
+        drop(data);
+
+        let valid_name = match x.opt_text(link, "ValidPointsLink") {
+            Some(name) => Some(name),
+            None => zip.index_for_name(VALID_BIN).map(|_| VALID_BIN),
+        };
+        if let Some(valid_name) = valid_name {
+            let mask = member(cx, &mut zip, valid_name, Some(points.div_ceil(8)), options.max_bytes)?;
+            if let Some(expected) = x.opt_text(link, "MD5ChecksumValidPoints") {
+                check_md5(cx, valid_name, &mask, expected)?;
+            }
+            for (i, h) in heights.iter_mut().enumerate() {
+                if mask[i / 8] >> (i % 8) & 1 == 0 {
+                    *h = f64::NAN;
+                }
             }
         }
-    }
+        heights
+    };
     // nx, ny <= n, which fits a usize.
     let ny = ny as usize;
     cx.make(heights, (n / ny, ny), (dx, dy), options, profile)
+}
+
+/// The heights of a `DataList`: `n` `Datum` elements in row-major order,
+/// each a number of the type `z_type` (scaled by `offset + increment·v`)
+/// or empty (a missing point). Coordinate triples (`x;y;z`, irregular
+/// grids) are not read.
+fn data_list(
+    cx: &Ctx,
+    list: Node,
+    z_type: ZType,
+    n: usize,
+    (offset, increment): (f64, f64),
+) -> Result<Vec<f64>, ReadError> {
+    let mut heights = Vec::with_capacity(n.min(1 << 20));
+    for (i, datum) in list
+        .children()
+        .filter(|c| c.is_element() && c.tag_name().name() == "Datum")
+        .enumerate()
+    {
+        if i >= n {
+            return Err(cx.size(format!("DataList holds more than the {n} points of MatrixDimension")));
+        }
+        let text = datum.text().unwrap_or("").trim();
+        if text.is_empty() {
+            heights.push(f64::NAN);
+            continue;
+        }
+        let bad = || {
+            xml_err(
+                cx,
+                format!(
+                    "Datum {i} is {:?}: not a number of data type {}",
+                    clip(text, 40),
+                    z_type.letter()
+                ),
+            )
+        };
+        if text.contains(';') {
+            return Err(cx.unsupported(format!(
+                "Datum {i} is {:?}: coordinate lists (x;y;z) are not read",
+                clip(text, 40)
+            )));
+        }
+        let v = match z_type {
+            ZType::D => text.parse::<f64>().ok(),
+            ZType::F => text.parse::<f32>().ok().map(f64::from),
+            ZType::L => text.parse::<i32>().ok().map(f64::from),
+            ZType::I => text.parse::<i16>().ok().map(f64::from),
+        }
+        .filter(|v| v.is_finite())
+        .ok_or_else(bad)?;
+        heights.push(offset + increment * v);
+    }
+    if heights.len() != n {
+        return Err(cx.size(format!(
+            "DataList holds {} points, MatrixDimension says {n}",
+            heights.len()
+        )));
+    }
+    Ok(heights)
 }
 
 /// The content of the archive's member `name`: exactly `expected` bytes if
