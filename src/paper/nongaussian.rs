@@ -153,37 +153,60 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
         (1.0, HeightDistribution::weibull(-0.5)?, "the same with Weibull heights, Sk = −0.5, ψ = 1"),
     ];
     for (psi, d, paper) in negs {
-        let p = model(psi, NONGAUSSIAN_THETA, d)?;
-        let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::Gaussian)?;
-        let ratio = |f: f64| -> Result<f64, PaperError> { Ok(mu(&p, f)? / mu(&g, f)?) };
-        let c = holds_where(NONGAUSSIAN_F_STAR, ratio, |r| r > 1.0)?;
-        let (r_light, r_heavy) = (ratio(1e-4)?, ratio(0.05)?);
-        let magnified = r_light > r_heavy;
-        rows.push(Statement {
-            paper,
-            model_md: "—",
-            computed: format!(
-                "μ/μ_Gaussian = {} at F* = 1e-4, {} at F* = 0.05 ({}); > 1 {}",
-                sig(r_light, 4),
-                sig(r_heavy, 4),
-                if magnified { "larger at the lighter load" } else { "not larger at the lighter load" },
-                if c.everywhere() {
-                    format!("over all of F* in [{}, {}]", sig(c.range.0, 2), sig(c.range.1, 2))
-                } else if c.nowhere() {
-                    "nowhere".to_string()
-                } else {
-                    format!("only for {}, below 1 elsewhere", stretches(&c))
-                }
-            ),
-            value: r_light,
-            verdict: match Verdict::over(&c) {
-                Verdict::Agrees if !magnified => Verdict::Partly,
-                v => v,
-            },
-            criterion: "μ/μ_Gaussian > 1 at every load of 1e-5 ≤ F* ≤ 0.1 (20 per decade), and larger at F* = 1e-4 than at F* = 0.05",
-            note: "",
-            holds_for: Some(c),
-        });
+        rows.push(higher_than_gaussian(psi, d, paper)?);
+    }
+
+    // (4) Chilamakuri & Bhushan: negative skewness and/or K < 3 give
+    // severe friction (a high μ at light loads).
+    let severe: [(f64, HeightDistribution, &'static str); 8] = [
+        (0.5, HeightDistribution::pearson(0.0, 2.5)?, "Chilamakuri & Bhushan 1998: a kurtosis below 3 gives severe friction (a higher static friction coefficient than the Gaussian case, the more so at light loads); Pearson Sk = 0, K = 2.5, θ = 0.001, ψ = 0.5"),
+        (1.0, HeightDistribution::pearson(0.0, 2.5)?, "the same at ψ = 1"),
+        (2.0, HeightDistribution::pearson(0.0, 2.5)?, "the same at ψ = 2"),
+        (4.0, HeightDistribution::pearson(0.0, 2.5)?, "the same at ψ = 4"),
+        (0.5, HeightDistribution::pearson(-0.5, 2.5)?, "Chilamakuri & Bhushan 1998: negative skewness with a kurtosis below 3, the same; Pearson Sk = −0.5, K = 2.5, θ = 0.001, ψ = 0.5"),
+        (1.0, HeightDistribution::pearson(-0.5, 2.5)?, "the same at ψ = 1"),
+        (2.0, HeightDistribution::pearson(-0.5, 2.5)?, "the same at ψ = 2"),
+        (4.0, HeightDistribution::pearson(-0.5, 2.5)?, "the same at ψ = 4"),
+    ];
+    for (psi, d, paper) in severe {
+        rows.push(higher_than_gaussian(psi, d, paper)?);
     }
     Ok(rows)
+}
+
+/// A statement that the heights `d` give a higher μ than the Gaussian's at
+/// (ψ, θ = 0.001), more so at lighter loads: where μ/μ_Gaussian > 1 over
+/// 1e-5 ≤ F* ≤ 0.1, and whether it is larger at F* = 1e-4 than at 0.05.
+fn higher_than_gaussian(psi: f64, d: HeightDistribution, paper: &'static str) -> Result<Statement, PaperError> {
+    let p = model(psi, NONGAUSSIAN_THETA, d)?;
+    let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::Gaussian)?;
+    let ratio = |f: f64| -> Result<f64, PaperError> { Ok(mu(&p, f)? / mu(&g, f)?) };
+    let c = holds_where(NONGAUSSIAN_F_STAR, ratio, |r| r > 1.0)?;
+    let (r_light, r_heavy) = (ratio(1e-4)?, ratio(0.05)?);
+    let magnified = r_light > r_heavy;
+    Ok(Statement {
+        paper,
+        model_md: "—",
+        computed: format!(
+            "μ/μ_Gaussian = {} at F* = 1e-4, {} at F* = 0.05 ({}); > 1 {}",
+            sig(r_light, 4),
+            sig(r_heavy, 4),
+            if magnified { "larger at the lighter load" } else { "not larger at the lighter load" },
+            if c.everywhere() {
+                format!("over all of F* in [{}, {}]", sig(c.range.0, 2), sig(c.range.1, 2))
+            } else if c.nowhere() {
+                "nowhere".to_string()
+            } else {
+                format!("only for {}, below 1 elsewhere", stretches(&c))
+            }
+        ),
+        value: r_light,
+        verdict: match Verdict::over(&c) {
+            Verdict::Agrees if !magnified => Verdict::Partly,
+            v => v,
+        },
+        criterion: "μ/μ_Gaussian > 1 at every load of 1e-5 ≤ F* ≤ 0.1 (20 per decade), and larger at F* = 1e-4 than at F* = 0.05",
+        note: "",
+        holds_for: Some(c),
+    })
 }
