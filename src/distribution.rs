@@ -1045,11 +1045,20 @@ impl Density {
                 c4a,
                 c4b,
             } => {
+                // ln(1 + u), not ln_1p(u): the density is exp of this, so
+                // only its absolute error matters (≤ 2^-53, the rounding
+                // of 1 + u), and ln costs a third of ln_1p.
+                let ln = c4a * (1.0 + (b1 * x + b2 * x * x) / b0).ln();
+                if *c4b == 0.0 {
+                    // Type VII (Sk = 0): no arctangent term; a third of
+                    // the work per node.
+                    return ln;
+                }
                 // atan2(2B2x/w, 1 + uv) with both arguments times w²: no
                 // cancellation when w is small (near type V).
                 let y = 2.0 * b2 * x * w;
                 let xx = w * w + (2.0 * b2 * x + b1) * b1;
-                c4a * ((b1 * x + b2 * x * x) / b0).ln_1p() + c4b * y.atan2(xx)
+                ln + c4b * y.atan2(xx)
             }
             Shape::Weibull { k, mu, sd } => {
                 let w = mu + sd * x;
