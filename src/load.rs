@@ -50,11 +50,7 @@ impl Load {
     /// # Ok::<(), ke_friction::ParamError>(())
     /// ```
     pub fn f_star(&self, hardness: f64) -> Result<f64, ParamError> {
-        let p = self.pressure()?;
-        check("hardness", hardness, "> 0 Pa", |v| v > 0.0)?;
-        let f = p / hardness;
-        check("f_star (= pressure/hardness)", f, "> 0 and finite", |v| v > 0.0)?;
-        Ok(f)
+        f_star_of(self.pressure()?, hardness)
     }
 
     /// The force F, N (`None` for a pressure).
@@ -70,7 +66,7 @@ impl Load {
     /// that F* and, in SI units, the separation and the friction force.
     pub fn friction(&self, model: &Model, physical: &Physical) -> Result<Friction, LoadError> {
         let pressure = self.pressure()?;
-        let f_star = self.f_star(physical.hardness)?;
+        let f_star = f_star_of(pressure, physical.hardness)?;
         let contact = model.at_f_star(f_star)?;
         let mu = contact.mu.ok_or(LoadError::Eval(EvalError::NoMu {
             f_star,
@@ -90,6 +86,14 @@ impl Load {
             contact,
         })
     }
+}
+
+/// F* = `pressure`/`hardness`, checked.
+fn f_star_of(pressure: f64, hardness: f64) -> Result<f64, ParamError> {
+    check("hardness", hardness, "> 0 Pa", |v| v > 0.0)?;
+    let f = pressure / hardness;
+    check("f_star (= pressure/hardness)", f, "> 0 and finite", |v| v > 0.0)?;
+    Ok(f)
 }
 
 /// The friction a [`Load`] meets ([`Load::friction`]), in SI units and

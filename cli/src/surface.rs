@@ -189,13 +189,11 @@ impl SurfaceArgs {
         match files {
             [one] => Surface::new(self.read(flag, one)?, options).map_err(|e| stats_failure(e, name(one))),
             [a, b] => {
-                let (ta, tb) = (self.read(flag, a)?, self.read(flag, b)?);
                 // Each surface's own failure names its file; the pair's
                 // (a profile with a map) names both.
-                for (t, p) in [(&ta, a), (&tb, b)] {
-                    t.stats(&options).map_err(|e| stats_failure(e, name(p)))?;
-                }
-                Surface::pair(ta, tb, options).map_err(|e| stats_failure(e, format!("{} + {}", name(a), name(b))))
+                let one =
+                    |p: &PathBuf| Surface::new(self.read(flag, p)?, options).map_err(|e| stats_failure(e, name(p)));
+                Surface::join(one(a)?, one(b)?).map_err(|e| stats_failure(e, format!("{} + {}", name(a), name(b))))
             }
             _ => Err(Failure::input(format!("{flag}: give one surface file or two"))),
         }
@@ -269,10 +267,8 @@ pub fn params(
     let p = surface
         .params(materials, distribution)
         .map_err(|e| physical_failure(e, "the surface with these materials"))?;
-    let p = p.fit(fit.into()).kind(model.into());
-    p.validate()
-        .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
-    Ok(p)
+    // Params::from_physical validated it; fit and model change no range.
+    Ok(p.fit(fit.into()).kind(model.into()))
 }
 
 /// Runs `kefric surface`.

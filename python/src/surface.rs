@@ -148,9 +148,16 @@ impl SurfaceCore {
             ))),
         };
         let (ta, tb) = (one(a, "a")?, one(b, "b")?);
-        py.detach(|| Surface::pair(ta, tb, options))
-            .map(SurfaceCore)
-            .map_err(raise)
+        py.detach(|| {
+            if a.0.options() == options && b.0.options() == options {
+                // Their statistics are taken already.
+                Surface::join(a.0.clone(), b.0.clone())
+            } else {
+                Surface::pair(ta, tb, options)
+            }
+        })
+        .map(SurfaceCore)
+        .map_err(raise)
     }
 
     /// The statistics: the core's `SurfaceStats` record (what `kefric

@@ -290,8 +290,9 @@ pub enum StatsError {
         /// Missing points.
         missing: usize,
     },
-    /// [`combine`] of a profile with a map.
-    #[error("cannot combine a profile with a map: both must be profiles or both maps")]
+    /// [`combine`] of a profile with a map, or a [`super::Surface::join`]
+    /// of surfaces that are not two single ones taken alike.
+    #[error("cannot combine these surfaces: both must be profiles or both maps, single surfaces, with the same detrending and derivative")]
     Mismatch,
     /// A result that is not finite and > 0 (heights or intervals so large
     /// or so small that the powers overflow or underflow, or a slope of 0).

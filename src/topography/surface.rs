@@ -58,13 +58,21 @@ impl Surface {
     /// are profiles or both maps, ideally sampled alike (a warning says
     /// when their intervals differ by more than 1 %).
     pub fn pair(a: Topography, b: Topography, options: StatsOptions) -> Result<Surface, StatsError> {
-        let (sa, sb) = (a.stats(&options)?, b.stats(&options)?);
-        let stats = combine(&sa, &sb)?;
-        Ok(Surface {
-            parts: vec![(a, sa), (b, sb)],
-            options,
-            stats,
-        })
+        Surface::join(Surface::new(a, options)?, Surface::new(b, options)?)
+    }
+
+    /// Two single surfaces pressed together ([`Surface::pair`] of their
+    /// topographies), reusing their statistics. Both must be single
+    /// surfaces taken with the same options ([`StatsError::Mismatch`]
+    /// otherwise).
+    pub fn join(a: Surface, b: Surface) -> Result<Surface, StatsError> {
+        if a.parts.len() != 1 || b.parts.len() != 1 || a.options != b.options {
+            return Err(StatsError::Mismatch);
+        }
+        let stats = combine(&a.stats, &b.stats)?;
+        let options = a.options;
+        let parts = a.parts.into_iter().chain(b.parts).collect();
+        Ok(Surface { parts, options, stats })
     }
 
     /// The statistics of the surface (of the equivalent surface, for a pair).
