@@ -217,6 +217,12 @@ impl Model {
                 // Newton stalled away from the root: bisect, or widen the search.
                 next = f64::NAN;
             }
+            if (next - h).abs() <= tol {
+                // Converged, even where the root is a bound of the bracket
+                // (the step rounds to h = hi or lo): bisecting on would
+                // only walk back to it, one halving per evaluation.
+                return Ok(next);
+            }
             let bracketed = lo.is_finite() && hi.is_finite();
             if !(next > lo && next < hi) {
                 next = if bracketed {

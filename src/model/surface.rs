@@ -148,8 +148,9 @@ trait Phi {
     /// of the support, which may be infinite there), with the laws' jumps
     /// at the regime boundaries added apart (`Surface::add_jumps`).
     fn dw(&self, w: f64, z: f64, inv_omega: f64) -> f64;
-    /// Panel length in z* at height `z`.
-    fn step(&self, z: f64) -> f64;
+    /// Panel length in z* for a panel from height `z` upwards (`up`) or
+    /// downwards.
+    fn step(&self, z: f64, up: bool) -> f64;
     /// The window of the contact integrals at `d`.
     fn window(&self, d: f64) -> Window;
     /// The finite ends of the support (lower, upper), in z*.
@@ -194,7 +195,7 @@ impl Phi for Gauss {
     }
 
     #[inline(always)]
-    fn step(&self, z: f64) -> f64 {
+    fn step(&self, z: f64, _up: bool) -> f64 {
         let s = self.s;
         let far = STEP_DECAY * s * s / (z.abs() + s);
         if far < MAX_STEP * s {
@@ -241,6 +242,8 @@ struct General {
     max_step: f64,
     max_step_far: f64,
     mode: f64,
+    /// The real part of the complex singularities (types IV, VII), in z*.
+    pole_centre: Option<f64>,
     tails: (f64, f64),
     lo: Option<ZEnd>,
     hi: Option<ZEnd>,
@@ -263,6 +266,7 @@ impl General {
             max_step: MAX_STEP * s * g.smoothness_scale().min(1.0),
             max_step_far: MAX_STEP * s * g.smoothness_scale(),
             mode: s * g.mode(),
+            pole_centre: g.pole_centre().map(|c| s * c),
             tails: (s * g.tails().0, s * g.tails().1),
             inv_s: 1.0 / s,
             ln_inv_s: -s.ln(),
@@ -286,9 +290,18 @@ impl Phi for General {
         -w * inv_omega
     }
 
-    fn step(&self, z: f64) -> f64 {
+    fn step(&self, z: f64, up: bool) -> f64 {
         let slope = (self.g.dln_pdf(z * self.inv_s) * self.inv_s).abs();
-        let cap = self.max_step.max((0.5 * z.abs()).min(self.max_step_far));
+        // Far out, a panel half its distance from the mass; a panel moving
+        // away from the complex singularities of a type IV/VII density may
+        // be as long as its distance from them (its nodes then converge
+        // like ρ^−2n with ρ ≥ 3 + √8), which halves the panels of a power
+        // tail. Towards them, or the mass, half.
+        let far = match self.pole_centre {
+            Some(c) if (z > c) == up => (z - c).abs(),
+            _ => 0.5 * z.abs(),
+        };
+        let cap = self.max_step.max(far.min(self.max_step_far));
         let step = STEP_DECAY / slope;
         // At an end of the support the slope is infinite (or, a rounding
         // away, huge): the end's Gauss–Jacobi rule holds the singular
@@ -644,31 +657,34 @@ impl Surface {
 
     /// The Hertz load `x^1.5` and the elastic adhesion `x^0.298` (the same
     /// in both models) on the panel `[0, x1]`, by their Gauss–Jacobi rules.
+    /// A general density also needs the laws' slopes `1.5·x^0.5` and
+    /// `0.298·x^−0.702`: their rules give the laws too (`x^1.5 = x^0.5·x`,
+    /// `x, the smooth factor`), so φ* is evaluated on two rules, not four.
     fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
+        if H::GENERAL {
+            let b = load::ELASTIC.1;
+            self.jacobi_panel(h, d, &self.rules.gj_half, b - 1.0, x1, |x, w, dw| {
+                acc.p += x * w;
+                acc.dp += b * dw;
+            });
+            if adh {
+                let b = adhesion::ELASTIC.1;
+                self.jacobi_panel(h, d, &self.rules.gj_adh_slope, b - 1.0, x1, |x, w, dw| {
+                    acc.fs += x * w;
+                    acc.dfs += b * dw;
+                });
+            }
+            return;
+        }
         self.jacobi_panel(h, d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
             acc.p += w;
-            if !H::GENERAL {
-                acc.dp += dw;
-            }
+            acc.dp += dw;
         });
         if adh {
             self.jacobi_panel(h, d, &self.rules.gj_adh, adhesion::ELASTIC.1, x1, |_, w, dw| {
                 acc.fs += w;
-                if !H::GENERAL {
-                    acc.dfs += dw;
-                }
+                acc.dfs += dw;
             });
-        }
-        if H::GENERAL {
-            // The laws' slopes 1.5·x^0.5 and 0.298·x^−0.702, by their own rules.
-            let b = load::ELASTIC.1;
-            self.jacobi_panel(h, d, &self.rules.gj_half, b - 1.0, x1, |_, _, dw| acc.dp += b * dw);
-            if adh {
-                let b = adhesion::ELASTIC.1;
-                self.jacobi_panel(h, d, &self.rules.gj_adh_slope, b - 1.0, x1, |_, _, dw| {
-                    acc.dfs += b * dw
-                });
-            }
         }
     }
 
@@ -723,7 +739,7 @@ impl Surface {
         // distance from the pole of u^−2 at g = −ε away, so the rule converges fast.
         let mut width = self.eps + g0;
         while g0 < g_max {
-            let step = h.step(d - g0);
+            let step = h.step(d - g0, false);
             let w = if width < step { width } else { step };
             let g1 = if g0 + 1.5 * w >= g_max { g_max } else { g0 + w };
             let hw = g1 - g0;
@@ -764,7 +780,7 @@ impl Surface {
         let (mut j, mut dj) = (0.0, asperity::adhesion_noncontact(1.0) * h.phi(d));
         // A first panel at the upper end of the support (below z* = d*).
         if let Some(e) = hi_end.filter(|_| g0 > 0.0) {
-            let w = width.min(h.step(e.z)).min(0.5 * (g_max - g0));
+            let w = width.min(h.step(e.z, false)).min(0.5 * (g_max - g0));
             if e.jacobi(w) {
                 h.end_panel(e, w, |dist, wp| {
                     add(&mut j, &mut dj, g0 + dist, wp);
@@ -778,7 +794,7 @@ impl Surface {
                 break;
             }
             let z0 = d - g0;
-            let mut w = width.min(h.step(z0));
+            let mut w = width.min(h.step(z0, false));
             if let Some(e) = hi_end {
                 // Graded away from the upper end of the support.
                 let dist = e.z - z0;
@@ -836,7 +852,7 @@ impl Surface {
             // A panel no longer than its distance from x = 0 keeps the
             // branch point of x^b far enough away for geometric convergence.
             let z = d + om * x;
-            let dx = h.step(z) * inv_om;
+            let dx = h.step(z, true) * inv_om;
             let mut dx = if x > 0.0 && x < dx { x } else { dx };
             let mut jacobi_end = false;
             if H::GENERAL {
