@@ -41,6 +41,7 @@ fn mu_matches_the_independent_reference_across_the_box() {
             worst = (e, p.to_string());
         }
     }
+    eprintln!("worst {:e} at {}", worst.0, worst.1);
     assert!(worst.0 <= 1e-9, "worst {:e} at {}", worst.0, worst.1);
 }
 
@@ -400,6 +401,54 @@ fn heavy_tails_at_a_heavy_load_match_the_reference() {
             rel(c.h_star, h_star) < 1e-10,
             "K = {kurtosis}: h* {} against {h_star}",
             c.h_star
+        );
+    }
+}
+
+/// Ends where the density vanishes like `t^power` with power above 2
+/// (types I, II, III, VI) take their Gauss–Jacobi rules: F* and Q* with
+/// the contact plane 0.3 above and 0.3 below the lower end of the support
+/// (ψ = 1, θ = 0.001; d* − z*_end = ±0.3 roughly), against
+/// `tools/nongaussian_reference.py`'s `Model.evaluate` at 30 digits
+/// (measured: ≤ 1.4e-15).
+#[test]
+fn bounded_supports_past_their_lower_end_match_the_reference() {
+    for (sk, k, h, f_star, q_star) in [
+        (0.3, 2.7, -1.183783049366876, 0.18202617904846044, 0.03206122489594811),
+        (0.3, 2.7, -1.783783049366876, 0.2488853219491786, 0.027087542767599775),
+        (0.0, 2.5, -1.7136757947063124, 0.2408194856546825, 0.02712796328994972),
+        (0.0, 2.5, -2.3136757947063122, 0.3134749463373211, 0.018323883372292134),
+        (-0.4, 2.9, -4.687168005011163, 0.6465046261776232, 0.0002609259998659567),
+        (
+            -0.4,
+            2.9,
+            -5.2871680050111625,
+            0.7344399686864634,
+            3.799253070549427e-05,
+        ),
+        (
+            0.5,
+            3.375,
+            -2.5513981345379335,
+            0.3436942972236967,
+            0.015200956095298033,
+        ),
+        (0.5, 3.375, -3.151398134537933, 0.4241626297042263, 0.006037142322942856),
+        (0.8, 4.1, -1.5414051247550478, 0.22084730867912608, 0.030946444495688986),
+        (0.8, 4.1, -2.141405124755048, 0.2916646365559511, 0.023008379308975552),
+    ] {
+        let c = model(1.0, 1e-3, HeightDistribution::pearson(sk, k).unwrap())
+            .at_h_star(h)
+            .unwrap();
+        assert!(
+            rel(c.f_star, f_star) < 1e-12,
+            "({sk}, {k}) h* = {h}: F* {} against {f_star}",
+            c.f_star
+        );
+        assert!(
+            rel(c.q_star, q_star) < 1e-12,
+            "({sk}, {k}) h* = {h}: Q* {} against {q_star}",
+            c.q_star
         );
     }
 }
