@@ -104,15 +104,23 @@ pub enum CurveError {
     /// range outside its F*).
     #[error(transparent)]
     Lookup(#[from] LookupError),
-    /// Even 256 cells per octave miss the accuracy asked for.
+    /// Even 256 cells per octave miss the accuracy asked for: μ(F*) is not
+    /// smooth enough near `f_star` for cubic cells (with a J- or U-shaped
+    /// height density, where the density's infinite end meets the contact
+    /// point or a regime boundary of the single-asperity laws).
     #[error(
-        "the curve misses its accuracy: max relative error {max_error:e} > {accuracy:e} with 256 cells per octave"
+        "the curve misses its accuracy: max relative error {max_error:e} > {accuracy:e} at F* = {f_star} \
+         with 256 cells per octave; mu(F*) is not smooth enough there for cubic cells (with a J- or \
+         U-shaped height density: where its infinite end meets a regime boundary of the asperity laws); \
+         build curves on ranges either side of it, or use direct integration"
     )]
     Accuracy {
         /// The measured error.
         max_error: f64,
         /// The accuracy asked for.
         accuracy: f64,
+        /// Where the error is largest.
+        f_star: f64,
     },
 }
 
@@ -192,16 +200,20 @@ impl Curve {
         exact: &dyn Fn(f64) -> Result<f64, CurveError>,
         accuracy: f64,
     ) -> Result<Curve, CurveError> {
-        let mut max_error = f64::NAN;
+        let (mut max_error, mut f_star) = (f64::NAN, f64::NAN);
         for cell_bits in MIN_CELL_BITS..=MAX_CELL_BITS {
             let mut curve = Curve::build(lo, hi, cell_bits, node)?;
-            curve.max_error = curve.measure(exact)?;
-            max_error = curve.max_error;
+            (max_error, f_star) = curve.measure(exact)?;
+            curve.max_error = max_error;
             if max_error <= accuracy {
                 return Ok(curve);
             }
         }
-        Err(CurveError::Accuracy { max_error, accuracy })
+        Err(CurveError::Accuracy {
+            max_error,
+            accuracy,
+            f_star,
+        })
     }
 
     /// The Hermite cubics at `2^cell_bits` cells per octave over [lo, hi].
@@ -250,10 +262,11 @@ impl Curve {
     }
 
     /// The largest relative error against `exact` at every cell's midpoint
-    /// and at one seeded random point in every cell (within the range).
-    fn measure(&self, exact: &dyn Fn(f64) -> Result<f64, CurveError>) -> Result<f64, CurveError> {
+    /// and at one seeded random point in every cell (within the range),
+    /// and where it is.
+    fn measure(&self, exact: &dyn Fn(f64) -> Result<f64, CurveError>) -> Result<(f64, f64), CurveError> {
         let mut rng = 0x9E37_79B9_7F4A_7C15u64 ^ self.lo_bits;
-        let mut worst = 0.0f64;
+        let mut worst = (0.0f64, self.range.0);
         for j in 0..self.coefs.len() as u64 {
             let x0 = f64::from_bits((self.first_cell + j) << self.shift);
             let x1 = f64::from_bits((self.first_cell + j + 1) << self.shift);
@@ -268,7 +281,10 @@ impl Curve {
             for f in [0.5 * (a + b), a + u * (b - a)] {
                 let want = exact(f)?;
                 let got = self.mu(f)?;
-                worst = worst.max(((got - want) / want).abs());
+                let error = ((got - want) / want).abs();
+                if error > worst.0 {
+                    worst = (error, f);
+                }
             }
         }
         Ok(worst)

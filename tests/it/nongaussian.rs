@@ -4,7 +4,7 @@
 //! bad input.
 use crate::common::rel;
 use ke_friction::build::{build, BuildOptions, Precision};
-use ke_friction::{Constants, Curve, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
+use ke_friction::{Constants, Curve, CurveError, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
 use serde_json::Value;
 
 fn model(psi: f64, theta: f64, d: HeightDistribution) -> Model {
@@ -95,6 +95,39 @@ fn curves_from_pearson_and_weibull_models_meet_the_contract() {
             let got = curve.mu(f).unwrap();
             assert!(rel(got, want) <= CURVE_ACCURACY, "{d:?} at F* = {f}: {got} vs {want}");
         }
+    }
+}
+
+/// A J-shaped density whose μ(F*) is not smooth inside the range (its
+/// infinite end meets a regime boundary of the laws there) gets no curve:
+/// the error names where the curve misses its accuracy, and curves on
+/// either side of that load meet the contract.
+#[test]
+fn a_curve_across_a_j_shaped_end_is_refused_naming_the_load() {
+    let m = model(0.5, 1e-3, HeightDistribution::pearson(0.8, 2.5).unwrap());
+    let error = Curve::from_model(&m, 1e-3, 0.1).expect_err("a curve across the end was built");
+    let text = error.to_string();
+    let CurveError::Accuracy {
+        max_error,
+        accuracy,
+        f_star,
+    } = error
+    else {
+        panic!("{error}");
+    };
+    assert!(max_error > accuracy && accuracy == CURVE_ACCURACY);
+    assert!((1e-3..=0.1).contains(&f_star), "{f_star}");
+    assert!(
+        text.contains(&format!("F* = {f_star}")) && text.contains("either side"),
+        "{text}"
+    );
+    for (lo, hi) in [(1e-3, 0.97 * f_star), (1.03 * f_star, 0.1)] {
+        let curve = Curve::from_model(&m, lo, hi).unwrap();
+        assert!(
+            curve.max_error() <= CURVE_ACCURACY,
+            "[{lo}, {hi}]: {}",
+            curve.max_error()
+        );
     }
 }
 
