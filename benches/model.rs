@@ -60,6 +60,8 @@ fn bench_distributions(c: &mut Criterion) {
         ("pearson_0_8", HeightDistribution::pearson(0.0, 8.0).unwrap()),
         ("pearson_-0.5_3.375", HeightDistribution::pearson(-0.5, 3.375).unwrap()),
         ("pearson_0.3_3.2", HeightDistribution::pearson(0.3, 3.2).unwrap()),
+        ("pearson_0.4_8", HeightDistribution::pearson(0.4, 8.0).unwrap()),
+        ("pearson_0.3_2.7", HeightDistribution::pearson(0.3, 2.7).unwrap()),
         ("weibull_0", HeightDistribution::weibull(0.0).unwrap()),
     ] {
         let ms: Vec<(Model, f64)> = points
