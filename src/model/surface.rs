@@ -659,7 +659,7 @@ impl Surface {
     /// in both models) on the panel `[0, x1]`, by their Gauss–Jacobi rules.
     /// A general density also needs the laws' slopes `1.5·x^0.5` and
     /// `0.298·x^−0.702`: their rules give the laws too (`x^1.5 = x^0.5·x`,
-    /// `x, the smooth factor`), so φ* is evaluated on two rules, not four.
+    /// `x^0.298 = x^−0.702·x`), so φ* is evaluated on two rules, not four.
     fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
         if H::GENERAL {
             let b = load::ELASTIC.1;
