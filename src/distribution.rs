@@ -1390,20 +1390,12 @@ mod atan_tests {
     fn atan2_is_within_an_ulp_of_the_c_library() {
         // A deterministic spread over signs and 40 decades of y/x, plus
         // every branch point of the reduction and the axes.
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut rng = crate::rng::SplitMix64(25);
+        // A magnitude in e^±46 and a random sign.
+        let mut draw = || (rng.unit() * 92.0 - 46.0).exp().copysign(rng.unit() - 0.5);
         let mut worst = 0;
         for _ in 0..200_000 {
-            let u = next();
-            let mag = |bits: u64| (((bits >> 11) as f64) / (1u64 << 53) as f64 * 92.0 - 46.0).exp();
-            let y = mag(u).copysign(if u & 1 == 0 { 1.0 } else { -1.0 });
-            let v = next();
-            let x = mag(v).copysign(if v & 1 == 0 { 1.0 } else { -1.0 });
+            let (y, x) = (draw(), draw());
             let (ours, libm) = (atan2(y, x), y.atan2(x));
             worst = worst.max(ulps(ours, libm));
         }

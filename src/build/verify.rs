@@ -4,6 +4,7 @@
 
 use super::{BuildError, Progress};
 use crate::model::{EvalError, Model};
+use crate::rng::SplitMix64;
 use crate::table::{Accuracy, Table};
 use rayon::prelude::*;
 
@@ -180,22 +181,4 @@ pub fn sample_points(table: &Table, samples: usize, seed: u64) -> Vec<[f64; 3]> 
             q
         })
         .collect()
-}
-
-/// A small, fast, seedable generator (Steele, Lea & Flood's SplitMix64).
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
 }
