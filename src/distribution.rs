@@ -563,6 +563,17 @@ impl PearsonType {
     }
 }
 
+/// The power tails of a density (types IV, VII): see [`Density::power_tails`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PowerTails {
+    /// The real part of the complex singularities.
+    pub centre: f64,
+    /// Their distance from the real axis.
+    pub half_width: f64,
+    /// `q` in `g ~ |x − centre|^−q` (> 5 for every admissible pair).
+    pub exponent: f64,
+}
+
 /// A finite end of a density's support: `g(x) ~ |x − at|^power` next to it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct End {
@@ -578,7 +589,7 @@ pub(crate) struct End {
 /// to here). Above it, next to the normal point, graded panels from a tiny
 /// first one: many more nodes (a type I/II end of power 3.5 cost 5× the
 /// Gaussian's solve that way, against 1.6× with its rule).
-const JACOBI_POWER_MAX: f64 = 64.0;
+pub(crate) const JACOBI_POWER_MAX: f64 = 64.0;
 
 impl End {
     /// The Gauss–Jacobi rule with this end's weight `t^power`, if the end
@@ -924,13 +935,17 @@ impl Density {
         }
     }
 
-    /// The real part of the complex singularities of g (the roots of the
-    /// Pearson quadratic B(x)) for types IV and VII, whose power tails are
-    /// analytic out to infinity: a panel moving away from it may be as
-    /// long as its distance from it.
-    pub(crate) fn pole_centre(&self) -> Option<f64> {
+    /// The power tails of a type IV or VII density: `g ~ |x − centre|^−exponent`
+    /// on both sides, with g analytic in `1/(x − centre)` out to infinity
+    /// (its only singularities are the complex roots of the Pearson
+    /// quadratic B(x), `centre ± i·half_width`).
+    pub(crate) fn power_tails(&self) -> Option<PowerTails> {
         match self.shape {
-            Shape::Complex { b1, b2, .. } => Some(-b1 / (2.0 * b2)),
+            Shape::Complex { b1, b2, w, c4a, .. } => Some(PowerTails {
+                centre: -b1 / (2.0 * b2),
+                half_width: w / (2.0 * b2.abs()),
+                exponent: -2.0 * c4a,
+            }),
             _ => None,
         }
     }

@@ -9,12 +9,13 @@
 //! exact weight `x^b`, and the panels of the non-contact adhesion integral
 //! grow geometrically away from `z* = d*`, where its integrand varies on
 //! the scale ε*. Tails below `e^−TAIL` of the integrand's largest Gaussian
-//! factor are cut. No allocation, no recursion: a fixed amount of
-//! arithmetic per panel.
+//! factor are cut; the power tails of Pearson types IV and VII are
+//! integrated out to infinity in one panel, in `1/(z* − c)` ([`TailRule`]).
+//! No allocation, no recursion: a fixed amount of arithmetic per panel.
 
 use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use super::quadrature::{Rule, NODES};
-use crate::distribution::{Density, End};
+use crate::distribution::{Density, End, PowerTails, JACOBI_POWER_MAX};
 use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
@@ -170,6 +171,15 @@ trait Phi {
     /// The end panel of width `width` at `e`: calls `f(dist, w)` with the
     /// distance of each node from the end and its weight `w = wt·φ*`.
     fn end_panel(&self, _e: &ZEnd, _width: f64, _f: impl FnMut(f64, f64)) {}
+    /// Whether all of the integral beyond `z` (upwards if `up`) may be one
+    /// panel of the power tail's rule ([`TailRule`]), for an integrand whose
+    /// law is analytic except at `singular`.
+    fn tail_from(&self, _z: f64, _up: bool, _singular: f64) -> bool {
+        false
+    }
+    /// That panel: calls `f(z, w)` with each node's height and its weight
+    /// `w = wt·φ*` for `dz*`.
+    fn tail_panel(&self, _z: f64, _up: bool, _f: impl FnMut(f64, f64)) {}
 }
 
 /// The paper's Gaussian φ*.
@@ -242,8 +252,10 @@ struct General {
     max_step: f64,
     max_step_far: f64,
     mode: f64,
-    /// The real part of the complex singularities (types IV, VII), in z*.
-    pole_centre: Option<f64>,
+    /// The power tails (types IV, VII), in z*.
+    poles: Option<PowerTails>,
+    /// Their one-panel rule, where it is exact.
+    tail_rule: Option<TailRule>,
     tails: (f64, f64),
     lo: Option<ZEnd>,
     hi: Option<ZEnd>,
@@ -266,7 +278,12 @@ impl General {
             max_step: MAX_STEP * s * g.smoothness_scale().min(1.0),
             max_step_far: MAX_STEP * s * g.smoothness_scale(),
             mode: s * g.mode(),
-            pole_centre: g.pole_centre().map(|c| s * c),
+            poles: g.power_tails().map(|p| PowerTails {
+                centre: s * p.centre,
+                half_width: s * p.half_width,
+                exponent: p.exponent,
+            }),
+            tail_rule: g.power_tails().and_then(|p| TailRule::new(p.exponent)),
             tails: (s * g.tails().0, s * g.tails().1),
             inv_s: 1.0 / s,
             ln_inv_s: -s.ln(),
@@ -297,8 +314,8 @@ impl Phi for General {
         // be as long as its distance from them (its nodes then converge
         // like ρ^−2n with ρ ≥ 3 + √8), which halves the panels of a power
         // tail. Towards them, or the mass, half.
-        let far = match self.pole_centre {
-            Some(c) if (z > c) == up => (z - c).abs(),
+        let far = match self.poles {
+            Some(PowerTails { centre: c, .. }) if (z > c) == up => (z - c).abs(),
             _ => 0.5 * z.abs(),
         };
         let cap = self.max_step.max(far.min(self.max_step_far));
@@ -351,6 +368,33 @@ impl Phi for General {
         ln.is_nan() || ln < win.ln_ref - TAIL
     }
 
+    fn tail_from(&self, z: f64, up: bool, singular: f64) -> bool {
+        let (Some(p), Some(_)) = (&self.poles, &self.tail_rule) else {
+            return false;
+        };
+        // In t = S/|z' − c| (S = |z − c|, c the poles' centre) the panel is
+        // [0, 1]. The poles sit at t = ±i·S/half_width and the law's
+        // singularity at t = S/r: the rule's nodes converge at least like
+        // (3 + √8)^−24 if those stay beyond ±2i, and t ≤ −1 or t ≥ 2.
+        let sign = if up { 1.0 } else { -1.0 };
+        let dist = sign * (z - p.centre);
+        let r = sign * (singular - p.centre);
+        dist >= 2.0 * p.half_width && dist >= 2.0 * r && dist >= -r
+    }
+
+    fn tail_panel(&self, z: f64, up: bool, mut f: impl FnMut(f64, f64)) {
+        let (Some(p), Some(rule)) = (&self.poles, &self.tail_rule) else {
+            return;
+        };
+        let dist = if up { z - p.centre } else { p.centre - z };
+        let ln_dist = dist.ln();
+        for i in 0..NODES {
+            let r = dist * rule.inv_t[i];
+            let zi = if up { p.centre + r } else { p.centre - r };
+            f(zi, (rule.ln_w[i] + ln_dist + self.ln_phi(zi)).exp());
+        }
+    }
+
     fn end_panel(&self, e: &ZEnd, width: f64, mut f: impl FnMut(f64, f64)) {
         let Some(rule) = &e.rule else { return };
         // ∫ dist^power·(φ*/dist^power): the rule's weights hold dist^power.
@@ -360,6 +404,37 @@ impl Phi for General {
             let ln_regular = self.g.ln_pdf_at_end(e.end, dist * self.inv_s) + self.ln_inv_s - e.power * dist.ln();
             f(dist, scale * rule.w[i] * ln_regular.exp());
         }
+    }
+}
+
+/// One panel for all of a power tail beyond `Z` (types IV, VII): with
+/// `z* = c ± S/t` (`S = |Z − c|`, `c` the poles' centre), `∫ F dz* =
+/// ∫₀¹ F·S/t² dt`, and φ* ~ `t^q` there times a function analytic at
+/// t = 0. Gauss–Jacobi with weight `t^(q−3)` leaves `t^0` for the linear
+/// laws of the plastic regime (`x·φ*·S/t² ~ t^(q−3)`) and `t^3` for the
+/// non-contact adhesion (`u^−2 ~ t²`): both exact at the rule's rate.
+#[derive(Debug, Clone)]
+struct TailRule {
+    /// `1/tᵢ`.
+    inv_t: [f64; NODES],
+    /// `ln(wᵢ/tᵢ^(q−1))`: the rule's weight, over the `t^(q−3)` it holds
+    /// and the Jacobian's `t²`.
+    ln_w: [f64; NODES],
+}
+
+impl TailRule {
+    /// The rule for tails `φ* ~ |z*|^−q`, if its power `q − 3` takes a
+    /// Gauss–Jacobi rule.
+    fn new(q: f64) -> Option<TailRule> {
+        let power = q - 3.0;
+        if !(power > -1.0 && power < JACOBI_POWER_MAX) {
+            return None;
+        }
+        let rule = Rule::jacobi(power);
+        Some(TailRule {
+            inv_t: rule.t.map(|t| 1.0 / t),
+            ln_w: std::array::from_fn(|i| rule.w[i].ln() - (q - 1.0) * rule.t[i].ln()),
+        })
     }
 }
 
@@ -376,6 +451,8 @@ enum EndSide {
     None,
     Lower,
     Upper,
+    /// All of a power tail beyond the panel's start ([`TailRule`]).
+    Tail,
 }
 
 /// One panel `[x0, x1]` of an integral in x.
@@ -794,6 +871,13 @@ impl Surface {
                 break;
             }
             let z0 = d - g0;
+            // The law a(1 + (d* − z*)/ε*) has its pole at z* = d* + ε*.
+            if h.tail_from(z0, false, d + eps) {
+                h.tail_panel(z0, false, |z, wp| {
+                    add(&mut j, &mut dj, d - z, wp);
+                });
+                break;
+            }
             let mut w = width.min(h.step(z0, false));
             if let Some(e) = hi_end {
                 // Graded away from the upper end of the support.
@@ -852,6 +936,16 @@ impl Surface {
             // A panel no longer than its distance from x = 0 keeps the
             // branch point of x^b far enough away for geometric convergence.
             let z = d + om * x;
+            if H::GENERAL && end == f64::INFINITY && h.tail_from(z, true, d) {
+                f(Panel {
+                    x0: x,
+                    x1: end,
+                    first,
+                    last: true,
+                    at_end: EndSide::Tail,
+                });
+                break;
+            }
             let dx = h.step(z, true) * inv_om;
             let mut dx = if x > 0.0 && x < dx { x } else { dx };
             let mut jacobi_end = false;
@@ -923,6 +1017,7 @@ impl Surface {
             let om = self.omega;
             let width = om * (x1 - x0);
             match p.at_end {
+                EndSide::Tail => h.tail_panel(d + om * x0, true, |z, w| f((z - d) / om, w, h.dw(w, z, 1.0 / om))),
                 EndSide::Upper => {
                     let e = hi_end.expect("an upper end");
                     h.end_panel(e, width, |dist, w| {
