@@ -52,7 +52,6 @@ mod num;
 #[cfg(feature = "paper")]
 pub mod paper;
 mod params;
-#[cfg(any(test, feature = "builder"))]
 mod rng;
 mod spline;
 pub mod table;

@@ -1,5 +1,5 @@
-//! A seedable generator for sampling points (the builder's verification)
-//! and for tests: one definition for the crate.
+//! A seedable generator for sampling points (a curve's and the builder's
+//! verification) and for tests: one definition for the crate.
 
 /// A small, fast, seedable generator (Steele, Lea & Flood's SplitMix64).
 pub(crate) struct SplitMix64(pub(crate) u64);

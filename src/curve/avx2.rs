@@ -44,6 +44,7 @@ unsafe fn mu_groups(curve: &Curve, f_star: &[f64], out: &mut [f64]) -> usize {
     let one_bits = _mm256_set1_epi64x(ONE as i64);
     let one = _mm256_set1_pd(1.0);
     let mut done = 0;
+    let mut split = _mm256_setzero_pd();
     for (f, o) in f_star.chunks_exact(4).zip(out.chunks_exact_mut(4)) {
         // SAFETY: `f` holds 4 f64 (chunks_exact).
         let bits = _mm256_castpd_si256(unsafe { _mm256_loadu_pd(f.as_ptr()) });
@@ -80,7 +81,17 @@ unsafe fn mu_groups(curve: &Curve, f_star: &[f64], out: &mut [f64]) -> usize {
         let mu = _mm256_add_pd(_mm256_mul_pd(high, _mm256_mul_pd(t, t)), low);
         // SAFETY: `o` holds 4 f64 (chunks_exact_mut).
         unsafe { _mm256_storeu_pd(o.as_mut_ptr(), mu) };
+        // A split cell's row is NaN, and nothing else gives NaN here.
+        split = _mm256_or_pd(split, _mm256_cmp_pd::<_CMP_UNORD_Q>(mu, mu));
         done += 4;
+    }
+    if _mm256_movemask_pd(split) != 0 {
+        // Loads in split cells, one at a time.
+        for (&f, o) in f_star[..done].iter().zip(&mut out[..done]) {
+            if o.is_nan() {
+                *o = curve.mu(f).unwrap_or(f64::NAN);
+            }
+        }
     }
     done
 }

@@ -4,7 +4,7 @@
 //! bad input.
 use crate::common::rel;
 use ke_friction::build::{build, BuildOptions, Precision};
-use ke_friction::{Constants, Curve, CurveError, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
+use ke_friction::{Constants, Curve, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
 use serde_json::Value;
 
 fn model(psi: f64, theta: f64, d: HeightDistribution) -> Model {
@@ -98,36 +98,40 @@ fn curves_from_pearson_and_weibull_models_meet_the_contract() {
     }
 }
 
-/// A J-shaped density whose μ(F*) is not smooth inside the range (its
-/// infinite end meets a regime boundary of the laws there) gets no curve:
-/// the error names where the curve misses its accuracy, and curves on
-/// either side of that load meet the contract.
+/// A J-shaped density whose μ(F*) is not smooth at a load inside the range
+/// (its infinite end meets a regime boundary of the laws there, near
+/// F* = 0.03 here): the curve splits the few cells around that load and
+/// meets the contract there too, against direct integration at loads
+/// crowded around it (measured: 8.5e-7 at build time, ≤ 9.0e-7 at the
+/// 600 loads below); batches give what single lookups give.
 #[test]
-fn a_curve_across_a_j_shaped_end_is_refused_naming_the_load() {
+fn a_curve_across_a_j_shaped_end_splits_its_cells_there() {
     let m = model(0.5, 1e-3, HeightDistribution::pearson(0.8, 2.5).unwrap());
-    let error = Curve::from_model(&m, 1e-3, 0.1).expect_err("a curve across the end was built");
-    let text = error.to_string();
-    let CurveError::Accuracy {
-        max_error,
-        accuracy,
-        f_star,
-    } = error
-    else {
-        panic!("{error}");
-    };
-    assert!(max_error > accuracy && accuracy == CURVE_ACCURACY);
-    assert!((1e-3..=0.1).contains(&f_star), "{f_star}");
-    assert!(
-        text.contains(&format!("F* = {f_star}")) && text.contains("either side"),
-        "{text}"
-    );
-    for (lo, hi) in [(1e-3, 0.97 * f_star), (1.03 * f_star, 0.1)] {
-        let curve = Curve::from_model(&m, lo, hi).unwrap();
-        assert!(
-            curve.max_error() <= CURVE_ACCURACY,
-            "[{lo}, {hi}]: {}",
-            curve.max_error()
-        );
+    let curve = Curve::from_model(&m, 1e-3, 0.1).unwrap();
+    assert!(curve.max_error() <= CURVE_ACCURACY, "{curve:?}");
+    let loads: Vec<f64> = (0..600)
+        .map(|i| {
+            let u = (i as f64 + 0.5) / 200.0;
+            match i / 200 {
+                0 => 1e-3 * 100f64.powf(u),
+                1 => 0.0299 + 2e-4 * u,
+                _ => 0.03 * (1.0 + 1e-6 * (u - 0.5)),
+            }
+        })
+        .collect();
+    let mut worst = (0.0f64, 0.0);
+    for &f in &loads {
+        let e = rel(curve.mu(f).unwrap(), mu(&m, f));
+        if e > worst.0 {
+            worst = (e, f);
+        }
+    }
+    eprintln!("worst {:e} at {}", worst.0, worst.1);
+    assert!(worst.0 <= 2.0 * CURVE_ACCURACY, "{worst:?}");
+    let mut batch = vec![0.0; loads.len()];
+    curve.mu_batch(&loads, &mut batch).unwrap();
+    for (f, b) in loads.iter().zip(&batch) {
+        assert_eq!(b.to_bits(), curve.mu(*f).unwrap().to_bits(), "F* = {f}");
     }
 }
 
