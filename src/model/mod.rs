@@ -151,7 +151,7 @@ impl Model {
     /// μ and dμ/dF* where the external force is `f_star`: μ by direct
     /// integration ([`at_f_star`](Self::at_f_star)); the slope as dμ/dh*
     /// from a five-point difference over a step in h* that moves F* by
-    /// about 0.1% (error near 1e-10 relative), divided by the analytic
+    /// about 0.1% (at most 1e-3·(1 + |h*|); error near 1e-10 relative), divided by the analytic
     /// dF*/dh*. An error where μ is undefined (F* ≤ 0) at or near `f_star`.
     pub fn mu_with_slope_at_f_star(&self, f_star: f64) -> Result<(f64, f64), EvalError> {
         let h = self.solve_h(f_star, 1.0)?;
@@ -163,7 +163,10 @@ impl Model {
                 h_star: c.h_star,
             })
         };
-        let step = 1e-3 * (force / d_force).abs();
+        // A step that moves F* by about 0.1%, at most 1e-3·(1 + |h*|): where
+        // dF*/dh* nearly vanishes (a J-shaped end meeting a regime
+        // boundary) the step would otherwise leave the contact altogether.
+        let step = 1e-3 * (force / d_force).abs().min(1.0 + h.abs());
         let d_mu_dh = (-mu_at(h + 2.0 * step)? + 8.0 * mu_at(h + step)? - 8.0 * mu_at(h - step)?
             + mu_at(h - 2.0 * step)?)
             / (12.0 * step);
