@@ -242,12 +242,14 @@ impl Curve {
         for cell_bits in MIN_CELL_BITS..=MAX_CELL_BITS {
             let (mut curve, data) = Curve::build(lo, hi, cell_bits, node)?;
             let errors = curve.measure(exact)?;
-            let missed: Vec<usize> = (0..errors.len()).filter(|&j| errors[j].0 > accuracy).collect();
+            // A NaN error (a μ that is not finite) misses the accuracy.
+            let misses = |e: f64| e > accuracy || e.is_nan();
+            let missed: Vec<usize> = (0..errors.len()).filter(|&j| misses(errors[j].0)).collect();
             worst = errors.iter().fold((0.0, lo), |w, &e| if e.0 > w.0 { e } else { w });
             if missed.len() <= SPLIT_CELLS {
                 match curve.split(&missed, &data, node, exact, accuracy)? {
                     Ok(max_split) => {
-                        let kept = (0..errors.len()).filter(|j| !missed.contains(j)).map(|j| errors[j].0);
+                        let kept = errors.iter().map(|e| e.0).filter(|&e| !misses(e));
                         curve.max_error = kept.fold(max_split, f64::max);
                         return Ok(curve);
                     }
@@ -287,16 +289,10 @@ impl Curve {
             }];
             let mut pieces = Vec::new();
             while let Some(p) = stack.pop() {
-                let c = hermite_in_t(p.f.0, p.f.1, p.f.0, p.f.1 - p.f.0, p.at.0, p.at.1);
-                let mut error = (0.0f64, p.f.0);
-                for s in [0.5, rng.unit()] {
-                    let f = p.f.0 + s * (p.f.1 - p.f.0);
-                    let want = exact(f)?;
-                    let e = ((cubic(&c, s) - want) / want).abs();
-                    if e > error.0 || e.is_nan() {
-                        error = (e, f);
-                    }
-                }
+                let width_f = p.f.1 - p.f.0;
+                let c = hermite_in_t(p.f.0, p.f.1, p.f.0, width_f, p.at.0, p.at.1);
+                let piece = |f: f64| Ok(cubic(&c, (f - p.f.0) / width_f));
+                let error = sampled_error(p.f, &mut rng, &piece, exact)?;
                 if error.0 <= accuracy {
                     max_error = max_error.max(error.0);
                     pieces.push((p.t.0, c, 1.0 / (p.t.1 - p.t.0)));
@@ -398,19 +394,12 @@ impl Curve {
         for j in 0..self.coefs.len() as u64 {
             let (x0, width) = self.cell(j);
             let (a, b) = (x0.max(self.range.0), (x0 + width).min(self.range.1));
-            let mut worst = (0.0f64, a);
-            if b > a {
-                for f in [0.5 * (a + b), a + rng.unit() * (b - a)] {
-                    let want = exact(f)?;
-                    let got = self.mu(f)?;
-                    let error = ((got - want) / want).abs();
-                    // NaN (a μ that is not finite) counts as missing.
-                    if error > worst.0 || error.is_nan() {
-                        worst = (error, f);
-                    }
-                }
-            }
-            errors.push(worst);
+            let got = |f: f64| Ok(self.mu(f)?);
+            errors.push(if b > a {
+                sampled_error((a, b), &mut rng, &got, exact)?
+            } else {
+                (0.0, a)
+            });
         }
         Ok(errors)
     }
@@ -452,8 +441,7 @@ impl Curve {
     pub fn mu(&self, f_star: f64) -> Result<f64, LookupError> {
         match self.locate(f_star) {
             Some((c, t, j)) => {
-                // A split cell's row is NaN (a branch taken only there).
-                if !self.splits.is_empty() && c[0].is_nan() {
+                if self.is_split(c) {
                     return Ok(self.split_mu(j, t).0);
                 }
                 Ok(cubic(c, t))
@@ -468,7 +456,7 @@ impl Curve {
     pub fn mu_with_slope(&self, f_star: f64) -> Result<(f64, f64), LookupError> {
         match self.locate(f_star) {
             Some((c, t, j)) => {
-                if !self.splits.is_empty() && c[0].is_nan() {
+                if self.is_split(c) {
                     let (mu, slope) = self.split_mu(j, t);
                     return Ok((mu, slope * self.inv_width[j]));
                 }
@@ -476,6 +464,14 @@ impl Curve {
             }
             None => Err(self.domain_error(f_star)),
         }
+    }
+
+    /// Whether the cell of row `c` is split: its row is NaN (the first test
+    /// is false for every curve without split cells, a branch predicted
+    /// once).
+    #[inline(always)]
+    fn is_split(&self, c: &[f64; 4]) -> bool {
+        !self.splits.is_empty() && c[0].is_nan()
     }
 
     /// μ and dμ/dt in split cell `j` at `t` (NaN if `j` is not split).
@@ -628,6 +624,26 @@ fn model_node(model: &Model, f: f64) -> Result<(f64, f64), CurveError> {
     } else {
         Err(CurveError::NoMu { f_star: f, mu })
     }
+}
+
+/// The larger relative error of `got` against `exact` at the midpoint of
+/// `[a, b]` and at a random point in it, and where it is (NaN, a μ that is
+/// not finite, counts as the larger).
+fn sampled_error(
+    (a, b): (f64, f64),
+    rng: &mut SplitMix64,
+    got: &dyn Fn(f64) -> Result<f64, CurveError>,
+    exact: &dyn Fn(f64) -> Result<f64, CurveError>,
+) -> Result<(f64, f64), CurveError> {
+    let mut worst = (0.0f64, a);
+    for f in [0.5 * (a + b), a + rng.unit() * (b - a)] {
+        let want = exact(f)?;
+        let error = ((got(f)? - want) / want).abs();
+        if error > worst.0 || error.is_nan() {
+            worst = (error, f);
+        }
+    }
+    Ok(worst)
 }
 
 /// The cubic Hermite interpolant of (μ, dμ/dF*) at `a` and `b`, as a

@@ -272,18 +272,19 @@ impl General {
                 rule: e.jacobi_rule(),
             })
         };
+        let power_tails = g.power_tails();
         General {
             lo: zend(g.lower_end()),
             hi: zend(g.upper_end()),
             max_step: MAX_STEP * s * g.smoothness_scale().min(1.0),
             max_step_far: MAX_STEP * s * g.smoothness_scale(),
             mode: s * g.mode(),
-            poles: g.power_tails().map(|p| PowerTails {
+            poles: power_tails.map(|p| PowerTails {
                 centre: s * p.centre,
                 half_width: s * p.half_width,
                 exponent: p.exponent,
             }),
-            tail_rule: g.power_tails().and_then(|p| TailRule::new(p.exponent)),
+            tail_rule: power_tails.and_then(|p| TailRule::new(p.exponent)),
             tails: (s * g.tails().0, s * g.tails().1),
             inv_s: 1.0 / s,
             ln_inv_s: -s.ln(),
