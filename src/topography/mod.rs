@@ -9,7 +9,7 @@ mod read;
 mod stats;
 mod surface;
 
-pub use read::{read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES};
+pub use read::{read_bytes, read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
 pub use surface::Surface;
 

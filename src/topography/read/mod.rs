@@ -29,6 +29,11 @@ pub use x3p::write_x3p;
 /// uncompressed, larger than this is refused (2 GiB).
 pub const MAX_BYTES: u64 = 2 << 30;
 
+/// The default bound on the points of a surface: 2²⁸ ≈ 2.7·10⁸, i.e.
+/// 2 GiB of f64 heights. A file that declares more is refused before
+/// anything is allocated or inflated ([`ReadOptions::max_points`]).
+pub const MAX_POINTS: u64 = 1 << 28;
+
 /// Relative difference above which an interval given in the options
 /// contradicts the file's own.
 const CONFLICT_REL: f64 = 1e-6;
@@ -86,6 +91,10 @@ pub struct ReadOptions {
     /// The most bytes read from the file, or from one X3P member once
     /// uncompressed ([`MAX_BYTES`] by default).
     pub max_bytes: u64,
+    /// The most points (heights) a surface may have ([`MAX_POINTS`] by
+    /// default): checked against the size a file declares before anything
+    /// is allocated, so that memory stays bounded by the result.
+    pub max_points: u64,
 }
 
 impl Default for ReadOptions {
@@ -97,6 +106,7 @@ impl Default for ReadOptions {
             xy_unit: 1.0,
             format: None,
             max_bytes: MAX_BYTES,
+            max_points: MAX_POINTS,
         }
     }
 }
@@ -124,6 +134,29 @@ pub enum ReadError {
         bytes: u64,
         /// The bound ([`ReadOptions::max_bytes`]).
         limit: u64,
+    },
+    /// The file declares more points than [`ReadOptions::max_points`].
+    #[error(
+        "{}: {what} makes {points} points, over the limit of {limit} (raise it with max_points / --max-points)",
+        path.display()
+    )]
+    TooManyPoints {
+        /// The file.
+        path: PathBuf,
+        /// Where the size comes from.
+        what: String,
+        /// The points declared.
+        points: u64,
+        /// The bound ([`ReadOptions::max_points`]).
+        limit: u64,
+    },
+    /// Memory for the heights could not be allocated.
+    #[error("{}: cannot allocate memory for {points} points", path.display())]
+    OutOfMemory {
+        /// The file.
+        path: PathBuf,
+        /// The points asked for.
+        points: u64,
     },
     /// Not a readable zip archive, or a member is missing or damaged
     /// (truncated file, bad CRC).
@@ -219,9 +252,9 @@ pub enum ReadError {
         /// The options' interval (metres).
         option: f64,
     },
-    /// A unit in the options is not finite and non-zero (`z_unit`) or
-    /// positive (`xy_unit`).
-    #[error("{}: ReadOptions::{name} = {value} is out of range", path.display())]
+    /// A unit in the options (`z_unit`, `xy_unit`) is not finite and
+    /// positive.
+    #[error("{}: ReadOptions::{name} = {value} is out of range: must be finite and > 0", path.display())]
     Options {
         /// The file.
         path: PathBuf,
@@ -247,6 +280,8 @@ impl ReadError {
         match self {
             ReadError::Io { path, .. }
             | ReadError::TooLarge { path, .. }
+            | ReadError::TooManyPoints { path, .. }
+            | ReadError::OutOfMemory { path, .. }
             | ReadError::Archive { path, .. }
             | ReadError::Xml { path, .. }
             | ReadError::Checksum { path, .. }
@@ -282,24 +317,53 @@ impl ReadError {
 /// ```
 pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path };
-    for (name, value, ok) in [
-        ("z_unit", options.z_unit, options.z_unit != 0.0),
-        ("xy_unit", options.xy_unit, options.xy_unit > 0.0),
-    ] {
-        if !(value.is_finite() && ok) {
+    check_options(&cx, options)?;
+    let bytes = cx.read_bounded(options.max_bytes)?;
+    read_with(&cx, &bytes, options)
+}
+
+/// Reads a height map or profile from `bytes`, the content of a file
+/// called `name` (for the format by extension and for the errors): what a
+/// program that holds the file in memory (a web page, a network service)
+/// calls in place of [`read_file`]. The same formats, bounds and errors.
+///
+/// ```
+/// use ke_friction::topography::{read_bytes, ReadOptions};
+/// let text = b"1 2 3\n4 5 6\n";
+/// let options = ReadOptions { dx: Some(1e-6), dy: Some(1e-6), z_unit: 1e-6, ..ReadOptions::default() };
+/// let surface = read_bytes(text, "heights.txt", &options)?;
+/// assert_eq!((surface.nx(), surface.ny()), (3, 2));
+/// # Ok::<(), ke_friction::topography::ReadError>(())
+/// ```
+pub fn read_bytes(bytes: &[u8], name: &str, options: &ReadOptions) -> Result<Topography, ReadError> {
+    let cx = Ctx { path: Path::new(name) };
+    check_options(&cx, options)?;
+    if bytes.len() as u64 > options.max_bytes {
+        return Err(cx.too_large("the file", bytes.len() as u64, options.max_bytes));
+    }
+    read_with(&cx, bytes, options)
+}
+
+/// The units in the options are finite and positive.
+fn check_options(cx: &Ctx, options: &ReadOptions) -> Result<(), ReadError> {
+    for (name, value) in [("z_unit", options.z_unit), ("xy_unit", options.xy_unit)] {
+        if !(value.is_finite() && value > 0.0) {
             return Err(ReadError::Options {
-                path: path.to_path_buf(),
+                path: cx.path(),
                 name,
                 value,
             });
         }
     }
-    let bytes = cx.read_bounded(options.max_bytes)?;
-    match options.format.unwrap_or_else(|| Format::from_path(path)) {
-        Format::X3p => x3p::read(&cx, &bytes, options),
-        Format::Npy => npy::read(&cx, &bytes, options),
-        Format::Text => text::read(&cx, &bytes, options, false),
-        Format::Matrix => text::read(&cx, &bytes, options, true),
+    Ok(())
+}
+
+fn read_with(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
+    match options.format.unwrap_or_else(|| Format::from_path(cx.path)) {
+        Format::X3p => x3p::read(cx, bytes, options),
+        Format::Npy => npy::read(cx, bytes, options),
+        Format::Text => text::read(cx, bytes, options, false),
+        Format::Matrix => text::read(cx, bytes, options, true),
     }
 }
 
