@@ -18,7 +18,7 @@ mod text;
 mod x3p;
 
 use std::fs::File;
-use std::io::{self, Read};
+use std::io::{self, BufReader, Cursor, Read, Seek};
 use std::path::{Path, PathBuf};
 
 use super::{Topography, TopographyError};
@@ -318,8 +318,14 @@ impl ReadError {
 pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path };
     check_options(&cx, options)?;
-    let bytes = cx.read_bounded(options.max_bytes)?;
-    read_with(&cx, &bytes, options)
+    let file = File::open(path).map_err(|e| cx.io(e))?;
+    let len = file.metadata().map_err(|e| cx.io(e))?.len();
+    if len > options.max_bytes {
+        return Err(cx.too_large("the file", len, options.max_bytes));
+    }
+    // Streamed: the file is never held whole, only the heights it makes.
+    let mut source = BufReader::with_capacity(CHUNK, file);
+    read_from(&cx, &mut source, len, options)
 }
 
 /// Reads a height map or profile from `bytes`, the content of a file
@@ -338,10 +344,11 @@ pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadE
 pub fn read_bytes(bytes: &[u8], name: &str, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path: Path::new(name) };
     check_options(&cx, options)?;
-    if bytes.len() as u64 > options.max_bytes {
-        return Err(cx.too_large("the file", bytes.len() as u64, options.max_bytes));
+    let len = bytes.len() as u64;
+    if len > options.max_bytes {
+        return Err(cx.too_large("the file", len, options.max_bytes));
     }
-    read_with(&cx, bytes, options)
+    read_from(&cx, &mut Cursor::new(bytes), len, options)
 }
 
 /// The units in the options are finite and positive.
@@ -358,12 +365,23 @@ fn check_options(cx: &Ctx, options: &ReadOptions) -> Result<(), ReadError> {
     Ok(())
 }
 
-fn read_with(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
+/// A file's content, read in order or by position: a buffered file or
+/// bytes in memory.
+trait Source: Read + Seek {}
+
+impl<T: Read + Seek> Source for T {}
+
+/// The size of the pieces a reader decodes at a time (bytes).
+const CHUNK: usize = 1 << 16;
+
+/// Reads the `len` bytes of `source` in the format of the options or the
+/// name.
+fn read_from(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     match options.format.unwrap_or_else(|| Format::from_path(cx.path)) {
-        Format::X3p => x3p::read(cx, bytes, options),
-        Format::Npy => npy::read(cx, bytes, options),
-        Format::Text => text::read(cx, bytes, options, false),
-        Format::Matrix => text::read(cx, bytes, options, true),
+        Format::X3p => x3p::read(cx, source, options),
+        Format::Npy => npy::read(cx, source, len, options),
+        Format::Text => text::read(cx, source, options, false),
+        Format::Matrix => text::read(cx, source, options, true),
     }
 }
 
@@ -381,6 +399,15 @@ impl Ctx<'_> {
         ReadError::Io {
             path: self.path(),
             source,
+        }
+    }
+
+    /// A failed read: `eof()` if the file ended early, else an I/O error.
+    fn eof_or(&self, e: io::Error, eof: impl FnOnce() -> ReadError) -> ReadError {
+        if e.kind() == io::ErrorKind::UnexpectedEof {
+            eof()
+        } else {
+            self.io(e)
         }
     }
 
@@ -414,21 +441,43 @@ impl Ctx<'_> {
         }
     }
 
-    /// The whole file, if it is at most `limit` bytes.
-    fn read_bounded(&self, limit: u64) -> Result<Vec<u8>, ReadError> {
-        let file = File::open(self.path).map_err(|e| self.io(e))?;
-        let len = file.metadata().map_err(|e| self.io(e))?.len();
-        if len > limit {
-            return Err(self.too_large("the file", len, limit));
+    /// An empty vector with room for exactly `points` heights, if they are
+    /// within [`ReadOptions::max_points`] (`what`: where the size comes
+    /// from, for the error) and memory can be had.
+    fn heights(
+        &self,
+        what: impl FnOnce() -> String,
+        points: u64,
+        options: &ReadOptions,
+    ) -> Result<Vec<f64>, ReadError> {
+        self.check_points(what, points, options)?;
+        self.vec(points)
+    }
+
+    /// `points` within [`ReadOptions::max_points`].
+    fn check_points(&self, what: impl FnOnce() -> String, points: u64, options: &ReadOptions) -> Result<(), ReadError> {
+        if points > options.max_points {
+            return Err(ReadError::TooManyPoints {
+                path: self.path(),
+                what: what(),
+                points,
+                limit: options.max_points,
+            });
         }
-        let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
-        file.take(limit.saturating_add(1))
-            .read_to_end(&mut bytes)
-            .map_err(|e| self.io(e))?;
-        if bytes.len() as u64 > limit {
-            return Err(self.too_large("the file", bytes.len() as u64, limit));
-        }
-        Ok(bytes)
+        Ok(())
+    }
+
+    /// An empty vector with room for exactly `len` items, or an error if
+    /// memory cannot be had (never an abort).
+    fn vec<T>(&self, len: u64) -> Result<Vec<T>, ReadError> {
+        let out_of_memory = || ReadError::OutOfMemory {
+            path: self.path(),
+            points: len,
+        };
+        let len = usize::try_from(len).map_err(|_| out_of_memory())?;
+        let mut v = Vec::new();
+        v.try_reserve_exact(len).map_err(|_| out_of_memory())?;
+        Ok(v)
     }
 
     /// The interval `name` from the file's value or else the options'.
