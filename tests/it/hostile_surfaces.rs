@@ -195,7 +195,7 @@ fn read_bytes_reads_what_read_file_reads() {
         b"1 2 3\n",
         "heights.dat",
         &ReadOptions {
-            format: Some(Format::Matrix),
+            format: Some(Format::MATRIX),
             ..opts()
         },
     )
@@ -211,5 +211,30 @@ fn a_negative_or_non_finite_unit_is_refused() {
             ReadError::Options { name: "z_unit", .. } => {}
             e => panic!("{e}"),
         }
+    }
+}
+
+#[test]
+fn the_format_is_chosen_by_extension_and_content() {
+    let x3p = X3p::new(&[1.0; 6]).bytes();
+    let data: Vec<u8> = [1.0f64; 6].iter().flat_map(|h| h.to_le_bytes()).collect();
+    let npy_file = npy("<f8", false, &[2, 3], &data);
+    // Content with a signature wins over a text or unknown extension.
+    for name in ["surface.dat", "surface.bin", "surface"] {
+        assert_eq!(Format::detect(name.as_ref(), &x3p[..16]), Format::X3P, "{name}");
+        assert_eq!(Format::detect(name.as_ref(), &npy_file[..16]), Format::NPY, "{name}");
+        assert_eq!(read_bytes(&x3p, name, &opts()).unwrap().heights().len(), 6);
+        assert_eq!(read_bytes(&npy_file, name, &opts()).unwrap().heights().len(), 6);
+    }
+    // A format's own extension is kept: its reader says what is wrong.
+    assert_eq!(Format::detect("a.X3P".as_ref(), b"1 2 3"), Format::X3P);
+    assert!(matches!(err(b"1 2 3\n", "a.x3p", &opts()), ReadError::Archive { .. }));
+    assert_eq!(Format::detect("a.csv".as_ref(), b"1,2"), Format::TEXT);
+    // The registry: names and extensions, each format once.
+    let names: Vec<&str> = Format::all().map(Format::name).collect();
+    assert_eq!(names, ["x3p", "npy", "text", "matrix"]);
+    for f in Format::all() {
+        assert_eq!(Format::from_name(&f.name().to_uppercase()), Some(f));
+        assert!(!f.description().is_empty());
     }
 }

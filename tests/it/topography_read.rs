@@ -580,7 +580,7 @@ fn npy_orders_and_types() {
         &renamed,
         &ReadOptions {
             dx: Some(1e-7),
-            format: Some(Format::Npy),
+            format: Some(Format::NPY),
             ..opts()
         },
     )
@@ -693,7 +693,7 @@ fn text_column_matrix_and_pairs() {
     let t = read_file(
         &path,
         &ReadOptions {
-            format: Some(Format::Matrix),
+            format: Some(Format::MATRIX),
             ..options.clone()
         },
     )
@@ -721,7 +721,7 @@ fn text_column_matrix_and_pairs() {
     match read_err(
         &write_text(&dir, "need.txt", "1 2\n3 4\n5 6\n7 8\n"),
         &ReadOptions {
-            format: Some(Format::Matrix),
+            format: Some(Format::MATRIX),
             dx: Some(1.0),
             ..opts()
         },

@@ -3,8 +3,17 @@
 //! big endian, C or Fortran order. The file gives no intervals: they come
 //! from the options.
 
-use super::{clip, Ctx, ReadError, ReadOptions, Source, CHUNK};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
 use crate::topography::Topography;
+
+/// The registry's entry.
+pub(super) const ENTRY: Entry = Entry {
+    name: "npy",
+    description: "NumPy .npy (f4 or f8; 1-D profile, 2-D map)",
+    extensions: &["npy"],
+    sniff: Some(|head| head.starts_with(b"\x93NUMPY")),
+    read,
+};
 
 /// The bound on the header (bytes).
 const MAX_HEADER: usize = 1 << 16;

@@ -5,8 +5,26 @@
 //! otherwise (or with [`Format::Matrix`](super::Format::Matrix)) a matrix,
 //! rows = y. A single line is a profile.
 
-use super::{clip, Ctx, ReadError, ReadOptions, Source, CHUNK};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
 use crate::topography::Topography;
+
+/// The registry's entry: text by its number of columns.
+pub(super) const ENTRY: Entry = Entry {
+    name: "text",
+    description: "text: a column, x z pairs, x y z triples or a matrix",
+    extensions: &["txt", "csv", "asc", "xyz", "dat"],
+    sniff: None,
+    read: |cx, source, _, options| read(cx, source, options, false),
+};
+
+/// The registry's entry: text read as a matrix whatever its columns.
+pub(super) const MATRIX: Entry = Entry {
+    name: "matrix",
+    description: "text read as a matrix (rows = y) whatever its columns",
+    extensions: &[],
+    sniff: None,
+    read: |cx, source, _, options| read(cx, source, options, true),
+};
 
 /// A grid position is off by more than this fraction of the interval:
 /// the grid is irregular.
