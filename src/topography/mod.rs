@@ -10,7 +10,9 @@ mod stats;
 mod surface;
 
 pub use read::{read_bytes, read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
-pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
+pub use stats::{
+    combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
+};
 pub use surface::Surface;
 
 /// A measured height map (or profile) on a regular grid, in SI units.
