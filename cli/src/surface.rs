@@ -163,8 +163,8 @@ impl SurfaceArgs {
             }
         };
         let dx = interval("dx", self.dx)?;
-        let dy = interval("dy", self.dy)?.or(dx);
-        let options = ReadOptions {
+        let dy = interval("dy", self.dy)?;
+        let options = |dy: Option<f64>| ReadOptions {
             dx,
             dy,
             z_unit: self.z_unit.metres(),
@@ -172,10 +172,28 @@ impl SurfaceArgs {
             max_points: self.max_points.unwrap_or(MAX_POINTS),
             ..ReadOptions::default()
         };
-        read_file(path, &options).map_err(|e| match e {
+        // --dy defaults to --dx for a file that gives no dy; a file's own dy
+        // is kept (a file whose dy differs from --dx is read again without
+        // it: only a --dy given contradicts the file's).
+        let read = match read_file(path, &options(dy.or(dx))) {
+            Err(ReadError::Conflict { name: "dy", .. }) if dy.is_none() => read_file(path, &options(None)),
+            read => read,
+        };
+        read.map_err(|e| match e {
             ReadError::NeedInterval { path, name } => Failure::input(format!(
                 "{flag}: {}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit",
                 path.display()
+            )),
+            ReadError::Conflict {
+                path,
+                name,
+                file,
+                option,
+            } => Failure::input(format!(
+                "{flag}: {}: the file gives {name} = {} m, --{name} {} m: leave --{name} out to use the file's",
+                path.display(),
+                Shortest(file),
+                Shortest(option)
             )),
             e => {
                 let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };

@@ -15,7 +15,10 @@
  * The codes follow the library's classification of its errors: a value
  * out of its range is KEF_ERR_DOMAIN, NaN or +-inf KEF_ERR_ARGUMENT, no mu
  * where the model has none KEF_ERR_NO_MU. A NULL pointer where one is
- * required is KEF_ERR_ARGUMENT, never a crash. All quantities are
+ * required is KEF_ERR_ARGUMENT, never a crash. Outputs must not alias
+ * each other or the inputs: a call whose output pointer (or array)
+ * overlaps another pointer argument is KEF_ERR_ARGUMENT (the message
+ * names both) and writes nothing. All quantities are
  * dimensionless: psi (plasticity index), theta = dgamma/(sigma H),
  * f_star = F/(A_n H), mu (static friction coefficient).
  *
@@ -139,7 +142,8 @@ void kef_table_free(kef_table *table);
 // [*theta_min, *theta_max], F* in [*f_star_min, *f_star_max] (the default
 // table: [0.5, 8], [0, 0.01], [1e-5, 0.1]). A lookup inside all three
 // succeeds; one outside any is KEF_ERR_DOMAIN. KEF_ERR_ARGUMENT for a NULL
-// pointer (no output written then).
+// pointer or for outputs that alias each other (the six must be distinct;
+// no output written then).
 //
 // # Safety
 // `table` is NULL or a live table; the outputs NULL or writable.
@@ -162,8 +166,9 @@ int kef_table_domain(const kef_table *table,
 // asperities η (1/m²), `delta_gamma` the energy of adhesion Δγ (J/m²),
 // `epsilon` the intermolecular distance ε (m). KEF_ERR_DOMAIN for an input
 // or a result out of its range (the message names it and the range),
-// KEF_ERR_ARGUMENT for NaN, ±inf or a NULL output; no output is written
-// on failure.
+// KEF_ERR_ARGUMENT for NaN, ±inf, a NULL output or outputs that alias
+// each other (the five must be distinct; the message names two); no
+// output is written on failure.
 //
 // # Safety
 // The outputs are NULL or writable.
@@ -198,7 +203,8 @@ int kef_table_h_star(const kef_table *table,
 // h* at `n` points `(psi[i], theta[i], f_star[i])` into `h_star[i]`; a
 // bad point and NULL pointers as in kef_table_mu_batch ("batch element
 // i: " in front of the message, `h_star[0..i)` written, `h_star[i..n)`
-// untouched). `h_star` must not overlap the inputs.
+// untouched). `h_star` must not overlap the inputs (KEF_ERR_ARGUMENT,
+// nothing written).
 //
 // # Safety
 // `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
@@ -219,7 +225,8 @@ int kef_table_h_star_batch(const kef_table *table,
 int kef_table_mu(const kef_table *table, double psi, double theta, double f_star, double *mu);
 
 // μ and ∂μ/∂F* from `table` into `*mu` and `*dmu_df_star`; errors as
-// kef_table_mu.
+// kef_table_mu, and KEF_ERR_ARGUMENT if the two outputs alias (they must
+// be distinct).
 //
 // # Safety
 // `table` is NULL or a live table; `mu`, `dmu_df_star` NULL or writable.
@@ -235,7 +242,7 @@ int kef_table_mu_with_slope(const kef_table *table,
 // the table (or NaN), the error of kef_table_mu for it with "batch element
 // i: " in front; `mu[0..i)` is written, `mu[i..n)` untouched. Pointers may
 // be NULL only when n is 0 (KEF_ERR_ARGUMENT otherwise); `mu` must not
-// overlap the inputs.
+// overlap the inputs (KEF_ERR_ARGUMENT, nothing written).
 //
 // # Safety
 // `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
@@ -250,7 +257,7 @@ int kef_table_mu_batch(const kef_table *table,
 // kef_table_mu_batch that does not stop: NaN in `mu[i]` at each point
 // outside the table (or NaN), valid values elsewhere, the number of NaN
 // elements in `*n_nan`, and KEF_OK. `n_nan` is required (KEF_ERR_ARGUMENT
-// if NULL).
+// if NULL) and must not overlap another argument.
 //
 // # Safety
 // As kef_table_mu_batch; `n_nan` NULL or writable.
@@ -265,7 +272,7 @@ int kef_table_mu_batch_nan(const kef_table *table,
 // μ and ∂μ/∂F* at `n` points into `mu[i]` and `dmu_df_star[i]`; errors,
 // NULL pointers and a bad point as kef_table_mu_batch (both outputs
 // written before it, neither from it on). No output may overlap another
-// argument.
+// argument (KEF_ERR_ARGUMENT, nothing written).
 //
 // # Safety
 // As kef_table_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
@@ -278,7 +285,8 @@ int kef_table_mu_with_slope_batch(const kef_table *table,
                                   double *dmu_df_star);
 
 // kef_table_mu_with_slope_batch that does not stop: NaN in both outputs
-// at each point outside the table, the count in `*n_nan`, KEF_OK.
+// at each point outside the table, the count in `*n_nan`, KEF_OK. No
+// output may overlap another argument.
 //
 // # Safety
 // As kef_table_mu_with_slope_batch; `n_nan` NULL or writable.
@@ -334,22 +342,25 @@ kef_curve *kef_curve_from_model_with(const kef_constants *constants,
 // `curve` is NULL or a live curve; `mu` NULL or writable.
 int kef_curve_mu(const kef_curve *curve, double f_star, double *mu);
 
-// μ and dμ/dF* from `curve`; errors as kef_curve_mu.
+// μ and dμ/dF* from `curve`; errors as kef_curve_mu, and
+// KEF_ERR_ARGUMENT if the two outputs alias (they must be distinct).
 //
 // # Safety
 // `curve` is NULL or a live curve; `mu`, `dmu_df_star` NULL or writable.
 int kef_curve_mu_with_slope(const kef_curve *curve, double f_star, double *mu, double *dmu_df_star);
 
 // μ at `n` loads `f_star[i]` into `mu[i]` (AVX2 where the CPU has it); a
-// bad load and NULL pointers as in kef_table_mu_batch.
+// bad load and NULL pointers as in kef_table_mu_batch. `mu` must not
+// overlap `f_star` (KEF_ERR_ARGUMENT, nothing written).
 //
 // # Safety
 // `curve` is NULL or a live curve; `f_star` NULL or valid for `n` reads;
-// `mu` NULL or valid for `n` writes, not overlapping `f_star`.
+// `mu` NULL or valid for `n` writes.
 int kef_curve_mu_batch(const kef_curve *curve, size_t n, const double *f_star, double *mu);
 
 // kef_curve_mu_batch that does not stop: NaN at each load outside the
-// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK.
+// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK. No
+// output may overlap another argument.
 //
 // # Safety
 // As kef_curve_mu_batch; `n_nan` NULL or writable.
@@ -360,11 +371,11 @@ int kef_curve_mu_batch_nan(const kef_curve *curve,
                            size_t *n_nan);
 
 // μ and dμ/dF* at `n` loads into `mu[i]` and `dmu_df_star[i]`; a bad
-// load and NULL pointers as in kef_table_mu_batch.
+// load and NULL pointers as in kef_table_mu_batch. No output may overlap
+// another argument (KEF_ERR_ARGUMENT, nothing written).
 //
 // # Safety
-// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes, not
-// overlapping another argument.
+// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
 int kef_curve_mu_with_slope_batch(const kef_curve *curve,
                                   size_t n,
                                   const double *f_star,
@@ -372,7 +383,8 @@ int kef_curve_mu_with_slope_batch(const kef_curve *curve,
                                   double *dmu_df_star);
 
 // kef_curve_mu_with_slope_batch that does not stop: NaN in both outputs
-// at each bad load, the count in `*n_nan`, KEF_OK.
+// at each bad load, the count in `*n_nan`, KEF_OK. No output may overlap
+// another argument.
 //
 // # Safety
 // As kef_curve_mu_with_slope_batch; `n_nan` NULL or writable.
@@ -383,7 +395,8 @@ int kef_curve_mu_with_slope_batch_nan(const kef_curve *curve,
                                       double *dmu_df_star,
                                       size_t *n_nan);
 
-// The F* range [*f_star_min, *f_star_max] of `curve`.
+// The F* range [*f_star_min, *f_star_max] of `curve`. KEF_ERR_ARGUMENT
+// for a NULL pointer or if the two outputs alias (they must be distinct).
 //
 // # Safety
 // `curve` is NULL or a live curve; the outputs NULL or writable.
@@ -546,7 +559,8 @@ int kef_constants_set_heights(kef_constants *constants, const double *heights, s
 // `*kurtosis`: 0 and 3 for the Gaussian, the values set for Pearson, the
 // kurtosis its skewness implies for Weibull (2.717 at Sk = 0), the
 // heights' own for an empirical density. KEF_ERR_ARGUMENT for a NULL
-// output (no output written then).
+// output or outputs that alias each other (the three must be distinct;
+// no output written then).
 //
 // # Safety
 // `constants` is NULL or a live kef_constants; the outputs NULL or

@@ -14,12 +14,16 @@
 //! - a NULL pointer where one is required is [`KEF_ERR_ARGUMENT`], never a
 //!   crash; no panic crosses the boundary ([`KEF_ERR_INTERNAL`] if one
 //!   ever happened);
+//! - outputs must not alias each other or the inputs: a call whose output
+//!   overlaps another pointer argument is [`KEF_ERR_ARGUMENT`] (the
+//!   message names both), nothing written;
 //! - tables and curves are immutable: any number of threads may use one
 //!   at once; only freeing it must wait until they are done.
 //!
 //! Every export is one line: the `ffi!` macro checks its pointer
-//! arguments, runs the body under `catch_unwind` and turns a failure into
-//! its code and message.
+//! arguments (that no output overlaps another argument, then each for
+//! NULL), runs the body under `catch_unwind` and turns a failure into its
+//! code and message.
 #![warn(missing_docs)]
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
@@ -255,8 +259,9 @@ trait Array<'a> {
     /// only when `n` is 0).
     ///
     /// # Safety
-    /// The pointer is NULL or valid for `n` elements (writes for an output,
-    /// overlapping no other argument) for `'a`.
+    /// The pointer is NULL or valid for `n` elements (writes for an output)
+    /// for `'a`, and an output overlaps no other argument (as [`distinct`]
+    /// checked).
     unsafe fn check_n(self, name: &str, n: usize) -> Result<Self::Rust, Failure>;
 }
 
@@ -284,6 +289,52 @@ pointee!(*mut f64 => &'a mut f64, |p| p.as_mut());
 pointee!(*mut usize => &'a mut usize, |p| p.as_mut());
 pointee!(*mut c_int => &'a mut c_int, |p| p.as_mut());
 pointee!(*const c_char => &'a CStr, |p| (!p.is_null()).then(|| CStr::from_ptr(p)));
+
+/// The bytes a pointer argument points to, for the aliasing check.
+trait Region {
+    /// The address and byte length of `count` elements at the pointer
+    /// (none for NULL), and whether the export writes them.
+    fn region(&self, count: usize) -> (usize, usize, bool);
+}
+
+impl<T> Region for *const T {
+    fn region(&self, count: usize) -> (usize, usize, bool) {
+        let len = if self.is_null() {
+            0
+        } else {
+            count.saturating_mul(size_of::<T>())
+        };
+        (self.addr(), len, false)
+    }
+}
+
+impl<T> Region for *mut T {
+    fn region(&self, count: usize) -> (usize, usize, bool) {
+        let (start, len, _) = self.cast_const().region(count);
+        (start, len, true)
+    }
+}
+
+/// A pointer argument's bytes: its name, [`Region::region`].
+type Place = (&'static str, (usize, usize, bool));
+
+/// The failure if an output overlaps another pointer argument (two
+/// references to one place, one of them `&mut`, would be undefined
+/// behaviour): checked before any reference is made. Inputs may overlap
+/// each other.
+fn distinct(places: &[Place]) -> Result<(), Failure> {
+    for (i, &(second, (b, b_len, b_written))) in places.iter().enumerate() {
+        for &(first, (a, a_len, a_written)) in &places[..i] {
+            let overlap = a_len > 0 && b_len > 0 && a < b.saturating_add(b_len) && b < a.saturating_add(a_len);
+            if overlap && (a_written || b_written) {
+                return Err(Failure::argument(format!(
+                    "{first} and {second} overlap: outputs must not alias each other or the inputs"
+                )));
+            }
+        }
+    }
+    Ok(())
+}
 
 /// The defaults, for a NULL `const kef_constants *`.
 static DEFAULT_CONSTANTS: OnceLock<Constants> = OnceLock::new();
@@ -322,12 +373,15 @@ impl<'a> Array<'a> for *mut f64 {
     }
 }
 
-/// The body of an export: `ffi!(p, q[n], … => body)` checks each pointer
-/// argument in order (`q[n]`: an array of `n`), rebinding it to its Rust
-/// view, then runs `body` (a `Result<A, Failure>`) under [`guard`].
+/// The body of an export: `ffi!(p, q[n], … => body)` checks that no
+/// output overlaps another pointer argument ([`distinct`]), then each
+/// pointer argument in order (`q[n]`: an array of `n`), rebinding it to
+/// its Rust view, then runs `body` (a `Result<A, Failure>`) under
+/// [`guard`].
 macro_rules! ffi {
     ($($arg:ident $([$n:expr])?),* => $body:expr) => {
         guard(|| {
+            distinct(&[$((stringify!($arg), Region::region(&$arg, ffi!(@count $([$n])?)))),*])?;
             $(
                 // SAFETY: the export's `# Safety` contract: every pointer
                 // argument is NULL or valid as it says.
@@ -335,6 +389,12 @@ macro_rules! ffi {
             )*
             $body
         })
+    };
+    (@count) => {
+        1
+    };
+    (@count [$n:expr]) => {
+        $n
     };
     (@check $arg:ident) => {
         Arg::check($arg, stringify!($arg))
@@ -628,7 +688,8 @@ pub unsafe extern "C" fn kef_table_free(table: *mut kef_table) {
 /// [*theta_min, *theta_max], F* in [*f_star_min, *f_star_max] (the default
 /// table: [0.5, 8], [0, 0.01], [1e-5, 0.1]). A lookup inside all three
 /// succeeds; one outside any is KEF_ERR_DOMAIN. KEF_ERR_ARGUMENT for a NULL
-/// pointer (no output written then).
+/// pointer or for outputs that alias each other (the six must be distinct;
+/// no output written then).
 ///
 /// # Safety
 /// `table` is NULL or a live table; the outputs NULL or writable.
@@ -661,8 +722,9 @@ pub unsafe extern "C" fn kef_table_domain(
 /// asperities η (1/m²), `delta_gamma` the energy of adhesion Δγ (J/m²),
 /// `epsilon` the intermolecular distance ε (m). KEF_ERR_DOMAIN for an input
 /// or a result out of its range (the message names it and the range),
-/// KEF_ERR_ARGUMENT for NaN, ±inf or a NULL output; no output is written
-/// on failure.
+/// KEF_ERR_ARGUMENT for NaN, ±inf, a NULL output or outputs that alias
+/// each other (the five must be distinct; the message names two); no
+/// output is written on failure.
 ///
 /// # Safety
 /// The outputs are NULL or writable.
@@ -713,7 +775,8 @@ pub unsafe extern "C" fn kef_table_h_star(
 /// h* at `n` points `(psi[i], theta[i], f_star[i])` into `h_star[i]`; a
 /// bad point and NULL pointers as in kef_table_mu_batch ("batch element
 /// i: " in front of the message, `h_star[0..i)` written, `h_star[i..n)`
-/// untouched). `h_star` must not overlap the inputs.
+/// untouched). `h_star` must not overlap the inputs (KEF_ERR_ARGUMENT,
+/// nothing written).
 ///
 /// # Safety
 /// `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
@@ -748,7 +811,8 @@ pub unsafe extern "C" fn kef_table_mu(
 }
 
 /// μ and ∂μ/∂F* from `table` into `*mu` and `*dmu_df_star`; errors as
-/// kef_table_mu.
+/// kef_table_mu, and KEF_ERR_ARGUMENT if the two outputs alias (they must
+/// be distinct).
 ///
 /// # Safety
 /// `table` is NULL or a live table; `mu`, `dmu_df_star` NULL or writable.
@@ -769,7 +833,7 @@ pub unsafe extern "C" fn kef_table_mu_with_slope(
 /// the table (or NaN), the error of kef_table_mu for it with "batch element
 /// i: " in front; `mu[0..i)` is written, `mu[i..n)` untouched. Pointers may
 /// be NULL only when n is 0 (KEF_ERR_ARGUMENT otherwise); `mu` must not
-/// overlap the inputs.
+/// overlap the inputs (KEF_ERR_ARGUMENT, nothing written).
 ///
 /// # Safety
 /// `table` is NULL or a live table; `psi`, `theta`, `f_star` NULL or valid
@@ -789,7 +853,7 @@ pub unsafe extern "C" fn kef_table_mu_batch(
 /// kef_table_mu_batch that does not stop: NaN in `mu[i]` at each point
 /// outside the table (or NaN), valid values elsewhere, the number of NaN
 /// elements in `*n_nan`, and KEF_OK. `n_nan` is required (KEF_ERR_ARGUMENT
-/// if NULL).
+/// if NULL) and must not overlap another argument.
 ///
 /// # Safety
 /// As kef_table_mu_batch; `n_nan` NULL or writable.
@@ -810,7 +874,7 @@ pub unsafe extern "C" fn kef_table_mu_batch_nan(
 /// μ and ∂μ/∂F* at `n` points into `mu[i]` and `dmu_df_star[i]`; errors,
 /// NULL pointers and a bad point as kef_table_mu_batch (both outputs
 /// written before it, neither from it on). No output may overlap another
-/// argument.
+/// argument (KEF_ERR_ARGUMENT, nothing written).
 ///
 /// # Safety
 /// As kef_table_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
@@ -829,7 +893,8 @@ pub unsafe extern "C" fn kef_table_mu_with_slope_batch(
 }
 
 /// kef_table_mu_with_slope_batch that does not stop: NaN in both outputs
-/// at each point outside the table, the count in `*n_nan`, KEF_OK.
+/// at each point outside the table, the count in `*n_nan`, KEF_OK. No
+/// output may overlap another argument.
 ///
 /// # Safety
 /// As kef_table_mu_with_slope_batch; `n_nan` NULL or writable.
@@ -907,7 +972,8 @@ pub unsafe extern "C" fn kef_curve_mu(curve: *const kef_curve, f_star: f64, mu: 
     ffi!(curve, mu => set(mu, curve.mu(f_star)?))
 }
 
-/// μ and dμ/dF* from `curve`; errors as kef_curve_mu.
+/// μ and dμ/dF* from `curve`; errors as kef_curve_mu, and
+/// KEF_ERR_ARGUMENT if the two outputs alias (they must be distinct).
 ///
 /// # Safety
 /// `curve` is NULL or a live curve; `mu`, `dmu_df_star` NULL or writable.
@@ -922,11 +988,12 @@ pub unsafe extern "C" fn kef_curve_mu_with_slope(
 }
 
 /// μ at `n` loads `f_star[i]` into `mu[i]` (AVX2 where the CPU has it); a
-/// bad load and NULL pointers as in kef_table_mu_batch.
+/// bad load and NULL pointers as in kef_table_mu_batch. `mu` must not
+/// overlap `f_star` (KEF_ERR_ARGUMENT, nothing written).
 ///
 /// # Safety
 /// `curve` is NULL or a live curve; `f_star` NULL or valid for `n` reads;
-/// `mu` NULL or valid for `n` writes, not overlapping `f_star`.
+/// `mu` NULL or valid for `n` writes.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_mu_batch(
     curve: *const kef_curve,
@@ -938,7 +1005,8 @@ pub unsafe extern "C" fn kef_curve_mu_batch(
 }
 
 /// kef_curve_mu_batch that does not stop: NaN at each load outside the
-/// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK.
+/// curve's range (or NaN), the count in `*n_nan` (required), KEF_OK. No
+/// output may overlap another argument.
 ///
 /// # Safety
 /// As kef_curve_mu_batch; `n_nan` NULL or writable.
@@ -954,11 +1022,11 @@ pub unsafe extern "C" fn kef_curve_mu_batch_nan(
 }
 
 /// μ and dμ/dF* at `n` loads into `mu[i]` and `dmu_df_star[i]`; a bad
-/// load and NULL pointers as in kef_table_mu_batch.
+/// load and NULL pointers as in kef_table_mu_batch. No output may overlap
+/// another argument (KEF_ERR_ARGUMENT, nothing written).
 ///
 /// # Safety
-/// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes, not
-/// overlapping another argument.
+/// As kef_curve_mu_batch; `dmu_df_star` NULL or valid for `n` writes.
 #[no_mangle]
 pub unsafe extern "C" fn kef_curve_mu_with_slope_batch(
     curve: *const kef_curve,
@@ -971,7 +1039,8 @@ pub unsafe extern "C" fn kef_curve_mu_with_slope_batch(
 }
 
 /// kef_curve_mu_with_slope_batch that does not stop: NaN in both outputs
-/// at each bad load, the count in `*n_nan`, KEF_OK.
+/// at each bad load, the count in `*n_nan`, KEF_OK. No output may overlap
+/// another argument.
 ///
 /// # Safety
 /// As kef_curve_mu_with_slope_batch; `n_nan` NULL or writable.
@@ -988,7 +1057,8 @@ pub unsafe extern "C" fn kef_curve_mu_with_slope_batch_nan(
         set(n_nan, curve_slopes(curve, f_star, mu, dmu_df_star, OnError::Nan)?))
 }
 
-/// The F* range [*f_star_min, *f_star_max] of `curve`.
+/// The F* range [*f_star_min, *f_star_max] of `curve`. KEF_ERR_ARGUMENT
+/// for a NULL pointer or if the two outputs alias (they must be distinct).
 ///
 /// # Safety
 /// `curve` is NULL or a live curve; the outputs NULL or writable.
@@ -1217,7 +1287,8 @@ pub unsafe extern "C" fn kef_constants_set_heights(
 /// `*kurtosis`: 0 and 3 for the Gaussian, the values set for Pearson, the
 /// kurtosis its skewness implies for Weibull (2.717 at Sk = 0), the
 /// heights' own for an empirical density. KEF_ERR_ARGUMENT for a NULL
-/// output (no output written then).
+/// output or outputs that alias each other (the three must be distinct;
+/// no output written then).
 ///
 /// # Safety
 /// `constants` is NULL or a live kef_constants; the outputs NULL or

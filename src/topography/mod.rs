@@ -11,7 +11,9 @@ mod surface;
 mod write;
 
 pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
-pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
+pub use stats::{
+    combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
+};
 pub use surface::Surface;
 pub use write::write_x3p;
 

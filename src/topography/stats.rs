@@ -14,7 +14,7 @@
 //! reference (`tools/surface_reference.py`) to about 1e-13 relative.
 
 use super::Topography;
-use crate::ErrorKind;
+use crate::{ErrorKind, Shortest};
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use std::f64::consts::PI;
 use std::fmt;
@@ -34,6 +34,19 @@ const ISOTROPY: (f64, f64) = (0.8, 1.25);
 /// Sampling intervals of two surfaces differing by more than this
 /// (relative) are reported by [`combine`].
 const INTERVAL_TOLERANCE: f64 = 0.01;
+/// The largest |height| (metres) whose fourth power the moments can hold:
+/// Σr⁴ over up to 2²⁸ points of detrended heights up to 2·1e75 stays
+/// below f64::MAX (1.8e308), and so do m0·m4 and the kurtosis.
+pub const HEIGHT_MAX: f64 = 1e75;
+/// The smallest σ (metres) of the detrended heights whose fourth powers
+/// stay normal f64 numbers (σ⁴ = 1e-300 > f64::MIN_POSITIVE = 2.2e-308):
+/// below it m0, μ4 and the kurtosis underflow (squares of heights below
+/// ~1e-154 m are 0 outright).
+pub const SIGMA_MIN: f64 = 1e-75;
+/// The rms of the heights about their mean, relative to their mean
+/// |height|, at or below which any roughness is lost to rounding against
+/// the offset (f64 keeps 16 digits; a sum of squares a few fewer).
+pub const PRECISION_MIN: f64 = 1e-12;
 
 /// How the heights are detrended before their statistics are taken.
 ///
@@ -294,6 +307,71 @@ pub enum StatsError {
     /// of surfaces that are not two single ones taken alike.
     #[error("cannot combine these surfaces: both must be profiles or both maps, single surfaces, with the same detrending and derivative")]
     Mismatch,
+    /// Heights so large that their squares or fourth powers overflow f64
+    /// (|height| must be below [`HEIGHT_MAX`]).
+    #[error(
+        "the largest |height| = {} m is out of range: must be below {} m, \
+         else the heights' squares and fourth powers (m0, m4, kurtosis) overflow f64",
+        Shortest::rounded(*max_abs),
+        Shortest(*bound)
+    )]
+    Overflow {
+        /// The largest |height| found (metres).
+        max_abs: f64,
+        /// The bound, [`HEIGHT_MAX`] (metres).
+        bound: f64,
+    },
+    /// Heights so small that their squares and fourth powers underflow
+    /// f64 (σ must be at least [`SIGMA_MIN`]).
+    #[error(
+        "sigma = {} m is out of range (largest |height| = {} m): must be >= {} m, \
+         else the heights' squares and fourth powers (m0, m4, kurtosis) underflow f64",
+        Shortest::rounded(*sigma),
+        Shortest::rounded(*max_abs),
+        Shortest(*bound)
+    )]
+    Underflow {
+        /// σ of the detrended heights as computed (metres; 0 when the
+        /// squares underflowed outright).
+        sigma: f64,
+        /// The largest |height| found (metres).
+        max_abs: f64,
+        /// The bound, [`SIGMA_MIN`] (metres).
+        bound: f64,
+    },
+    /// The heights' variation is at the rounding level of their offset:
+    /// any roughness was lost to rounding against the mean height.
+    #[error(
+        "sigma = {} m is out of range: the heights vary by rms {} m about a mean |height| of {} m, \
+         a relative {} that must be > {}: any roughness was lost to rounding against the offset \
+         (subtract it before the heights become f64)",
+        Shortest::rounded(*sigma),
+        Shortest::rounded(*rms),
+        Shortest::rounded(*mean_abs),
+        Shortest::rounded(*relative),
+        Shortest(*bound)
+    )]
+    Precision {
+        /// σ of the detrended heights (metres).
+        sigma: f64,
+        /// The rms of the heights about their mean (metres).
+        rms: f64,
+        /// Their mean |height| (metres).
+        mean_abs: f64,
+        /// `rms / mean_abs`.
+        relative: f64,
+        /// The bound, [`PRECISION_MIN`].
+        bound: f64,
+    },
+    /// A result that is not finite (the skewness, m4: any finite value is
+    /// valid, negative ones included).
+    #[error("{name} = {value} is out of range: must be finite")]
+    NotFinite {
+        /// The quantity (`"skewness"`, `"m4"`, `"m40"`…).
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
     /// A result that is not finite and > 0 (heights or intervals so large
     /// or so small that the powers overflow or underflow, or a slope of 0).
     #[error("{name} = {value} is out of range: must be > 0 and finite")]
@@ -309,7 +387,7 @@ impl StatsError {
     /// What kind of failure this is (see [`ErrorKind`]).
     pub fn kind(&self) -> ErrorKind {
         match self {
-            StatsError::OutOfRange { value, .. } => ErrorKind::of_value(*value),
+            StatsError::OutOfRange { value, .. } | StatsError::NotFinite { value, .. } => ErrorKind::of_value(*value),
             StatsError::Bandwidth { alpha, .. } => ErrorKind::of_value(*alpha),
             StatsError::Mismatch | StatsError::MissingPoints { .. } => ErrorKind::Argument,
             _ => ErrorKind::Domain,
@@ -386,7 +464,11 @@ impl Topography {
     ///
     /// Refused: fewer than 16 points along x (or y, for a map), fewer than
     /// 100 valid points or 16 valid differences along a direction, constant
-    /// heights, and α ≤ 0.8968; warned: α < 1.5 and anisotropy.
+    /// heights, and α ≤ 0.8968; warned: α < 1.5 and anisotropy. Heights
+    /// f64 cannot take the moments of are refused with the cause: beyond
+    /// [`HEIGHT_MAX`] in magnitude ([`StatsError::Overflow`]), σ below
+    /// [`SIGMA_MIN`] ([`StatsError::Underflow`]), a variation at the
+    /// rounding level of the offset ([`StatsError::Precision`]).
     ///
     /// ```
     /// use ke_friction::topography::{StatsOptions, Topography};
@@ -404,6 +486,11 @@ impl Topography {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn stats(&self, options: &StatsOptions) -> Result<SurfaceStats, StatsError> {
+        self.stats_of(options).map_err(|e| self.diagnose(e))
+    }
+
+    /// [`Topography::stats`], its failures not yet diagnosed.
+    fn stats_of(&self, options: &StatsOptions) -> Result<SurfaceStats, StatsError> {
         let (nx, ny) = (self.nx, self.ny);
         if nx < MIN_ALONG {
             return Err(StatsError::TooFewPoints {
@@ -473,6 +560,15 @@ impl Topography {
         if sigma <= 1e-13 * fit.scale || m0 <= 0.0 {
             return Err(StatsError::Constant { sigma });
         }
+        // σ⁴ below f64's normal range: μ4 and the kurtosis lose their digits
+        // (the largest |height| is filled in by `diagnose`).
+        if sigma < SIGMA_MIN {
+            return Err(StatsError::Underflow {
+                sigma,
+                max_abs: f64::NAN,
+                bound: SIGMA_MIN,
+            });
+        }
         let skewness = mu3 / (m0 * sigma);
         let kurtosis = mu4 / (m0 * m0);
         finite("skewness", skewness)?;
@@ -488,6 +584,50 @@ impl Topography {
 }
 
 impl Topography {
+    /// The real cause of a failure that heights at the limits of f64 bring
+    /// about (a scan of the heights, on the failure path only): heights
+    /// beyond [`HEIGHT_MAX`] ([`StatsError::Overflow`]), a variation
+    /// below [`SIGMA_MIN`] ([`StatsError::Underflow`]) or at the rounding
+    /// level of the offset ([`StatsError::Precision`]); other failures,
+    /// and those the heights do not explain, are returned as they are.
+    fn diagnose(&self, e: StatsError) -> StatsError {
+        let sigma = match e {
+            StatsError::Constant { sigma } | StatsError::Underflow { sigma, .. } => sigma,
+            StatsError::OutOfRange { .. } | StatsError::NotFinite { .. } => f64::NAN,
+            StatsError::Bandwidth { alpha, .. } if !alpha.is_finite() => f64::NAN,
+            _ => return e,
+        };
+        let Some(scan) = Scan::of(&self.heights) else {
+            return e;
+        };
+        let constant = matches!(e, StatsError::Constant { .. });
+        let lost = scan.relative <= PRECISION_MIN && (scan.relative > 0.0 || scan.max_abs > HEIGHT_MAX);
+        if constant && lost {
+            return StatsError::Precision {
+                sigma,
+                rms: scan.rms,
+                mean_abs: scan.mean_abs,
+                relative: scan.relative,
+                bound: PRECISION_MIN,
+            };
+        }
+        if scan.max_abs > HEIGHT_MAX {
+            return StatsError::Overflow {
+                max_abs: scan.max_abs,
+                bound: HEIGHT_MAX,
+            };
+        }
+        let tiny = scan.relative > 0.0 && scan.rms < SIGMA_MIN;
+        if tiny || matches!(e, StatsError::Underflow { .. }) {
+            return StatsError::Underflow {
+                sigma: if sigma.is_nan() { scan.rms } else { sigma },
+                max_abs: scan.max_abs,
+                bound: SIGMA_MIN,
+            };
+        }
+        e
+    }
+
     /// The heights less their least-squares plane, line or mean (as
     /// `detrend` says, fitted over the valid points; a profile's plane is
     /// its line), row-major, missing points still NaN: the heights whose
@@ -629,7 +769,7 @@ fn finite(name: &'static str, value: f64) -> Result<f64, StatsError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(StatsError::OutOfRange { name, value })
+        Err(StatsError::NotFinite { name, value })
     }
 }
 
@@ -638,6 +778,49 @@ fn positive(name: &'static str, value: f64) -> Result<f64, StatsError> {
         Ok(value)
     } else {
         Err(StatsError::OutOfRange { name, value })
+    }
+}
+
+/// The scale of the valid heights, computed relative to the largest
+/// |height| (so that neither overflows nor underflows).
+struct Scan {
+    /// The largest |height| (metres).
+    max_abs: f64,
+    /// The mean |height| (metres).
+    mean_abs: f64,
+    /// The rms of the heights about their mean (metres; 0 if it underflows).
+    rms: f64,
+    /// `rms / mean_abs`, computed from the scaled heights.
+    relative: f64,
+}
+
+impl Scan {
+    /// The scan of `heights` (NaN = missing), or `None` if none is valid
+    /// or all are 0.
+    fn of(heights: &[f64]) -> Option<Scan> {
+        let valid = || heights.iter().copied().filter(|z| !z.is_nan());
+        let max_abs = valid().fold(0.0f64, |m, z| m.max(z.abs()));
+        if !(max_abs > 0.0 && max_abs.is_finite()) {
+            return None;
+        }
+        let n = valid().count() as f64;
+        let (mut sum, mut sum_abs) = (Sum::default(), Sum::default());
+        for z in valid() {
+            sum.add(z / max_abs);
+            sum_abs.add(z.abs() / max_abs);
+        }
+        let (mean, mean_abs) = (sum.value() / n, sum_abs.value() / n);
+        let mut squares = Sum::default();
+        for z in valid() {
+            squares.add((z / max_abs - mean).powi(2));
+        }
+        let rms = (squares.value() / n).sqrt();
+        Some(Scan {
+            max_abs,
+            mean_abs: mean_abs * max_abs,
+            rms: rms * max_abs,
+            relative: rms / mean_abs,
+        })
     }
 }
 

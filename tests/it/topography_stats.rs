@@ -5,7 +5,8 @@
 //! the masked case, and the refusals.
 use crate::common::assert_rel;
 use ke_friction::topography::{
-    combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Topography, Warning,
+    combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Topography, Warning, HEIGHT_MAX,
+    PRECISION_MIN, SIGMA_MIN,
 };
 use serde_json::Value;
 use std::f64::consts::PI;
@@ -676,4 +677,102 @@ fn extreme_inputs_are_refused_not_panicked_on() {
             }
         }
     }
+}
+
+/// Heights at the limits of f64 are refused with the cause (overflow,
+/// underflow, rounding against the offset), not called constant or given
+/// a skewness "out of range".
+#[test]
+fn heights_at_the_limits_of_f64_name_the_cause() {
+    let o = StatsOptions::default();
+    let base = synthetic(64, 64, 6, 0.0);
+    let stats = |f: &dyn Fn(f64) -> f64| {
+        let z: Vec<f64> = base.iter().map(|&h| f(h - 1e-3)).collect();
+        Topography::map(z, 64, 64, 1e-6, 1e-6).unwrap().stats(&o)
+    };
+    let max_abs = base.iter().map(|h| (h - 1e-3).abs()).fold(0.0, f64::max);
+
+    // Overflow: scaled to 1e150 (the fourth powers overflow, the skewness
+    // was NaN) and to 1e200 (the squares overflow, it was "constant").
+    for top in [1e76, 1e150, 1e200, 1e300] {
+        let e = stats(&|h| h / max_abs * top).unwrap_err();
+        match &e {
+            StatsError::Overflow { max_abs, bound } => {
+                assert_rel("max_abs", *max_abs, top, 1e-12);
+                assert_eq!(*bound, HEIGHT_MAX);
+            }
+            other => panic!("top {top}: {other}"),
+        }
+        let text = e.to_string();
+        assert!(
+            text.contains("must be below 1e75 m") && text.contains("overflow"),
+            "{text}"
+        );
+        assert!(!text.contains("constant") && !text.contains("NaN"), "{text}");
+    }
+    // ±1e150 exactly, alternating (a checkerboard).
+    let z: Vec<f64> = (0..64 * 64)
+        .map(|k| if (k % 64 + k / 64) % 2 == 0 { 1e150 } else { -1e150 })
+        .collect();
+    let e = Topography::map(z, 64, 64, 1e-6, 1e-6).unwrap().stats(&o).unwrap_err();
+    assert!(matches!(e, StatsError::Overflow { max_abs: 1e150, .. }), "{e}");
+
+    // Underflow: scaled by 1e-300 (the squares are 0) and to 1e-100 (the
+    // fourth powers are).
+    for scale in [1e-300, 1e-93] {
+        let e = stats(&|h| h * scale).unwrap_err();
+        match &e {
+            StatsError::Underflow {
+                sigma,
+                max_abs: m,
+                bound,
+            } => {
+                assert!(*sigma < SIGMA_MIN, "{e}");
+                assert_rel("max_abs", *m, max_abs * scale, 1e-12);
+                assert_eq!(*bound, SIGMA_MIN);
+            }
+            other => panic!("scale {scale}: {other}"),
+        }
+        let text = e.to_string();
+        assert!(
+            text.contains("must be >= 1e-75 m") && text.contains("underflow"),
+            "{text}"
+        );
+    }
+
+    // Rounding against the offset: 1e300 + heights of 1e-7 m are all
+    // 1e300; 1 m + heights of 1e-13 m keep a few digits of them only.
+    for (offset, scale) in [(1e300, 1.0), (1.0, 1e-6)] {
+        let e = stats(&|h| offset + h * scale).unwrap_err();
+        match &e {
+            StatsError::Precision {
+                mean_abs,
+                relative,
+                bound,
+                ..
+            } => {
+                assert_rel("mean_abs", *mean_abs, offset, 1e-9);
+                assert!(*relative <= PRECISION_MIN, "{e}");
+                assert_eq!(*bound, PRECISION_MIN);
+            }
+            other => panic!("offset {offset}: {other}"),
+        }
+        let text = e.to_string();
+        assert!(text.contains("lost to rounding against the offset"), "{text}");
+    }
+
+    // Inside the bounds: heights up to 1e70 m, or with sigma down to
+    // 1e-70 m, still have their statistics.
+    for top in [1e70, 1e-68] {
+        let s = stats(&|h| h / max_abs * top).unwrap();
+        assert!(s.kurtosis.is_finite() && s.kurtosis > 1.0, "{s:?}");
+    }
+
+    // A non-finite skewness: any finite value is valid, negative ones too.
+    let s = stats(&|h| h).unwrap();
+    let mut nan = s.clone();
+    nan.skewness = f64::NAN;
+    let e = combine(&nan, &s).unwrap_err();
+    assert!(matches!(e, StatsError::NotFinite { name: "skewness", .. }), "{e}");
+    assert_eq!(e.to_string(), "skewness = NaN is out of range: must be finite");
 }

@@ -447,3 +447,44 @@ fn plot_surface_draws_the_fits_and_the_histogram() {
     );
     assert_bad_input(&kefric(&as_strs(&args)), "--f-star");
 }
+
+/// A file with its own dx and dy (here different): --dx alone does not
+/// stand in for its dy (no conflict reported for a --dy never given, the
+/// file's dy used); --dx or --dy against the file's are reported naming
+/// the flag.
+#[test]
+fn dx_alone_keeps_the_files_own_dy() {
+    let dir = TempDir::new("surface-own-intervals");
+    let n = 64;
+    let x3p = dir.join("map.x3p");
+    write_x3p(&Topography::map(heights(n, 0.3), n, n, 2e-6, 5e-6).unwrap(), &x3p, 'D').unwrap();
+    let x3p = x3p.display().to_string();
+    let intervals = |extra: &[&str]| {
+        let s = json(&as_strs(&run(&["surface", &x3p, "--json"], extra)));
+        (s["surface"]["dx"].as_f64(), s["surface"]["dy"].as_f64())
+    };
+    let own = intervals(&[]);
+    assert_eq!(own, (Some(2e-6), Some(5e-6)));
+    // --dx that agrees with the file's, with or without --dy.
+    assert_eq!(intervals(&["--dx", "2e-6"]), own);
+    assert_eq!(intervals(&["--dx", "2", "--xy-unit", "um"]), own);
+    assert_eq!(intervals(&["--dx", "2e-6", "--dy", "5e-6"]), own);
+    // A --dx that contradicts the file's names --dx, not dy.
+    let o = kefric(&["surface", &x3p, "--dx", "5e-7"]);
+    assert_bad_input(&o, "--dx");
+    let e = stderr(&o);
+    assert!(e.contains("the file gives dx = 2e-6 m, --dx 5e-7 m"), "{e}");
+    assert!(!e.contains("dy ="), "{e}");
+    // A --dy given that contradicts the file's names --dy.
+    let o = kefric(&["surface", &x3p, "--dx", "2e-6", "--dy", "2e-6"]);
+    assert_bad_input(&o, "--dy");
+    let e = stderr(&o);
+    assert!(e.contains("the file gives dy = 5e-6 m, --dy 2e-6 m"), "{e}");
+    // A file with no intervals: --dy defaults to --dx.
+    let npy = write_npy(&dir, "map.npy", &heights(n, 0.3), n);
+    let s = json(&["surface", &npy, "--dx", "2e-6", "--json"]);
+    assert_eq!(
+        (s["surface"]["dx"].as_f64(), s["surface"]["dy"].as_f64()),
+        (Some(2e-6), Some(2e-6))
+    );
+}

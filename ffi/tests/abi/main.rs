@@ -1,6 +1,7 @@
 //! The C ABI from Rust: every exported function, its failures and its
 //! messages, threads, and the committed header.
 
+mod aliasing;
 mod batches;
 mod constants;
 mod fortran;

@@ -127,7 +127,7 @@ fn h_star_from_the_table_point_and_batch() {
 
 /// Aluminium on steel, σ = 100 nm, R = 10 µm, β = 0.04, Δγ = 0.3 J/m²,
 /// ε = 0.4 nm (the core's example).
-const ALUMINIUM_ON_STEEL: [f64; 10] = [
+pub(crate) const ALUMINIUM_ON_STEEL: [f64; 10] = [
     70e9,
     0.33,
     210e9,
