@@ -279,9 +279,11 @@ impl DistributionError {
             DistributionError::Conflict { name, .. } => name,
         }
     }
+}
 
-    /// [`ParamError::kind`] for a value, else [`ErrorKind::Argument`](crate::ErrorKind::Argument).
-    pub fn kind(&self) -> crate::ErrorKind {
+/// The value's kind, else [`ErrorKind::Argument`](crate::ErrorKind::Argument).
+impl crate::Classify for DistributionError {
+    fn kind(&self) -> crate::ErrorKind {
         match self {
             DistributionError::Value(e) => e.kind(),
             DistributionError::Conflict { .. } => crate::ErrorKind::Argument,

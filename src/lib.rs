@@ -63,7 +63,7 @@ pub use distribution::{
     Density, DistributionError, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
-pub use error::ErrorKind;
+pub use error::{Classify, ErrorKind};
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use num::Shortest;

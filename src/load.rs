@@ -135,9 +135,9 @@ pub enum LoadError {
     Eval(#[from] EvalError),
 }
 
-impl LoadError {
-    /// The error's kind (the load's, or the model's).
-    pub fn kind(&self) -> crate::ErrorKind {
+/// The error's kind (the load's, or the model's).
+impl crate::Classify for LoadError {
+    fn kind(&self) -> crate::ErrorKind {
         match self {
             LoadError::Load(e) => e.kind(),
             LoadError::Eval(e) => e.kind(),

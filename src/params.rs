@@ -476,6 +476,13 @@ pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
     sigma_s_ratio_squared(beta).sqrt()
 }
 
+impl crate::Classify for ParamError {
+    /// [`crate::ErrorKind::Argument`] for NaN or ∞, else [`crate::ErrorKind::Domain`].
+    fn kind(&self) -> crate::ErrorKind {
+        crate::ErrorKind::of_value(self.value)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

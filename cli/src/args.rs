@@ -3,7 +3,7 @@
 
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Constants, ErrorKind, Fit, HeightDistribution, Kind, Materials, Model, Params};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, HeightDistribution, Kind, Materials, Model, Params};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -35,8 +35,10 @@ impl Failure {
     /// kinds to exit statuses. Argument, domain, no μ, a damaged table, an
     /// input that cannot be read: 2; a missed tolerance: 1; a bug: 70
     /// (EX_SOFTWARE), saying so.
-    pub fn of(context: impl Display, kind: ErrorKind, e: impl Display) -> Failure {
-        match kind {
+    /// The failure of a core error, by its kind (exit 2 for the input,
+    /// 1 for a missed tolerance, 70 for a bug).
+    pub fn of(context: impl Display, e: impl Classify) -> Failure {
+        match e.kind() {
             ErrorKind::Tolerance => Failure::other(format!("{context}: {e}")),
             ErrorKind::Internal => Failure {
                 message: format!("{context}: {e} (this is a bug: please report it with the command line)"),
@@ -235,7 +237,7 @@ pub fn load_table(path: Option<&std::path::Path>) -> Result<std::borrow::Cow<'st
         None => Ok(Cow::Borrowed(ke_friction::Table::embedded())),
         Some(path) => ke_friction::Table::load(path)
             .map(Cow::Owned)
-            .map_err(|e| Failure::of("--table", e.kind(), e)),
+            .map_err(|e| Failure::of("--table", e)),
     }
 }
 

@@ -161,7 +161,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let built = build(&options, &bar).map_err(|e| match e {
         // The options put a ghost node where the model has no μ.
         BuildError::Ghost { .. } => Failure::input(format!("--f-star/--nodes: {e}")),
-        _ => Failure::of("build", e.kind(), e),
+        _ => Failure::of("build", e),
     })?;
     bar.done();
     built

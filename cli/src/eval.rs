@@ -94,7 +94,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let contacts = contacts
         .into_iter()
         .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| Failure::of(flag, e.kind(), e))?;
+        .map_err(|e| Failure::of(flag, e))?;
     let p = model.params();
     let mut paper = PaperRange::default();
     if args.json {

@@ -62,7 +62,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         (BuildError::Option(_), Some(t)) => {
             Failure::input(format!("--table {}: recorded build options: {e}", t.display()))
         }
-        _ => Failure::of("export", e.kind(), e),
+        _ => Failure::of("export", e),
     })?;
     bar.done();
     let texts = texts(table);

@@ -4,15 +4,11 @@
 
 use crate::args::Failure;
 use ke_friction::topography::{read_file, ReadError, ReadOptions};
-use ke_friction::ErrorKind;
 use std::path::Path;
 
 /// The heights in `path` (NaN = missing, kept for the density to skip).
 pub fn read(path: &Path) -> Result<Vec<f64>, Failure> {
-    let fail = |e: ReadError| {
-        let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };
-        Failure::of("--heights", kind, e)
-    };
+    let fail = |e: ReadError| Failure::of("--heights", e);
     let read = |options: &ReadOptions| read_file(path, options);
     let surface = match read(&ReadOptions::default()) {
         // The intervals do not matter for a density of heights.

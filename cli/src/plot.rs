@@ -196,7 +196,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let standardised = match surface.parts() {
                 [(t, s)] => Some(
                     t.detrended(surface.options().detrend)
-                        .map_err(|e| Failure::of("surface", e.kind(), e))?
+                        .map_err(|e| Failure::of("surface", e))?
                         .into_iter()
                         .map(|z| z / s.sigma)
                         .collect::<Vec<f64>>(),
@@ -268,6 +268,6 @@ fn failure(e: FigureError) -> Failure {
         FigureError::Lookup(LookupError::OutOfDomain { name, .. }) => Failure::input(format!("{}: {e}", flag_of(name))),
         FigureError::TableMismatch { .. } => Failure::input(format!("--table: {e}")),
         FigureError::Empty(_) => Failure::input(e),
-        _ => Failure::of("plot", e.kind(), e),
+        _ => Failure::of("plot", e),
     }
 }

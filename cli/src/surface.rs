@@ -7,7 +7,7 @@ use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg,
 use ke_friction::topography::{
     read_file, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats, MAX_POINTS,
 };
-use ke_friction::{ErrorKind, Friction, Load, Materials, Model, Params, Shortest};
+use ke_friction::{Friction, Load, Materials, Model, Params, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Statistics of a measured surface and, with materials and a load, μ.
@@ -195,10 +195,7 @@ impl SurfaceArgs {
                 Shortest(file),
                 Shortest(option)
             )),
-            e => {
-                let kind = if e.is_io() { ErrorKind::Io } else { ErrorKind::Argument };
-                Failure::of(flag, kind, e)
-            }
+            e => Failure::of(flag, e),
         })
     }
 
@@ -206,7 +203,7 @@ impl SurfaceArgs {
     pub fn surface(&self, flag: &str, files: &[PathBuf]) -> Result<Surface, Failure> {
         let options = self.options();
         let stats_failure =
-            |e: ke_friction::topography::StatsError, what: String| Failure::of(format!("{flag} {what}"), e.kind(), e);
+            |e: ke_friction::topography::StatsError, what: String| Failure::of(format!("{flag} {what}"), e);
         let name = |p: &PathBuf| p.display().to_string();
         match files {
             [one] => Surface::new(self.read(flag, one)?, options).map_err(|e| stats_failure(e, name(one))),
@@ -335,7 +332,6 @@ pub fn run(args: Args) -> Result<(), Failure> {
                     } else {
                         "--force"
                     },
-                    e.kind(),
                     e,
                 )
             })?)

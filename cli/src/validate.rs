@@ -15,8 +15,8 @@ pub struct Args {}
 
 /// Runs `kefric validate`.
 pub fn run(_args: Args) -> Result<(), Failure> {
-    let rows = statements().map_err(|e| Failure::of("validate", e.kind(), e))?;
-    let nongaussian = nongaussian_statements().map_err(|e| Failure::of("validate", e.kind(), e))?;
+    let rows = statements().map_err(|e| Failure::of("validate", e))?;
+    let nongaussian = nongaussian_statements().map_err(|e| Failure::of("validate", e))?;
     out!("{}{}", markdown(&rows), literature(&nongaussian))?;
     Ok(())
 }

@@ -29,8 +29,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let table = load_table(args.table.as_deref())?;
     let info = table.info();
     let bar = Bar::new(args.quiet);
-    let checked = verify(&table, info.tolerance, args.samples, args.seed, true, &bar)
-        .map_err(|e| Failure::of("verify", e.kind(), e))?;
+    let checked =
+        verify(&table, info.tolerance, args.samples, args.seed, true, &bar).map_err(|e| Failure::of("verify", e))?;
     bar.done();
     let (recorded, acc) = (&info.accuracy, &checked.accuracy);
     outln!(

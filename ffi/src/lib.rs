@@ -31,8 +31,8 @@
 #![allow(non_camel_case_types)]
 
 use ke_friction::{
-    Constants, Curve, CurveError, ErrorKind, EvalError, Fit, HeightDistribution, Kind, LookupError, Model, OnError,
-    ParamError, Params, Physical, Table, TableError,
+    Classify, Constants, Curve, ErrorKind, EvalError, Fit, HeightDistribution, Kind, LookupError, Model, OnError,
+    Params, Physical, Table,
 };
 use std::borrow::Cow;
 use std::cell::Cell;
@@ -125,24 +125,7 @@ impl Failure {
     }
 }
 
-/// An error of the core: its kind and its message.
-trait CoreError: std::fmt::Display {
-    /// Its classification.
-    fn kind(&self) -> ErrorKind;
-}
-
-macro_rules! core_errors {
-    ($($t:ty),*) => {
-        $(impl CoreError for $t {
-            fn kind(&self) -> ErrorKind {
-                <$t>::kind(self)
-            }
-        })*
-    };
-}
-core_errors!(LookupError, EvalError, ParamError, CurveError, TableError);
-
-impl<E: CoreError> From<E> for Failure {
+impl<E: Classify> From<E> for Failure {
     fn from(e: E) -> Failure {
         Failure {
             code: code(e.kind()),

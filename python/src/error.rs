@@ -18,7 +18,7 @@
 //! of `_core`) are `ValueError`s too ([`value_error`]).
 
 use ke_friction::topography::ReadError;
-use ke_friction::{CurveError, ErrorKind, EvalError, LookupError, ParamError};
+use ke_friction::{Classify, ErrorKind, LookupError};
 use pyo3::exceptions::{PyMemoryError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
@@ -28,54 +28,6 @@ pyo3::create_exception!(
     PyValueError,
     "A table file that is damaged, not a table, or inconsistent (a ValueError)."
 );
-
-/// An error of the core: its kind and message.
-pub trait CoreError: std::fmt::Display {
-    /// Its [`ErrorKind`].
-    fn kind(&self) -> ErrorKind;
-}
-
-macro_rules! core_errors {
-    ($($t:ty),*) => {$(
-        impl CoreError for $t {
-            fn kind(&self) -> ErrorKind {
-                <$t>::kind(self)
-            }
-        }
-    )*};
-}
-
-core_errors!(
-    LookupError,
-    ParamError,
-    EvalError,
-    CurveError,
-    ke_friction::TableError,
-    ke_friction::DistributionError,
-    ke_friction::LoadError,
-    ke_friction::topography::StatsError
-);
-
-/// A surface file that cannot be read is an `Io` failure (`OSError`); one
-/// read whose content is bad or unsupported is the caller's (`ValueError`),
-/// as `kefric surface` has it.
-impl CoreError for ReadError {
-    fn kind(&self) -> ErrorKind {
-        if self.is_io() {
-            ErrorKind::Io
-        } else {
-            ErrorKind::Argument
-        }
-    }
-}
-
-/// Heights that do not make a topography (a shape, an interval, an
-/// infinite height): the caller's argument.
-impl CoreError for ke_friction::topography::TopographyError {
-    fn kind(&self) -> ErrorKind {
-        ErrorKind::Argument
-    }
-}
 
 /// The exception of a failure of kind `kind` saying `message`.
 pub fn exception(kind: ErrorKind, message: String) -> PyErr {
@@ -95,7 +47,7 @@ pub fn exception(kind: ErrorKind, message: String) -> PyErr {
 }
 
 /// The exception of a core error.
-pub fn raise(e: impl CoreError) -> PyErr {
+pub fn raise(e: impl Classify) -> PyErr {
     exception(e.kind(), e.to_string())
 }
 
@@ -152,7 +104,7 @@ impl Failure {
     }
 
     /// The element `index`'s error `e`.
-    pub fn at(index: usize, e: &impl CoreError) -> Failure {
+    pub fn at(index: usize, e: &impl Classify) -> Failure {
         Failure {
             index,
             kind: e.kind(),

@@ -5,7 +5,7 @@ use crate::convert::{record, same_len, slice, slice_mut};
 use crate::distribution::DistributionCore;
 use crate::error::{raise, value_error, Failure};
 use crate::parallel::{cut, MODEL_WORK};
-use ke_friction::{Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 

@@ -9,7 +9,7 @@ use crate::model::ModelCore;
 use ke_friction::topography::{
     read_file, Derivative, Detrend, ReadOptions, StatsOptions, Surface, Topography, MAX_POINTS,
 };
-use ke_friction::{Load, Materials};
+use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use std::path::PathBuf;

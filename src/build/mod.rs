@@ -482,3 +482,20 @@ impl BuildOptions {
 pub fn threads() -> usize {
     rayon::current_num_threads()
 }
+
+impl crate::Classify for BuildError {
+    /// By cause: options are `Argument`/`Domain`, the model's error keeps
+    /// its kind (a ghost node without μ is `NoMu`), a missed tolerance is
+    /// `Tolerance`, coefficients a file cannot hold are `Domain` (the
+    /// options' range).
+    fn kind(&self) -> crate::ErrorKind {
+        use BuildError::*;
+        match self {
+            Option(e) => e.kind(),
+            Range { .. } => crate::ErrorKind::Domain,
+            Eval { error, .. } | Ghost { error, .. } => error.kind(),
+            Tolerance { .. } => crate::ErrorKind::Tolerance,
+            Unstorable(_) => crate::ErrorKind::Domain,
+        }
+    }
+}

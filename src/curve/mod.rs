@@ -683,6 +683,23 @@ fn cubic_slope(c: &[f64; 4], t: f64) -> f64 {
     (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1]
 }
 
+impl crate::Classify for CurveError {
+    /// By cause: a bad range is `Argument`, the model's or lookup's error
+    /// keeps its kind, no positive μ is `NoMu`, a missed accuracy is
+    /// `Tolerance`.
+    fn kind(&self) -> crate::ErrorKind {
+        use CurveError::*;
+        match self {
+            Range { .. } => crate::ErrorKind::Argument,
+            TooWide { .. } => crate::ErrorKind::Domain,
+            Model { error, .. } => error.kind(),
+            NoMu { .. } => crate::ErrorKind::NoMu,
+            Lookup(e) => e.kind(),
+            Accuracy { .. } => crate::ErrorKind::Tolerance,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -195,6 +195,21 @@ pub fn save_all(dir: &Path, scale: u32) -> Result<Vec<PathBuf>, FigureError> {
     Ok(out)
 }
 
+impl crate::Classify for FigureError {
+    /// By cause (`Io` for a figure that cannot be written).
+    fn kind(&self) -> crate::ErrorKind {
+        use FigureError::*;
+        match self {
+            Format { .. } | Scale { .. } | Empty(_) | TableMismatch { .. } => crate::ErrorKind::Argument,
+            Params(e) => e.kind(),
+            Eval(e) => e.kind(),
+            Lookup(e) => e.kind(),
+            Direct(e) => e.kind(),
+            Draw { .. } => crate::ErrorKind::Io,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

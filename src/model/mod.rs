@@ -265,3 +265,17 @@ impl Model {
         })
     }
 }
+
+impl crate::Classify for EvalError {
+    /// `Argument`/`Domain` for a bad h* or F*, `NoMu`, or `Internal` for
+    /// a root search that did not converge.
+    fn kind(&self) -> crate::ErrorKind {
+        use EvalError::*;
+        match self {
+            HStar(v) | FStar(v) => crate::ErrorKind::of_value(*v),
+            FStarTooLarge { .. } => crate::ErrorKind::Domain,
+            NoMu { .. } => crate::ErrorKind::NoMu,
+            NoConvergence { .. } => crate::ErrorKind::Internal,
+        }
+    }
+}

@@ -491,6 +491,19 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
     Ok(rows)
 }
 
+impl crate::Classify for PaperError {
+    /// The parameters' or the model's kind; a statement that cannot be
+    /// computed from fixed inputs is `Internal`.
+    fn kind(&self) -> crate::ErrorKind {
+        use PaperError::*;
+        match self {
+            Params(e) => e.kind(),
+            Eval(e) => e.kind(),
+            _ => crate::ErrorKind::Internal,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -620,3 +620,15 @@ pub fn decode(bytes: &[u8]) -> Result<Payload, TableError> {
     }
     Ok(payload)
 }
+
+impl crate::Classify for TableError {
+    /// [`crate::ErrorKind::Io`] for a file that cannot be read, else
+    /// [`crate::ErrorKind::Table`].
+    fn kind(&self) -> crate::ErrorKind {
+        match self {
+            TableError::Io { .. } => crate::ErrorKind::Io,
+            TableError::File { error, .. } => error.kind(),
+            _ => crate::ErrorKind::Table,
+        }
+    }
+}

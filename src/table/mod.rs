@@ -48,6 +48,19 @@ trait FastKernel: Sized + Clone {
     /// Many lookups; the index of the first query whose μ is NaN.
     fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize>;
 }
+
+impl crate::Classify for LookupError {
+    /// [`crate::ErrorKind::Argument`] for NaN or a length mismatch, else
+    /// [`crate::ErrorKind::Domain`].
+    fn kind(&self) -> crate::ErrorKind {
+        use LookupError::*;
+        match self {
+            OutOfDomain { value, .. } | BatchElement { value, .. } => crate::ErrorKind::of_value(*value),
+            LengthMismatch { .. } | CurveLengthMismatch { .. } => crate::ErrorKind::Argument,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests;
 

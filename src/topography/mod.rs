@@ -62,6 +62,18 @@ pub enum TopographyError {
     },
 }
 
+/// Heights that do not make a topography: the caller's argument (a
+/// non-finite interval or height is [`ErrorKind::Argument`](crate::ErrorKind::Argument),
+/// a finite interval out of range [`ErrorKind::Domain`](crate::ErrorKind::Domain)).
+impl crate::Classify for TopographyError {
+    fn kind(&self) -> crate::ErrorKind {
+        match self {
+            TopographyError::Interval { value, .. } => crate::ErrorKind::of_value(*value),
+            _ => crate::ErrorKind::Argument,
+        }
+    }
+}
+
 impl Topography {
     /// A map of `ny` rows of `nx` heights (metres, row-major, NaN =
     /// missing) with sampling intervals `dx`, `dy` (metres).

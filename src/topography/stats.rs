@@ -383,9 +383,9 @@ pub enum StatsError {
     },
 }
 
-impl StatsError {
-    /// What kind of failure this is (see [`ErrorKind`]).
-    pub fn kind(&self) -> ErrorKind {
+/// What kind of failure this is (see [`ErrorKind`]).
+impl crate::Classify for StatsError {
+    fn kind(&self) -> ErrorKind {
         match self {
             StatsError::OutOfRange { value, .. } | StatsError::NotFinite { value, .. } => ErrorKind::of_value(*value),
             StatsError::Bandwidth { alpha, .. } => ErrorKind::of_value(*alpha),

@@ -6,7 +6,7 @@
 //! count of NaN returned.
 
 use crate::forge::Spec;
-use ke_friction::{Curve, LookupError, OnError, Table};
+use ke_friction::{Classify, Curve, LookupError, OnError, Table};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

@@ -387,6 +387,21 @@ impl ReadError {
     }
 }
 
+/// A file that cannot be read is [`ErrorKind::Io`](crate::ErrorKind::Io);
+/// one read whose content is bad, unsupported or too large is the
+/// caller's ([`ErrorKind::Argument`](crate::ErrorKind::Argument)); so is
+/// one whose heights do not fit in memory (a smaller `max_points` or a
+/// bigger machine is the remedy).
+impl crate::Classify for ReadError {
+    fn kind(&self) -> crate::ErrorKind {
+        match self {
+            ReadError::Io { .. } => crate::ErrorKind::Io,
+            ReadError::Topography { source, .. } => source.kind(),
+            _ => crate::ErrorKind::Argument,
+        }
+    }
+}
+
 /// Reads a height map or profile from `path` (see the module docs for the
 /// formats, units and bounds).
 ///

@@ -73,7 +73,7 @@ pub(super) fn read(
     options: &ReadOptions,
     matrix: bool,
 ) -> Result<Topography, ReadError> {
-    let mut table = parse(cx, source, options)?;
+    let mut table = parse(cx, source, options, matrix)?;
     let z = options.z_unit;
     match table.cols {
         _ if matrix || table.cols > 3 || table.rows() == 1 => {
@@ -146,7 +146,7 @@ pub(super) fn read(
 /// length, at least one. Two passes over the file: the first checks it
 /// and counts, the second fills a vector of exactly the size counted (the
 /// peak memory is the numbers, not the text nor a growing vector's slack).
-fn parse(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions) -> Result<Table, ReadError> {
+fn parse(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions, matrix: bool) -> Result<Table, ReadError> {
     let mut cols = 0;
     let mut first_line = 0;
     let mut rows = 0u64;
@@ -167,16 +167,14 @@ fn parse(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions) -> Result<Tab
     if rows == 0 {
         return Err(cx.size("the file holds no numbers"));
     }
-    // Points: a row of an `x z` or `x y z` file is one point.
-    let points = if (2..=3).contains(&cols) {
-        rows
-    } else {
-        rows * cols as u64
-    };
+    // Points: a row of an `x z` or `x y z` file is one point; every
+    // number of a matrix (or of a single line) is one.
+    let coordinates = !matrix && rows > 1 && (2..=3).contains(&cols);
+    let points = if coordinates { rows } else { rows * cols as u64 };
     let what = || format!("{rows} rows of {cols} numbers");
     cx.check_points(what, points, options)?;
     let mut values = cx.vec(rows * cols as u64)?;
-    let mut lines = cx.vec(if (2..=3).contains(&cols) { rows } else { 0 })?;
+    let mut lines = cx.vec(if coordinates { rows } else { 0 })?;
     source.rewind().map_err(|e| cx.io(e))?;
     scan(
         cx,
