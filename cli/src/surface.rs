@@ -5,7 +5,7 @@
 
 use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg, MaterialsArgs, ModelKindArg};
 use ke_friction::topography::{
-    read_file, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats,
+    read_file, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats, MAX_POINTS,
 };
 use ke_friction::{ErrorKind, Friction, Load, Materials, Model, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -69,6 +69,9 @@ pub struct SurfaceArgs {
     /// Slope and curvature moments: non-periodic finite differences, or periodic spectral moments (periodic data, no missing points).
     #[arg(long, value_enum, default_value_t = DerivativeArg::Fd)]
     pub derivative: DerivativeArg,
+    /// The most points (heights) a surface file may have: one that declares more is refused before anything is read or allocated (reading needs about 8 bytes a point) [default: 268435456 = 2^28, 2 GiB of heights].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    pub max_points: Option<u64>,
 }
 
 /// Length units of the heights and intervals.
@@ -166,6 +169,7 @@ impl SurfaceArgs {
             dy,
             z_unit: self.z_unit.metres(),
             xy_unit: metres,
+            max_points: self.max_points.unwrap_or(MAX_POINTS),
             ..ReadOptions::default()
         };
         read_file(path, &options).map_err(|e| match e {

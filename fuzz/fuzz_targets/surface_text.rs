@@ -3,7 +3,7 @@
 //! fuzzed separators (`,` `;` tab space), line ends (LF, CRLF, lone CR),
 //! numbers in several spellings, `nan` and `inf`, then spliced with fuzzed
 //! tokens (comments, blank lines, a BOM, words, non-UTF-8 bytes). Read by
-//! `read_bytes` as `Format::Text` and as `Format::Matrix`; a surface read
+//! `read_bytes` as `Format::TEXT` and as `Format::MATRIX`; a surface read
 //! keeps the invariant of surface_check.rs.
 #![no_main]
 
@@ -193,7 +193,7 @@ fuzz_target!(|input: Input| {
         bytes.splice(at..at, insert);
     }
 
-    for format in [Format::Text, Format::Matrix] {
+    for format in [Format::TEXT, Format::MATRIX] {
         let options = input.options.options(Some(format));
         surface_check::read(&bytes, "surface.txt", &options);
     }

@@ -8,11 +8,18 @@
 //! | `Table` | `ke_friction.TableError` (a `ValueError`) |
 //! | `Internal` | `RuntimeError` ("this is a bug") |
 //!
+//! A surface file's [`ReadError`] is an `OSError` if the file cannot be
+//! read, else a `ValueError` (one over the points limit,
+//! `ReadError::TooManyPoints`, included: its message names the limit and
+//! `max_points`), but for `ReadError::OutOfMemory`, a `MemoryError`
+//! ([`read_error`]).
+//!
 //! Errors of the binding itself (a wrong length or layout in a direct call
 //! of `_core`) are `ValueError`s too ([`value_error`]).
 
+use ke_friction::topography::ReadError;
 use ke_friction::{CurveError, ErrorKind, EvalError, LookupError, ParamError};
-use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyMemoryError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
 pyo3::create_exception!(
@@ -52,7 +59,7 @@ core_errors!(
 /// A surface file that cannot be read is an `Io` failure (`OSError`); one
 /// read whose content is bad or unsupported is the caller's (`ValueError`),
 /// as `kefric surface` has it.
-impl CoreError for ke_friction::topography::ReadError {
+impl CoreError for ReadError {
     fn kind(&self) -> ErrorKind {
         if self.is_io() {
             ErrorKind::Io
@@ -90,6 +97,18 @@ pub fn exception(kind: ErrorKind, message: String) -> PyErr {
 /// The exception of a core error.
 pub fn raise(e: impl CoreError) -> PyErr {
     exception(e.kind(), e.to_string())
+}
+
+/// The exception of a surface file's read error: a `MemoryError` when
+/// the heights could not be allocated (`ReadError::OutOfMemory`), else as
+/// [`raise`] has it (`OSError` for a file that cannot be read, `ValueError`
+/// for one read whose content is bad, unsupported or over the points
+/// limit).
+pub fn read_error(e: ReadError) -> PyErr {
+    match e {
+        ReadError::OutOfMemory { .. } => PyMemoryError::new_err(e.to_string()),
+        e => raise(e),
+    }
 }
 
 /// A `ValueError` of the binding's own checks.

@@ -4,9 +4,11 @@
 
 use crate::convert::{record, slice};
 use crate::distribution::DistributionCore;
-use crate::error::{exception, raise, value_error};
+use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
-use ke_friction::topography::{read_file, Derivative, Detrend, ReadOptions, StatsOptions, Surface, Topography};
+use ke_friction::topography::{
+    read_file, Derivative, Detrend, ReadOptions, StatsOptions, Surface, Topography, MAX_POINTS,
+};
 use ke_friction::{Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
@@ -100,10 +102,13 @@ impl SurfaceCore {
     /// The surface in the file `path` (X3P, `.npy` or text), by the core's
     /// reader: `dx`, `dy` in metres for files that give none, `z_unit`
     /// metres per unit of `.npy` and text heights, `xy_unit` of the x, y
-    /// columns of text. A file that cannot be read is an `OSError`, a bad
-    /// one a `ValueError`; both name the file.
+    /// columns of text (both finite and > 0), `max_points` the most points
+    /// the surface may have (None: the core's `MAX_POINTS`). A file that
+    /// cannot be read is an `OSError`, a bad one or one over `max_points`
+    /// a `ValueError`, heights that cannot be allocated a `MemoryError`;
+    /// all name the file.
     #[staticmethod]
-    #[pyo3(signature = (path, dx, dy, z_unit, xy_unit, detrend, derivative))]
+    #[pyo3(signature = (path, dx, dy, z_unit, xy_unit, detrend, derivative, max_points=None))]
     #[allow(clippy::too_many_arguments)]
     fn read(
         py: Python<'_>,
@@ -114,6 +119,7 @@ impl SurfaceCore {
         xy_unit: f64,
         detrend: &str,
         derivative: &str,
+        max_points: Option<u64>,
     ) -> PyResult<SurfaceCore> {
         let options = options(detrend, derivative)?;
         let read = ReadOptions {
@@ -121,9 +127,10 @@ impl SurfaceCore {
             dy,
             z_unit,
             xy_unit,
+            max_points: max_points.unwrap_or(MAX_POINTS),
             ..ReadOptions::default()
         };
-        let topography = py.detach(|| read_file(&path, &read)).map_err(raise)?;
+        let topography = py.detach(|| read_file(&path, &read)).map_err(read_error)?;
         py.detach(|| Surface::new(topography, options))
             .map(SurfaceCore)
             .map_err(|e| exception(e.kind(), format!("{}: {e}", path.display())))

@@ -336,8 +336,99 @@ def test_bad_files(tmp_path, files):
         kf.Surface.read(paths["b"], dx=1e-6, z_unit=0.0)
     with pytest.raises(ValueError, match="xy_unit"):
         kf.Surface.read(paths["b"], dx=1e-6, xy_unit=-1.0)
+    with pytest.raises(ValueError, match="z_unit"):
+        kf.Surface.read(paths["b"], dx=1e-6, z_unit=-1e-6)
     with pytest.raises(TypeError):
         kf.Surface.read(3, dx=1e-6)
+
+
+def test_masked_points_are_missing_everywhere_heights_are_taken():
+    """A masked array's mask marks missing points (NaN) in every entry that
+    takes heights; the masked points' values (1 mm spikes here) are never
+    used."""
+    z = rough(64, 96, 21)
+    mask = np.zeros(z.shape, bool)
+    mask[np.random.default_rng(5).random(z.shape) < 0.01] = True
+    mask[10, 20:24] = True
+    spiky = z.copy()
+    spiky[mask] = 1e-3  # 1 mm spikes on a ~0.1 um surface
+    masked = np.ma.masked_array(spiky, mask=mask)
+    nan = z.copy()
+    nan[mask] = np.nan
+    s = kf.Surface.from_heights(masked, DX, DY)
+    ref = kf.Surface.from_heights(nan, DX, DY)
+    assert s.stats["missing"] == mask.sum()
+    assert_same(s.stats, ref.stats, rel=0)
+    # Near the truth of the map without its spikes, nowhere near 1e-4 m.
+    truth = kf.Surface.from_heights(z, DX, DY).stats["sigma"]
+    assert s.stats["sigma"] == pytest.approx(truth, rel=0.05)
+    assert s.stats["sigma"] < 2e-7
+    # The caller's array is left as it was.
+    assert np.array_equal(masked.data, spiky) and np.array_equal(masked.mask, mask)
+    # A profile, and an integer dtype (masked points of no float value).
+    p = rough(1, 600, 22)[0]
+    pmask = np.zeros(p.shape, bool)
+    pmask[::37] = True
+    pnan = p.copy()
+    pnan[pmask] = np.nan
+    assert_same(kf.Surface.from_heights(np.ma.masked_array(np.where(pmask, 1e-3, p), mask=pmask), DX).stats,
+                kf.Surface.from_heights(pnan, DX).stats, rel=0)
+    ints = np.ma.masked_array((z * 1e9).astype(np.int64), mask=mask)
+    ints.data[mask] = 10**6
+    ref_nm = np.where(mask, np.nan, (z * 1e9).astype(np.int64).astype(np.float64))
+    assert_same(kf.Surface.from_heights(ints, 1.0).stats, kf.Surface.from_heights(ref_nm, 1.0).stats, rel=0)
+    # The empirical densities: HeightDistribution.empirical and Model's heights.
+    d, dref = kf.HeightDistribution.empirical(masked), kf.HeightDistribution.empirical(nan)
+    assert d == dref and np.array_equal(d.heights, dref.heights, equal_nan=True)
+    assert d.moments() == dref.moments() and d.support == dref.support
+    m = kf.Model(1.0, 0.001, heights=masked)
+    assert m.height_distribution == dref
+    # A mask of no points changes nothing.
+    none = np.ma.masked_array(z, mask=np.zeros(z.shape, bool))
+    assert_same(kf.Surface.from_heights(none, DX, DY).stats, kf.Surface.from_heights(z, DX, DY).stats, rel=0)
+    assert_same(kf.Surface.from_heights(np.ma.masked_array(z), DX, DY).stats,
+                kf.Surface.from_heights(z, DX, DY).stats, rel=0)
+
+
+def test_a_fully_masked_array_is_a_clear_value_error():
+    full = np.ma.masked_all((32, 40))
+    with pytest.raises(ValueError, match="z: every point of the masked array is masked"):
+        kf.Surface.from_heights(full, DX)
+    with pytest.raises(ValueError, match="heights: every point of the masked array is masked"):
+        kf.HeightDistribution.empirical(full)
+    with pytest.raises(ValueError, match="heights: every point of the masked array is masked"):
+        kf.Model(1.0, 0.001, heights=np.ma.masked_array(np.ones(200), mask=True))
+
+
+@pytest.mark.parametrize("name", ["z_unit", "xy_unit"])
+@pytest.mark.parametrize("value", [0.0, -1e-6, -1.0, math.inf, -math.inf, math.nan])
+def test_read_refuses_units_not_finite_and_positive(files, name, value):
+    paths, _ = files
+    with pytest.raises(ValueError, match=rf"{name} = .* out of range: must be finite and > 0"):
+        kf.Surface.read(paths["b"], dx=DX, dy=DY, **{name: value})
+
+
+def test_read_max_points(tmp_path, files):
+    paths, arrays = files
+    points = arrays["b"].size  # 64 x 96
+    s = kf.Surface.read(paths["b"], dx=DX, dy=DY, max_points=points)
+    assert_same(s.stats, kf.Surface.read(paths["b"], dx=DX, dy=DY).stats, rel=0)
+    assert kf.Surface.read(paths["b"], dx=DX, dy=DY, max_points=np.uint64(2**64 - 1)).stats["nx"] == 96
+    with pytest.raises(ValueError, match=rf"b\.npy: .*{points} points, over the limit of {points - 1}.*max_points"):
+        kf.Surface.read(paths["b"], dx=DX, dy=DY, max_points=points - 1)
+    with pytest.raises(ValueError, match="over the limit of 100"):
+        kf.Surface.read(paths["p"], dx=DX, max_points=100)
+    text = tmp_path / "heights.txt"
+    np.savetxt(text, arrays["b"][:20, :30] * 1e6)
+    assert kf.Surface.read(text, dx=DX, dy=DY, z_unit=1e-6, max_points=600).stats["ny"] == 20
+    with pytest.raises(ValueError, match="heights.txt.*over the limit of 599"):
+        kf.Surface.read(text, dx=DX, dy=DY, z_unit=1e-6, max_points=599)
+    for bad in [0, -5, 2**64]:
+        with pytest.raises(ValueError, match="max_points"):
+            kf.Surface.read(paths["b"], dx=DX, dy=DY, max_points=bad)
+    for bad in [1e6, "1000", True]:
+        with pytest.raises(TypeError, match="max_points"):
+            kf.Surface.read(paths["b"], dx=DX, dy=DY, max_points=bad)
 
 
 def test_model_and_friction_errors_name_the_keyword(files):

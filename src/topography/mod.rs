@@ -8,10 +8,12 @@
 mod read;
 mod stats;
 mod surface;
+mod write;
 
-pub use read::{read_bytes, read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
+pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
 pub use surface::Surface;
+pub use write::write_x3p;
 
 /// A measured height map (or profile) on a regular grid, in SI units.
 ///

@@ -136,22 +136,22 @@ fn x3p_writer_refuses_bad_arguments() {
 
 /// An independent X3P encoder: `main.xml` from a template with fields to
 /// override, and an uncompressed (stored) zip.
-struct X3p {
-    feature: &'static str,
-    z_type: &'static str,
-    cx: &'static str,
-    cy: &'static str,
-    cz_extra: String,
-    size: (u64, u64, u64),
-    md5: Option<String>,
-    valid_link: Option<&'static str>,
-    data: Vec<u8>,
-    valid: Option<Vec<u8>>,
+pub(crate) struct X3p {
+    pub(crate) feature: &'static str,
+    pub(crate) z_type: &'static str,
+    pub(crate) cx: &'static str,
+    pub(crate) cy: &'static str,
+    pub(crate) cz_extra: String,
+    pub(crate) size: (u64, u64, u64),
+    pub(crate) md5: Option<String>,
+    pub(crate) valid_link: Option<&'static str>,
+    pub(crate) data: Vec<u8>,
+    pub(crate) valid: Option<Vec<u8>>,
 }
 
 impl X3p {
     /// A 3 × 2 SUR map of f64, x interval 1 µm, y 2 µm.
-    fn new(values: &[f64]) -> X3p {
+    pub(crate) fn new(values: &[f64]) -> X3p {
         X3p {
             feature: "SUR",
             z_type: "D",
@@ -166,7 +166,7 @@ impl X3p {
         }
     }
 
-    fn xml(&self) -> String {
+    pub(crate) fn xml(&self) -> String {
         let md5 = self
             .md5
             .as_ref()
@@ -191,7 +191,7 @@ impl X3p {
         )
     }
 
-    fn bytes(&self) -> Vec<u8> {
+    pub(crate) fn bytes(&self) -> Vec<u8> {
         let xml = self.xml();
         let mut members: Vec<(&str, &[u8])> = vec![("main.xml", xml.as_bytes()), ("bindata/data.bin", &self.data)];
         if let Some(valid) = &self.valid {
@@ -200,7 +200,7 @@ impl X3p {
         stored_zip(&members)
     }
 
-    fn write(&self, dir: &TempDir, name: &str) -> std::path::PathBuf {
+    pub(crate) fn write(&self, dir: &TempDir, name: &str) -> std::path::PathBuf {
         let path = dir.join(name);
         std::fs::write(&path, self.bytes()).unwrap();
         path
@@ -208,7 +208,7 @@ impl X3p {
 }
 
 /// A zip archive of uncompressed (stored) members.
-fn stored_zip(members: &[(&str, &[u8])]) -> Vec<u8> {
+pub(crate) fn stored_zip(members: &[(&str, &[u8])]) -> Vec<u8> {
     let mut out = Vec::new();
     let mut central = Vec::new();
     for (name, data) in members {
@@ -402,9 +402,9 @@ fn x3p_bad_files() {
     check(&x, "zero.x3p", |e| matches!(e, ReadError::Size { .. }));
     // Sizes declaring more than the bound, refused before allocating.
     x.size = (1_000_000, 1_000_000, 1);
-    check(&x, "huge.x3p", |e| matches!(e, ReadError::TooLarge { .. }));
+    check(&x, "huge.x3p", |e| matches!(e, ReadError::TooManyPoints { .. }));
     x.size = (u64::MAX, 3, 1);
-    check(&x, "overflow.x3p", |e| matches!(e, ReadError::TooLarge { .. }));
+    check(&x, "overflow.x3p", |e| matches!(e, ReadError::TooManyPoints { .. }));
     // A mask of the wrong size.
     let mut x = X3p::new(&v);
     x.valid = Some(vec![0xff, 0xff]);
@@ -580,7 +580,7 @@ fn npy_orders_and_types() {
         &renamed,
         &ReadOptions {
             dx: Some(1e-7),
-            format: Some(Format::Npy),
+            format: Some(Format::NPY),
             ..opts()
         },
     )
@@ -693,7 +693,7 @@ fn text_column_matrix_and_pairs() {
     let t = read_file(
         &path,
         &ReadOptions {
-            format: Some(Format::Matrix),
+            format: Some(Format::MATRIX),
             ..options.clone()
         },
     )
@@ -721,7 +721,7 @@ fn text_column_matrix_and_pairs() {
     match read_err(
         &write_text(&dir, "need.txt", "1 2\n3 4\n5 6\n7 8\n"),
         &ReadOptions {
-            format: Some(Format::Matrix),
+            format: Some(Format::MATRIX),
             dx: Some(1.0),
             ..opts()
         },

@@ -560,16 +560,35 @@ def _distribution_of(family: str, skewness: Optional[float], kurtosis: Optional[
     return HeightDistribution.empirical(heights)
 
 
-def _heights_array(heights: Any) -> np.ndarray:
-    """``heights`` as a new flat, read-only float64 array (a copy: later
-    changes to the caller's array change nothing)."""
+def _heights_of(name: str, heights: Any, copy: bool = True) -> np.ndarray:
+    """``heights`` as a C-contiguous float64 array of its shape, the masked
+    points of a NumPy masked array NaN (missing): how every array of
+    heights the package takes is read. A new array (later changes to the
+    caller's change nothing) unless ``copy`` is False and none is needed.
+    TypeError, naming ``name``, for a scalar, None or non-numeric input;
+    ValueError for an array whose every point is masked."""
     if isinstance(heights, (numbers.Number, str, bytes)) or heights is None:
-        raise TypeError(f"heights must be an array of measured heights, not {type(heights).__name__}")
+        raise TypeError(f"{name} must be an array of measured heights, not {type(heights).__name__}")
+    # The mask before np.asarray, which keeps a masked array's data alone
+    # (the masked points' values too: spikes, fill values).
+    mask = np.ma.getmaskarray(heights) if np.ma.isMaskedArray(heights) else None
     a = np.asarray(heights)
     if a.dtype.kind not in "iuf":
-        raise TypeError(f"heights must be an array of real numbers, not {type(heights).__name__}"
+        raise TypeError(f"{name} must be an array of real numbers, not {type(heights).__name__}"
                         + (f" of {a.dtype}" if isinstance(heights, np.ndarray) else ""))
-    flat = np.array(a, dtype=np.float64, order="C").reshape(-1)
+    if mask is None or not mask.any():
+        return np.array(a, dtype=np.float64, order="C") if copy else np.asarray(a, dtype=np.float64, order="C")
+    if mask.all():
+        raise ValueError(f"{name}: every point of the masked array is masked (no heights)")
+    out = np.array(a, dtype=np.float64, order="C")
+    out[mask] = np.nan
+    return out
+
+
+def _heights_array(heights: Any, name: str = "heights") -> np.ndarray:
+    """``heights`` as a new flat, read-only float64 array (a copy; masked
+    points NaN, see :func:`_heights_of`)."""
+    flat = _heights_of(name, heights).reshape(-1)
     flat.setflags(write=False)
     return flat
 
@@ -656,9 +675,10 @@ class HeightDistribution:
     def empirical(heights: ArrayLike) -> "HeightDistribution":
         """The empirical (kernel) density of measured ``heights``: an array
         of any shape (a height map is flattened), dtype convertible to
-        float64, any unit; NaN entries are skipped as missing points.
-        ValueError for fewer than 100 finite heights, constant ones or an
-        infinite one; TypeError for non-numeric input. The heights are
+        float64, any unit; NaN entries, and the masked entries of a NumPy
+        masked array, are skipped as missing points. ValueError for fewer
+        than 100 finite heights (a fully masked array), constant ones or
+        an infinite one; TypeError for non-numeric input. The heights are
         copied and kept (:attr:`heights`, pickling)."""
         flat = _heights_array(heights)
         return HeightDistribution(_core.DistributionCore.empirical(flat), flat)
@@ -1073,24 +1093,20 @@ class Surface:
     @staticmethod
     def from_heights(z: ArrayLike, dx: float, dy: Optional[float] = None, *, detrend: str = "plane",
                      derivative: str = "fd") -> "Surface":
-        """The surface of measured heights ``z`` (metres; NaN marks a
-        missing point): a 1-D array is a profile sampled every ``dx``
-        metres (no ``dy``), a 2-D array a map whose rows are y (``z[j, i]``
-        at x = i dx, y = j dy; ``dy`` defaults to ``dx``). Any real dtype,
+        """The surface of measured heights ``z`` (metres; NaN, or a masked
+        entry of a NumPy masked array, marks a missing point): a 1-D array
+        is a profile sampled every ``dx`` metres (no ``dy``), a 2-D array a
+        map whose rows are y (``z[j, i]`` at x = i dx, y = j dy; ``dy``
+        defaults to ``dx``). Any real dtype,
         byte order and memory layout (copied as needed; the surface keeps
         its own copy). ``detrend`` and ``derivative`` as in
         :class:`Surface`.
 
         ValueError: ``dx`` or ``dy`` not finite and > 0, an array of
         another dimension, an infinite height, fewer than 16 points along a
-        direction or 100 valid ones, constant heights; TypeError for
-        non-numeric input."""
-        if isinstance(z, (numbers.Number, str, bytes)) or z is None:
-            raise TypeError(f"z must be an array of heights, not {type(z).__name__}")
-        a = np.asarray(z)
-        if a.dtype.kind not in "iuf":
-            raise TypeError(f"z must be an array of real numbers, not {type(z).__name__}"
-                            + (f" of {a.dtype}" if isinstance(z, np.ndarray) else ""))
+        direction or 100 valid ones (a fully masked array), constant
+        heights; TypeError for non-numeric input."""
+        a = _heights_of("z", z, copy=False)  # SurfaceCore.new copies
         if a.ndim not in (1, 2):
             raise ValueError(f"z must be 1-D (a profile) or 2-D (a map, rows = y), not {a.ndim}-D (shape {a.shape})")
         options = Surface._options(detrend, derivative)
@@ -1101,12 +1117,12 @@ class Surface:
             ny, nx, dy = 1, a.shape[0], None
         else:
             (ny, nx), dy = a.shape, dx if dy is None else _interval("dy", dy)
-        flat = np.ascontiguousarray(a, dtype=np.float64).reshape(-1)
-        return Surface(_core.SurfaceCore.new([(flat, nx, ny, dx, dy)], *options))
+        return Surface(_core.SurfaceCore.new([(a.reshape(-1), nx, ny, dx, dy)], *options))
 
     @staticmethod
     def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
-             z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd") -> "Surface":
+             z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd",
+             max_points: Optional[int] = None) -> "Surface":
         """The surface in the file ``path``, by the library's reader (as
         ``kefric surface`` reads it): ISO 25178-72 X3P (``.x3p``), NumPy
         ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
@@ -1119,11 +1135,18 @@ class Surface:
         ``z_unit``: metres per unit of the heights of ``.npy`` and text
         files (1e-6 for micrometres; X3P stores metres). ``xy_unit``:
         metres per unit of the x, y columns of ``x z`` and ``x y z`` text.
+        Both finite and > 0 (ValueError naming the argument otherwise).
         ``detrend``, ``derivative`` as in :class:`Surface`.
+        ``max_points``: the most points (heights) the surface may have,
+        an integer >= 1; None (the default) is the library's limit,
+        ``MAX_POINTS`` = 2**28. A file whose declared size is over it is
+        refused before its heights are allocated.
 
         OSError if the file cannot be read; ValueError, naming the file,
         for one that is not a readable surface (damaged, unsupported, no
-        interval given) or whose statistics cannot be taken."""
+        interval given, more points than ``max_points``, the message
+        giving the limit) or whose statistics cannot be taken;
+        MemoryError if its heights cannot be allocated."""
         if not isinstance(path, (str, os.PathLike)):
             raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
         options = Surface._options(detrend, derivative)
@@ -1131,11 +1154,17 @@ class Surface:
         dy = dx if dy is None else _interval("dy", dy)
         _check_real(z_unit=z_unit, xy_unit=xy_unit)
         z_unit, xy_unit = float(z_unit), float(xy_unit)
-        if not (math.isfinite(z_unit) and z_unit != 0):
-            raise ValueError(f"z_unit = {z_unit!r} is out of range: must be finite and non-zero (metres per unit)")
-        if not (math.isfinite(xy_unit) and xy_unit > 0):
-            raise ValueError(f"xy_unit = {xy_unit!r} is out of range: must be > 0 and finite (metres per unit)")
-        return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options))
+        for name, unit in (("z_unit", z_unit), ("xy_unit", xy_unit)):
+            if not (math.isfinite(unit) and unit > 0):
+                raise ValueError(f"{name} = {unit!r} is out of range: must be finite and > 0 (metres per unit)")
+        if max_points is not None:
+            if isinstance(max_points, bool) or not isinstance(max_points, numbers.Integral):
+                raise TypeError(f"max_points must be an int or None, not {type(max_points).__name__}")
+            max_points = int(max_points)
+            if not 1 <= max_points < 2**64:
+                raise ValueError(f"max_points = {max_points} is out of range: must be an integer in [1, 2**64 - 1] "
+                                 "(points), or None for the library's limit")
+        return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options, max_points))
 
     @staticmethod
     def from_topography(topography: Any, *, unit: Optional[str] = None, detrend: str = "plane",
@@ -1168,9 +1197,7 @@ class Surface:
         if name not in _LENGTH_UNITS:
             raise ValueError(f"unit = {name!r}: must be one of " + ", ".join(repr(u) for u in _LENGTH_UNITS))
         metres = _LENGTH_UNITS[name]
-        h = topography.heights()
-        h = np.ma.filled(np.ma.asarray(h, dtype=np.float64), np.nan) if np.ma.isMaskedArray(h) \
-            else np.asarray(h, dtype=np.float64)
+        h = _heights_of("the topography's heights", topography.heights())
         pixel = [float(p) * metres for p in np.atleast_1d(topography.pixel_size)]
         # SurfaceTopography indexes heights [x, y]; a map here has rows = y.
         z = h * metres if topography.dim == 1 else h.T * metres

@@ -110,10 +110,13 @@ class SurfaceCore:
     @staticmethod
     def new(parts: List[Tuple[_F64, int, int, float, Optional[float]]], detrend: str,
             derivative: str) -> SurfaceCore: ...
-    # The core's reader (OSError if unreadable, ValueError naming the file).
+    # The core's reader (OSError if unreadable, ValueError naming the file,
+    # MemoryError if the heights cannot be allocated). z_unit, xy_unit finite
+    # and > 0; max_points: the most points (ReadOptions::max_points), None =
+    # the library's MAX_POINTS (2**28); a file over it is a ValueError.
     @staticmethod
     def read(path: str, dx: Optional[float], dy: Optional[float], z_unit: float, xy_unit: float, detrend: str,
-             derivative: str) -> SurfaceCore: ...
+             derivative: str, max_points: Optional[int] = None) -> SurfaceCore: ...
     @staticmethod
     def pair(a: SurfaceCore, b: SurfaceCore, detrend: str, derivative: str) -> SurfaceCore: ...
     # The SurfaceStats record (as `kefric surface --json` prints "surface").

@@ -1,7 +1,11 @@
 //! Reading measured surfaces from files (MODEL.md §10): ISO 25178-72 X3P,
-//! NumPy `.npy` and text; and writing X3P ([`write_x3p`]).
+//! NumPy `.npy` and text (the writer is [`super::write`]).
 //!
-//! The format comes from the extension (`.x3p`, `.npy`, anything else is
+//! The formats are a registry ([`Format::all`]): each is a module here
+//! with its entry (name, extensions, signature, reader). The format comes
+//! from the extension, checked against the content's signature (a `.npy`
+//! that is not one, a zip of an X3P called `.dat`), and from the content
+//! where the extension is not a format's (`.x3p`, `.npy`, anything else is
 //! text) unless [`ReadOptions::format`] says otherwise. Heights come out in
 //! metres: X3P stores metres; `.npy` and text heights are multiplied by
 //! [`ReadOptions::z_unit`] (1 by default, i.e. already metres).
@@ -15,15 +19,13 @@
 
 mod npy;
 mod text;
-mod x3p;
+pub(super) mod x3p;
 
 use std::fs::File;
-use std::io::{self, Read};
+use std::io::{self, BufReader, Cursor, Read, Seek};
 use std::path::{Path, PathBuf};
 
 use super::{Topography, TopographyError};
-
-pub use x3p::write_x3p;
 
 /// The default bound on the bytes read: a file, or an X3P member once
 /// uncompressed, larger than this is refused (2 GiB).
@@ -38,35 +40,116 @@ pub const MAX_POINTS: u64 = 1 << 28;
 /// contradicts the file's own.
 const CONFLICT_REL: f64 = 1e-6;
 
-/// A file format [`read_file`] reads.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
-    /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
-    X3p,
-    /// A NumPy `.npy` array: 1-D = profile, 2-D = map (rows = y); `f4` or
-    /// `f8`, either byte order, C or Fortran order.
-    Npy,
-    /// Text, numbers separated by white space, commas or semicolons (`#`
-    /// starts a comment line; `nan` marks a missing point). By the number
-    /// of columns: 1 = a profile; 2 = `x z` pairs of a profile; 3 = `x y z`
-    /// triples on a regular grid (the intervals come from the grid);
-    /// otherwise a matrix as in [`Format::Matrix`]. A single line is a
-    /// profile.
-    Text,
-    /// Text read as a matrix whatever its number of columns: a line is a
-    /// row (rows = y), a column is x. A single line is a profile.
-    Matrix,
+/// A file format the readers know: a handle to its entry in the
+/// registry [`Format::ALL`]. Compare by [`Format::name`].
+#[derive(Clone, Copy)]
+pub struct Format(&'static Entry);
+
+/// A registry entry: everything about one format, in one place. Adding a
+/// format is a reader module and one line in [`REGISTRY`].
+struct Entry {
+    name: &'static str,
+    description: &'static str,
+    extensions: &'static [&'static str],
+    /// Whether the file's first bytes are this format's (`None`: the
+    /// format has no signature, as text).
+    sniff: Option<fn(&[u8]) -> bool>,
+    read: ReadFn,
 }
 
+/// A reader: the file's context, its bytes, their length, the options.
+type ReadFn = fn(&Ctx, &mut dyn Source, u64, &ReadOptions) -> Result<Topography, ReadError>;
+
+/// The formats, in the order a format is chosen by sniffing. Text is
+/// last: any file is text to it.
+static REGISTRY: [Entry; 4] = [x3p::ENTRY, npy::ENTRY, text::ENTRY, text::MATRIX];
+
 impl Format {
-    /// The format by the file's extension: `.x3p`, `.npy` (any case), else
-    /// [`Format::Text`].
+    /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
+    pub const X3P: Format = Format(&REGISTRY[0]);
+    /// A NumPy `.npy` array: 1-D = profile, 2-D = map (rows = y); `f4` or
+    /// `f8`, either byte order, C or Fortran order.
+    pub const NPY: Format = Format(&REGISTRY[1]);
+    /// Text, numbers separated by white space, commas or semicolons (`#`
+    /// starts a comment line; `nan` marks a missing point; LF, CR or CR LF
+    /// end lines). By the number of columns: 1 = a profile; 2 = `x z`
+    /// pairs of a profile; 3 = `x y z` triples on a regular grid (the
+    /// intervals come from the grid); otherwise a matrix as in
+    /// [`Format::MATRIX`]. A single line is a profile.
+    pub const TEXT: Format = Format(&REGISTRY[2]);
+    /// Text read as a matrix whatever its number of columns: a line is a
+    /// row (rows = y), a column is x. A single line is a profile.
+    pub const MATRIX: Format = Format(&REGISTRY[3]);
+
+    /// Every format, in the registry's order.
+    pub fn all() -> impl Iterator<Item = Format> {
+        REGISTRY.iter().map(Format)
+    }
+
+    /// The format's name: `"x3p"`, `"npy"`, `"text"`, `"matrix"`, ...
+    pub fn name(self) -> &'static str {
+        self.0.name
+    }
+
+    /// What the format is, in a few words.
+    pub fn description(self) -> &'static str {
+        self.0.description
+    }
+
+    /// The file name extensions that select it (lower case, no dot).
+    pub fn extensions(self) -> &'static [&'static str] {
+        self.0.extensions
+    }
+
+    /// The format called `name` (any case).
+    pub fn from_name(name: &str) -> Option<Format> {
+        Format::all().find(|f| f.name().eq_ignore_ascii_case(name))
+    }
+
+    /// The format by the file's extension (any case), else text.
     pub fn from_path(path: &Path) -> Format {
-        match path.extension().and_then(|e| e.to_str()) {
-            Some(e) if e.eq_ignore_ascii_case("x3p") => Format::X3p,
-            Some(e) if e.eq_ignore_ascii_case("npy") => Format::Npy,
-            _ => Format::Text,
+        Format::by_extension(path).unwrap_or(Format::TEXT)
+    }
+
+    fn by_extension(path: &Path) -> Option<Format> {
+        let ext = path.extension()?.to_str()?;
+        Format::all().find(|f| f.extensions().iter().any(|e| e.eq_ignore_ascii_case(ext)))
+    }
+
+    /// The format of a file called `path` whose first bytes are `head`:
+    /// by an extension of a format with a signature (its reader says what
+    /// is wrong if the content is not one); else by the content's
+    /// signature (a zip of an X3P called `.dat`, a `.npy` without its
+    /// extension); else by a text extension; else text.
+    pub fn detect(path: &Path, head: &[u8]) -> Format {
+        let by_name = Format::by_extension(path);
+        match by_name {
+            Some(f) if f.0.sniff.is_some() => f,
+            _ => Format::all()
+                .find(|f| f.0.sniff.is_some_and(|sniff| sniff(head)))
+                .or(by_name)
+                .unwrap_or(Format::TEXT),
         }
+    }
+}
+
+impl PartialEq for Format {
+    fn eq(&self, other: &Format) -> bool {
+        std::ptr::eq(self.0, other.0)
+    }
+}
+
+impl Eq for Format {}
+
+impl std::fmt::Debug for Format {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Format({})", self.name())
+    }
+}
+
+impl std::fmt::Display for Format {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 
@@ -86,7 +169,7 @@ pub struct ReadOptions {
     pub z_unit: f64,
     /// Metres per unit of the x and y columns of `x z` and `x y z` text.
     pub xy_unit: f64,
-    /// The format; `None` = by extension ([`Format::from_path`]).
+    /// The format; `None` = by extension and content ([`Format::detect`]).
     pub format: Option<Format>,
     /// The most bytes read from the file, or from one X3P member once
     /// uncompressed ([`MAX_BYTES`] by default).
@@ -318,8 +401,14 @@ impl ReadError {
 pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path };
     check_options(&cx, options)?;
-    let bytes = cx.read_bounded(options.max_bytes)?;
-    read_with(&cx, &bytes, options)
+    let file = File::open(path).map_err(|e| cx.io(e))?;
+    let len = file.metadata().map_err(|e| cx.io(e))?.len();
+    if len > options.max_bytes {
+        return Err(cx.too_large("the file", len, options.max_bytes));
+    }
+    // Streamed: the file is never held whole, only the heights it makes.
+    let mut source = BufReader::with_capacity(CHUNK, file);
+    read_from(&cx, &mut source, len, options)
 }
 
 /// Reads a height map or profile from `bytes`, the content of a file
@@ -329,19 +418,20 @@ pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadE
 ///
 /// ```
 /// use ke_friction::topography::{read_bytes, ReadOptions};
-/// let text = b"1 2 3\n4 5 6\n";
+/// let text = b"1 2 3 4\n5 6 7 8\n";
 /// let options = ReadOptions { dx: Some(1e-6), dy: Some(1e-6), z_unit: 1e-6, ..ReadOptions::default() };
 /// let surface = read_bytes(text, "heights.txt", &options)?;
-/// assert_eq!((surface.nx(), surface.ny()), (3, 2));
+/// assert_eq!((surface.nx(), surface.ny()), (4, 2));
 /// # Ok::<(), ke_friction::topography::ReadError>(())
 /// ```
 pub fn read_bytes(bytes: &[u8], name: &str, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path: Path::new(name) };
     check_options(&cx, options)?;
-    if bytes.len() as u64 > options.max_bytes {
-        return Err(cx.too_large("the file", bytes.len() as u64, options.max_bytes));
+    let len = bytes.len() as u64;
+    if len > options.max_bytes {
+        return Err(cx.too_large("the file", len, options.max_bytes));
     }
-    read_with(&cx, bytes, options)
+    read_from(&cx, &mut Cursor::new(bytes), len, options)
 }
 
 /// The units in the options are finite and positive.
@@ -358,13 +448,36 @@ fn check_options(cx: &Ctx, options: &ReadOptions) -> Result<(), ReadError> {
     Ok(())
 }
 
-fn read_with(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
-    match options.format.unwrap_or_else(|| Format::from_path(cx.path)) {
-        Format::X3p => x3p::read(cx, bytes, options),
-        Format::Npy => npy::read(cx, bytes, options),
-        Format::Text => text::read(cx, bytes, options, false),
-        Format::Matrix => text::read(cx, bytes, options, true),
-    }
+/// A file's content, read in order or by position: a buffered file or
+/// bytes in memory.
+trait Source: Read + Seek {}
+
+impl<T: Read + Seek> Source for T {}
+
+/// The size of the pieces a reader decodes at a time (bytes).
+const CHUNK: usize = 1 << 16;
+
+/// Reads the `len` bytes of `source` in the format of the options, or
+/// else of the name and content.
+fn read_from(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
+    let format = match options.format {
+        Some(format) => format,
+        None => {
+            let mut head = [0u8; 16];
+            let mut got = 0;
+            while got < head.len() {
+                match source.read(&mut head[got..]) {
+                    Ok(0) => break,
+                    Ok(n) => got += n,
+                    Err(e) if e.kind() == io::ErrorKind::Interrupted => {}
+                    Err(e) => return Err(cx.io(e)),
+                }
+            }
+            source.rewind().map_err(|e| cx.io(e))?;
+            Format::detect(cx.path, &head[..got])
+        }
+    };
+    (format.0.read)(cx, source, len, options)
 }
 
 /// The file being read, for the readers' errors.
@@ -381,6 +494,15 @@ impl Ctx<'_> {
         ReadError::Io {
             path: self.path(),
             source,
+        }
+    }
+
+    /// A failed read: `eof()` if the file ended early, else an I/O error.
+    fn eof_or(&self, e: io::Error, eof: impl FnOnce() -> ReadError) -> ReadError {
+        if e.kind() == io::ErrorKind::UnexpectedEof {
+            eof()
+        } else {
+            self.io(e)
         }
     }
 
@@ -414,21 +536,43 @@ impl Ctx<'_> {
         }
     }
 
-    /// The whole file, if it is at most `limit` bytes.
-    fn read_bounded(&self, limit: u64) -> Result<Vec<u8>, ReadError> {
-        let file = File::open(self.path).map_err(|e| self.io(e))?;
-        let len = file.metadata().map_err(|e| self.io(e))?.len();
-        if len > limit {
-            return Err(self.too_large("the file", len, limit));
+    /// An empty vector with room for exactly `points` heights, if they are
+    /// within [`ReadOptions::max_points`] (`what`: where the size comes
+    /// from, for the error) and memory can be had.
+    fn heights(
+        &self,
+        what: impl FnOnce() -> String,
+        points: u64,
+        options: &ReadOptions,
+    ) -> Result<Vec<f64>, ReadError> {
+        self.check_points(what, points, options)?;
+        self.vec(points)
+    }
+
+    /// `points` within [`ReadOptions::max_points`].
+    fn check_points(&self, what: impl FnOnce() -> String, points: u64, options: &ReadOptions) -> Result<(), ReadError> {
+        if points > options.max_points {
+            return Err(ReadError::TooManyPoints {
+                path: self.path(),
+                what: what(),
+                points,
+                limit: options.max_points,
+            });
         }
-        let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
-        file.take(limit.saturating_add(1))
-            .read_to_end(&mut bytes)
-            .map_err(|e| self.io(e))?;
-        if bytes.len() as u64 > limit {
-            return Err(self.too_large("the file", bytes.len() as u64, limit));
-        }
-        Ok(bytes)
+        Ok(())
+    }
+
+    /// An empty vector with room for exactly `len` items, or an error if
+    /// memory cannot be had (never an abort).
+    fn vec<T>(&self, len: u64) -> Result<Vec<T>, ReadError> {
+        let out_of_memory = || ReadError::OutOfMemory {
+            path: self.path(),
+            points: len,
+        };
+        let len = usize::try_from(len).map_err(|_| out_of_memory())?;
+        let mut v = Vec::new();
+        v.try_reserve_exact(len).map_err(|_| out_of_memory())?;
+        Ok(v)
     }
 
     /// The interval `name` from the file's value or else the options'.

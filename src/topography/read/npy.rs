@@ -3,8 +3,17 @@
 //! big endian, C or Fortran order. The file gives no intervals: they come
 //! from the options.
 
-use super::{clip, Ctx, ReadError, ReadOptions};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
 use crate::topography::Topography;
+
+/// The registry's entry.
+pub(super) const ENTRY: Entry = Entry {
+    name: "npy",
+    description: "NumPy .npy (f4 or f8; 1-D profile, 2-D map)",
+    extensions: &["npy"],
+    sniff: Some(|head| head.starts_with(b"\x93NUMPY")),
+    read,
+};
 
 /// The bound on the header (bytes).
 const MAX_HEADER: usize = 1 << 16;
@@ -16,22 +25,41 @@ fn npy_err(cx: &Ctx, detail: impl Into<String>) -> ReadError {
     }
 }
 
-/// Reads a `.npy` file's content (`bytes`, the whole file).
-pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
-    let rest = bytes
-        .strip_prefix(b"\x93NUMPY")
-        .ok_or_else(|| npy_err(cx, "no \\x93NUMPY magic at the start"))?;
-    let (header, data) = match rest {
-        [1, _, a, b, rest @ ..] => (usize::from(u16::from_le_bytes([*a, *b])), rest),
-        [2 | 3, _, a, b, c, d, rest @ ..] => (u32::from_le_bytes([*a, *b, *c, *d]) as usize, rest),
-        [1..=3, ..] | [] => return Err(npy_err(cx, "truncated in the preamble")),
-        [major, ..] => return Err(cx.unsupported(format!(".npy format version {major}"))),
+/// Reads a `.npy` file of `len` bytes from `source`: the header, then the
+/// data decoded piece by piece into the heights (the data are never held
+/// as bytes).
+pub(super) fn read(
+    cx: &Ctx,
+    source: &mut dyn Source,
+    len: u64,
+    options: &ReadOptions,
+) -> Result<Topography, ReadError> {
+    let truncated = || npy_err(cx, "truncated in the preamble");
+    let mut preamble = [0u8; 8];
+    source.read_exact(&mut preamble).map_err(|e| cx.eof_or(e, truncated))?;
+    if &preamble[..6] != b"\x93NUMPY" {
+        return Err(npy_err(cx, "no \\x93NUMPY magic at the start"));
+    }
+    let (header, start) = match preamble[6] {
+        1 => {
+            let mut b = [0u8; 2];
+            source.read_exact(&mut b).map_err(|e| cx.eof_or(e, truncated))?;
+            (usize::from(u16::from_le_bytes(b)), 10u64)
+        }
+        2 | 3 => {
+            let mut b = [0u8; 4];
+            source.read_exact(&mut b).map_err(|e| cx.eof_or(e, truncated))?;
+            (u32::from_le_bytes(b) as usize, 12u64)
+        }
+        major => return Err(cx.unsupported(format!(".npy format version {major}"))),
     };
-    if header > MAX_HEADER || header > data.len() {
+    if header > MAX_HEADER || header as u64 > len.saturating_sub(start) {
         return Err(npy_err(cx, format!("a header of {header} bytes")));
     }
-    let (header, data) = data.split_at(header);
-    let header = std::str::from_utf8(header).map_err(|_| npy_err(cx, "the header is not text"))?;
+    let mut text = vec![0u8; header];
+    source.read_exact(&mut text).map_err(|e| cx.eof_or(e, truncated))?;
+    let data_len = len - start - header as u64;
+    let header = std::str::from_utf8(&text).map_err(|_| npy_err(cx, "the header is not text"))?;
     let Header {
         descr,
         fortran_order,
@@ -64,13 +92,13 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topo
         .checked_mul(ny)
         .filter(|&n| n > 0)
         .ok_or_else(|| cx.size(format!("an array of shape {shape:?}")))?;
-    let expected = n.saturating_mul(size);
-    if data.len() != expected {
+    let expected = (n as u64).saturating_mul(size as u64);
+    if data_len != expected {
         return Err(cx.size(format!(
-            "shape {shape:?} of {descr} makes {expected} bytes of data, the file holds {}",
-            data.len()
+            "shape {shape:?} of {descr} makes {expected} bytes of data, the file holds {data_len}"
         )));
     }
+    let mut heights = cx.heights(|| format!("the shape {shape:?}"), n as u64, options)?;
     let z = options.z_unit;
     let value = |b: &[u8]| -> f64 {
         match (size, big_endian, b) {
@@ -81,17 +109,31 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topo
             _ => f64::NAN,
         }
     };
-    let stored: Vec<f64> = data.chunks_exact(size).map(|b| z * value(b)).collect();
-    let heights = if fortran_order && ny > 1 && nx > 1 {
-        // Column-major: element (row j, column i) is at i·ny + j.
-        let mut heights = Vec::with_capacity(n);
-        for j in 0..ny {
-            heights.extend((0..nx).map(|i| stored[i * ny + j]));
+    // Column-major (a map in Fortran order): the k-th stored element is
+    // (row k mod ny, column k / ny), scattered to its row-major place.
+    let transpose = fortran_order && ny > 1 && nx > 1;
+    if transpose {
+        heights.resize(n, f64::NAN);
+    }
+    let mut buf = vec![0u8; CHUNK];
+    let mut k = 0;
+    let mut left = data_len;
+    while left > 0 {
+        let piece = left.min(CHUNK as u64) as usize;
+        source
+            .read_exact(&mut buf[..piece])
+            .map_err(|e| cx.eof_or(e, || cx.size("the data end early (truncated)")))?;
+        for item in buf[..piece].chunks_exact(size) {
+            let h = z * value(item);
+            if transpose {
+                heights[(k % ny) * nx + k / ny] = h;
+            } else {
+                heights.push(h);
+            }
+            k += 1;
         }
-        heights
-    } else {
-        stored
-    };
+        left -= piece as u64;
+    }
     cx.make(heights, (nx, ny), (None, None), options, shape.len() == 1)
 }
 

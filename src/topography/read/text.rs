@@ -5,8 +5,26 @@
 //! otherwise (or with [`Format::Matrix`](super::Format::Matrix)) a matrix,
 //! rows = y. A single line is a profile.
 
-use super::{clip, Ctx, ReadError, ReadOptions};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
 use crate::topography::Topography;
+
+/// The registry's entry: text by its number of columns.
+pub(super) const ENTRY: Entry = Entry {
+    name: "text",
+    description: "text: a column, x z pairs, x y z triples or a matrix",
+    extensions: &["txt", "csv", "asc", "xyz", "dat"],
+    sniff: None,
+    read: |cx, source, _, options| read(cx, source, options, false),
+};
+
+/// The registry's entry: text read as a matrix whatever its columns.
+pub(super) const MATRIX: Entry = Entry {
+    name: "matrix",
+    description: "text read as a matrix (rows = y) whatever its columns",
+    extensions: &[],
+    sniff: None,
+    read: |cx, source, _, options| read(cx, source, options, true),
+};
 
 /// A grid position is off by more than this fraction of the interval:
 /// the grid is irregular.
@@ -28,16 +46,18 @@ fn irregular(cx: &Ctx, detail: impl Into<String>) -> ReadError {
 }
 
 /// The numbers of a text file: `rows` rows of `cols`, row-major, with the
-/// line each row comes from.
+/// line each row comes from (kept only for `x z` and `x y z` files, whose
+/// grid errors name lines).
 struct Table {
     values: Vec<f64>,
     cols: usize,
+    rows: usize,
     lines: Vec<usize>,
 }
 
 impl Table {
     fn rows(&self) -> usize {
-        self.lines.len()
+        self.rows
     }
 
     fn column(&self, c: usize) -> Vec<f64> {
@@ -45,20 +65,26 @@ impl Table {
     }
 }
 
-/// Reads a text file's content (`bytes`, the whole file); `matrix`: read a
-/// matrix whatever the number of columns.
-pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions, matrix: bool) -> Result<Topography, ReadError> {
-    let table = parse(cx, bytes)?;
+/// Reads a text file from `source`; `matrix`: read a matrix whatever the
+/// number of columns.
+pub(super) fn read(
+    cx: &Ctx,
+    source: &mut dyn Source,
+    options: &ReadOptions,
+    matrix: bool,
+) -> Result<Topography, ReadError> {
+    let mut table = parse(cx, source, options)?;
     let z = options.z_unit;
     match table.cols {
         _ if matrix || table.cols > 3 || table.rows() == 1 => {
-            let heights = table.values.iter().map(|h| z * h).collect();
+            table.values.iter_mut().for_each(|h| *h *= z);
             let (nx, ny) = (table.cols, table.rows());
-            cx.make(heights, (nx, ny), (None, None), options, ny == 1)
+            cx.make(table.values, (nx, ny), (None, None), options, ny == 1)
         }
         1 => {
-            let heights = table.values.iter().map(|h| z * h).collect();
-            cx.make(heights, (table.rows(), 1), (None, None), options, true)
+            table.values.iter_mut().for_each(|h| *h *= z);
+            let n = table.rows();
+            cx.make(table.values, (n, 1), (None, None), options, true)
         }
         2 => {
             let x = Axis::regular(cx, "x", &table.column(0), &table.lines)?;
@@ -116,59 +142,161 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions, matrix: bool) 
     }
 }
 
-/// The numbers of the file, checked: UTF-8, numbers, no infinity, rows of
-/// one length, at least one.
-fn parse(cx: &Ctx, bytes: &[u8]) -> Result<Table, ReadError> {
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        let line = 1 + bytes[..e.valid_up_to()].iter().filter(|&&b| b == b'\n').count();
-        text_err(cx, line, "not UTF-8 text")
-    })?;
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut table = Table {
-        values: Vec::new(),
-        cols: 0,
-        lines: Vec::new(),
+/// The numbers of the file, checked: numbers, no infinity, rows of one
+/// length, at least one. Two passes over the file: the first checks it
+/// and counts, the second fills a vector of exactly the size counted (the
+/// peak memory is the numbers, not the text nor a growing vector's slack).
+fn parse(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions) -> Result<Table, ReadError> {
+    let mut cols = 0;
+    let mut first_line = 0;
+    let mut rows = 0u64;
+    scan(
+        cx,
+        source,
+        |_| {},
+        |n, line| {
+            if rows == 0 {
+                (cols, first_line) = (n, line);
+            } else if n != cols {
+                return Err(text_err(cx, line, format!("{n} numbers, line {first_line} has {cols}")));
+            }
+            rows += 1;
+            Ok(())
+        },
+    )?;
+    if rows == 0 {
+        return Err(cx.size("the file holds no numbers"));
+    }
+    // Points: a row of an `x z` or `x y z` file is one point.
+    let points = if (2..=3).contains(&cols) {
+        rows
+    } else {
+        rows * cols as u64
     };
-    for (i, line) in text.lines().enumerate() {
-        let line_no = i + 1;
-        let trimmed = line.trim();
-        if trimmed.is_empty() || trimmed.starts_with('#') {
-            continue;
+    let what = || format!("{rows} rows of {cols} numbers");
+    cx.check_points(what, points, options)?;
+    let mut values = cx.vec(rows * cols as u64)?;
+    let mut lines = cx.vec(if (2..=3).contains(&cols) { rows } else { 0 })?;
+    source.rewind().map_err(|e| cx.io(e))?;
+    scan(
+        cx,
+        source,
+        |v| {
+            if values.len() < values.capacity() {
+                values.push(v);
+            }
+        },
+        |_, line| {
+            if lines.len() < lines.capacity() {
+                lines.push(line);
+            }
+            Ok(())
+        },
+    )?;
+    if values.len() as u64 != rows * cols as u64 {
+        return Err(cx.size("the file changed while it was read"));
+    }
+    Ok(Table {
+        values,
+        cols,
+        rows: rows as usize,
+        lines,
+    })
+}
+
+/// The longest field read as a number (bytes): longer is an error.
+const MAX_FIELD: usize = 1024;
+
+/// Reads the text of `source` as numbers: `value` for each number, then
+/// `row(count, line)` at the end of each line that holds numbers. Lines
+/// end with LF, CR or CR LF; blank lines and lines starting with `#` are
+/// skipped; a UTF-8 byte-order mark at the start is ignored. Nothing but
+/// the field being read is held.
+fn scan(
+    cx: &Ctx,
+    source: &mut dyn Source,
+    mut value: impl FnMut(f64),
+    mut row: impl FnMut(usize, usize) -> Result<(), ReadError>,
+) -> Result<(), ReadError> {
+    let mut buf = vec![0u8; CHUNK];
+    let mut field: Vec<u8> = Vec::with_capacity(64);
+    let (mut line, mut count) = (1usize, 0usize);
+    let (mut comment, mut punct, mut after_cr, mut first) = (false, false, false, true);
+    let mut end_field = |field: &mut Vec<u8>, line: usize, count: &mut usize| -> Result<(), ReadError> {
+        if field.is_empty() {
+            return Ok(());
         }
-        let before = table.values.len();
-        for field in trimmed
-            .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
-            .filter(|f| !f.is_empty())
-        {
-            match field.parse::<f64>() {
-                Ok(v) if v.is_infinite() => {
-                    return Err(text_err(cx, line_no, format!("'{}' is infinite", clip(field, 40))))
+        let text = std::str::from_utf8(field).map_err(|_| text_err(cx, line, "not UTF-8 text"))?;
+        match text.parse::<f64>() {
+            Ok(v) if v.is_infinite() => return Err(text_err(cx, line, format!("'{}' is infinite", clip(text, 40)))),
+            Ok(v) => value(v),
+            Err(_) => return Err(text_err(cx, line, format!("'{}' is not a number", clip(text, 40)))),
+        }
+        *count += 1;
+        field.clear();
+        Ok(())
+    };
+    loop {
+        let got = match source.read(&mut buf) {
+            Ok(0) => break,
+            Ok(got) => got,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(cx.io(e)),
+        };
+        let mut bytes = &buf[..got];
+        if first {
+            first = false;
+            // A byte-order mark split over two reads is not looked for: a
+            // read of a file or of memory gives at least 3 bytes here.
+            bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+        }
+        for &b in bytes {
+            if after_cr {
+                after_cr = false;
+                if b == b'\n' {
+                    continue;
                 }
-                Ok(v) => table.values.push(v),
-                Err(_) => {
-                    return Err(text_err(cx, line_no, format!("'{}' is not a number", clip(field, 40))));
+            }
+            match b {
+                b'\n' | b'\r' => {
+                    end_field(&mut field, line, &mut count)?;
+                    if count > 0 {
+                        row(count, line)?;
+                    } else if punct && !comment {
+                        return Err(text_err(cx, line, "no numbers, only separators"));
+                    }
+                    (count, comment, punct) = (0, false, false);
+                    after_cr = b == b'\r';
+                    line += 1;
+                }
+                _ if comment => {}
+                b' ' | b'\t' | 0x0b | 0x0c => end_field(&mut field, line, &mut count)?,
+                b',' | b';' => {
+                    end_field(&mut field, line, &mut count)?;
+                    punct = true;
+                }
+                b'#' if count == 0 && field.is_empty() && !punct => comment = true,
+                _ => {
+                    if field.len() == MAX_FIELD {
+                        let shown = String::from_utf8_lossy(&field);
+                        return Err(text_err(
+                            cx,
+                            line,
+                            format!("'{}' is not a number (over {MAX_FIELD} bytes)", clip(&shown, 40)),
+                        ));
+                    }
+                    field.push(b);
                 }
             }
         }
-        let cols = table.values.len() - before;
-        if cols == 0 {
-            return Err(text_err(cx, line_no, "no numbers, only separators"));
-        }
-        if table.lines.is_empty() {
-            table.cols = cols;
-        } else if cols != table.cols {
-            return Err(text_err(
-                cx,
-                line_no,
-                format!("{cols} numbers, line {} has {}", table.lines[0], table.cols),
-            ));
-        }
-        table.lines.push(line_no);
     }
-    if table.lines.is_empty() {
-        return Err(cx.size("the file holds no numbers"));
+    end_field(&mut field, line, &mut count)?;
+    if count > 0 {
+        row(count, line)?;
+    } else if punct && !comment {
+        return Err(text_err(cx, line, "no numbers, only separators"));
     }
-    Ok(table)
+    Ok(())
 }
 
 /// Coordinates (x or y) on a regular axis.

@@ -9,29 +9,37 @@
 //! `offset + increment · value` with the CZ axis's Increment (default 1)
 //! and Offset (default 0), for every type. `MD5ChecksumPointData` and
 //! `MD5ChecksumValidPoints` are checked where present; the archive's
-//! `md5checksum.hex` (Record4) is not.
+//! `md5checksum.hex` (Record4) is not. The writer is topography/write.rs.
 
-use std::io::{Cursor, Read, Write};
-use std::path::Path;
-use std::time::{SystemTime, UNIX_EPOCH};
+use std::collections::HashSet;
+use std::io::{self, Read, SeekFrom};
 
 use md5::{Digest, Md5};
-use roxmltree::{Document, Node};
-use zip::write::SimpleFileOptions;
-use zip::{CompressionMethod, ZipArchive, ZipWriter};
+use roxmltree::{Document, Node, ParsingOptions};
+use zip::result::ZipError;
+use zip::ZipArchive;
 
-use super::{clip, Ctx, ReadError, ReadOptions};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
 use crate::topography::Topography;
+
+/// The registry's entry.
+pub(super) const ENTRY: Entry = Entry {
+    name: "x3p",
+    description: "ISO 25178-72 X3P (a zip of main.xml and the point data)",
+    extensions: &["x3p"],
+    sniff: Some(|head| head.starts_with(b"PK\x03\x04")),
+    read: |cx, source, _, options| read(cx, source, options),
+};
 
 /// The bound on `main.xml` (bytes).
 const MAX_XML: u64 = 16 << 20;
 /// The data member's usual name, and the validity mask's.
-const DATA_BIN: &str = "bindata/data.bin";
-const VALID_BIN: &str = "bindata/valid.bin";
+pub(in crate::topography) const DATA_BIN: &str = "bindata/data.bin";
+pub(in crate::topography) const VALID_BIN: &str = "bindata/valid.bin";
 
 /// A z data type: D, F, L or I.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum ZType {
+pub(in crate::topography) enum ZType {
     D,
     F,
     L,
@@ -39,7 +47,7 @@ enum ZType {
 }
 
 impl ZType {
-    fn from_char(c: char) -> Option<ZType> {
+    pub(in crate::topography) fn from_char(c: char) -> Option<ZType> {
         match c {
             'D' => Some(ZType::D),
             'F' => Some(ZType::F),
@@ -49,7 +57,7 @@ impl ZType {
         }
     }
 
-    fn letter(self) -> char {
+    pub(in crate::topography) fn letter(self) -> char {
         match self {
             ZType::D => 'D',
             ZType::F => 'F',
@@ -58,7 +66,7 @@ impl ZType {
         }
     }
 
-    fn size(self) -> usize {
+    pub(in crate::topography) fn size(self) -> usize {
         match self {
             ZType::D => 8,
             ZType::F | ZType::L => 4,
@@ -93,16 +101,38 @@ fn xml_err(cx: &Ctx, detail: impl Into<String>) -> ReadError {
 }
 
 /// The lower-case hex of the MD5 of `bytes`.
-fn md5_hex(bytes: &[u8]) -> String {
-    Md5::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+pub(in crate::topography) fn md5_hex(bytes: &[u8]) -> String {
+    hex(&Md5::digest(bytes))
 }
 
-/// Reads an X3P file's content (`bytes`, the whole file).
-pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topography, ReadError> {
-    let mut zip = ZipArchive::new(Cursor::new(bytes)).map_err(|e| archive_err(cx, e))?;
-    let xml = member(cx, &mut zip, "main.xml", None, MAX_XML.min(options.max_bytes))?;
+/// Lower-case hex.
+fn hex(bytes: &[u8]) -> String {
+    bytes.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// Reads an X3P file from `source`: the archive's directory, `main.xml`
+/// (bounded in size, depth and nodes), then the point data and validity
+/// mask decoded piece by piece into the heights (never held as bytes).
+pub(super) fn read(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions) -> Result<Topography, ReadError> {
+    let zip = ZipArchive::new(&mut *source).map_err(|e| match e {
+        // No directory at the end: cut short, or not a zip file at all.
+        ZipError::InvalidArchive(detail) => {
+            archive_err(cx, format!("{detail}: the file is truncated, or not a zip archive"))
+        }
+        e => zip_err(cx, "the archive", e),
+    })?;
+    let dir_start = zip.central_directory_start();
+    let source = zip.into_inner();
+    unique_names(cx, source, dir_start)?;
+    let mut zip = ZipArchive::new(source).map_err(|e| zip_err(cx, "the archive", e))?;
+    let xml = member(cx, &mut zip, "main.xml", MAX_XML.min(options.max_bytes))?;
     let xml = String::from_utf8(xml).map_err(|e| xml_err(cx, format!("not UTF-8: {e}")))?;
-    let doc = Document::parse(&xml).map_err(|e| xml_err(cx, e.to_string()))?;
+    check_depth(&xml).map_err(|e| xml_err(cx, e))?;
+    let parsing = ParsingOptions {
+        allow_dtd: false,
+        nodes_limit: MAX_XML_NODES,
+    };
+    let doc = Document::parse_with_options(&xml, parsing).map_err(|e| xml_err(cx, e.to_string()))?;
     let root = doc.root_element();
     if root.tag_name().name() != "ISO5436_2" {
         return Err(xml_err(
@@ -168,6 +198,8 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topo
     if points == 0 {
         return Err(cx.size(format!("SizeX x SizeY = {nx} x {ny}: no points")));
     }
+    let declared = || format!("main.xml's SizeX x SizeY = {nx} x {ny}");
+    cx.check_points(declared, points, options)?;
     let data_bytes = points.saturating_mul(z_type.size() as u64);
     if data_bytes > options.max_bytes {
         return Err(cx.too_large(
@@ -179,51 +211,55 @@ pub(super) fn read(cx: &Ctx, bytes: &[u8], options: &ReadOptions) -> Result<Topo
             options.max_bytes,
         ));
     }
-    let n = usize::try_from(points).map_err(|_| cx.too_large("the point data", data_bytes, options.max_bytes))?;
 
     // The point data: binary in a member the DataLink names (with an
     // optional validity mask), or listed in main.xml (DataList: one Datum
     // per point, an empty one missing).
     let heights = if let Some(list) = x.opt_child(record3, "DataList") {
-        data_list(cx, list, z_type, n, (offset, increment))?
+        let heights = cx.heights(declared, points, options)?;
+        data_list(cx, list, z_type, heights, (offset, increment))?
     } else {
         let link = x
             .opt_child(record3, "DataLink")
             .ok_or_else(|| xml_err(cx, "no DataLink or DataList in Record3"))?;
         let data_name = x.text(link, "PointDataLink")?;
-        let data = member(cx, &mut zip, data_name, Some(data_bytes), options.max_bytes)?;
-        if let Some(expected) = x.opt_text(link, "MD5ChecksumPointData") {
-            check_md5(cx, data_name, &data, expected)?;
-        }
-        let mut heights: Vec<f64> = data
-            .chunks_exact(z_type.size())
-            .map(|raw| offset + increment * z_type.decode(raw))
-            .collect();
-        drop(data);
+        let mut heights = cx.heights(declared, points, options)?;
+        let md5 = x.opt_text(link, "MD5ChecksumPointData");
+        stream(cx, &mut zip, data_name, data_bytes, md5, |piece| {
+            heights.extend(
+                piece
+                    .chunks_exact(z_type.size())
+                    .map(|raw| offset + increment * z_type.decode(raw)),
+            );
+        })?;
 
         let valid_name = match x.opt_text(link, "ValidPointsLink") {
             Some(name) => Some(name),
             None => zip.index_for_name(VALID_BIN).map(|_| VALID_BIN),
         };
         if let Some(valid_name) = valid_name {
-            let mask = member(cx, &mut zip, valid_name, Some(points.div_ceil(8)), options.max_bytes)?;
-            if let Some(expected) = x.opt_text(link, "MD5ChecksumValidPoints") {
-                check_md5(cx, valid_name, &mask, expected)?;
-            }
-            for (i, h) in heights.iter_mut().enumerate() {
-                if mask[i / 8] >> (i % 8) & 1 == 0 {
-                    *h = f64::NAN;
+            let md5 = x.opt_text(link, "MD5ChecksumValidPoints");
+            let mut at = 0;
+            stream(cx, &mut zip, valid_name, points.div_ceil(8), md5, |piece| {
+                for &bits in piece {
+                    for (bit, h) in heights[at..].iter_mut().take(8).enumerate() {
+                        if bits >> bit & 1 == 0 {
+                            *h = f64::NAN;
+                        }
+                    }
+                    at += 8;
                 }
-            }
+            })?;
         }
         heights
     };
-    // nx, ny <= n, which fits a usize.
-    let ny = ny as usize;
+    // nx, ny <= points, which fit a usize (the heights are allocated).
+    let (n, ny) = (heights.len(), ny as usize);
     cx.make(heights, (n / ny, ny), (dx, dy), options, profile)
 }
 
-/// The heights of a `DataList`: `n` `Datum` elements in row-major order,
+/// The heights of a `DataList`, into `heights` (empty, with room for
+/// exactly the `n` points declared): `n` `Datum` elements in row-major order,
 /// each a number of the type `z_type` (scaled by `offset + increment·v`)
 /// or empty (a missing point). Coordinate triples (`x;y;z`, irregular
 /// grids) are not read.
@@ -231,10 +267,10 @@ fn data_list(
     cx: &Ctx,
     list: Node,
     z_type: ZType,
-    n: usize,
+    mut heights: Vec<f64>,
     (offset, increment): (f64, f64),
 ) -> Result<Vec<f64>, ReadError> {
-    let mut heights = Vec::with_capacity(n.min(1 << 20));
+    let n = heights.capacity();
     for (i, datum) in list
         .children()
         .filter(|c| c.is_element() && c.tag_name().name() == "Datum")
@@ -283,60 +319,207 @@ fn data_list(
     Ok(heights)
 }
 
-/// The content of the archive's member `name`: exactly `expected` bytes if
-/// given (checked before reading), at most `limit` bytes.
-fn member(
-    cx: &Ctx,
-    zip: &mut ZipArchive<Cursor<&[u8]>>,
-    name: &str,
-    expected: Option<u64>,
-    limit: u64,
-) -> Result<Vec<u8>, ReadError> {
-    let file = zip
-        .by_name(name)
-        .map_err(|e| archive_err(cx, format!("member {}: {e}", clip(name, 80))))?;
-    let size = file.size();
-    if let Some(expected) = expected {
-        if size != expected {
-            return Err(cx.size(format!(
-                "{} holds {size} bytes, main.xml's sizes and data type make {expected}",
-                clip(name, 80)
-            )));
+/// The archive read from a file or from memory.
+type Zip<'s> = ZipArchive<&'s mut dyn Source>;
+
+/// An archive error: "truncated" for data that end early, the zip crate's
+/// detail for a damaged archive, else an I/O failure.
+fn zip_err(cx: &Ctx, what: &str, e: ZipError) -> ReadError {
+    match e {
+        ZipError::Io(e) => io_err(cx, what, e),
+        ZipError::FileNotFound => archive_err(cx, format!("no {what}")),
+        e => archive_err(cx, format!("{what}: {e}")),
+    }
+}
+
+/// A failed read of `what`: "truncated" if it ended early; the zip
+/// crate's checks (CRC, deflate) give invalid data; else an I/O failure.
+fn io_err(cx: &Ctx, what: &str, e: io::Error) -> ReadError {
+    match e.kind() {
+        io::ErrorKind::UnexpectedEof => archive_err(cx, format!("{what} ends early: the file is truncated")),
+        io::ErrorKind::InvalidData | io::ErrorKind::InvalidInput => archive_err(cx, format!("{what}: {e}")),
+        _ => cx.io(e),
+    }
+}
+
+/// Refuses an archive with two members of one name (the zip crate would
+/// silently read the last): walks the central directory at `start`.
+fn unique_names(cx: &Ctx, source: &mut dyn Source, start: u64) -> Result<(), ReadError> {
+    const SIGNATURE: u32 = 0x0201_4b50;
+    let what = "the archive's directory";
+    source.seek(SeekFrom::Start(start)).map_err(|e| io_err(cx, what, e))?;
+    let mut names = HashSet::new();
+    let mut fixed = [0u8; 46];
+    let mut name = Vec::new();
+    loop {
+        match source.read_exact(&mut fixed) {
+            Ok(()) => {}
+            Err(e) if e.kind() == io::ErrorKind::UnexpectedEof => break,
+            Err(e) => return Err(io_err(cx, what, e)),
+        }
+        if u32::from_le_bytes([fixed[0], fixed[1], fixed[2], fixed[3]]) != SIGNATURE {
+            break;
+        }
+        let field = |at: usize| usize::from(u16::from_le_bytes([fixed[at], fixed[at + 1]]));
+        name.resize(field(28), 0);
+        source.read_exact(&mut name).map_err(|e| io_err(cx, what, e))?;
+        let skip = (field(30) + field(32)) as i64;
+        source.seek(SeekFrom::Current(skip)).map_err(|e| io_err(cx, what, e))?;
+        let text = String::from_utf8_lossy(&name).into_owned();
+        if !names.insert(text.clone()) {
+            return Err(archive_err(
+                cx,
+                format!(
+                    "two members are named {} (which one is meant is ambiguous)",
+                    clip(&text, 80)
+                ),
+            ));
         }
     }
-    if size > limit {
-        return Err(cx.too_large(format!("member {}", clip(name, 80)), size, limit));
+    source.rewind().map_err(|e| io_err(cx, what, e))
+}
+
+/// The most nested elements `main.xml` may have (an X3P file has 6):
+/// deeper is refused before parsing, whose recursion an attacker would
+/// otherwise control.
+const MAX_XML_DEPTH: usize = 64;
+
+/// The most nodes `main.xml` may have (a DataList holds one per point).
+const MAX_XML_NODES: u32 = 1 << 23;
+
+/// Checks that the elements of `xml` nest at most [`MAX_XML_DEPTH`] deep,
+/// without recursion: counts start and end tags, skipping comments,
+/// processing instructions, CDATA, declarations and quoted attribute
+/// values. Malformed markup is left to the parser.
+fn check_depth(xml: &str) -> Result<(), String> {
+    let b = xml.as_bytes();
+    let (mut i, mut depth) = (0, 0usize);
+    let skip_to = |from: usize, end: &[u8]| -> usize {
+        b[from..]
+            .windows(end.len())
+            .position(|w| w == end)
+            .map_or(b.len(), |p| from + p + end.len())
+    };
+    while i < b.len() {
+        if b[i] != b'<' {
+            i += 1;
+            continue;
+        }
+        let rest = &b[i..];
+        if rest.starts_with(b"<!--") {
+            i = skip_to(i + 4, b"-->");
+        } else if rest.starts_with(b"<![CDATA[") {
+            i = skip_to(i + 9, b"]]>");
+        } else if rest.starts_with(b"<?") {
+            i = skip_to(i + 2, b"?>");
+        } else if rest.starts_with(b"<!") || rest.starts_with(b"</") {
+            if rest.starts_with(b"</") {
+                depth = depth.saturating_sub(1);
+            }
+            i = skip_to(i + 2, b">");
+        } else {
+            // A start tag: to its '>' outside quotes; `/>` closes it.
+            let mut j = i + 1;
+            let mut quote = None;
+            while j < b.len() {
+                match (quote, b[j]) {
+                    (Some(q), c) if c == q => quote = None,
+                    (None, c @ (b'"' | b'\'')) => quote = Some(c),
+                    (None, b'>') => break,
+                    _ => {}
+                }
+                j += 1;
+            }
+            if j < b.len() && b[j - 1] != b'/' {
+                depth += 1;
+                if depth > MAX_XML_DEPTH {
+                    return Err(format!(
+                        "elements nest deeper than {MAX_XML_DEPTH} levels (an X3P file has 6)"
+                    ));
+                }
+            }
+            i = j + 1;
+        }
     }
-    // The declared size is a claim: grow past 64 MiB only as data come.
-    let mut bytes = Vec::with_capacity(usize::try_from(size.min(1 << 26)).unwrap_or(0));
+    Ok(())
+}
+
+/// The content of the archive's small member `name` (`main.xml`), at most
+/// `limit` bytes.
+fn member(cx: &Ctx, zip: &mut Zip, name: &str, limit: u64) -> Result<Vec<u8>, ReadError> {
+    let what = format!("member {}", clip(name, 80));
+    let file = zip.by_name(name).map_err(|e| zip_err(cx, &what, e))?;
+    let size = file.size();
+    if size > limit {
+        return Err(cx.too_large(what, size, limit));
+    }
+    let mut bytes = cx.vec(size)?;
     file.take(size.saturating_add(1))
         .read_to_end(&mut bytes)
-        .map_err(|e| archive_err(cx, format!("member {}: {e}", clip(name, 80))))?;
+        .map_err(|e| io_err(cx, &what, e))?;
     if bytes.len() as u64 != size {
         return Err(archive_err(
             cx,
-            format!(
-                "member {} holds {} bytes, its header says {size}",
-                clip(name, 80),
-                bytes.len()
-            ),
+            format!("{what} holds {} bytes, its header says {size}", bytes.len()),
         ));
     }
     Ok(bytes)
 }
 
-fn check_md5(cx: &Ctx, name: &str, bytes: &[u8], expected: &str) -> Result<(), ReadError> {
-    let actual = md5_hex(bytes);
-    if actual.eq_ignore_ascii_case(expected) {
-        Ok(())
-    } else {
-        Err(ReadError::Checksum {
-            path: cx.path(),
-            member: clip(name, 80),
-            expected: clip(expected, 40),
-            actual,
-        })
+/// Streams the archive's member `name`, exactly `expected` bytes (its
+/// declared size is checked first), to `each` in pieces of [`CHUNK`] bytes
+/// (whole items of any data type); checks its MD5 if `md5` is given, and
+/// its CRC (the zip crate, at the end). Memory: one piece.
+fn stream(
+    cx: &Ctx,
+    zip: &mut Zip,
+    name: &str,
+    expected: u64,
+    md5: Option<&str>,
+    mut each: impl FnMut(&[u8]),
+) -> Result<(), ReadError> {
+    let what = format!("member {}", clip(name, 80));
+    let mut file = zip.by_name(name).map_err(|e| zip_err(cx, &what, e))?;
+    let size = file.size();
+    if size != expected {
+        return Err(cx.size(format!(
+            "{} holds {size} bytes, main.xml's sizes and data type make {expected}",
+            clip(name, 80)
+        )));
     }
+    let mut hasher = Md5::new();
+    let mut buf = vec![0u8; CHUNK];
+    let mut left = size;
+    while left > 0 {
+        let piece = left.min(CHUNK as u64) as usize;
+        file.read_exact(&mut buf[..piece]).map_err(|e| io_err(cx, &what, e))?;
+        hasher.update(&buf[..piece]);
+        each(&buf[..piece]);
+        left -= piece as u64;
+    }
+    // The end, where the zip crate checks the CRC.
+    match file.read(&mut buf[..1]) {
+        Ok(0) => {}
+        Ok(_) => {
+            return Err(archive_err(
+                cx,
+                format!("{what} holds more than the {size} bytes its header says"),
+            ))
+        }
+        Err(e) => return Err(io_err(cx, &what, e)),
+    }
+    if let Some(expected) = md5 {
+        let actual = hex(&hasher.finalize());
+        if !actual.eq_ignore_ascii_case(expected) {
+            return Err(ReadError::Checksum {
+                path: cx.path(),
+                member: clip(name, 80),
+                expected: clip(expected, 40),
+                actual,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Lookups in `main.xml`, elements by local name (any namespace).
@@ -401,242 +584,4 @@ impl Xml<'_, '_> {
             )
         })
     }
-}
-
-/// Writes `t` as an ISO 25178-72 X3P file at `path`, heights stored with
-/// the z data type `z_type`: `'D'` (f64, exact), `'F'` (f32), `'L'` (i32)
-/// or `'I'` (i16).
-///
-/// A map is FeatureType SUR, a profile PRF (SizeY = 1). For the integer
-/// types the heights are quantised over the type's full range (CZ
-/// Increment = range / (2ⁿ − 1), Offset = the lowest height minus
-/// Increment · the type's minimum): within Increment / 2 of the heights.
-/// Missing (NaN) points are marked invalid in `bindata/valid.bin` (and are
-/// NaN in float data). `main.xml` has Records 1–4 as the standard and the
-/// SurfaceTopography and openGPS readers expect; `md5checksum.hex` holds
-/// the MD5 of `main.xml`.
-///
-/// Errors: `InvalidInput` for another `z_type`, or heights beyond f32's
-/// range with `'F'`; otherwise I/O failures.
-pub fn write_x3p(t: &Topography, path: &Path, z_type: char) -> std::io::Result<()> {
-    let bytes = x3p_bytes(t, z_type)?;
-    std::fs::write(path, bytes)
-}
-
-fn invalid_input(message: String) -> std::io::Error {
-    std::io::Error::new(std::io::ErrorKind::InvalidInput, message)
-}
-
-/// The X3P file of `t` (see [`write_x3p`]).
-fn x3p_bytes(t: &Topography, z_type: char) -> std::io::Result<Vec<u8>> {
-    let z = ZType::from_char(z_type)
-        .ok_or_else(|| invalid_input(format!("X3P z data type {z_type:?}: must be D, F, L or I")))?;
-    let heights = t.heights();
-    let (lo, hi) = heights
-        .iter()
-        .filter(|h| !h.is_nan())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
-            (lo.min(h), hi.max(h))
-        });
-    let (lo, hi) = if lo <= hi { (lo, hi) } else { (0.0, 0.0) };
-
-    let mut data = Vec::with_capacity(heights.len() * z.size());
-    let (increment, offset) = match z {
-        ZType::D => {
-            heights.iter().for_each(|h| data.extend(h.to_le_bytes()));
-            (1.0, 0.0)
-        }
-        ZType::F => {
-            for &h in heights {
-                let v = h as f32;
-                if v.is_infinite() {
-                    return Err(invalid_input(format!("height {h:e} m is beyond f32's range")));
-                }
-                data.extend(v.to_le_bytes());
-            }
-            (1.0, 0.0)
-        }
-        ZType::L | ZType::I => {
-            let (min, max) = match z {
-                ZType::L => (f64::from(i32::MIN), f64::from(i32::MAX)),
-                _ => (f64::from(i16::MIN), f64::from(i16::MAX)),
-            };
-            let range = if hi > lo { hi - lo } else { lo.abs().max(1e-12) };
-            let increment = range / (max - min);
-            let offset = lo - min * increment;
-            for &h in heights {
-                // Missing points: any value (the mask marks them).
-                let raw = if h.is_nan() {
-                    min
-                } else {
-                    ((h - lo) / increment).round().clamp(0.0, max - min) + min
-                };
-                // In range by the clamp: the casts are exact.
-                match z {
-                    ZType::L => data.extend((raw as i32).to_le_bytes()),
-                    _ => data.extend((raw as i16).to_le_bytes()),
-                }
-            }
-            (increment, offset)
-        }
-    };
-    let missing = heights.iter().any(|h| h.is_nan());
-    let valid = missing.then(|| {
-        let mut bits = vec![0u8; heights.len().div_ceil(8)];
-        for (i, h) in heights.iter().enumerate() {
-            if !h.is_nan() {
-                bits[i / 8] |= 1 << (i % 8);
-            }
-        }
-        bits
-    });
-
-    let xml = main_xml(t, z, increment, offset, &data, valid.as_deref());
-    let mut zip = ZipWriter::new(Cursor::new(Vec::new()));
-    let file_options = SimpleFileOptions::default()
-        .compression_method(CompressionMethod::Deflated)
-        .large_file(data.len() as u64 >= u64::from(u32::MAX));
-    let checksum = format!("{} *main.xml\n", md5_hex(xml.as_bytes()).to_uppercase());
-    let mut members = vec![("main.xml", xml.as_bytes()), (DATA_BIN, &data[..])];
-    if let Some(valid) = &valid {
-        members.push((VALID_BIN, valid));
-    }
-    members.push(("md5checksum.hex", checksum.as_bytes()));
-    for (name, content) in members {
-        zip.start_file(name, file_options).map_err(std::io::Error::other)?;
-        zip.write_all(content)?;
-    }
-    Ok(zip.finish().map_err(std::io::Error::other)?.into_inner())
-}
-
-/// An indented XML document, element by element (the texts written here
-/// need no escaping).
-struct XmlOut {
-    s: String,
-    depth: usize,
-}
-
-impl XmlOut {
-    fn indent(&mut self) {
-        self.s.extend(std::iter::repeat_n("  ", self.depth));
-    }
-
-    fn open(&mut self, tag: &str) -> &mut XmlOut {
-        self.indent();
-        self.s.push_str(&format!("<{tag}>\n"));
-        self.depth += 1;
-        self
-    }
-
-    fn close(&mut self, tag: &str) -> &mut XmlOut {
-        self.depth -= 1;
-        self.indent();
-        self.s.push_str(&format!("</{tag}>\n"));
-        self
-    }
-
-    fn leaf(&mut self, tag: &str, text: impl std::fmt::Display) -> &mut XmlOut {
-        self.indent();
-        self.s.push_str(&format!("<{tag}>{text}</{tag}>\n"));
-        self
-    }
-
-    /// An x, y or z axis.
-    fn axis(&mut self, tag: &str, kind: char, data_type: char, increment: f64, offset: f64) -> &mut XmlOut {
-        // xsd:double, shortest round trip: `1e-7`, `2.5e-11`; whole numbers plain.
-        let num = |v: f64| {
-            if v.fract() == 0.0 && v.abs() < 1e15 {
-                format!("{v}")
-            } else {
-                format!("{v:e}")
-            }
-        };
-        self.open(tag)
-            .leaf("AxisType", kind)
-            .leaf("DataType", data_type)
-            .leaf("Increment", num(increment))
-            .leaf("Offset", num(offset))
-            .close(tag)
-    }
-}
-
-/// The `main.xml` of an X3P file.
-fn main_xml(t: &Topography, z: ZType, increment: f64, offset: f64, data: &[u8], valid: Option<&[u8]>) -> String {
-    const NS: &str = "http://www.opengps.eu/2008/ISO5436_2";
-    let date = now_iso8601();
-    let version = env!("CARGO_PKG_VERSION");
-    let mut x = XmlOut {
-        s: format!(
-            "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\" ?>\n<p:ISO5436_2 xmlns:p=\"{NS}\" \
-             xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" \
-             xsi:schemaLocation=\"{NS} {NS}/ISO5436_2_XML.xsd\">\n"
-        ),
-        depth: 1,
-    };
-    x.open("Record1")
-        .leaf("Revision", "ISO5436 - 2000")
-        .leaf("FeatureType", if t.is_profile() { "PRF" } else { "SUR" })
-        .open("Axes")
-        .axis("CX", 'I', 'D', t.dx(), 0.0)
-        .axis("CY", 'I', 'D', t.dy().unwrap_or(t.dx()), 0.0)
-        .axis("CZ", 'A', z.letter(), increment, offset)
-        .close("Axes")
-        .close("Record1");
-    x.open("Record2")
-        .leaf("Date", &date)
-        .leaf("Creator", "ke-friction")
-        .open("Instrument")
-        .leaf("Manufacturer", "ke-friction")
-        .leaf("Model", "write_x3p")
-        .leaf("Serial", "not available")
-        .leaf("Version", version)
-        .close("Instrument")
-        .leaf("CalibrationDate", &date)
-        .open("ProbingSystem")
-        .leaf("Type", "Software")
-        .leaf("Identification", "ke-friction write_x3p")
-        .close("ProbingSystem")
-        .leaf("Comment", format!("Written by ke-friction {version}."))
-        .close("Record2");
-    x.open("Record3")
-        .open("MatrixDimension")
-        .leaf("SizeX", t.nx())
-        .leaf("SizeY", t.ny())
-        .leaf("SizeZ", 1)
-        .close("MatrixDimension")
-        .open("DataLink")
-        .leaf("PointDataLink", DATA_BIN)
-        .leaf("MD5ChecksumPointData", md5_hex(data).to_uppercase());
-    if let Some(valid) = valid {
-        x.leaf("ValidPointsLink", VALID_BIN)
-            .leaf("MD5ChecksumValidPoints", md5_hex(valid).to_uppercase());
-    }
-    x.close("DataLink").close("Record3");
-    x.open("Record4")
-        .leaf("ChecksumFile", "md5checksum.hex")
-        .close("Record4");
-    x.s.push_str("</p:ISO5436_2>\n");
-    x.s
-}
-
-/// The current UTC time as ISO 8601 (`2024-05-01T12:00:00+00:00`).
-fn now_iso8601() -> String {
-    let secs = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
-    let (days, rem) = ((secs / 86_400) as i64, secs % 86_400);
-    // Days since 1970-01-01 to the civil date (H. Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
-    format!(
-        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}+00:00",
-        rem / 3600,
-        rem / 60 % 60,
-        rem % 60
-    )
 }

@@ -1,0 +1,229 @@
+#!/usr/bin/env python3
+"""Hostile surface files through `kefric surface` and the Python package
+(issue 34): each is refused with exit 2 / ValueError, or read right, in
+bounded time and memory.
+
+The files are made here (nothing multi-MB is committed): an X3P whose
+main.xml nests 20,000 elements; a 2 MB zip bomb declaring 32768 x 32768
+16-bit points (2 GiB of data); a 100 MB one-column text file; a 4096 x 4096
+16-bit X3P read in full; a CR-only text matrix; an archive with two
+main.xml; a truncated archive.
+
+Peak memory is the child's maximum resident set (`ru_maxrss` from
+`os.wait4`, what `/usr/bin/time -v` prints as "Maximum resident set
+size"). Limits: < 100 MB and < 1 s for the refused bombs; for a file read,
+<= 1.5 x its f64 array + 64 MiB over the program's own baseline (kefric
+on a tiny file; Python after importing numpy and ke_friction).
+
+usage: hostile_surfaces.py KEFRIC [--python PYTHON] [--keep DIR]
+"""
+
+import argparse
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import zipfile
+import zlib
+
+MIB = 1 << 20
+
+
+def run(argv):
+    """(exit code, stderr, seconds, peak RSS in bytes) of argv."""
+    t0 = time.monotonic()
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    err = proc.stderr.read()
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    return proc.returncode, err.decode(errors="replace"), time.monotonic() - t0, usage.ru_maxrss * 1024
+
+
+def main_xml(nx, ny, z_type="D", extra="", feature="SUR"):
+    return f"""<?xml version="1.0" encoding="UTF-8"?>
+<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2">
+ <Record1><Revision>ISO5436 - 2000</Revision><FeatureType>{feature}</FeatureType>
+  <Axes><CX><AxisType>I</AxisType><DataType>D</DataType><Increment>1e-6</Increment><Offset>0</Offset></CX>
+  <CY><AxisType>I</AxisType><DataType>D</DataType><Increment>1e-6</Increment><Offset>0</Offset></CY>
+  <CZ><AxisType>A</AxisType><DataType>{z_type}</DataType><Increment>1e-9</Increment><Offset>0</Offset></CZ></Axes></Record1>
+ <Record2><Date>2026-01-01T00:00:00+00:00</Date></Record2>{extra}
+ <Record3><MatrixDimension><SizeX>{nx}</SizeX><SizeY>{ny}</SizeY><SizeZ>1</SizeZ></MatrixDimension>
+  <DataLink><PointDataLink>bindata/data.bin</PointDataLink></DataLink></Record3>
+</p:ISO5436_2>
+"""
+
+
+def write_streamed_member(zf, name, total, piece):
+    """A deflated member of `total` bytes repeating `piece`, written in
+    pieces (never held whole)."""
+    # By name: the archive's compression and level (1: fast on zeros).
+    with zf.open(name, "w", force_zip64=total >= 1 << 31) as out:
+        block = piece * (MIB // len(piece))
+        left = total
+        while left:
+            n = min(left, len(block))
+            out.write(block[:n])
+            left -= n
+
+
+def make_files(d):
+    files = {}
+    # 20,000 nested elements in a 24 KB main.xml.
+    p = os.path.join(d, "deep.x3p")
+    deep = "<a>" * 20000 + "</a>" * 20000
+    with zipfile.ZipFile(p, "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("main.xml", main_xml(3, 2, extra=deep))
+        z.writestr("bindata/data.bin", struct.pack("<6d", *range(6)))
+    files["deep"] = p
+    # The bomb: 32768 x 32768 int16 declared, 2 GiB of zeros deflated to
+    # ~2 MB (zlib's own stream, written raw: fast).
+    p = os.path.join(d, "bomb.x3p")
+    total = 32768 * 32768 * 2
+    with zipfile.ZipFile(p, "w", zipfile.ZIP_DEFLATED, allowZip64=True, compresslevel=1) as z:
+        z.writestr("main.xml", main_xml(32768, 32768, "I"))
+        write_streamed_member(z, "bindata/data.bin", total, b"\0" * 4096)
+    files["bomb"] = p
+    # A 4096 x 4096 int16 map, read in full: 128 MiB of f64 heights.
+    p = os.path.join(d, "big.x3p")
+    n = 4096
+    # A piece one point longer than a row: each row is shifted by one.
+    row = struct.pack(f"<{n + 1}h", *[(i * 37) % 2001 - 1000 for i in range(n + 1)])
+    with zipfile.ZipFile(p, "w", zipfile.ZIP_DEFLATED, allowZip64=True, compresslevel=1) as z:
+        z.writestr("main.xml", main_xml(n, n, "I"))
+        write_streamed_member(z, "bindata/data.bin", n * n * 2, row)
+    files["big_x3p"] = (p, n * n)
+    # 100 MB of one-column text: 10,000,000 lines of "%.6e\n" minus a few.
+    p = os.path.join(d, "big.txt")
+    lines = 0
+    with open(p, "w") as f:
+        chunk = "".join(f"{((k * 7919) % 10007 - 5003) * 1e-3:.5e}\n" for k in range(10007))
+        size = 0
+        while size + len(chunk) <= 100_000_000:
+            f.write(chunk)
+            size += len(chunk)
+            lines += 10007
+    files["big_txt"] = (p, lines)
+    # A 48 x 64 matrix with CR line ends only.
+    p = os.path.join(d, "cr.txt")
+    with open(p, "wb") as f:
+        rows = [" ".join(str((i * 7 + j * 3) % 11) for i in range(64)) for j in range(48)]
+        f.write("\r".join(rows).encode() + b"\r")
+    files["cr"] = p
+    # Two members named main.xml.
+    p = os.path.join(d, "twice.x3p")
+    with zipfile.ZipFile(p, "w") as z:
+        z.writestr("main.xml", main_xml(3, 2))
+        z.writestr("bindata/data.bin", struct.pack("<6d", *range(6)))
+        with __import__("warnings").catch_warnings():
+            __import__("warnings").simplefilter("ignore")
+            z.writestr("main.xml", main_xml(3, 2))
+    files["twice"] = p
+    # A valid archive cut short.
+    p = os.path.join(d, "cut.x3p")
+    with zipfile.ZipFile(p, "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("main.xml", main_xml(64, 64))
+        z.writestr("bindata/data.bin", os.urandom(64 * 64 * 8))
+    with open(p, "r+b") as f:
+        f.truncate(os.path.getsize(p) // 2)
+    files["cut"] = p
+    return files
+
+
+FAILED = []
+
+
+def check(ok, what):
+    print(("ok    " if ok else "FAIL  ") + what)
+    if not ok:
+        FAILED.append(what)
+
+
+def cli(kefric, files, d):
+    tiny = os.path.join(d, "tiny.txt")
+    with open(tiny, "w") as f:
+        f.write("1 2 3 4\n4 3 2 1\n2 2 1 1\n")
+    base_args = ["--dx", "1e-6", "--z-unit", "um"]
+    _, _, _, base = run([kefric, "surface", tiny, *base_args])
+    print(f"kefric baseline peak {base / MIB:.1f} MiB")
+    for key, want in [
+        ("deep", "nest deeper than 64"),
+        ("bomb", "over the limit of 268435456"),
+        ("twice", "two members are named main.xml"),
+        ("cut", "truncated"),
+    ]:
+        rc, err, secs, peak = run([kefric, "surface", files[key]])
+        check(rc == 2 and want in err, f"kefric {key}: exit {rc}, {err.strip()[:160]!r}")
+        check(secs < 1.0 and peak < 100e6, f"kefric {key}: {secs:.2f} s, peak {peak / MIB:.1f} MiB (< 1 s, < 100 MB)")
+    # The bomb's points limit is an option.
+    rc, err, _, _ = run([kefric, "surface", files["cr"], *base_args, "--max-points", "3000"])
+    check(rc == 2 and "3072 points, over the limit of 3000" in err, f"kefric --max-points 3000: exit {rc}, {err.strip()[:160]!r}")
+    rc, err, _, _ = run([kefric, "surface", files["cr"], *base_args, "--json"])
+    check(rc == 0, f"kefric cr.txt (48 x 64, CR line ends): exit {rc} {err.strip()[:200]}")
+    out = subprocess.run([kefric, "surface", files["cr"], *base_args, "--json"], capture_output=True, text=True).stdout
+    check('"nx":64' in out.replace(" ", "") and '"ny":48' in out.replace(" ", ""), "kefric cr.txt reads as 64 x 48")
+    for key in ["big_txt", "big_x3p"]:
+        path, points = files[key]
+        rc, err, secs, peak = run([kefric, "surface", path, *base_args])
+        bound = 1.5 * 8 * points + 64 * MIB
+        check(rc == 0, f"kefric {key}: exit {rc} {err.strip()[:200]}")
+        check(
+            peak - base <= bound,
+            f"kefric {key}: {points} points ({8 * points / MIB:.0f} MiB as f64), {secs:.1f} s, peak {peak / MIB:.0f} MiB "
+            f"- baseline {base / MIB:.0f} MiB <= {bound / MIB:.0f} MiB",
+        )
+
+
+PY_READ = """
+import sys, warnings
+import numpy, ke_friction as kf
+path, kind = sys.argv[1], sys.argv[2]
+if kind == "baseline":
+    sys.exit(0)
+try:
+    s = kf.Surface.read(path, dx=1e-6, z_unit=1e-6) if path.endswith(".txt") else kf.Surface.read(path)
+    print("read", s.stats["nx"], s.stats["ny"])
+except ValueError as e:
+    print("ValueError", e, file=sys.stderr)
+    sys.exit(3)
+"""
+
+
+def python(py, files):
+    _, _, _, base = run([py, "-c", PY_READ, "-", "baseline"])
+    print(f"python baseline peak {base / MIB:.1f} MiB")
+    for key, want in [("deep", "nest deeper"), ("bomb", "268435456"), ("twice", "two members"), ("cut", "truncated")]:
+        rc, err, secs, peak = run([py, "-c", PY_READ, files[key], "read"])
+        check(rc == 3 and want in err, f"python {key}: exit {rc} (3 = ValueError), {err.strip()[-160:]!r}")
+        check(peak - base < 100e6, f"python {key}: {secs:.2f} s, peak {peak / MIB:.0f} MiB - baseline (< 100 MB)")
+    path, points = files["big_txt"]
+    rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
+    bound = 1.5 * 8 * points + 64 * MIB
+    check(rc == 0, f"python big_txt: exit {rc} {err.strip()[-200:]}")
+    check(peak - base <= bound, f"python big_txt: {secs:.1f} s, peak {peak / MIB:.0f} MiB - baseline {base / MIB:.0f} <= {bound / MIB:.0f} MiB")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("kefric")
+    ap.add_argument("--python", help="a Python with ke_friction installed")
+    ap.add_argument("--keep", help="write the files here and keep them")
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory() as tmp:
+        d = a.keep or tmp
+        os.makedirs(d, exist_ok=True)
+        t0 = time.monotonic()
+        files = make_files(d)
+        print(f"files made in {time.monotonic() - t0:.1f} s")
+        cli(a.kefric, files, d)
+        if a.python:
+            python(a.python, files)
+    if FAILED:
+        print(f"{len(FAILED)} checks failed")
+        sys.exit(1)
+    print("all hostile-surface checks passed")
+
+
+if __name__ == "__main__":
+    main()
