@@ -1,21 +1,35 @@
 #!/usr/bin/env bash
-# CI stage fuzz: both fuzz targets on table files (fuzz/), each for
-# FUZZ_SECONDS (default 60) from the committed seed corpus, under
-# AddressSanitizer. A crash, a panic or an out-of-bounds access fails the
-# stage; libFuzzer writes the input to fuzz/artifacts/TARGET/.
+# CI stage fuzz (fuzz/), under AddressSanitizer, each target from its
+# committed seed corpus (fuzz/seeds/TARGET/) plus the inputs of crashes
+# found before (fuzz/regressions/TARGET/, replayed first):
+# - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 30);
+# - surface_x3p, surface_npy, surface_text (the measured-surface readers,
+#   read_bytes): READER_SECONDS each (default 40).
+# About 3 minutes of fuzzing plus the build: the stage stays under ~4.5
+# minutes on 2 cores. A crash, a panic, a broken invariant or an
+# out-of-bounds access fails the stage; libFuzzer writes the input to
+# fuzz/artifacts/TARGET/.
 # Needs the nightly toolchain; installs cargo-fuzz when missing.
 set -euo pipefail
 cd "$(dirname "$0")/../fuzz"
-secs=${FUZZ_SECONDS:-60}
+table_secs=${FUZZ_SECONDS:-30}
+reader_secs=${READER_SECONDS:-40}
 if ! command -v cargo-fuzz > /dev/null; then
   echo "installing cargo-fuzz"
   cargo install --quiet --locked cargo-fuzz
 fi
 cargo +nightly fuzz build -O 2>&1 | tail -3
-for target in table_bytes table_spec; do
+for target in table_bytes table_spec surface_x3p surface_npy surface_text; do
+  case $target in
+    table_*) secs=$table_secs ;;
+    *) secs=$reader_secs ;;
+  esac
   corpus=target/ci-corpus/$target
   rm -rf "$corpus" && mkdir -p "$corpus"
   cp seeds/$target/* "$corpus/"
+  if [ -d regressions/$target ]; then
+    cp regressions/$target/* "$corpus/"
+  fi
   # libFuzzer's own summary lines (runs, coverage) are kept in a log.
   log=target/ci-$target.log
   if ! cargo +nightly fuzz run -O "$target" "$corpus" -- -max_total_time="$secs" -print_final_stats=1 > "$log" 2>&1; then
