@@ -48,6 +48,7 @@ pub mod figures;
 mod io;
 mod load;
 mod model;
+mod named;
 mod num;
 #[cfg(feature = "paper")]
 pub mod paper;
@@ -66,6 +67,7 @@ pub use distribution::{
 pub use error::{Classify, ErrorKind};
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
+pub use named::{LengthUnit, NameError, Named};
 pub use num::Shortest;
 pub use params::{
     Constants, Fit, Kind, Materials, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR,

@@ -30,69 +30,8 @@ pub enum Kind {
     CebType,
 }
 
-impl serde::Serialize for Fit {
-    /// As its [`name`](Fit::name).
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
-    }
-}
-
-impl serde::Serialize for Kind {
-    /// As its [`name`](Kind::name).
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
-    }
-}
-
-impl Fit {
-    /// Every fit, in the order of [`Fit::name`]'s documentation.
-    pub const ALL: [Fit; 2] = [Fit::Consistent, Fit::AsPrinted];
-
-    /// The fit's name where users type or read it (CLI flags, JSON, the
-    /// NumPy export's metadata, the bindings): `"consistent"` or `"as-printed"`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Fit::Consistent => "consistent",
-            Fit::AsPrinted => "as-printed",
-        }
-    }
-
-    /// The fit named `name` (as [`Fit::name`] spells it), if any.
-    ///
-    /// ```
-    /// use ke_friction::Fit;
-    /// assert_eq!(Fit::from_name("as-printed"), Some(Fit::AsPrinted));
-    /// assert_eq!(Fit::from_name("AsPrinted"), None);
-    /// ```
-    pub fn from_name(name: &str) -> Option<Fit> {
-        Fit::ALL.into_iter().find(|f| f.name() == name)
-    }
-}
-
-impl Kind {
-    /// Every model kind, in the order of [`Kind::name`]'s documentation.
-    pub const ALL: [Kind; 2] = [Kind::KogutEtsion, Kind::CebType];
-
-    /// The model's name where users type or read it (CLI flags, JSON, the
-    /// NumPy export's metadata, the bindings): `"ke"` or `"ceb"`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Kind::KogutEtsion => "ke",
-            Kind::CebType => "ceb",
-        }
-    }
-
-    /// The model named `name` (as [`Kind::name`] spells it), if any.
-    ///
-    /// ```
-    /// use ke_friction::Kind;
-    /// assert_eq!(Kind::from_name("ceb"), Some(Kind::CebType));
-    /// assert_eq!(Kind::from_name("CEB"), None);
-    /// ```
-    pub fn from_name(name: &str) -> Option<Kind> {
-        Kind::ALL.into_iter().find(|k| k.name() == name)
-    }
-}
+crate::named!(Fit, "fit", [Consistent = "consistent", AsPrinted = "as-printed"]);
+crate::named!(Kind, "model", [KogutEtsion = "ke", CebType = "ceb"]);
 
 /// The model constants of a material pair: everything fixed apart from ψ
 /// and θ (MODEL.md §1). A table is built for one set of constants; a

@@ -91,58 +91,12 @@ pub enum Derivative {
     Spectral,
 }
 
-impl Detrend {
-    /// Every detrending, in the order of [`Detrend::name`]'s documentation.
-    pub const ALL: [Detrend; 3] = [Detrend::Plane, Detrend::Line, Detrend::Mean];
-
-    /// The name users type and read (CLI `--detrend`, Python `detrend=`,
-    /// JSON): `"plane"`, `"line"` or `"mean"`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Detrend::Plane => "plane",
-            Detrend::Line => "line",
-            Detrend::Mean => "mean",
-        }
-    }
-
-    /// The detrending named `name` (as [`Detrend::name`] spells it), if any.
-    pub fn from_name(name: &str) -> Option<Detrend> {
-        Detrend::ALL.into_iter().find(|d| d.name() == name)
-    }
-}
-
-impl Derivative {
-    /// Every estimate, in the order of [`Derivative::name`]'s documentation.
-    pub const ALL: [Derivative; 2] = [Derivative::FiniteDifference, Derivative::Spectral];
-
-    /// The name users type and read (CLI `--derivative`, Python
-    /// `derivative=`, JSON): `"fd"` or `"spectral"`.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Derivative::FiniteDifference => "fd",
-            Derivative::Spectral => "spectral",
-        }
-    }
-
-    /// The estimate named `name` (as [`Derivative::name`] spells it), if any.
-    pub fn from_name(name: &str) -> Option<Derivative> {
-        Derivative::ALL.into_iter().find(|d| d.name() == name)
-    }
-}
-
-impl Serialize for Detrend {
-    /// As its [`name`](Detrend::name).
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
-    }
-}
-
-impl Serialize for Derivative {
-    /// As its [`name`](Derivative::name).
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.name())
-    }
-}
+crate::named!(Detrend, "detrend", [Plane = "plane", Line = "line", Mean = "mean"]);
+crate::named!(
+    Derivative,
+    "derivative",
+    [FiniteDifference = "fd", Spectral = "spectral"]
+);
 
 /// Options of [`Topography::stats`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
