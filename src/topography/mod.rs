@@ -1,15 +1,17 @@
 //! Measured surfaces (MODEL.md §10): height maps and profiles read from
-//! files (ISO 25178-72 X3P, `.npy`, text), their statistics, and the
-//! equivalent surface of two rough surfaces.
+//! files (ISO 25178-72 X3P, `.npy`, text), their statistics, their power
+//! spectral density, and the equivalent surface of two rough surfaces.
 //!
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
 
+mod psd;
 mod read;
 mod stats;
 mod surface;
 mod write;
 
+pub use psd::{psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
 pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,

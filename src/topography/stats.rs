@@ -1187,10 +1187,16 @@ fn differences<const MASKED: bool>(totals: &mut [Sum; 4], z: &[f64], slope: f64)
 // ---------------------------------------------------------------------------
 // The spectral path.
 
+// The FFTs of the spectral moments: the `realfft` crate (over `rustfft`).
+use realfft::{num_complex::Complex, RealFftPlanner};
+
 /// Moments of the heights as in [`sweep`], m2 and m4 from the discrete
 /// Fourier transforms of the rows and the columns of the detrended heights
 /// (no missing points): the mean over rows of the per-row moments equals
 /// the 2-D spectral sum Σ (2π·f_x)^p·|Z|²/N² by Parseval's theorem along y.
+///
+/// The transforms are the `realfft` crate's (real input, the half spectrum
+/// k = 0..=N/2; over `rustfft`).
 fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
     let (nx, ny) = (t.nx, t.ny);
     let mut out = sweep_moments_only(t, z0, plane);
@@ -1198,16 +1204,19 @@ fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
     let v_of = centred(ny);
     let residual = |i: usize, j: usize, z: f64| (z - z0) - (plane.a + plane.c * v_of(j) + plane.b * u_of(i));
 
-    let fft = Fft::new(nx);
-    let mut buf = vec![Complex::ZERO; nx];
-    let mut scratch = fft.scratch();
+    let mut planner = RealFftPlanner::<f64>::new();
+    let fft = planner.plan_fft_forward(nx);
+    let mut buf = fft.make_input_vec();
+    let mut spectrum = fft.make_output_vec();
+    let mut scratch = fft.make_scratch_vec();
     let (mut m20, mut m40) = (Sum::default(), Sum::default());
     for (j, row) in t.heights.chunks_exact(nx).enumerate() {
         for (i, (b, &z)) in buf.iter_mut().zip(row).enumerate() {
-            *b = Complex::new(residual(i, j, z), 0.0);
+            *b = residual(i, j, z);
         }
-        fft.forward(&mut buf, &mut scratch);
-        let (s2, s4) = line_moments(&buf, t.dx);
+        fft.process_with_scratch(&mut buf, &mut spectrum, &mut scratch)
+            .expect("buffers of the plan's lengths");
+        let (s2, s4) = line_moments(&spectrum, nx, t.dx);
         m20.add(s2);
         m40.add(s4);
     }
@@ -1216,9 +1225,10 @@ fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
     if let Some(dy) = t.dy {
         // Columns, gathered a few at a time (one cache line of each row).
         const COLUMNS: usize = 8;
-        let fft = Fft::new(ny);
-        let mut scratch = fft.scratch();
-        let mut cols = vec![vec![Complex::ZERO; ny]; COLUMNS];
+        let fft = planner.plan_fft_forward(ny);
+        let mut spectrum = fft.make_output_vec();
+        let mut scratch = fft.make_scratch_vec();
+        let mut cols = vec![fft.make_input_vec(); COLUMNS];
         let (mut m02, mut m04) = (Sum::default(), Sum::default());
         let mut i0 = 0;
         while i0 < nx {
@@ -1226,12 +1236,13 @@ fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
             for (j, row) in t.heights.chunks_exact(nx).enumerate() {
                 for (k, col) in cols.iter_mut().take(width).enumerate() {
                     let i = i0 + k;
-                    col[j] = Complex::new(residual(i, j, row[i]), 0.0);
+                    col[j] = residual(i, j, row[i]);
                 }
             }
             for col in cols.iter_mut().take(width) {
-                fft.forward(col, &mut scratch);
-                let (s2, s4) = line_moments(col, dy);
+                fft.process_with_scratch(col, &mut spectrum, &mut scratch)
+                    .expect("buffers of the plan's lengths");
+                let (s2, s4) = line_moments(&spectrum, ny, dy);
                 m02.add(s2);
                 m04.add(s4);
             }
@@ -1245,19 +1256,18 @@ fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
 }
 
 /// Σ (2π·f_k)²·|X_k|²/N² and Σ (2π·f_k)⁴·|X_k|²/N² over the transform X
-/// of one line of N points spaced h, the Nyquist term (k = N/2, N even)
-/// dropped.
-fn line_moments(x: &[Complex], h: f64) -> (f64, f64) {
-    let n = x.len();
+/// of one real line of N points spaced h, the Nyquist term (k = N/2, N
+/// even) dropped; `half` is the half spectrum X_0..X_{N/2} of the line
+/// (X_{N−k} = conj X_k counts each 0 < k < N/2 twice).
+fn line_moments(half: &[Complex<f64>], n: usize, h: f64) -> (f64, f64) {
     let (mut s2, mut s4) = (Sum::default(), Sum::default());
     let scale = 2.0 * PI / (n as f64 * h);
-    for (k, xk) in x.iter().enumerate().skip(1) {
-        if 2 * k == n {
+    for (k, xk) in half.iter().enumerate().skip(1) {
+        if 2 * k >= n {
             continue;
         }
-        let kk = if 2 * k < n { k } else { n - k };
-        let w = (scale * kk as f64).powi(2);
-        let p = xk.norm_sqr();
+        let w = (scale * k as f64).powi(2);
+        let p = 2.0 * xk.norm_sqr();
         s2.add(w * p);
         s4.add(w * w * p);
     }
@@ -1283,214 +1293,40 @@ fn sweep_moments_only(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
     out
 }
 
-// ---------------------------------------------------------------------------
-// A small FFT: iterative radix 2, and Bluestein's chirp-z for other lengths.
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Complex {
-    re: f64,
-    im: f64,
-}
-
-impl Complex {
-    const ZERO: Complex = Complex { re: 0.0, im: 0.0 };
-
-    fn new(re: f64, im: f64) -> Complex {
-        Complex { re, im }
-    }
-
-    /// e^{−iπ·num/den}, from the reduced angle.
-    fn unit(num: f64, den: f64) -> Complex {
-        let (s, c) = (PI * num / den).sin_cos();
-        Complex { re: c, im: -s }
-    }
-
-    fn mul(self, o: Complex) -> Complex {
-        Complex {
-            re: self.re * o.re - self.im * o.im,
-            im: self.re * o.im + self.im * o.re,
-        }
-    }
-
-    fn conj(self) -> Complex {
-        Complex {
-            re: self.re,
-            im: -self.im,
-        }
-    }
-
-    fn norm_sqr(self) -> f64 {
-        self.re * self.re + self.im * self.im
-    }
-}
-
-/// Radix-2 transform of a power-of-two length.
-struct Radix2 {
-    n: usize,
-    /// e^{−2πik/n}, k < n/2.
-    twiddles: Vec<Complex>,
-    /// The bit-reversal permutation.
-    reversed: Vec<usize>,
-}
-
-impl Radix2 {
-    fn new(n: usize) -> Radix2 {
-        let bits = n.trailing_zeros();
-        let twiddles = (0..n / 2).map(|k| Complex::unit(2.0 * k as f64, n as f64)).collect();
-        let reversed = (0..n)
-            .map(|i| {
-                if bits == 0 {
-                    0
-                } else {
-                    i.reverse_bits() >> (usize::BITS - bits)
-                }
-            })
-            .collect();
-        Radix2 { n, twiddles, reversed }
-    }
-
-    fn forward(&self, x: &mut [Complex]) {
-        let n = self.n;
-        for (i, &r) in self.reversed.iter().enumerate() {
-            if i < r {
-                x.swap(i, r);
-            }
-        }
-        let mut len = 2;
-        while len <= n {
-            let half = len / 2;
-            let step = n / len;
-            for block in x.chunks_exact_mut(len) {
-                let (lo, hi) = block.split_at_mut(half);
-                for (k, (a, b)) in lo.iter_mut().zip(hi.iter_mut()).enumerate() {
-                    let w = self.twiddles[k * step];
-                    let t = b.mul(w);
-                    *b = Complex::new(a.re - t.re, a.im - t.im);
-                    *a = Complex::new(a.re + t.re, a.im + t.im);
-                }
-            }
-            len *= 2;
-        }
-    }
-}
-
-/// A forward DFT of any length n ≥ 1.
-enum Fft {
-    Radix2(Radix2),
-    Bluestein {
-        n: usize,
-        inner: Radix2,
-        /// e^{−iπk²/n}, k < n.
-        chirp: Vec<Complex>,
-        /// The transform of the conjugate chirp, wrapped to the inner length.
-        kernel: Vec<Complex>,
-    },
-}
-
-impl Fft {
-    fn new(n: usize) -> Fft {
-        if n.is_power_of_two() {
-            return Fft::Radix2(Radix2::new(n));
-        }
-        let m = (2 * n - 1).next_power_of_two();
-        let inner = Radix2::new(m);
-        // k² mod 2n keeps the angle small (and exact).
-        let chirp: Vec<Complex> = (0..n)
-            .map(|k| {
-                let k2 = ((k as u128 * k as u128) % (2 * n as u128)) as f64;
-                Complex::unit(k2, n as f64)
-            })
-            .collect();
-        let mut kernel = vec![Complex::ZERO; m];
-        for (k, w) in chirp.iter().enumerate() {
-            kernel[k] = w.conj();
-            if k > 0 {
-                kernel[m - k] = w.conj();
-            }
-        }
-        inner.forward(&mut kernel);
-        Fft::Bluestein {
-            n,
-            inner,
-            chirp,
-            kernel,
-        }
-    }
-
-    fn scratch(&self) -> Vec<Complex> {
-        match self {
-            Fft::Radix2(_) => Vec::new(),
-            Fft::Bluestein { inner, .. } => vec![Complex::ZERO; inner.n],
-        }
-    }
-
-    /// X_k = Σ x_j·e^{−2πijk/n}, in place.
-    fn forward(&self, x: &mut [Complex], scratch: &mut [Complex]) {
-        match self {
-            Fft::Radix2(r) => r.forward(x),
-            Fft::Bluestein {
-                n,
-                inner,
-                chirp,
-                kernel,
-            } => {
-                let m = inner.n;
-                scratch.fill(Complex::ZERO);
-                for ((s, xv), w) in scratch.iter_mut().zip(x.iter()).zip(chirp) {
-                    *s = xv.mul(*w);
-                }
-                inner.forward(scratch);
-                // Convolution, then the inverse transform as the conjugate
-                // of the forward transform of the conjugate.
-                for (s, k) in scratch.iter_mut().zip(kernel) {
-                    *s = s.mul(*k).conj();
-                }
-                inner.forward(scratch);
-                let scale = 1.0 / m as f64;
-                for ((xv, s), w) in x.iter_mut().zip(scratch.iter()).zip(chirp).take(*n) {
-                    let y = Complex::new(s.re * scale, -s.im * scale);
-                    *xv = y.mul(*w);
-                }
-            }
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn dft(x: &[Complex]) -> Vec<Complex> {
-        let n = x.len();
-        (0..n)
-            .map(|k| {
-                let mut acc = Complex::ZERO;
-                for (j, v) in x.iter().enumerate() {
-                    let w = Complex::unit(2.0 * ((j * k) % n) as f64, n as f64);
-                    let t = v.mul(w);
-                    acc = Complex::new(acc.re + t.re, acc.im + t.im);
-                }
-                acc
-            })
-            .collect()
-    }
-
+    /// `line_moments` of the `realfft` half spectrum against the sums of
+    /// a direct DFT over every k (both halves).
     #[test]
-    fn fft_matches_the_dft() {
-        for n in [1usize, 2, 8, 16, 17, 30, 100, 128, 243] {
-            let x: Vec<Complex> = (0..n)
-                .map(|j| Complex::new((j as f64 * 0.37).sin() + 0.1 * j as f64, (j as f64 * 1.3).cos()))
-                .collect();
-            let want = dft(&x);
-            let fft = Fft::new(n);
-            let mut got = x.clone();
-            let mut scratch = fft.scratch();
-            fft.forward(&mut got, &mut scratch);
-            let norm: f64 = want.iter().map(|c| c.norm_sqr()).sum::<f64>().sqrt();
-            for (g, w) in got.iter().zip(&want) {
-                let err = ((g.re - w.re).powi(2) + (g.im - w.im).powi(2)).sqrt();
-                assert!(err <= 1e-13 * norm, "n = {n}: {g:?} vs {w:?}");
+    fn line_moments_match_a_direct_dft() {
+        let h = 0.7;
+        for n in [2usize, 3, 8, 16, 17, 30, 100, 128, 243] {
+            let x: Vec<f64> = (0..n).map(|j| (j as f64 * 0.37).sin() + 0.1 * j as f64).collect();
+            let (mut w2, mut w4) = (0.0, 0.0);
+            for k in 1..n {
+                if 2 * k == n {
+                    continue;
+                }
+                let (mut re, mut im) = (0.0, 0.0);
+                for (j, v) in x.iter().enumerate() {
+                    let (s, c) = (2.0 * PI * ((j * k) % n) as f64 / n as f64).sin_cos();
+                    re += v * c;
+                    im -= v * s;
+                }
+                let f = 2.0 * PI * k.min(n - k) as f64 / (n as f64 * h);
+                let p = (re * re + im * im) / (n * n) as f64;
+                w2 += f * f * p;
+                w4 += f.powi(4) * p;
             }
+            let fft = RealFftPlanner::<f64>::new().plan_fft_forward(n);
+            let (mut input, mut half) = (x.clone(), fft.make_output_vec());
+            fft.process(&mut input, &mut half).unwrap();
+            let (g2, g4) = line_moments(&half, n, h);
+            let scale = w2.abs().max(1e-300);
+            assert!((g2 - w2).abs() <= 1e-12 * scale, "n = {n}: {g2} vs {w2}");
+            assert!((g4 - w4).abs() <= 1e-12 * w4.abs().max(1e-300), "n = {n}: {g4} vs {w4}");
         }
     }
 

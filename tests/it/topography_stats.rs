@@ -225,7 +225,7 @@ const SPECTRAL: StatsOptions = StatsOptions {
 
 #[test]
 fn spectral_moments_of_a_band_limited_surface_are_exact() {
-    // 64 × 48: radix 2 along x, Bluestein along y (and the other way
+    // 64 × 48: a power-of-two length along x, another along y (and the other way
     // round); Δx ≠ Δy.
     for (nx, ny) in [(64, 48), (56, 64), (64, 64)] {
         let (dx, dy) = (0.7e-6, 1.3e-6);
@@ -261,7 +261,7 @@ fn spectral_moments_of_a_band_limited_surface_are_exact() {
         );
         assert_rel(&format!("{what} y_s"), s.y_s, 4.0 * (m0 / (PI * alpha)).sqrt(), REL);
     }
-    // A profile of 1000 points (Bluestein).
+    // A profile of 1000 points (not a power of two).
     let waves: Vec<_> = WAVES.iter().map(|&(a, p, _, phi)| (a, 4.0 * p, 0.0, phi)).collect();
     let (n, dx) = (1000, 2e-7);
     let t = Topography::profile(band_limited(n, 1, &waves), dx).unwrap();
