@@ -1,14 +1,17 @@
 //! Measured surfaces (MODEL.md §10): height maps and profiles read from
 //! files (ISO 25178-72 X3P, `.npy`, text), their statistics, and the
-//! equivalent surface of two rough surfaces.
+//! equivalent surface of two rough surfaces, and the ISO 16610 Gaussian
+//! filters (S-filter, L-filter).
 //!
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
 
+mod filter;
 mod read;
 mod stats;
 mod surface;
 
+pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use read::{read_bytes, read_file, write_x3p, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use stats::{combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning};
 pub use surface::Surface;
