@@ -35,6 +35,9 @@ const INTEGER_SLACK: f64 = 1e-9;
 /// row).
 const COLUMN_BLOCK: usize = 16;
 
+/// Outputs summed at once by the direct convolution (in registers).
+const LANES: usize = 8;
+
 /// What a filter refuses.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -110,12 +113,15 @@ pub fn gaussian_lowpass(t: &Topography, lambda: f64) -> Result<Topography, Filte
 /// [`gaussian_lowpass`] with the convolution chosen by the caller (for
 /// tests and timing; the result is the same to rounding).
 pub fn gaussian_lowpass_using(t: &Topography, lambda: f64, method: Convolution) -> Result<Topography, FilterError> {
-    let f = filtered(t, lambda, method)?;
-    let heights = f
-        .residual
-        .iter()
-        .map(|r| if r.is_nan() { f64::NAN } else { f.offset + f.scale * r })
-        .collect();
+    let Filtered {
+        offset,
+        scale,
+        residual: mut heights,
+    } = filtered(t, lambda, method)?;
+    for h in &mut heights {
+        // NaN (missing) stays NaN.
+        *h = offset + scale * *h;
+    }
     Ok(like(t, heights))
 }
 
@@ -188,12 +194,14 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     // surface exactly constant and keeps FFT rounding relative to the
     // roughness, not to the mean height; the power-of-two scale (exact)
     // keeps every sum far from overflow and underflow.
-    let (lo, hi) = z
-        .iter()
-        .filter(|h| !h.is_nan())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
-            (lo.min(h), hi.max(h))
-        });
+    // One pass for the range and the missing points (comparisons with
+    // NaN are false: missing points drop out by themselves).
+    let (mut lo, mut hi, mut missing) = (f64::INFINITY, f64::NEG_INFINITY, false);
+    for &h in z {
+        lo = if h < lo { h } else { lo };
+        hi = if h > hi { h } else { hi };
+        missing |= h.is_nan();
+    }
     if lo > hi {
         // Every point missing.
         return Ok(Filtered {
@@ -205,11 +213,13 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     let offset = lo / 2.0 + hi / 2.0;
     let spread = (hi / 2.0 - lo / 2.0).max(f64::MIN_POSITIVE);
     let scale = 2f64.powi(spread.log2().ceil() as i32);
-    let missing = z.iter().any(|h| h.is_nan());
+    // Exact: a power of two (or its reciprocal overflowed to ∞ for spreads
+    // below 2^-1023, which MIN_POSITIVE rules out).
+    let inverse = 1.0 / scale;
 
     let mut num: Vec<f64> = z
         .iter()
-        .map(|&h| if h.is_nan() { 0.0 } else { (h - offset) / scale })
+        .map(|&h| if h.is_nan() { 0.0 } else { (h - offset) * inverse })
         .collect();
     let mut den: Vec<f64> = if missing {
         z.iter().map(|h| if h.is_nan() { 0.0 } else { 1.0 }).collect()
@@ -217,7 +227,7 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
         Vec::new()
     };
 
-    let mut along_x = LineFilter::new(nx, weights(lambda, t.dx()), method);
+    let mut along_x = LineFilter::new(nx, weights(lambda, t.dx()), method, false);
     for row in num.chunks_exact_mut(nx) {
         along_x.apply_in_place(row);
     }
@@ -230,7 +240,7 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     }
     let mut den_y = vec![1.0; ny];
     if let Some(dy) = t.dy() {
-        let mut along_y = LineFilter::new(ny, weights(lambda, dy), method);
+        let mut along_y = LineFilter::new(ny, weights(lambda, dy), method, true);
         columns(&mut num, nx, ny, &mut along_y);
         columns(&mut den, nx, ny, &mut along_y);
         if !missing {
@@ -244,9 +254,13 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
             .map(|(h, (n, d))| if h.is_nan() { f64::NAN } else { n / d })
             .collect()
     } else {
+        for d in &mut den_x {
+            *d = 1.0 / *d;
+        }
         for (row, dy) in num.chunks_exact_mut(nx).zip(&den_y) {
+            let dy = 1.0 / dy;
             for (n, dx) in row.iter_mut().zip(&den_x) {
-                *n /= dx * dy;
+                *n *= dx * dy;
             }
         }
         num
@@ -272,12 +286,15 @@ fn weights(lambda: f64, delta: f64) -> Vec<f64> {
         .collect()
 }
 
-/// The y pass, in place: blocks of columns gathered into lines,
-/// convolved, and put back.
+/// The y pass, in place.
 fn columns(data: &mut [f64], nx: usize, ny: usize, filter: &mut LineFilter) {
     if data.is_empty() {
         return;
     }
+    if let LineFilter::Direct { w, .. } = filter {
+        return columns_direct(data, nx, ny, w);
+    }
+    // Blocks of columns gathered into lines, convolved, and put back.
     let mut lines = vec![0.0; COLUMN_BLOCK * ny];
     for i0 in (0..nx).step_by(COLUMN_BLOCK) {
         let b = COLUMN_BLOCK.min(nx - i0);
@@ -293,6 +310,55 @@ fn columns(data: &mut [f64], nx: usize, ny: usize, filter: &mut LineFilter) {
             for (c, v) in row[i0..i0 + b].iter_mut().enumerate() {
                 *v = lines[c * ny + j];
             }
+        }
+    }
+}
+
+/// The direct y pass without gathering columns: each row becomes
+/// w_0·row_j + Σ_k w_k (row_{j−k} + row_{j+k}) (rows outside the map are
+/// zero), over strips of columns narrow enough for the 2K + 1 rows of a
+/// strip to stay in cache. The rows above j are already overwritten: their originals
+/// are kept in a ring of K + 1 rows.
+fn columns_direct(data: &mut [f64], nx: usize, ny: usize, w: &[f64]) {
+    let reach = w.len() - 1;
+    // About 256 KiB of rows per strip, 64 to 512 columns.
+    let strip = (32 * 1024 / (2 * reach + 1)).clamp(64, 512);
+    let ring_len = reach + 1;
+    let mut ring = vec![0.0; ring_len * strip];
+    let mut acc = vec![0.0; strip];
+    for i0 in (0..nx).step_by(strip) {
+        let b = strip.min(nx - i0);
+        for j in 0..ny {
+            let at = j * nx + i0;
+            let slot = (j % ring_len) * strip;
+            ring[slot..slot + b].copy_from_slice(&data[at..at + b]);
+            let acc = &mut acc[..b];
+            for (a, &c) in acc.iter_mut().zip(&ring[slot..slot + b]) {
+                *a = w[0] * c;
+            }
+            for (k, &wk) in w.iter().enumerate().skip(1) {
+                let above = (j >= k).then(|| ((j - k) % ring_len) * strip);
+                let below = (j + k < ny).then(|| (j + k) * nx + i0);
+                match (above, below) {
+                    (Some(u), Some(d)) => {
+                        for ((a, &x), &y) in acc.iter_mut().zip(&ring[u..u + b]).zip(&data[d..d + b]) {
+                            *a += wk * (x + y);
+                        }
+                    }
+                    (Some(u), None) => {
+                        for (a, &x) in acc.iter_mut().zip(&ring[u..u + b]) {
+                            *a += wk * x;
+                        }
+                    }
+                    (None, Some(d)) => {
+                        for (a, &y) in acc.iter_mut().zip(&data[d..d + b]) {
+                            *a += wk * y;
+                        }
+                    }
+                    (None, None) => {}
+                }
+            }
+            data[at..at + b].copy_from_slice(acc);
         }
     }
 }
@@ -318,7 +384,8 @@ enum LineFilter {
 }
 
 impl LineFilter {
-    fn new(n: usize, mut w: Vec<f64>, method: Convolution) -> LineFilter {
+    /// `column`: lines along y (gathered for an FFT).
+    fn new(n: usize, mut w: Vec<f64>, method: Convolution, column: bool) -> LineFilter {
         // Weights at |k| ≥ n never meet a point of the line.
         w.truncate(n);
         let reach = w.len() - 1;
@@ -326,7 +393,7 @@ impl LineFilter {
         let use_fft = match method {
             Convolution::Direct => false,
             Convolution::Fft => true,
-            Convolution::Auto => fft_cost(len) < direct_cost(n, reach),
+            Convolution::Auto => fft_cost(n, len, column) < direct_cost(n, reach),
         };
         if !use_fft {
             return LineFilter::Direct {
@@ -369,16 +436,28 @@ impl LineFilter {
                 let reach = w.len() - 1;
                 let n = line.len();
                 padded[reach..reach + n].copy_from_slice(line);
-                let centre = &padded[reach..reach + n];
-                for (o, &c) in line.iter_mut().zip(centre) {
-                    *o = w[0] * c;
-                }
-                for (k, &wk) in w.iter().enumerate().skip(1) {
-                    let left = &padded[reach - k..reach - k + n];
-                    let right = &padded[reach + k..reach + k + n];
-                    for ((o, &a), &b) in line.iter_mut().zip(left).zip(right) {
-                        *o += wk * (a + b);
+                // Blocks of LANES outputs held in registers across the
+                // weights (symmetric: one multiply per pair of points).
+                let blocks = n / LANES;
+                for b in 0..blocks {
+                    let i = b * LANES;
+                    let centre: &[f64; LANES] = padded[reach + i..reach + i + LANES].try_into().unwrap();
+                    let mut acc = centre.map(|c| w[0] * c);
+                    for (k, &wk) in w.iter().enumerate().skip(1) {
+                        let left: &[f64; LANES] = padded[reach + i - k..reach + i - k + LANES].try_into().unwrap();
+                        let right: &[f64; LANES] = padded[reach + i + k..reach + i + k + LANES].try_into().unwrap();
+                        for l in 0..LANES {
+                            acc[l] += wk * (left[l] + right[l]);
+                        }
                     }
+                    line[i..i + LANES].copy_from_slice(&acc);
+                }
+                for i in blocks * LANES..n {
+                    let mut acc = w[0] * padded[reach + i];
+                    for (k, &wk) in w.iter().enumerate().skip(1) {
+                        acc += wk * (padded[reach + i - k] + padded[reach + i + k]);
+                    }
+                    line[i] = acc;
                 }
             }
             LineFilter::Fft {
@@ -410,20 +489,24 @@ impl LineFilter {
 
 // Why two ways: direct summation costs ~(K + 1)·n multiply-adds per line
 // (the weights are symmetric) and vectorises well, so it wins for short
-// kernels (the S-filter, λ_s a few Δ); FFT convolution costs
-// ~len·log2(len) per line whatever K is, so it wins for long ones (the
-// L-filter, λ_c a sizeable part of the scan, K in the hundreds). The
-// constants below are the measured time per unit of each (ns, one core,
-// x86-64, `examples/filter_speed.rs`); only their ratio matters.
-const DIRECT_NS: f64 = 0.25;
-const FFT_NS: f64 = 0.5;
+// kernels (the S-filter, λs a few Δ); FFT convolution costs
+// ~len·log2(len) per line whatever K is (len ≥ n + K), so it wins for
+// long ones (the L-filter, λc a sizeable part of the scan, K in the
+// hundreds). Along y the FFT also pays for gathering the columns into
+// lines (the direct sum runs over whole rows). The constants are the
+// measured time per unit of each (ns, one core, x86-64 without AVX,
+// 4096 × 4096, `examples/filter_speed.rs`); only their ratios matter,
+// and near the crossover the two cost about the same anyway.
+const DIRECT_NS: f64 = 0.4;
+const FFT_NS: f64 = 0.55;
+const GATHER_NS: f64 = 5.0;
 
 fn direct_cost(n: usize, reach: usize) -> f64 {
     DIRECT_NS * (reach + 1) as f64 * n as f64
 }
 
-fn fft_cost(len: usize) -> f64 {
-    FFT_NS * len as f64 * (len as f64).log2()
+fn fft_cost(n: usize, len: usize, column: bool) -> f64 {
+    FFT_NS * len as f64 * (len as f64).log2() + if column { GATHER_NS * n as f64 } else { 0.0 }
 }
 
 /// The smallest even 2^a·3^b·5^c ≥ `min` (a fast FFT length).
