@@ -1,6 +1,6 @@
 //! ISO 16610 Gaussian filters of profiles (ISO 16610-21) and maps
-//! (ISO 16610-61): the mean line / mean surface G_λ[z], the S-filter and
-//! the L-filter (roughness z − G_λc[z]).
+//! (ISO 16610-61): the mean line / mean surface `G_λ[z]`, the S-filter and
+//! the L-filter (roughness z − `G_λc[z]`).
 //!
 //! Weighting function s(x) = exp(−π (x/(αλ))²)/(αλ) with
 //! α = √(ln 2/π) (50 % amplitude transmission at the cut-off wavelength
@@ -103,7 +103,7 @@ pub enum Convolution {
     Fft,
 }
 
-/// G_λ[z]: the Gaussian low-pass (mean line / mean surface) of `t` at
+/// `G_λ[z]`: the Gaussian low-pass (mean line / mean surface) of `t` at
 /// cut-off `lambda` (metres). Missing points stay missing; the others are
 /// the normalised convolution over the valid points within λ.
 pub fn gaussian_lowpass(t: &Topography, lambda: f64) -> Result<Topography, FilterError> {
@@ -131,7 +131,7 @@ pub fn s_filter(t: &Topography, lambda_s: f64) -> Result<Topography, FilterError
     gaussian_lowpass(t, lambda_s)
 }
 
-/// The L-filter: the roughness z − G_λc[z] (metres), the wavelengths
+/// The L-filter: the roughness z − `G_λc[z]` (metres), the wavelengths
 /// longer than `lambda_c` removed. Missing points stay missing.
 pub fn l_filter(t: &Topography, lambda_c: f64) -> Result<Topography, FilterError> {
     let f = filtered(t, lambda_c, Convolution::Auto)?;
@@ -163,7 +163,7 @@ fn like(t: &Topography, heights: Vec<f64>) -> Topography {
     }
 }
 
-/// G_λ[z] = offset + scale·residual (NaN where missing).
+/// `G_λ[z]` = offset + scale·residual (NaN where missing).
 struct Filtered {
     offset: f64,
     scale: f64,
@@ -212,9 +212,8 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     }
     let offset = lo / 2.0 + hi / 2.0;
     let spread = (hi / 2.0 - lo / 2.0).max(f64::MIN_POSITIVE);
-    let scale = 2f64.powi(spread.log2().ceil() as i32);
-    // Exact: a power of two (or its reciprocal overflowed to ∞ for spreads
-    // below 2^-1023, which MIN_POSITIVE rules out).
+    // 2^-1022..=2^1023: the scale and its reciprocal are finite and exact.
+    let scale = 2f64.powi((spread.log2().ceil() as i32).clamp(-1022, 1023));
     let inverse = 1.0 / scale;
 
     let mut num: Vec<f64> = z
@@ -364,7 +363,7 @@ fn columns_direct(data: &mut [f64], nx: usize, ny: usize, w: &[f64]) {
 }
 
 /// A zero-padded convolution of lines of `n` points with the symmetric
-/// weights w_0..w_K: out[i] = Σ_{|k| ≤ K, 0 ≤ i+k < n} w_|k| x[i+k].
+/// weights w_0..w_K: out(i) = Σ w_|k|·x(i + k) over |k| ≤ K, 0 ≤ i + k < n.
 enum LineFilter {
     Direct {
         w: Vec<f64>,
