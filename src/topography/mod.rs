@@ -1,16 +1,19 @@
 //! Measured surfaces (MODEL.md §10): height maps and profiles read from
 //! files (ISO 25178-72 X3P, `.npy`, text), their statistics, their power
-//! spectral density, and the equivalent surface of two rough surfaces.
+//! spectral density, the ISO 16610 Gaussian filters (S-filter, L-filter),
+//! and the equivalent surface of two rough surfaces.
 //!
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
 
+mod filter;
 mod psd;
 mod read;
 mod stats;
 mod surface;
 mod write;
 
+pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use psd::{psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
 pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use stats::{

@@ -89,10 +89,10 @@ pub enum PsdError {
     },
 }
 
-impl PsdError {
-    /// What kind of failure this is (see [`ErrorKind`]): always
-    /// [`ErrorKind::Argument`].
-    pub fn kind(&self) -> ErrorKind {
+/// What kind of failure this is (see [`ErrorKind`]): always
+/// [`ErrorKind::Argument`].
+impl crate::Classify for PsdError {
+    fn kind(&self) -> ErrorKind {
         ErrorKind::Argument
     }
 }

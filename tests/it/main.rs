@@ -22,5 +22,6 @@ mod reference_points;
 mod reference_values;
 mod surface_friction;
 mod table_lookup;
+mod topography_filter;
 mod topography_read;
 mod topography_stats;
