@@ -404,6 +404,7 @@ fn hann_radial(nx: usize, ny: usize, lx: f64, ly: f64) -> Vec<f64> {
 mod tests {
     use super::*;
     use crate::topography::{Derivative, Detrend, StatsOptions};
+    use crate::Classify;
 
     /// Pseudo-random heights in [−½, ½)·1e-6 plus an offset and a wave.
     fn rough(nx: usize, ny: usize, seed: u64) -> Vec<f64> {
