@@ -52,6 +52,8 @@ fn bench_stats(c: &mut Criterion) {
     let spectral = StatsOptions {
         detrend: Detrend::Mean,
         derivative: Derivative::Spectral,
+        lambda_s: None,
+        lambda_c: None,
     };
     group.bench_function("spectral_1024x1024", |b| {
         b.iter(|| black_box(black_box(&t).stats(&spectral).expect("stats")))

@@ -195,7 +195,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             }
             let standardised = match surface.parts() {
                 [(t, s)] => Some(
-                    t.detrended(surface.options().detrend)
+                    t.band_heights(&surface.options())
                         .map_err(|e| Failure::of("surface", e))?
                         .into_iter()
                         .map(|z| z / s.sigma)

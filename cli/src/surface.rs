@@ -5,7 +5,8 @@
 
 use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg, MaterialsArgs, ModelKindArg};
 use ke_friction::topography::{
-    read_file, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats, MAX_POINTS,
+    read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface, SurfaceStats,
+    Topography, MAX_POINTS,
 };
 use ke_friction::{Friction, Load, Materials, Model, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -72,6 +73,44 @@ pub struct SurfaceArgs {
     /// The most points (heights) a surface file may have: one that declares more is refused before anything is read or allocated (reading needs about 8 bytes a point) [default: 268435456 = 2^28, 2 GiB of heights].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub max_points: Option<u64>,
+    /// S-filter nesting index λs in metres (ISO 16610-61 Gaussian, 50 % transmission at λs): wavelengths shorter than λs are removed before the statistics; `auto` = the reliability cut-off of --tip-radius or --resolution. At least 2·max(dx, dy).
+    #[arg(long, value_name = "M|auto", value_parser = parse_lambda)]
+    pub lambda_s: Option<Lambda>,
+    /// L-filter nesting index λc in metres (ISO 16610-61 Gaussian): form and waviness longer than λc are removed (the roughness is z − G_λc[z]), after the detrending. At most the scan size.
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub lambda_c: Option<f64>,
+    /// Scanning-probe tip radius (m): the reliability cut-off is the scale below which the scale-dependent curvature reaches −1/(2·R) (Sanner et al. 2022).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub tip_radius: Option<f64>,
+    /// The instrument's lateral resolution (m): the reliability cut-off of an optical instrument (takes precedence over --tip-radius).
+    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    pub resolution: Option<f64>,
+}
+
+/// The reliability cut-off of a scanning probe of tip radius `radius` (m)
+/// on `t` (safety factor ½, as SurfaceTopography's default).
+fn tip_cutoff(t: &Topography, radius: f64) -> Result<Option<f64>, String> {
+    if !(radius.is_finite() && radius > 0.0) {
+        return Err(format!("--tip-radius {} is out of range: must be > 0 (metres)", Shortest(radius)));
+    }
+    tip_reliability_cutoff(t, radius, 0.5).map_err(|e| e.to_string())
+}
+
+/// `--lambda-s`: a length or `auto`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Lambda {
+    /// Metres.
+    Metres(f64),
+    /// The reliability cut-off.
+    Auto,
+}
+
+fn parse_lambda(s: &str) -> Result<Lambda, String> {
+    if s == "auto" {
+        Ok(Lambda::Auto)
+    } else {
+        parse_f64(s).map(Lambda::Metres)
+    }
 }
 
 /// Length units of the heights and intervals.
@@ -147,6 +186,37 @@ impl SurfaceArgs {
         StatsOptions {
             detrend: self.detrend.into(),
             derivative: self.derivative.into(),
+            lambda_s: None,
+            lambda_c: None,
+        }
+    }
+
+    /// The options of the statistics of `t`: the filters' nesting indices
+    /// included (`--lambda-s auto`: the reliability cut-off).
+    fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<StatsOptions, Failure> {
+        let lambda_s = match self.lambda_s {
+            None => None,
+            Some(Lambda::Metres(m)) => Some(m),
+            Some(Lambda::Auto) => match self.reliability(t) {
+                Ok(Some(cutoff)) => Some(cutoff),
+                Ok(None) => None,
+                Err(e) => return Err(Failure::input(format!("{flag}: {}: --lambda-s auto: {e}", path.display()))),
+            },
+        };
+        Ok(StatsOptions {
+            lambda_s,
+            lambda_c: self.lambda_c,
+            ..self.options()
+        })
+    }
+
+    /// The instrument's reliability cut-off (m): --resolution as given, or
+    /// from --tip-radius; `None` when the data show no tip artefact.
+    pub fn reliability(&self, t: &Topography) -> Result<Option<f64>, String> {
+        match (self.resolution, self.tip_radius) {
+            (Some(r), _) => Ok(Some(r)),
+            (None, Some(radius)) => tip_cutoff(t, radius),
+            (None, None) => Err("give --tip-radius or --resolution for the reliability cut-off".into()),
         }
     }
 
@@ -201,17 +271,29 @@ impl SurfaceArgs {
 
     /// The surface of one file, or the equivalent surface of two.
     pub fn surface(&self, flag: &str, files: &[PathBuf]) -> Result<Surface, Failure> {
-        let options = self.options();
         let stats_failure =
             |e: ke_friction::topography::StatsError, what: String| Failure::of(format!("{flag} {what}"), e);
         let name = |p: &PathBuf| p.display().to_string();
+        let one = |p: &PathBuf| {
+            let t = self.read(flag, p)?;
+            let options = self.options_for(flag, p, &t)?;
+            let cutoff = match (self.resolution, self.tip_radius) {
+                (None, None) => None,
+                _ => self
+                    .reliability(&t)
+                    .map_err(|e| Failure::input(format!("{flag}: {}: {e}", p.display())))?,
+            };
+            let mut surface = Surface::new(t, options).map_err(|e| stats_failure(e, name(p)))?;
+            if let Some(cutoff) = cutoff {
+                surface.check_reliability(cutoff);
+            }
+            Ok(surface)
+        };
         match files {
-            [one] => Surface::new(self.read(flag, one)?, options).map_err(|e| stats_failure(e, name(one))),
+            [single] => one(single),
             [a, b] => {
                 // Each surface's own failure names its file; the pair's
                 // (a profile with a map) names both.
-                let one =
-                    |p: &PathBuf| Surface::new(self.read(flag, p)?, options).map_err(|e| stats_failure(e, name(p)));
                 Surface::join(one(a)?, one(b)?).map_err(|e| stats_failure(e, format!("{} + {}", name(a), name(b))))
             }
             _ => Err(Failure::input(format!("{flag}: give one surface file or two"))),

@@ -35,6 +35,8 @@ fn options(detrend: &str, derivative: &str) -> PyResult<StatsOptions> {
     Ok(StatsOptions {
         detrend: detrend_of(detrend)?,
         derivative: derivative_of(derivative)?,
+        lambda_s: None,
+        lambda_c: None,
     })
 }
 

@@ -9,6 +9,7 @@
 mod filter;
 mod psd;
 mod read;
+mod scan;
 mod stats;
 mod surface;
 mod write;
@@ -19,6 +20,7 @@ pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES,
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
 };
+pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use surface::Surface;
 pub use write::write_x3p;
 

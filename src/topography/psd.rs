@@ -427,6 +427,8 @@ mod tests {
         t.stats(&StatsOptions {
             detrend: Detrend::Mean,
             derivative: Derivative::Spectral,
+            lambda_s: None,
+            lambda_c: None,
         })
         .unwrap()
     }

@@ -98,14 +98,24 @@ crate::named!(
     [FiniteDifference = "fd", Spectral = "spectral"]
 );
 
-/// Options of [`Topography::stats`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+/// Options of [`Topography::stats`]: the band the surface is looked at
+/// and how it is detrended and differentiated.
+///
+/// The pipeline is ISO 25178-3's, in its order: S-filter (λs, the
+/// Gaussian of ISO 16610-61, removes wavelengths shorter than λs) →
+/// F-operation ([`Detrend`]) → L-filter (λc: the roughness is z − G_λc[z],
+/// removing wavelengths longer than λc) → statistics.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StatsOptions {
     /// How the heights are detrended (default: the least-squares plane,
     /// or line for a profile).
     pub detrend: Detrend,
     /// How m2 and m4 are estimated (default: finite differences).
     pub derivative: Derivative,
+    /// The S-filter's nesting index λs (m), or `None` for no S-filter.
+    pub lambda_s: Option<f64>,
+    /// The L-filter's nesting index λc (m), or `None` for no L-filter.
+    pub lambda_c: Option<f64>,
 }
 
 /// Something to know about a result that is still returned.
@@ -136,6 +146,15 @@ pub enum Warning {
         /// The interval of the second surface (metres).
         second: f64,
     },
+    /// The shortest scale the statistics see (λs, or 2·max(dx, dy)
+    /// without an S-filter) is below the instrument's reliability cut-off:
+    /// m2, m4 and so β and ψ come from scales the instrument distorts.
+    Unreliable {
+        /// The shortest scale the statistics see (metres).
+        scale: f64,
+        /// The reliability cut-off (metres).
+        cutoff: f64,
+    },
 }
 
 impl Warning {
@@ -146,6 +165,7 @@ impl Warning {
             Warning::LowBandwidth { .. } => "low_bandwidth",
             Warning::Anisotropy { .. } => "anisotropy",
             Warning::IntervalMismatch { .. } => "interval_mismatch",
+            Warning::Unreliable { .. } => "unreliable_scale",
         }
     }
 }
@@ -168,6 +188,12 @@ impl fmt::Display for Warning {
                 "the two surfaces have {name} = {first} m and {second} m (differing by more than 1 %): \
                  their slope and curvature moments belong to different bands; the result keeps the first's"
             ),
+            Warning::Unreliable { scale, cutoff } => write!(
+                f,
+                "the shortest scale analysed, {scale:e} m, is below the instrument's reliability cut-off \
+                 {cutoff:e} m: beta, R, eta and psi come from distorted scales; filter with --lambda-s {cutoff:e} \
+                 (or auto)"
+            ),
         }
     }
 }
@@ -186,6 +212,10 @@ impl Serialize for Warning {
                 map.serialize_entry("ratio", ratio)?;
                 map.serialize_entry("value", value)?;
             }
+            Warning::Unreliable { scale, cutoff } => {
+                map.serialize_entry("scale", scale)?;
+                map.serialize_entry("cutoff", cutoff)?;
+            }
             Warning::IntervalMismatch { name, first, second } => {
                 map.serialize_entry("name", name)?;
                 map.serialize_entry("first", first)?;
@@ -200,6 +230,12 @@ impl Serialize for Warning {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum StatsError {
+    /// A filter's nesting index is out of range (see [`super::FilterError`]).
+    #[error(transparent)]
+    Filter(#[from] super::FilterError),
+    /// The filtered heights do not make a topography.
+    #[error(transparent)]
+    Topography(#[from] super::TopographyError),
     /// Fewer than 16 points along a direction.
     #[error("{name} = {count} is out of range: at least 16 points are needed along {direction}")]
     TooFewPoints {
@@ -344,6 +380,8 @@ impl crate::Classify for StatsError {
             StatsError::OutOfRange { value, .. } | StatsError::NotFinite { value, .. } => ErrorKind::of_value(*value),
             StatsError::Bandwidth { alpha, .. } => ErrorKind::of_value(*alpha),
             StatsError::Mismatch | StatsError::MissingPoints { .. } => ErrorKind::Argument,
+            StatsError::Filter(e) => e.kind(),
+            StatsError::Topography(e) => e.kind(),
             _ => ErrorKind::Domain,
         }
     }
@@ -370,6 +408,14 @@ pub struct SurfaceStats {
     pub dx: f64,
     /// Sampling interval along y (m); `None` for a profile.
     pub dy: Option<f64>,
+    /// The scan size along x, nx·dx (m).
+    pub size_x: f64,
+    /// The scan size along y, ny·dy (m); `None` for a profile.
+    pub size_y: Option<f64>,
+    /// The S-filter's nesting index λs (m); `None` if not applied.
+    pub lambda_s: Option<f64>,
+    /// The L-filter's nesting index λc (m); `None` if not applied.
+    pub lambda_c: Option<f64>,
     /// σ (Sq): root-mean-square of the detrended heights (m).
     pub sigma: f64,
     /// Sk (Ssk): skewness of the detrended heights (dimensionless).
@@ -440,7 +486,51 @@ impl Topography {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn stats(&self, options: &StatsOptions) -> Result<SurfaceStats, StatsError> {
-        self.stats_of(options).map_err(|e| self.diagnose(e))
+        let mut stats = match self.band(options)? {
+            Some((band, detrend)) => {
+                let plain = StatsOptions {
+                    detrend,
+                    lambda_s: None,
+                    lambda_c: None,
+                    ..*options
+                };
+                band.stats_of(&plain).map_err(|e| band.diagnose(e))?
+            }
+            None => self.stats_of(options).map_err(|e| self.diagnose(e))?,
+        };
+        stats.lambda_s = options.lambda_s;
+        stats.lambda_c = options.lambda_c;
+        Ok(stats)
+    }
+
+    /// The surface in the band `options` states, and the detrending left
+    /// for the statistics to do: S-filter (λs), then the F-operation and
+    /// the L-filter (λc) if there is one (the roughness, detrended: the
+    /// statistics only take its mean out). `None` without filters.
+    fn band(&self, options: &StatsOptions) -> Result<Option<(Topography, Detrend)>, StatsError> {
+        if options.lambda_s.is_none() && options.lambda_c.is_none() {
+            return Ok(None);
+        }
+        let s = match options.lambda_s {
+            Some(lambda) => super::s_filter(self, lambda)?,
+            None => self.clone(),
+        };
+        let Some(lambda) = options.lambda_c else {
+            return Ok(Some((s, options.detrend)));
+        };
+        let heights = s.detrended(options.detrend)?;
+        let detrended = Topography::new(heights, s.nx, s.ny, s.dx, s.dy)?;
+        Ok(Some((super::l_filter(&detrended, lambda)?, Detrend::Mean)))
+    }
+
+    /// The heights the statistics see: in the band `options` states
+    /// (filtered as [`Topography::stats`] does) and detrended, missing
+    /// points NaN. What an empirical height density is built from.
+    pub fn band_heights(&self, options: &StatsOptions) -> Result<Vec<f64>, StatsError> {
+        match self.band(options)? {
+            Some((band, detrend)) => band.detrended(detrend),
+            None => self.detrended(options.detrend),
+        }
     }
 
     /// [`Topography::stats`], its failures not yet diagnosed.
@@ -630,6 +720,10 @@ impl SurfaceStats {
             ny,
             dx,
             dy,
+            size_x: nx as f64 * dx,
+            size_y: dy.map(|dy| ny as f64 * dy),
+            lambda_s: None,
+            lambda_c: None,
             sigma: m0.sqrt(),
             skewness,
             kurtosis,
@@ -651,6 +745,23 @@ impl SurfaceStats {
         };
         stats.warn();
         Ok(stats)
+    }
+
+    /// The shortest scale the statistics see: λs, or without an S-filter
+    /// the shortest wavelength sampled, 2·max(dx, dy).
+    pub fn shortest_scale(&self) -> f64 {
+        self.lambda_s.unwrap_or(2.0 * self.dx.max(self.dy.unwrap_or(0.0)))
+    }
+
+    /// Adds [`Warning::Unreliable`] if the shortest scale analysed is below
+    /// the instrument's reliability cut-off `cutoff` (m); true if it did.
+    pub fn check_reliability(&mut self, cutoff: f64) -> bool {
+        let scale = self.shortest_scale();
+        let unreliable = scale < cutoff * (1.0 - 1e-12);
+        if unreliable {
+            self.warnings.push(Warning::Unreliable { scale, cutoff });
+        }
+        unreliable
     }
 
     /// Adds the warnings that follow from α and the anisotropy ratios.
@@ -709,6 +820,7 @@ pub fn combine(a: &SurfaceStats, b: &SurfaceStats) -> Result<SurfaceStats, Stats
         [m0, skewness, kurtosis],
         (a.m20 + b.m20, m02, a.m40 + b.m40, m04),
     )?;
+    (stats.lambda_s, stats.lambda_c) = (a.lambda_s, a.lambda_c);
     for (name, first, second) in [("dx", Some(a.dx), Some(b.dx)), ("dy", a.dy, b.dy)] {
         if let (Some(first), Some(second)) = (first, second) {
             if (first - second).abs() > INTERVAL_TOLERANCE * first.abs().max(second.abs()) {

@@ -75,6 +75,14 @@ impl Surface {
         Ok(Surface { parts, options, stats })
     }
 
+    /// Records whether the shortest scale analysed is below the
+    /// instrument's reliability cut-off `cutoff` (m): a
+    /// [`Warning::Unreliable`](super::Warning::Unreliable) in the
+    /// statistics if it is (true).
+    pub fn check_reliability(&mut self, cutoff: f64) -> bool {
+        self.stats.check_reliability(cutoff)
+    }
+
     /// The statistics of the surface (of the equivalent surface, for a pair).
     pub fn stats(&self) -> &SurfaceStats {
         &self.stats
@@ -115,7 +123,7 @@ impl Surface {
                 let mut densities = Vec::with_capacity(2);
                 for (t, s) in &self.parts {
                     let heights = t
-                        .detrended(self.options.detrend)
+                        .band_heights(&self.options)
                         .map_err(|e| DistributionError::Conflict {
                             name: "heights",
                             reason: e.to_string(),

@@ -65,7 +65,7 @@ fn options(detrend: &str, derivative: &str) -> StatsOptions {
             "fd" => Derivative::FiniteDifference,
             "spectral" => Derivative::Spectral,
             other => panic!("derivative {other}"),
-        },
+        },        ..StatsOptions::default()
     }
 }
 
@@ -221,6 +221,8 @@ fn exact_moments(waves: &[(f64, f64, f64, f64)], lx: f64, ly: f64) -> [f64; 5] {
 const SPECTRAL: StatsOptions = StatsOptions {
     detrend: Detrend::Mean,
     derivative: Derivative::Spectral,
+    lambda_s: None,
+    lambda_c: None,
 };
 
 #[test]
@@ -285,6 +287,8 @@ fn finite_differences_of_a_band_limited_surface() {
     let o = StatsOptions {
         detrend: Detrend::Mean,
         derivative: Derivative::FiniteDifference,
+        lambda_s: None,
+        lambda_c: None,
     };
     // The surface is constant along y: m02 = 0 is refused.
     assert!(matches!(t.stats(&o), Err(StatsError::OutOfRange { name: "m02", .. })));
