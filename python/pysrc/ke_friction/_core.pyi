@@ -1,4 +1,5 @@
-# Type stubs of the native module (the public API is in __init__.py).
+# Type stubs of the native module (the public API is in the package's modules,
+# re-exported by __init__.py).
 #
 # The array methods (*_into) write into their output arrays and return how
 # many elements are NaN (out_of_domain="nan", nan=True), or raise the first

@@ -1,0 +1,400 @@
+"""A measured surface, :class:`Surface`: read, paired, its statistics,
+and with the materials its model and friction."""
+
+from __future__ import annotations
+
+import math
+import numbers
+import os
+from typing import Any, Dict, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._args import ArrayLike, _check_real
+from ._curve import Curve
+from ._distribution import HeightDistribution, _heights_array, _heights_of
+from ._model import Model
+
+#: Metres per length unit, by the names SurfaceTopography gives its
+#: topographies' ``unit`` (µ as the micro sign or the Greek letter, or u).
+_LENGTH_UNITS = {"km": 1e3, "m": 1.0, "cm": 1e-2, "mm": 1e-3, "\u00b5m": 1e-6, "\u03bcm": 1e-6, "um": 1e-6,
+                 "nm": 1e-9, "\u00c5": 1e-10, "A": 1e-10, "pm": 1e-12}
+_DETRENDS = ("plane", "line", "mean")
+_DERIVATIVES = ("fd", "spectral")
+_FAMILIES = ("gaussian", "pearson", "weibull", "empirical")
+_MATERIALS = ("e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon")
+
+
+def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
+    """``value`` if it is one of the strings ``allowed``; else TypeError
+    (not a str) or ValueError naming argument ``name``."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+    if value not in allowed:
+        raise ValueError(f"{name} = {value!r}: must be " + " or ".join(repr(a) for a in allowed))
+    return value
+
+
+def _interval(name: str, value: Any) -> float:
+    """A sampling interval (metres), finite and > 0."""
+    _check_real(**{name: value})
+    v = float(value)
+    if not (math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r} is out of range: must be > 0 and finite (metres)")
+    return v
+
+
+def _materials(values: Dict[str, Any]) -> Tuple[float, ...]:
+    """The seven materials keywords of :meth:`Surface.model`, as floats in
+    the native layer's order (their ranges are the library's to check)."""
+    _check_real(**values)
+    return tuple(float(values[k]) for k in _MATERIALS)
+
+
+def _surface_of(parts: Any, detrend: str, derivative: str) -> "Surface":
+    """A pickled :class:`Surface`: its topographies (``(heights, nx, ny,
+    dx, dy)`` each, heights flat and row-major) and its options."""
+    return Surface(_core.SurfaceCore.new([(np.ascontiguousarray(h, dtype=np.float64), int(nx), int(ny),
+                                           float(dx), None if dy is None else float(dy))
+                                          for h, nx, ny, dx, dy in parts], detrend, derivative))
+
+
+class Surface:
+    """A measured rough surface as the model sees it (MODEL.md section 10):
+    a height map or profile against a flat, or the equivalent surface of
+    two rough surfaces pressed together (:meth:`pair`); its statistics
+    (:attr:`stats`: sigma (Sq), skewness, kurtosis, the spectral moments,
+    the summit density eta, radius R and beta), and with the materials the
+    model's inputs (:meth:`model`, :meth:`curve`) and the friction of a
+    load (:meth:`friction`), as ``kefric surface`` computes them.
+
+    Make one with :meth:`from_heights` (an array in metres),
+    :meth:`read` (an X3P, ``.npy`` or text file) or
+    :meth:`from_topography` (a SurfaceTopography object). All lengths are
+    in metres. Missing points (NaN, masked) stay missing: left out of
+    every sum, never filled. The statistics are taken once, with
+    ``detrend`` (``"plane"``: the least-squares plane, a line for a
+    profile, the default; ``"line"``: a line along x; ``"mean"``: the mean
+    only) and ``derivative`` (``"fd"``: non-periodic finite differences,
+    the default; ``"spectral"``: periodic spectral moments, for periodic
+    data without missing points). beta and psi depend on the sampling
+    intervals and compare only at the same band.
+
+    Immutable; a surface pickles as its heights, intervals and options
+    (rebuilt to the bit), and ``copy`` and ``deepcopy`` give it itself.
+    Errors: ValueError naming the argument (a bad interval, too few
+    points, constant heights, a file that is not a readable surface,
+    naming the file), OSError for a file that cannot be read, TypeError
+    for arguments of the wrong type.
+
+    >>> x = np.arange(128) * 1e-6
+    >>> z = 2e-7 * (np.sin(0.7e6 * x) + np.cos(0.9e6 * x[:, None]) + np.sin(0.31e6 * x + 0.27e6 * x[:, None]))
+    >>> s = Surface.from_heights(z, 1e-6)
+    >>> s.stats["nx"], s.stats["ny"], round(s.stats["sigma"] * 1e9, 1)
+    (128, 128, 244.8)
+    >>> m = s.model(e1=70e9, nu1=0.33, e2=200e9, nu2=0.31, hardness=1e9, delta_gamma=0.5, epsilon=0.4e-9)
+    >>> m.distribution
+    'pearson'
+    >>> f = s.friction(force=10.0, area=1e-5, e1=70e9, nu1=0.33, e2=200e9, nu2=0.31, hardness=1e9,
+    ...                delta_gamma=0.5, epsilon=0.4e-9)
+    >>> f["friction_force"] == 10.0 * f["mu"]
+    True
+    """
+
+    __slots__ = ("_core",)
+
+    def __init__(self, core: Any) -> None:
+        self._core = core
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        parts = tuple((h, nx, ny, dx, dy) for h, nx, ny, dx, dy in self._core.topographies())
+        return _surface_of, (parts, *self._core.options())
+
+    def __copy__(self) -> "Surface":
+        return self
+
+    def __deepcopy__(self, memo: Any) -> "Surface":
+        return self
+
+    @staticmethod
+    def _options(detrend: Any, derivative: Any) -> Tuple[str, str]:
+        return _choice("detrend", detrend, _DETRENDS), _choice("derivative", derivative, _DERIVATIVES)
+
+    @staticmethod
+    def from_heights(z: ArrayLike, dx: float, dy: Optional[float] = None, *, detrend: str = "plane",
+                     derivative: str = "fd") -> "Surface":
+        """The surface of measured heights ``z`` (metres; NaN, or a masked
+        entry of a NumPy masked array, marks a missing point): a 1-D array
+        is a profile sampled every ``dx`` metres (no ``dy``), a 2-D array a
+        map whose rows are y (``z[j, i]`` at x = i dx, y = j dy; ``dy``
+        defaults to ``dx``). Any real dtype,
+        byte order and memory layout (copied as needed; the surface keeps
+        its own copy). ``detrend`` and ``derivative`` as in
+        :class:`Surface`.
+
+        ValueError: ``dx`` or ``dy`` not finite and > 0, an array of
+        another dimension, an infinite height, fewer than 16 points along a
+        direction or 100 valid ones (a fully masked array), constant
+        heights; TypeError for non-numeric input."""
+        a = _heights_of("z", z, copy=False)  # SurfaceCore.new copies
+        if a.ndim not in (1, 2):
+            raise ValueError(f"z must be 1-D (a profile) or 2-D (a map, rows = y), not {a.ndim}-D (shape {a.shape})")
+        options = Surface._options(detrend, derivative)
+        dx = _interval("dx", dx)
+        if a.ndim == 1:
+            if dy is not None:
+                raise ValueError("dy: not for a profile (a 1-D z has no y)")
+            ny, nx, dy = 1, a.shape[0], None
+        else:
+            (ny, nx), dy = a.shape, dx if dy is None else _interval("dy", dy)
+        return Surface(_core.SurfaceCore.new([(a.reshape(-1), nx, ny, dx, dy)], *options))
+
+    @staticmethod
+    def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
+             z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd",
+             max_points: Optional[int] = None) -> "Surface":
+        """The surface in the file ``path``, by the library's reader (as
+        ``kefric surface`` reads it): ISO 25178-72 X3P (``.x3p``), NumPy
+        ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
+        other extension, text (one column a profile, ``x z`` pairs,
+        ``x y z`` triples on a regular grid, or a matrix of heights).
+
+        ``dx``, ``dy``: the sampling intervals in metres, for files that
+        give none (``.npy``, a text matrix or column); ``dy`` defaults to
+        ``dx``; an interval that contradicts the file's own is an error.
+        ``z_unit``: metres per unit of the heights of ``.npy`` and text
+        files (1e-6 for micrometres; X3P stores metres). ``xy_unit``:
+        metres per unit of the x, y columns of ``x z`` and ``x y z`` text.
+        Both finite and > 0 (ValueError naming the argument otherwise).
+        ``detrend``, ``derivative`` as in :class:`Surface`.
+        ``max_points``: the most points (heights) the surface may have,
+        an integer >= 1; None (the default) is the library's limit,
+        ``MAX_POINTS`` = 2**28. A file whose declared size is over it is
+        refused before its heights are allocated.
+
+        OSError if the file cannot be read; ValueError, naming the file,
+        for one that is not a readable surface (damaged, unsupported, no
+        interval given, more points than ``max_points``, the message
+        giving the limit) or whose statistics cannot be taken;
+        MemoryError if its heights cannot be allocated."""
+        if not isinstance(path, (str, os.PathLike)):
+            raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
+        options = Surface._options(detrend, derivative)
+        dx = None if dx is None else _interval("dx", dx)
+        dy = dx if dy is None else _interval("dy", dy)
+        _check_real(z_unit=z_unit, xy_unit=xy_unit)
+        z_unit, xy_unit = float(z_unit), float(xy_unit)
+        for name, unit in (("z_unit", z_unit), ("xy_unit", xy_unit)):
+            if not (math.isfinite(unit) and unit > 0):
+                raise ValueError(f"{name} = {unit!r} is out of range: must be finite and > 0 (metres per unit)")
+        if max_points is not None:
+            if isinstance(max_points, bool) or not isinstance(max_points, numbers.Integral):
+                raise TypeError(f"max_points must be an int or None, not {type(max_points).__name__}")
+            max_points = int(max_points)
+            if not 1 <= max_points < 2**64:
+                raise ValueError(f"max_points = {max_points} is out of range: must be an integer in [1, 2**64 - 1] "
+                                 "(points), or None for the library's limit")
+        return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options, max_points))
+
+    @staticmethod
+    def from_topography(topography: Any, *, unit: Optional[str] = None, detrend: str = "plane",
+                        derivative: str = "fd") -> "Surface":
+        """The surface of a SurfaceTopography object on a regular grid (a
+        ``Topography`` map or a ``UniformLineScan`` profile, detrended or
+        not): its heights, pixel size and ``unit`` (``"m"``, ``"mm"``,
+        ``"µm"`` or ``"um"``, ``"nm"``, ``"Å"``, ``"pm"``, ...), converted to
+        metres. ``unit`` here names the topography's unit where it has none
+        (or overrides it). Undefined (masked) and NaN heights stay missing.
+        The heights are copied; ``detrend``, ``derivative`` as in
+        :class:`Surface`.
+
+        Needs the SurfaceTopography package (ImportError without it).
+        TypeError for anything else (a nonuniform line scan);
+        ValueError for an unknown or missing unit."""
+        try:
+            from SurfaceTopography.HeightContainer import UniformTopographyInterface
+        except ImportError as e:
+            raise ImportError("Surface.from_topography needs the SurfaceTopography package "
+                              "(pip install SurfaceTopography)") from e
+        if not isinstance(topography, UniformTopographyInterface):
+            raise TypeError("topography must be a SurfaceTopography Topography or UniformLineScan (a regular "
+                            f"grid), not {type(topography).__name__}")
+        name = topography.unit if unit is None else unit
+        if name is None:
+            raise ValueError("unit: the topography has none: give its unit (unit=\"um\", ...)")
+        if not isinstance(name, str):
+            raise TypeError(f"unit must be a str, not {type(name).__name__}")
+        if name not in _LENGTH_UNITS:
+            raise ValueError(f"unit = {name!r}: must be one of " + ", ".join(repr(u) for u in _LENGTH_UNITS))
+        metres = _LENGTH_UNITS[name]
+        h = _heights_of("the topography's heights", topography.heights())
+        pixel = [float(p) * metres for p in np.atleast_1d(topography.pixel_size)]
+        # SurfaceTopography indexes heights [x, y]; a map here has rows = y.
+        z = h * metres if topography.dim == 1 else h.T * metres
+        return Surface.from_heights(z, *pixel, detrend=detrend, derivative=derivative)
+
+    @staticmethod
+    def pair(a: "Surface", b: "Surface", *, detrend: Optional[str] = None,
+             derivative: Optional[str] = None) -> "Surface":
+        """Two rough surfaces pressed together: the equivalent surface of
+        their summed heights against a flat (MODEL.md section 10; the
+        library's ``Surface::pair``). Both are profiles or both maps,
+        ideally sampled alike (a warning in :attr:`stats` says when their
+        intervals differ by more than 1 %). Its statistics are taken with
+        ``detrend`` and ``derivative`` (by default the two surfaces',
+        which must then agree); its Pearson distribution is of the added
+        cumulants, its empirical one the convolution of the two.
+        ValueError for a profile with a map, or a surface that is a pair
+        already."""
+        for name, s in (("a", a), ("b", b)):
+            if not isinstance(s, Surface):
+                raise TypeError(f"{name} must be a Surface, not {type(s).__name__}")
+            if s._core.is_pair():
+                raise ValueError(f"{name} is a pair already: give two single surfaces")
+        (da, va), (db, vb) = a._core.options(), b._core.options()
+        if detrend is None:
+            if da != db:
+                raise ValueError(f"detrend: the surfaces have {da!r} and {db!r}: give detrend=")
+            detrend = da
+        if derivative is None:
+            if va != vb:
+                raise ValueError(f"derivative: the surfaces have {va!r} and {vb!r}: give derivative=")
+            derivative = va
+        return Surface(_core.SurfaceCore.pair(a._core, b._core, *Surface._options(detrend, derivative)))
+
+    @property
+    def stats(self) -> Dict[str, Any]:
+        """The surface's statistics (of the equivalent surface, for a pair),
+        a new dict each time, by the library's record names (what ``kefric
+        surface --json`` prints as ``"surface"``), in SI units: ``points``,
+        ``missing``, ``nx``, ``ny``, ``dx``, ``dy`` (None for a profile),
+        ``sigma`` (Sq), ``skewness``, ``kurtosis`` (not excess), the moments
+        ``m20``, ``m02``, ``m40``, ``m04``, ``m2``, ``m4``, the bandwidth
+        ``alpha``, the summit density ``eta``, radius ``radius``, ``beta``,
+        ``sigma_s``, ``y_s``, the anisotropy ratios, and ``warnings`` (a
+        list of ``{"kind", "message", ...}``)."""
+        return self._core.stats()
+
+    @property
+    def parts(self) -> "list[Dict[str, Any]]":
+        """The statistics of each measured surface, as :attr:`stats`: two
+        for a :meth:`pair` (``kefric surface --json``'s ``"parts"``), one
+        (the same as :attr:`stats`) for a single surface."""
+        return self._core.parts()
+
+    @property
+    def is_pair(self) -> bool:
+        """Whether this is the equivalent surface of two (:meth:`pair`)."""
+        return self._core.is_pair()
+
+    @property
+    def detrend(self) -> str:
+        """How the heights were detrended: ``"plane"``, ``"line"`` or ``"mean"``."""
+        return self._core.options()[0]
+
+    @property
+    def derivative(self) -> str:
+        """How the slope and curvature moments were estimated: ``"fd"`` or ``"spectral"``."""
+        return self._core.options()[1]
+
+    def height_distribution(self, distribution: str = "pearson") -> HeightDistribution:
+        """The surface's height distribution of a family: ``"pearson"`` (of
+        the measured skewness and kurtosis, the default), ``"gaussian"``
+        (the paper's), ``"weibull"`` (of the measured skewness) or
+        ``"empirical"`` (the kernel density of the detrended heights; a
+        pair's is the convolution of the two, and it pickles with them).
+        A measured skewness or kurtosis outside the family's range raises
+        ValueError naming it."""
+        family = _choice("distribution", distribution, _FAMILIES)
+        try:
+            core = self._core.distribution(family)
+        except ValueError as e:
+            hint = "" if family == "empirical" else ' (try distribution="empirical")'
+            raise ValueError(f"distribution: the surface's {e}{hint}") from None
+        if family != "empirical":
+            return HeightDistribution(core)
+        parts = self._core.empirical_parts()
+        if len(parts) == 1:
+            return HeightDistribution(core, _heights_array(parts[0][0]))
+        (a, sa), (b, sb) = parts
+        return HeightDistribution(core, None, (_heights_array(a), sa, _heights_array(b), sb))
+
+    def model(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
+              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke") -> Model:
+        """The :class:`Model` of this surface and the materials (as ``kefric
+        surface`` with the material flags; its ``"model"`` record is the
+        result's :attr:`Model.params`): psi, theta, beta, nu and eps_star
+        from sigma, R and eta of :attr:`stats` (the library's
+        ``Params::from_physical``) and the surface's
+        :meth:`height_distribution` of family ``distribution``.
+
+        e1, e2: Young's moduli (Pa) of the softer material and the other;
+        nu1, nu2: their Poisson's ratios; hardness: H of the softer
+        material (Pa); delta_gamma: energy of adhesion (J/m^2); epsilon:
+        intermolecular distance (m). ``fit`` and ``model`` as in
+        :class:`Model`. A value out of range raises ValueError naming the
+        keyword (or, for psi, theta, ..., the parameter it gives)."""
+        mats = _materials(dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                               epsilon=epsilon))
+        for name, value in (("fit", fit), ("model", model)):
+            if not isinstance(value, str):
+                raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+        dist = self.height_distribution(distribution)
+        p = self._core.params(mats, dist._core)
+        try:
+            return Model(p["psi"], p["theta"], p["beta"], p["nu"], p["eps_star"], fit, model, distribution=dist)
+        except ValueError as e:
+            if str(e).startswith(("fit", "model")):
+                raise
+            raise ValueError(f"the surface with these materials: {e}") from None
+
+    def curve(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
+              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke",
+              f_star_min: float = 1e-5, f_star_max: float = 0.1) -> Curve:
+        """The :class:`Curve` mu(F*) of :meth:`model` (the same keywords)
+        for F* in [f_star_min, f_star_max] (by default the default table's
+        range), as :meth:`Curve.from_model` makes it (tens of
+        milliseconds)."""
+        m = self.model(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                       epsilon=epsilon, distribution=distribution, fit=fit, model=model)
+        return Curve.from_model(m, f_star_min, f_star_max)
+
+    def friction(self, *, force: Optional[float] = None, area: Optional[float] = None,
+                 pressure: Optional[float] = None, e1: float, nu1: float, e2: float, nu2: float, hardness: float,
+                 delta_gamma: float, epsilon: float, distribution: str = "pearson", fit: str = "consistent",
+                 model: str = "ke") -> Dict[str, Any]:
+        """The static friction of a load on :meth:`model` (the same
+        keywords): a ``force`` (N) on a nominal ``area`` (m^2), or a
+        nominal ``pressure`` (Pa). A dict by the library's record names
+        (``kefric surface --json``'s ``"friction"``), in SI units:
+        ``force`` and ``area`` (for a force), ``pressure``, ``mu``,
+        ``friction_force`` = mu F (for a force), ``friction_stress``,
+        ``separation`` h = h* sigma (m), and the dimensionless contact at
+        F* = pressure/hardness: ``h_star``, ``d_star``, ``p_star``,
+        ``fs_star``, ``q_star``, ``f_star``.
+
+        ValueError naming the keyword for a load out of range (or given
+        otherwise than a force with an area, or a pressure alone), and
+        when the model has no mu at that F*."""
+        if force is not None and area is not None and pressure is None:
+            _check_real(force=force, area=area)
+            load = (float(force), float(area), None)
+        elif force is None and area is None and pressure is not None:
+            _check_real(pressure=pressure)
+            load = (None, None, float(pressure))
+        else:
+            name = "pressure" if pressure is not None else "area" if force is not None else "force"
+            raise ValueError(f"{name}: give force with area, or pressure alone")
+        mats = _materials(dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                               epsilon=epsilon))
+        m = self.model(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                       epsilon=epsilon, distribution=distribution, fit=fit, model=model)
+        return self._core.friction(m._core, mats, *load)
+
+    def __repr__(self) -> str:
+        s = self.stats
+        shape = f"map {s['nx']} x {s['ny']}, dx={s['dx']!r}, dy={s['dy']!r}" if s["dy"] is not None \
+            else f"profile of {s['nx']}, dx={s['dx']!r}"
+        pair = "pair, " if self.is_pair else ""
+        return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, derivative={self.derivative!r})"
