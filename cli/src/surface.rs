@@ -112,7 +112,10 @@ pub struct SurfaceArgs {
 /// on `t` (safety factor ½, as SurfaceTopography's default).
 fn tip_cutoff(t: &Topography, radius: f64) -> Result<Option<f64>, String> {
     if !(radius.is_finite() && radius > 0.0) {
-        return Err(format!("--tip-radius {} is out of range: must be > 0 (metres)", Shortest(radius)));
+        return Err(format!(
+            "--tip-radius {} is out of range: must be > 0 (metres)",
+            Shortest(radius)
+        ));
     }
     tip_reliability_cutoff(t, radius, 0.5).map_err(|e| e.to_string())
 }
@@ -221,7 +224,12 @@ impl SurfaceArgs {
             Some(Lambda::Auto) => match self.reliability(t) {
                 Ok(Some(cutoff)) => Some(cutoff),
                 Ok(None) => None,
-                Err(e) => return Err(Failure::input(format!("{flag}: {}: --lambda-s auto: {e}", path.display()))),
+                Err(e) => {
+                    return Err(Failure::input(format!(
+                        "{flag}: {}: --lambda-s auto: {e}",
+                        path.display()
+                    )))
+                }
             },
         };
         Ok(StatsOptions {
@@ -396,7 +404,9 @@ pub fn params(
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
     if args.csv && !(args.scan || args.psd) {
-        return Err(Failure::input("--csv: with --scan or --psd (the single record is --json)".into()));
+        return Err(Failure::input(
+            "--csv: with --scan or --psd (the single record is --json)",
+        ));
     }
     if args.psd {
         return run_psd(&args);
@@ -534,9 +544,13 @@ const SCAN_COLUMNS: [(&str, &str); 16] = [
 fn run_scan(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scan")?;
     let load = args.load.load()?;
-    let materials = args.materials.any().then(|| args.materials.materials(&[])).transpose()?;
+    let materials = args
+        .materials
+        .any()
+        .then(|| args.materials.materials(&[]))
+        .transpose()?;
     if load.is_some() && materials.is_none() {
-        return Err(Failure::input("--force/--pressure: needs the materials".into()));
+        return Err(Failure::input("--force/--pressure: needs the materials"));
     }
     let read = &args.read;
     let t = read.read("surface", path)?;
@@ -596,7 +610,10 @@ fn run_scan(args: &Args) -> Result<(), Failure> {
     }
     let failed = records.iter().filter(|r| r.get("error").is_some()).count();
     if failed > 0 {
-        errln!("warning: {failed} of {} scales have no result (the row's error says why)", rows.len());
+        errln!(
+            "warning: {failed} of {} scales have no result (the row's error says why)",
+            rows.len()
+        );
     }
     if args.json {
         let doc = serde_json::json!({
@@ -611,7 +628,11 @@ fn run_scan(args: &Args) -> Result<(), Failure> {
         return Ok(());
     }
     let cell = |r: &serde_json::Value, (group, name): (&str, &str)| -> String {
-        match r.get(group).and_then(|g| g.get(name)).and_then(serde_json::Value::as_f64) {
+        match r
+            .get(group)
+            .and_then(|g| g.get(name))
+            .and_then(serde_json::Value::as_f64)
+        {
             Some(v) => Shortest(v).to_string(),
             None => String::new(),
         }
@@ -622,7 +643,11 @@ fn run_scan(args: &Args) -> Result<(), Failure> {
         for r in &records {
             let cells: Vec<String> = SCAN_COLUMNS.iter().map(|&c| cell(r, c)).collect();
             let reliable = r["reliable"].as_bool().map_or(String::new(), |b| b.to_string());
-            let error = r.get("error").and_then(|e| e.as_str()).unwrap_or("").replace(['"', '\n'], " ");
+            let error = r
+                .get("error")
+                .and_then(|e| e.as_str())
+                .unwrap_or("")
+                .replace(['"', '\n'], " ");
             outln!(
                 "{},{reliable},{},\"{error}\"",
                 Shortest(r["lambda_s"].as_f64().unwrap_or(f64::NAN)),
@@ -634,9 +659,20 @@ fn run_scan(args: &Args) -> Result<(), Failure> {
     outln!(
         "# {}: mu against the S-filter nesting index lambda_s (m); lambda_c = {}",
         path.display(),
-        options.lambda_c.map_or("none".to_string(), |l| format!("{} m", Shortest(l)))
+        options
+            .lambda_c
+            .map_or("none".to_string(), |l| format!("{} m", Shortest(l)))
     )?;
-    outln!("{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}", "lambda_s", "reliable", "beta", "R", "eta", "psi", "mu")?;
+    outln!(
+        "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
+        "lambda_s",
+        "reliable",
+        "beta",
+        "R",
+        "eta",
+        "psi",
+        "mu"
+    )?;
     for r in &records {
         let v = |c| {
             let s = cell(r, c);
@@ -646,10 +682,12 @@ fn run_scan(args: &Args) -> Result<(), Failure> {
                 format!("{}", sig(s.parse().unwrap_or(f64::NAN)))
             }
         };
-        let reliable = r["reliable"].as_bool().map_or("-".to_string(), |b| if b { "yes" } else { "no" }.into());
+        let reliable = r["reliable"]
+            .as_bool()
+            .map_or("-".to_string(), |b| if b { "yes" } else { "no" }.into());
         outln!(
             "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
-            sig(r["lambda_s"].as_f64().unwrap_or(f64::NAN)),
+            sig(r["lambda_s"].as_f64().unwrap_or(f64::NAN)).to_string(),
             reliable,
             v(("surface", "beta")),
             v(("surface", "radius")),

@@ -43,13 +43,13 @@ const LANES: usize = 8;
 #[non_exhaustive]
 pub enum FilterError {
     /// The cut-off is not finite and > 0.
-    #[error("lambda = {lambda} m is out of range: the cut-off must be > 0 and finite (metres)")]
+    #[error("the cut-off wavelength lambda = {lambda:e} m is out of range: the cut-off must be > 0 and finite (metres)")]
     Cutoff {
         /// The cut-off given (metres).
         lambda: f64,
     },
     /// The cut-off is shorter than two sampling intervals.
-    #[error("lambda = {lambda} m is out of range: must be at least 2·max(dx, dy) = {min} m")]
+    #[error("the cut-off wavelength lambda = {lambda:e} m is out of range: must be at least 2·max(dx, dy) = {min:e} m")]
     TooShort {
         /// The cut-off given (metres).
         lambda: f64,
@@ -57,7 +57,7 @@ pub enum FilterError {
         min: f64,
     },
     /// The cut-off is longer than the scan.
-    #[error("lambda = {lambda} m is out of range: must be at most the scan size, {}", sizes(*.size_x, *.size_y))]
+    #[error("the cut-off wavelength lambda = {lambda:e} m is out of range: must be at most the scan size, {}", sizes(*.size_x, *.size_y))]
     TooLong {
         /// The cut-off given (metres).
         lambda: f64,
@@ -70,8 +70,8 @@ pub enum FilterError {
 
 fn sizes(size_x: f64, size_y: Option<f64>) -> String {
     match size_y {
-        Some(size_y) => format!("min(nx·dx = {size_x} m, ny·dy = {size_y} m)"),
-        None => format!("nx·dx = {size_x} m"),
+        Some(size_y) => format!("min(nx·dx = {size_x:e} m, ny·dy = {size_y:e} m)"),
+        None => format!("nx·dx = {size_x:e} m"),
     }
 }
 

@@ -1,7 +1,8 @@
 //! Measured surfaces (MODEL.md §10): height maps and profiles read from
 //! files (ISO 25178-72 X3P, `.npy`, text), their statistics, their power
 //! spectral density, the ISO 16610 Gaussian filters (S-filter, L-filter),
-//! and the equivalent surface of two rough surfaces.
+//! the scale-dependent rms slope and curvature and the tip-radius
+//! reliability cut-off (Sanner et al. 2022), and the equivalent surface of two rough surfaces.
 //!
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
@@ -9,6 +10,7 @@
 mod filter;
 mod psd;
 mod read;
+mod scale;
 mod scan;
 mod stats;
 mod surface;
@@ -17,10 +19,11 @@ mod write;
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use psd::{psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
 pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
+pub use scale::{scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow};
+pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
 };
-pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use surface::Surface;
 pub use write::write_x3p;
 

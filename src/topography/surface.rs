@@ -122,12 +122,10 @@ impl Surface {
             "empirical" => {
                 let mut densities = Vec::with_capacity(2);
                 for (t, s) in &self.parts {
-                    let heights = t
-                        .band_heights(&self.options)
-                        .map_err(|e| DistributionError::Conflict {
-                            name: "heights",
-                            reason: e.to_string(),
-                        })?;
+                    let heights = t.band_heights(&self.options).map_err(|e| DistributionError::Conflict {
+                        name: "heights",
+                        reason: e.to_string(),
+                    })?;
                     let HeightDistribution::Empirical(e) = HeightDistribution::empirical(&heights)? else {
                         unreachable!("an empirical distribution")
                     };

@@ -40,7 +40,8 @@ fn options(case: &Value) -> StatsOptions {
             Some("fd") => Derivative::FiniteDifference,
             Some("spectral") => Derivative::Spectral,
             other => panic!("derivative {other:?}"),
-        },        ..StatsOptions::default()
+        },
+        ..StatsOptions::default()
     }
 }
 

@@ -366,7 +366,7 @@ fn refusals_name_the_numbers() {
             matches!(e, FilterError::Cutoff { lambda: l } if l == lambda || l.is_nan() && lambda.is_nan()),
             "{e:?}"
         );
-        assert!(e.to_string().contains(&lambda.to_string()), "{e}");
+        assert!(e.to_string().contains(&format!("{lambda:e}")), "{e}");
         let kind = if lambda.is_finite() {
             ErrorKind::Domain
         } else {
@@ -385,7 +385,7 @@ fn refusals_name_the_numbers() {
     assert_eq!(e.kind(), ErrorKind::Domain);
     let msg = e.to_string();
     assert!(
-        msg.contains(&2.9e-6.to_string()) && msg.contains(&3e-6.to_string()),
+        msg.contains("2.9e-6") && msg.contains("3e-6"),
         "{msg}"
     );
     assert!(s_filter(&map, 3e-6).is_ok());
@@ -402,7 +402,7 @@ fn refusals_name_the_numbers() {
     );
     let msg = e.to_string();
     for number in [40.5e-6, sx, sy] {
-        assert!(msg.contains(&number.to_string()), "{msg} lacks {number}");
+        assert!(msg.contains(&format!("{number:e}")), "{msg} lacks {number}");
     }
     assert!(l_filter(&map, sx).is_ok());
     // The shorter extent decides (here y).
@@ -419,7 +419,7 @@ fn refusals_name_the_numbers() {
             size_y: None
         }
     );
-    assert!(e.to_string().contains(&(100.0 * 2e-6).to_string()));
+    assert!(e.to_string().contains(&format!("{:e}", 100.0 * 2e-6)));
     let e = s_filter(&profile, 3e-6).unwrap_err();
     assert_eq!(
         e,

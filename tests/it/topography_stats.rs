@@ -65,7 +65,8 @@ fn options(detrend: &str, derivative: &str) -> StatsOptions {
             "fd" => Derivative::FiniteDifference,
             "spectral" => Derivative::Spectral,
             other => panic!("derivative {other}"),
-        },        ..StatsOptions::default()
+        },
+        ..StatsOptions::default()
     }
 }
 
