@@ -1,0 +1,133 @@
+//! The asperity heights' distribution of a kef_constants: the
+//! `KEF_DIST_*` families, setting one (or measured heights), reading it.
+
+use crate::constants::{kef_constants, update};
+use crate::error::{Failure, KEF_ERR_INTERNAL};
+use ke_friction::HeightDistribution;
+use std::ffi::c_int;
+
+/// Height distribution family (kef_constants_set_distribution,
+/// kef_constants_distribution): the paper's Gaussian, the default
+/// (skewness 0, kurtosis 3).
+pub const KEF_DIST_GAUSSIAN: c_int = 0;
+/// Height distribution family: the Pearson system from skewness Sk and
+/// kurtosis K (not excess: 3 for a Gaussian), admissible where
+/// K > Sk² + 1, |Sk| <= 5 and K <= 100. Pearson(0, 3) is the Gaussian.
+pub const KEF_DIST_PEARSON: c_int = 1;
+/// Height distribution family: a standardised Weibull distribution of
+/// skewness Sk in (-1.1395, 2]; its kurtosis follows from Sk.
+pub const KEF_DIST_WEIBULL: c_int = 2;
+/// Height distribution family: an empirical (kernel) density of measured
+/// heights, set by kef_constants_set_heights (not by
+/// kef_constants_set_distribution).
+pub const KEF_DIST_EMPIRICAL: c_int = 3;
+
+/// The distribution of family `family` (a `KEF_DIST_*` code other than
+/// [`KEF_DIST_EMPIRICAL`]) with `skewness` and `kurtosis` (the latter read
+/// by [`KEF_DIST_PEARSON`] alone, neither by [`KEF_DIST_GAUSSIAN`]),
+/// validated.
+fn distribution(family: c_int, skewness: f64, kurtosis: f64) -> Result<HeightDistribution, Failure> {
+    match family {
+        KEF_DIST_GAUSSIAN => Ok(HeightDistribution::Gaussian),
+        KEF_DIST_PEARSON => Ok(HeightDistribution::pearson(skewness, kurtosis)?),
+        KEF_DIST_WEIBULL => Ok(HeightDistribution::weibull(skewness)?),
+        KEF_DIST_EMPIRICAL => Err(Failure::argument(
+            "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights".into(),
+        )),
+        other => Err(Failure::argument(format!(
+            "family {other} is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
+        ))),
+    }
+}
+
+/// The `KEF_DIST_*` code of a distribution.
+fn family_code(d: &HeightDistribution) -> c_int {
+    match d {
+        HeightDistribution::Gaussian => KEF_DIST_GAUSSIAN,
+        HeightDistribution::Pearson { .. } => KEF_DIST_PEARSON,
+        HeightDistribution::Weibull { .. } => KEF_DIST_WEIBULL,
+        HeightDistribution::Empirical(_) => KEF_DIST_EMPIRICAL,
+        // A family added to the core after this binding.
+        _ => -1,
+    }
+}
+
+/// Writes the distribution's family, skewness and kurtosis.
+fn describe(d: &HeightDistribution, family: &mut c_int, skewness: &mut f64, kurtosis: &mut f64) -> Result<(), Failure> {
+    let code = family_code(d);
+    if code < 0 {
+        return Err(Failure {
+            code: KEF_ERR_INTERNAL,
+            message: format!("the distribution family \"{}\" has no KEF_DIST_* code", d.family()),
+        });
+    }
+    (*family, *skewness, *kurtosis) = (code, d.skewness(), d.kurtosis());
+    Ok(())
+}
+
+/// Sets the asperity heights' distribution (MODEL.md §9) to `family`:
+/// KEF_DIST_GAUSSIAN (the default; `skewness` and `kurtosis` ignored),
+/// KEF_DIST_PEARSON (skewness Sk and kurtosis K, not excess: 3 for a
+/// Gaussian; admissible where K > Sk² + 1, |Sk| <= 5, K <= 100) or
+/// KEF_DIST_WEIBULL (skewness Sk in (-1.1395, 2]; `kurtosis` ignored: it
+/// follows from Sk). Checked at once: KEF_ERR_DOMAIN for a value outside
+/// its admissible region (the message names it and the bound, e.g.
+/// "kurtosis = 1.2 is out of range: must be > skewness² + 1 ..."),
+/// KEF_ERR_ARGUMENT for NaN or ±inf where it is read, an unknown family,
+/// KEF_DIST_EMPIRICAL (see kef_constants_set_heights) or a NULL handle;
+/// the handle is unchanged on failure.
+///
+/// # Safety
+/// As kef_constants_set_beta.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_distribution(
+    constants: *mut kef_constants,
+    family: c_int,
+    skewness: f64,
+    kurtosis: f64,
+) -> c_int {
+    ffi!(constants => update(constants, |c| Ok(c.distribution(distribution(family, skewness, kurtosis)?))))
+}
+
+/// Sets the asperity heights' distribution to the empirical (kernel)
+/// density of `n` measured heights (any unit; NaN entries are skipped as
+/// missing points): at least 100 finite values, not all equal, no ±inf.
+/// The data are copied (the density is built at once; the array may be
+/// freed after the call). KEF_ERR_DOMAIN for too few heights or constant
+/// ones, KEF_ERR_ARGUMENT for an infinite height, a NULL handle, or
+/// `heights` NULL with `n` > 0; the handle is unchanged on failure.
+/// kef_constants_distribution then gives KEF_DIST_EMPIRICAL and the
+/// heights' skewness and kurtosis.
+///
+/// # Safety
+/// As kef_constants_set_beta; `heights` NULL or valid for `n` reads.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_heights(
+    constants: *mut kef_constants,
+    heights: *const f64,
+    n: usize,
+) -> c_int {
+    ffi!(constants, heights[n] => update(constants, |c| Ok(c.distribution(HeightDistribution::empirical(heights)?))))
+}
+
+/// The asperity heights' distribution of `constants` (NULL: the default,
+/// the Gaussian): its family into `*family` (a KEF_DIST_* code), its
+/// skewness into `*skewness` and its kurtosis (not excess) into
+/// `*kurtosis`: 0 and 3 for the Gaussian, the values set for Pearson, the
+/// kurtosis its skewness implies for Weibull (2.717 at Sk = 0), the
+/// heights' own for an empirical density. KEF_ERR_ARGUMENT for a NULL
+/// output or outputs that alias each other (the three must be distinct;
+/// no output written then).
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants; the outputs NULL or
+/// writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_distribution(
+    constants: *const kef_constants,
+    family: *mut c_int,
+    skewness: *mut f64,
+    kurtosis: *mut f64,
+) -> c_int {
+    ffi!(constants, family, skewness, kurtosis => describe(&constants.distribution, family, skewness, kurtosis))
+}
