@@ -24,7 +24,9 @@ use ke_friction::topography::{
 use serde_json::{json, Value};
 
 fn rows(rows: &[ScaleRow]) -> Value {
-    rows.iter().map(|r| json!({"d": r.distance, "x": r.x, "y": r.y})).collect()
+    rows.iter()
+        .map(|r| json!({"d": r.distance, "x": r.x, "y": r.y}))
+        .collect()
 }
 
 fn run(args: &[String]) -> Result<Value, Box<dyn std::error::Error>> {
@@ -36,12 +38,7 @@ fn run(args: &[String]) -> Result<Value, Box<dyn std::error::Error>> {
         match key {
             "dx" => dx = Some(value.parse::<f64>()?),
             "dy" => dy = Some(value.parse::<f64>()?),
-            "d" => {
-                distances = value
-                    .split(',')
-                    .map(str::parse::<f64>)
-                    .collect::<Result<Vec<_>, _>>()?
-            }
+            "d" => distances = value.split(',').map(str::parse::<f64>).collect::<Result<Vec<_>, _>>()?,
             "tip" => tip = Some(value.parse::<f64>()?),
             "f" => factor = value.parse::<f64>()?,
             "repeat" => repeat = value.parse::<usize>()?,
