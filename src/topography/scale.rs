@@ -8,24 +8,8 @@
 //! The definitions are SurfaceTopography's (`derivative` with its default,
 //! non-periodic, linearly interpolated stencils, as used by
 //! `scale_dependent_statistical_property` and
-//! `scanning_probe_reliability_cutoff`), checked against it by
-//! `tools/scale_check.py`:
-//!
-//! * a distance `d` is the overall length of the stencil. Along x the
-//!   stencil step is `s·Δx` with the scale factor `s = d/(n·Δx)` (`n` the
-//!   order of the derivative; along y `s = d/(n·Δy)`);
-//! * slope (n = 1, upwind): `h'(x_i) = [h(x_i + sΔx) − h(x_i)]/(sΔx)`;
-//! * curvature (n = 2, central):
-//!   `h''(x_i) = [h(x_i − sΔx) − 2h(x_i) + h(x_i + sΔx)]/(sΔx)²`;
-//! * heights between grid points (non-integer `s`) are interpolated
-//!   linearly between their two neighbours along the stencil's direction;
-//! * only points whose stencil lies in the data are kept, trimmed as
-//!   SurfaceTopography trims them: for n = 1 the last `⌈s⌉` points, for
-//!   n = 2 the first and last `⌈s⌉`, and on a map along both directions
-//!   (with `s_x` along x and `s_y` along y) for the derivative along
-//!   either;
-//! * the statistic is the root mean square over the kept points, NaN if
-//!   fewer than 4 are kept (SurfaceTopography's `threshold`).
+//! `scanning_probe_reliability_cutoff`), spelt out at [`ScaleRow`], and
+//! checked against it by `tools/scale_check.py`.
 
 use super::Topography;
 use crate::ErrorKind;
@@ -89,6 +73,25 @@ impl crate::Classify for ScaleError {
 }
 
 /// A scale-dependent statistic at one distance.
+///
+/// The definitions (SurfaceTopography's `derivative`, non-periodic, linear
+/// interpolation; Sanner et al. 2022, doi 10.1016/j.apsadv.2021.100190):
+///
+/// * a distance `d` is the overall length of the stencil. Along x the
+///   stencil step is `s·Δx` with the scale factor `s = d/(n·Δx)` (`n` the
+///   order of the derivative; along y `s = d/(n·Δy)`);
+/// * slope (n = 1, upwind): `h'(x_i) = [h(x_i + sΔx) − h(x_i)]/(sΔx)`;
+/// * curvature (n = 2, central):
+///   `h''(x_i) = [h(x_i − sΔx) − 2h(x_i) + h(x_i + sΔx)]/(sΔx)²`;
+/// * heights between grid points (non-integer `s`) are interpolated
+///   linearly between their two neighbours along the stencil's direction;
+/// * only points whose stencil lies in the data are kept, trimmed as
+///   SurfaceTopography trims them: for n = 1 the last `⌈s⌉` points, for
+///   n = 2 the first and last `⌈s⌉`, and on a map along both directions
+///   (with `s_x` along x and `s_y` along y) for the derivative along
+///   either;
+/// * the statistic is the root mean square over the kept points, NaN if
+///   fewer than 4 are kept (SurfaceTopography's `threshold`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScaleRow {
     /// The stencil length (metres).
@@ -103,8 +106,8 @@ pub struct ScaleRow {
 
 /// The scale-dependent rms slope at each distance (metres): along x of a
 /// profile, along x and y of a map; upwind differences `[h(x + d) −
-/// h(x)]/d` with linear interpolation between grid points (see the
-/// [module documentation](self) for the stencils and the trimmed edges).
+/// h(x)]/d` with linear interpolation between grid points (see
+/// [`ScaleRow`] for the stencils and the trimmed edges).
 /// SurfaceTopography's `scale_dependent_statistical_property(lambda x,
 /// y=None: np.mean(x*x), n=1, distance=distances, reliable=False)`, square
 /// rooted, per direction (Sanner et al. 2022, doi
@@ -126,20 +129,22 @@ pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<Sc
 /// The scale-dependent rms curvature (second derivative, 1/m) at each
 /// distance (metres): along x of a profile, along x and y of a map;
 /// central differences `[h(x − d/2) − 2h(x) + h(x + d/2)]/(d/2)²` with
-/// linear interpolation between grid points (see the
-/// [module documentation](self)). SurfaceTopography's
+/// linear interpolation between grid points (see [`ScaleRow`]).
+/// SurfaceTopography's
 /// `scale_dependent_statistical_property(lambda x, y=None: np.mean(x*x),
 /// n=2, distance=distances, reliable=False)`, square rooted, per direction
 /// (Sanner et al. 2022, doi 10.1016/j.apsadv.2021.100190).
 ///
 /// ```
 /// use ke_friction::topography::{scale_dependent_curvature, Topography};
-/// // h = x²/(2R): curvature 1/R at every scale.
+/// // h = x²/(2R): curvature 1/R at every scale with an integer scale
+/// // factor s = d/(2Δx) (a fraction f of s adds f(1 − f)/s² to it, the
+/// // linear interpolation's error).
 /// let r = 1e-3;
 /// let dx = 1e-6;
 /// let h = (0..200).map(|i| (i as f64 * dx).powi(2) / (2.0 * r)).collect();
 /// let t = Topography::profile(h, dx).unwrap();
-/// for row in scale_dependent_curvature(&t, &[2e-6, 7e-6, 40e-6]).unwrap() {
+/// for row in scale_dependent_curvature(&t, &[2e-6, 6e-6, 40e-6]).unwrap() {
 ///     assert!((row.x * r - 1.0).abs() < 1e-6);
 /// }
 /// ```

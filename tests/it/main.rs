@@ -24,4 +24,5 @@ mod surface_friction;
 mod table_lookup;
 mod topography_filter;
 mod topography_read;
+mod topography_scale;
 mod topography_stats;
