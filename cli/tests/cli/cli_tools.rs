@@ -440,30 +440,49 @@ fn every_flag_in_the_readme_is_in_some_help() {
 }
 
 #[test]
-fn the_readme_layout_table_lists_every_folder() {
+fn the_architecture_map_lists_every_folder_and_source_file() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
-    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
-    let skip = ["target", ".git", "corpus", "artifacts", "__pycache__", ".pytest_cache"];
+    let map = std::fs::read_to_string(root.join("docs/ARCHITECTURE.md")).unwrap();
+    let skip = [
+        "target",
+        ".git",
+        "corpus",
+        "artifacts",
+        "__pycache__",
+        ".pytest_cache",
+        "node_modules",
+    ];
     let mut missing = vec![];
     let mut stack = vec![std::path::PathBuf::new()];
     while let Some(rel) = stack.pop() {
         for entry in std::fs::read_dir(root.join(&rel)).unwrap() {
             let entry = entry.unwrap();
             let name = entry.file_name().to_string_lossy().into_owned();
-            if !entry.file_type().unwrap().is_dir() || skip.contains(&name.as_str()) || name.ends_with(".egg-info") {
+            if skip.contains(&name.as_str())
+                || name.ends_with(".egg-info")
+                || name.starts_with('.') && rel.as_os_str().is_empty() && name != ".ci"
+            {
                 continue;
             }
             let path = rel.join(&name);
-            let shown = format!("`{}/`", path.display());
-            if !readme.contains(&shown) {
-                missing.push(shown);
+            if entry.file_type().unwrap().is_dir() {
+                let shown = format!("`{}/`", path.display());
+                if !map.contains(&shown) {
+                    missing.push(shown);
+                }
+                stack.push(path);
+            } else if path.starts_with("src") && name.ends_with(".rs") && name != "mod.rs" {
+                // Every library source file is named (in backticks) in its row.
+                let shown = format!("`{name}`");
+                if !map.contains(&shown) {
+                    missing.push(path.display().to_string());
+                }
             }
-            stack.push(path);
         }
     }
     missing.sort();
     assert!(
         missing.is_empty(),
-        "folders the README's layout table does not list: {missing:?}"
+        "folders and source files docs/ARCHITECTURE.md does not list: {missing:?}"
     );
 }
