@@ -1,0 +1,237 @@
+//! `kefric surface` at a stated scale: the ISO 16610 filters (--lambda-s,
+//! --lambda-c), μ against λs (--scan), the power spectrum (--psd) and the
+//! instrument's reliability cut-off; against the library called directly
+//! and against the single command.
+use crate::common::TempDir;
+use crate::support::{assert_bad_input, kefric, stderr};
+use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
+use serde_json::Value;
+
+const MATERIALS: &[&str] = &[
+    "--e1",
+    "70e9",
+    "--nu1",
+    "0.33",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.31",
+    "--hardness",
+    "1e9",
+    "--delta-gamma",
+    "0.5",
+    "--epsilon",
+    "0.4e-9",
+];
+
+/// A rough map: waves from 4 µm to 150 µm, dx = 1 µm, dy = 1.5 µm.
+fn map(dir: &TempDir) -> (String, Topography) {
+    let (nx, ny) = (160, 120);
+    let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let waves: Vec<(f64, f64, f64, f64)> = (0..40)
+        .map(|k| {
+            let wavelength = 4e-6 * (150.0f64 / 4.0).powf(k as f64 / 39.0);
+            let angle = 6.283 * next();
+            (wavelength, angle, 6.283 * next(), 1e-7 * (wavelength / 4e-6).powf(0.8))
+        })
+        .collect();
+    let z = (0..nx * ny)
+        .map(|k| {
+            let (x, y) = ((k % nx) as f64 * 1e-6, (k / nx) as f64 * 1.5e-6);
+            waves
+                .iter()
+                .map(|&(l, a, p, amp)| amp * (6.283185307179586 / l * (x * a.cos() + y * a.sin()) + p).sin())
+                .sum::<f64>()
+        })
+        .collect();
+    let t = Topography::map(z, nx, ny, 1e-6, 1.5e-6).unwrap();
+    let path = dir.join("map.x3p");
+    write_x3p(&t, &path, 'D').unwrap();
+    (dir.arg("map.x3p"), t)
+}
+
+fn json(args: &[&str]) -> Value {
+    let o = kefric(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    serde_json::from_slice(&o.stdout).unwrap()
+}
+
+fn with(base: &[&str], extra: &[&str]) -> Vec<String> {
+    base.iter().chain(extra).map(|s| s.to_string()).collect()
+}
+
+fn strs(v: &[String]) -> Vec<&str> {
+    v.iter().map(String::as_str).collect()
+}
+
+#[test]
+fn filtered_statistics_are_the_librarys_and_record_the_band() {
+    let dir = TempDir::new("scale-filtered");
+    let (file, t) = map(&dir);
+    let v = json(&["surface", &file, "--lambda-s", "5e-6", "--lambda-c", "80e-6", "--json"]);
+    let s = &v["surface"];
+    assert_eq!(s["lambda_s"], 5e-6);
+    assert_eq!(s["lambda_c"], 80e-6);
+    assert_eq!(s["size_x"].as_f64().unwrap(), 160.0 * 1e-6);
+    assert_eq!(s["size_y"].as_f64().unwrap(), 120.0 * 1.5e-6);
+    let options = StatsOptions {
+        lambda_s: Some(5e-6),
+        lambda_c: Some(80e-6),
+        ..StatsOptions::default()
+    };
+    let lib = Surface::new(t.clone(), options).unwrap();
+    for name in ["sigma", "skewness", "kurtosis", "m2", "m4", "beta", "radius", "eta"] {
+        let want = serde_json::to_value(lib.stats()).unwrap()[name].as_f64().unwrap();
+        assert_eq!(s[name].as_f64().unwrap(), want, "{name}");
+    }
+    // The band narrows the roughness: σ and m4 are below the unfiltered ones.
+    let raw = Surface::new(t, StatsOptions::default()).unwrap();
+    assert!(lib.stats().sigma < raw.stats().sigma && lib.stats().m4 < 0.5 * raw.stats().m4);
+    // Unfiltered, the record says so.
+    let v = json(&["surface", &file, "--json"]);
+    assert!(v["surface"]["lambda_s"].is_null() && v["surface"]["lambda_c"].is_null());
+}
+
+#[test]
+fn each_scan_row_is_the_single_command_at_that_lambda_s() {
+    let dir = TempDir::new("scale-scan");
+    let (file, _) = map(&dir);
+    let load = ["--force", "10", "--area", "1e-5"];
+    let base = with(&["surface", &file, "--json", "--lambda-c", "100e-6"], MATERIALS);
+    let mut scan_args = strs(&base);
+    scan_args.extend(load);
+    scan_args.extend(["--scan", "--per-decade", "4"]);
+    let scan = json(&scan_args);
+    let rows = scan["rows"].as_array().unwrap();
+    // From 2·max(dx, dy) = 3 µm to a tenth of the smaller side (16 µm).
+    assert_eq!(rows[0]["lambda_s"], 3e-6);
+    assert_eq!(rows.last().unwrap()["lambda_s"].as_f64().unwrap(), 16e-6);
+    assert_eq!(rows.len(), 4);
+    let mut mu = vec![];
+    for row in rows {
+        let lambda = row["lambda_s"].as_f64().unwrap();
+        let lambda_s = format!("{lambda:e}");
+        let mut args = strs(&base);
+        args.extend(load);
+        args.extend(["--lambda-s", &lambda_s]);
+        let single = json(&args);
+        for group in ["surface", "model", "friction"] {
+            assert_eq!(row[group], single[group], "{group} at {lambda}");
+        }
+        mu.push(row["friction"]["mu"].as_f64().unwrap());
+    }
+    // μ moves with the scale (here it grows as short waves are filtered out).
+    assert!(mu.windows(2).all(|w| w[1] != w[0]), "{mu:?}");
+    // CSV: the same numbers, the record names as columns.
+    let o = kefric(&strs(&with(
+        &[
+            "surface",
+            &file,
+            "--csv",
+            "--lambda-c",
+            "100e-6",
+            "--scan",
+            "--per-decade",
+            "4",
+        ],
+        &[MATERIALS, &load[..]].concat(),
+    )));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(&header[..4], ["lambda_s", "reliable", "sigma", "skewness"]);
+    let mu_col = header.iter().position(|&c| c == "mu").unwrap();
+    for (line, want) in lines.zip(&mu) {
+        let got: f64 = line.split(',').nth(mu_col).unwrap().parse().unwrap();
+        assert_eq!(got, *want);
+    }
+}
+
+#[test]
+fn the_reliability_cut_off_marks_rows_and_warns() {
+    let dir = TempDir::new("scale-reliability");
+    let (file, _) = map(&dir);
+    let scan = json(&["surface", &file, "--scan", "--resolution", "6e-6", "--json"]);
+    for row in scan["rows"].as_array().unwrap() {
+        let lambda = row["lambda_s"].as_f64().unwrap();
+        assert_eq!(row["reliable"].as_bool().unwrap(), lambda >= 6e-6, "{lambda}");
+    }
+    // A single evaluation below the cut-off warns, naming both lengths.
+    let o = kefric(&["surface", &file, "--resolution", "6e-6"]);
+    assert!(o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("3e-6 m, is below the instrument's reliability cut-off 6e-6 m"),
+        "{err}"
+    );
+    // At or above it, or filtered there with auto, no such warning.
+    for extra in [&["--lambda-s", "6e-6"][..], &["--lambda-s", "auto"][..]] {
+        let o = kefric(&[&["surface", &file, "--resolution", "6e-6", "--json"][..], extra].concat());
+        assert!(o.status.success(), "{}", stderr(&o));
+        assert!(!stderr(&o).contains("reliability"), "{}", stderr(&o));
+        let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(v["surface"]["lambda_s"], 6e-6);
+    }
+}
+
+#[test]
+fn the_psd_integrates_to_the_mean_square_height() {
+    let dir = TempDir::new("scale-psd");
+    let (file, t) = map(&dir);
+    let v = json(&["surface", &file, "--psd", "--json"]);
+    for name in ["x", "y", "area"] {
+        let q = v[name]["q"].as_array().unwrap();
+        assert_eq!(q.len(), v[name]["c"].as_array().unwrap().len(), "{name}");
+        assert!(q.len() > 5, "{name}");
+    }
+    // Parseval along x: Σ C Δq / π over 0 < q < q_Nyquist is the mean
+    // square of the (plane-detrended) rows about their means, but for the
+    // Nyquist term.
+    let q: Vec<f64> = v["x"]["q"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let c: Vec<f64> = v["x"]["c"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let dq = q[1] - q[0];
+    let partial: f64 = c[1..].iter().sum::<f64>() * dq / std::f64::consts::PI;
+    let z = t.detrended(ke_friction::topography::Detrend::Plane).unwrap();
+    let rows: Vec<f64> = z
+        .chunks(t.nx())
+        .map(|row| {
+            let mean = row.iter().sum::<f64>() / row.len() as f64;
+            row.iter().map(|h| (h - mean) * (h - mean)).sum::<f64>() / row.len() as f64
+        })
+        .collect();
+    let m0 = rows.iter().sum::<f64>() / rows.len() as f64;
+    assert!((partial / m0 - 1.0).abs() < 0.01, "{partial} vs {m0}");
+}
+
+#[test]
+fn bad_scales_are_refused_naming_the_numbers() {
+    let dir = TempDir::new("scale-bad");
+    let (file, _) = map(&dir);
+    for (args, needle) in [
+        (&["--lambda-s", "1e-6"][..], "at least 2·max(dx, dy) = 3e-6 m"),
+        (&["--lambda-c", "1e-3"][..], "at most the scan size"),
+        (&["--lambda-s", "auto"][..], "give --tip-radius or --resolution"),
+        (&["--csv"][..], "--csv: with --scan or --psd"),
+        (&["--scan", "--from", "1e-5", "--to", "1e-6"][..], "need 0 < from <= to"),
+    ] {
+        let o = kefric(&[&["surface", &file][..], args].concat());
+        assert_bad_input(&o, needle);
+    }
+}
