@@ -31,6 +31,7 @@ mod info;
 mod lookup;
 mod params;
 mod plot;
+mod scale;
 mod surface;
 mod validate;
 mod verify;

@@ -5,8 +5,8 @@
 
 use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg, MaterialsArgs, ModelKindArg};
 use ke_friction::topography::{
-    psd_area, psd_profile_x, psd_profile_y, read_file, scan, tip_reliability_cutoff, Derivative, Detrend, PsdError,
-    ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceStats, Topography, Window, MAX_POINTS,
+    read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
+    SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Friction, Load, Materials, Model, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -217,7 +217,7 @@ impl SurfaceArgs {
 
     /// The options of the statistics of `t`: the filters' nesting indices
     /// included (`--lambda-s auto`: the reliability cut-off).
-    fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<StatsOptions, Failure> {
+    pub fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<StatsOptions, Failure> {
         let lambda_s = match self.lambda_s {
             None => None,
             Some(Lambda::Metres(m)) => Some(m),
@@ -250,7 +250,7 @@ impl SurfaceArgs {
     }
 
     /// The topography in `path`; `flag` names the input in messages.
-    fn read(&self, flag: &str, path: &Path) -> Result<ke_friction::topography::Topography, Failure> {
+    pub fn read(&self, flag: &str, path: &Path) -> Result<ke_friction::topography::Topography, Failure> {
         let metres = self.xy_unit.metres();
         let interval = |name: &str, v: Option<f64>| -> Result<Option<f64>, Failure> {
             match v {
@@ -365,7 +365,7 @@ impl LoadArgs {
 }
 
 /// Six significant digits, shortest form.
-fn sig(x: f64) -> Shortest {
+pub fn sig(x: f64) -> Shortest {
     Shortest(format!("{x:.5e}").parse().unwrap_or(x))
 }
 
@@ -409,10 +409,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
         ));
     }
     if args.psd {
-        return run_psd(&args);
+        return crate::scale::run_psd(&args);
     }
     if args.scan {
-        return run_scan(&args);
+        return crate::scale::run_scan(&args);
     }
     let load = args.load.load()?;
     let surface = args.read.surface("surface", &args.files)?;
@@ -482,7 +482,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 }
 
 /// The model's inputs of `surface` with `materials`, and with a load μ.
-fn evaluate(
+pub fn evaluate(
     args: &Args,
     surface: &Surface,
     materials: Option<&Materials>,
@@ -509,241 +509,6 @@ fn evaluate(
         _ => None,
     };
     Ok((params, friction))
-}
-
-/// The one file of --scan or --psd.
-fn single_file<'a>(args: &'a Args, what: &str) -> Result<&'a Path, Failure> {
-    match &args.files[..] {
-        [one] => Ok(one),
-        _ => Err(Failure::input(format!("{what}: takes one surface file"))),
-    }
-}
-
-/// The columns of a --scan CSV row: the record names of the single
-/// command's JSON (`surface`, `model`, `friction`), in this order.
-const SCAN_COLUMNS: [(&str, &str); 16] = [
-    ("surface", "sigma"),
-    ("surface", "skewness"),
-    ("surface", "kurtosis"),
-    ("surface", "m2"),
-    ("surface", "m4"),
-    ("surface", "alpha"),
-    ("surface", "eta"),
-    ("surface", "radius"),
-    ("surface", "beta"),
-    ("model", "psi"),
-    ("model", "theta"),
-    ("friction", "pressure"),
-    ("friction", "mu"),
-    ("friction", "friction_force"),
-    ("friction", "separation"),
-    ("surface", "lambda_c"),
-];
-
-/// `surface --scan`: one row a λs.
-fn run_scan(args: &Args) -> Result<(), Failure> {
-    let path = single_file(args, "--scan")?;
-    let load = args.load.load()?;
-    let materials = args
-        .materials
-        .any()
-        .then(|| args.materials.materials(&[]))
-        .transpose()?;
-    if load.is_some() && materials.is_none() {
-        return Err(Failure::input("--force/--pressure: needs the materials"));
-    }
-    let read = &args.read;
-    let t = read.read("surface", path)?;
-    let options = read.options_for("surface", path, &t)?;
-    let cutoff = match (read.resolution, read.tip_radius) {
-        (None, None) => None,
-        _ => read
-            .reliability(&t)
-            .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
-    };
-    let default = ScanRange::default_for(&t);
-    let range = ScanRange {
-        from: args.from.unwrap_or(default.from),
-        to: args.to.unwrap_or(default.to),
-        per_decade: args.per_decade,
-    };
-    let tty = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let rows = scan(&t, &options, &range, cutoff, |done, total| {
-        if tty {
-            eprint!("\rscan: {done}/{total}");
-        }
-    })
-    .map_err(|e| Failure::of("--scan", e))?;
-    if tty {
-        eprintln!();
-    }
-    let mut records = Vec::with_capacity(rows.len());
-    let mut unreliable = 0;
-    for row in &rows {
-        let mut record = serde_json::json!({ "lambda_s": row.lambda_s, "reliable": row.reliable });
-        match &row.surface {
-            Ok(surface) => {
-                unreliable += usize::from(row.reliable == Some(false));
-                match evaluate(args, surface, materials.as_ref(), load.as_ref()) {
-                    Ok((params, friction)) => {
-                        record["surface"] = serde_json::to_value(surface.stats()).expect("a record");
-                        if let Some(p) = params {
-                            record["model"] = serde_json::to_value(&p).expect("a record");
-                        }
-                        if let Some(f) = friction {
-                            record["friction"] = serde_json::to_value(&f).expect("a record");
-                        }
-                    }
-                    Err(f) => record["error"] = f.message().into(),
-                }
-            }
-            Err(e) => record["error"] = e.to_string().into(),
-        }
-        records.push(record);
-    }
-    if unreliable > 0 {
-        errln!(
-            "warning: {unreliable} of {} scales are below the reliability cut-off {} m (reliable: false)",
-            rows.len(),
-            Shortest(cutoff.unwrap_or(f64::NAN))
-        );
-    }
-    let failed = records.iter().filter(|r| r.get("error").is_some()).count();
-    if failed > 0 {
-        errln!(
-            "warning: {failed} of {} scales have no result (the row's error says why)",
-            rows.len()
-        );
-    }
-    if args.json {
-        let doc = serde_json::json!({
-            "files": [path.display().to_string()],
-            "detrend": options.detrend,
-            "derivative": options.derivative,
-            "lambda_c": options.lambda_c,
-            "cutoff": cutoff,
-            "rows": records,
-        });
-        outln!("{}", serde_json::to_string(&doc).expect("a scan record serialises"))?;
-        return Ok(());
-    }
-    let cell = |r: &serde_json::Value, (group, name): (&str, &str)| -> String {
-        match r
-            .get(group)
-            .and_then(|g| g.get(name))
-            .and_then(serde_json::Value::as_f64)
-        {
-            Some(v) => Shortest(v).to_string(),
-            None => String::new(),
-        }
-    };
-    if args.csv {
-        let names: Vec<&str> = SCAN_COLUMNS.iter().map(|(_, n)| *n).collect();
-        outln!("lambda_s,reliable,{},error", names.join(","))?;
-        for r in &records {
-            let cells: Vec<String> = SCAN_COLUMNS.iter().map(|&c| cell(r, c)).collect();
-            let reliable = r["reliable"].as_bool().map_or(String::new(), |b| b.to_string());
-            let error = r
-                .get("error")
-                .and_then(|e| e.as_str())
-                .unwrap_or("")
-                .replace(['"', '\n'], " ");
-            outln!(
-                "{},{reliable},{},\"{error}\"",
-                Shortest(r["lambda_s"].as_f64().unwrap_or(f64::NAN)),
-                cells.join(",")
-            )?;
-        }
-        return Ok(());
-    }
-    outln!(
-        "# {}: mu against the S-filter nesting index lambda_s (m); lambda_c = {}",
-        path.display(),
-        options
-            .lambda_c
-            .map_or("none".to_string(), |l| format!("{} m", Shortest(l)))
-    )?;
-    outln!(
-        "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
-        "lambda_s",
-        "reliable",
-        "beta",
-        "R",
-        "eta",
-        "psi",
-        "mu"
-    )?;
-    for r in &records {
-        let v = |c| {
-            let s = cell(r, c);
-            if s.is_empty() {
-                "-".to_string()
-            } else {
-                format!("{}", sig(s.parse().unwrap_or(f64::NAN)))
-            }
-        };
-        let reliable = r["reliable"]
-            .as_bool()
-            .map_or("-".to_string(), |b| if b { "yes" } else { "no" }.into());
-        outln!(
-            "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
-            sig(r["lambda_s"].as_f64().unwrap_or(f64::NAN)).to_string(),
-            reliable,
-            v(("surface", "beta")),
-            v(("surface", "radius")),
-            v(("surface", "eta")),
-            v(("model", "psi")),
-            v(("friction", "mu"))
-        )?;
-        if let Some(e) = r.get("error").and_then(|e| e.as_str()) {
-            outln!("#   {e}")?;
-        }
-    }
-    Ok(())
-}
-
-/// `surface --psd`: the power spectral densities of the detrended heights.
-fn run_psd(args: &Args) -> Result<(), Failure> {
-    let path = single_file(args, "--psd")?;
-    let t = args.read.read("surface", path)?;
-    let heights = t
-        .detrended(args.read.options().detrend)
-        .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;
-    let detrended = match t.dy() {
-        Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
-        None => Topography::profile(heights, t.dx()),
-    }
-    .map_err(|e| Failure::of("surface", e))?;
-    let window = if args.hann { Window::Hann } else { Window::None };
-    let fail = |e: PsdError| Failure::of(format!("--psd: {}", path.display()), e);
-    let mut spectra = vec![("x", psd_profile_x(&detrended, window).map_err(fail)?)];
-    if !detrended.is_profile() {
-        spectra.push(("y", psd_profile_y(&detrended, window).map_err(fail)?));
-        spectra.push(("area", psd_area(&detrended, window).map_err(fail)?));
-    }
-    if args.json {
-        let mut doc = serde_json::Map::new();
-        doc.insert("files".into(), serde_json::json!([path.display().to_string()]));
-        doc.insert("window".into(), (if args.hann { "hann" } else { "none" }).into());
-        for (name, p) in &spectra {
-            doc.insert(name.to_string(), serde_json::json!({ "q": p.q, "c": p.c }));
-        }
-        outln!("{}", serde_json::Value::Object(doc))?;
-        return Ok(());
-    }
-    if !args.csv {
-        outln!(
-            "# {}: power spectral density (q in rad/m; C in m^3 along x, y; m^4 for the area)",
-            path.display()
-        )?;
-    }
-    outln!("direction,q,c")?;
-    for (name, p) in &spectra {
-        for (q, c) in p.q.iter().zip(&p.c) {
-            outln!("{name},{},{}", Shortest(*q), Shortest(*c))?;
-        }
-    }
-    Ok(())
 }
 
 fn print_text(
