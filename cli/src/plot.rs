@@ -6,6 +6,7 @@ use crate::args::{
     FitArg, ModelArgs, ModelKindArg,
 };
 use ke_friction::figures::{self, Figure, FigureError, Format};
+use ke_friction::topography::{psd_area, psd_profile_x, psd_profile_y, scan, Psd, ScanRange, Topography, Window};
 use ke_friction::LookupError;
 use std::path::{Path, PathBuf};
 
@@ -118,6 +119,17 @@ struct SurfacePlotArgs {
     /// Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: 1e-5:0.1].
     #[arg(long, value_name = "LO:HI")]
     f_star: Option<String>,
+    /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
+    #[arg(long, conflicts_with = "scan")]
+    psd: bool,
+    /// Draw μ (with a load; else ψ), ψ and β against the S-filter's λs instead, from 2·max(dx, dy) to a tenth of the scan size, the reliability cut-off (--tip-radius, --resolution) marked.
+    #[arg(long)]
+    scan: bool,
+    /// Values a decade of --scan.
+    #[arg(long, value_name = "N", default_value_t = 8, requires = "scan")]
+    per_decade: usize,
+    #[command(flatten)]
+    load: crate::surface::LoadArgs,
     #[command(flatten)]
     out: Out,
 }
@@ -166,6 +178,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             wrote(out)?;
             Ok(())
         }
+        What::Surface(a) if a.psd || a.scan => scale_plot(&a),
         What::Surface(a) => {
             let (out, scale) = output(&a.out)?;
             let range = a.f_star.as_deref().map(f_star_range).transpose()?;
@@ -227,6 +240,76 @@ pub fn run(args: Args) -> Result<(), Failure> {
             Ok(())
         }
     }
+}
+
+/// `plot surface --psd` or `--scan`.
+fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
+    let (out, scale) = output(&a.out)?;
+    let [path] = &a.files[..] else {
+        return Err(Failure::input("--psd/--scan: take one surface file"));
+    };
+    let name = path
+        .file_name()
+        .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
+    let t = a.read.read("surface", path)?;
+    let options = a.read.options_for("surface", path, &t)?;
+    let page = if a.psd {
+        let heights = t.detrended(options.detrend).map_err(|e| Failure::of("surface", e))?;
+        let detrended = match t.dy() {
+            Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
+            None => Topography::profile(heights, t.dx()),
+        }
+        .map_err(|e| Failure::of("surface", e))?;
+        let fail = |e| Failure::of(format!("--psd: {}", path.display()), e);
+        let mut spectra = vec![("along x", psd_profile_x(&detrended, Window::None).map_err(fail)?)];
+        if !detrended.is_profile() {
+            spectra.push(("along y", psd_profile_y(&detrended, Window::None).map_err(fail)?));
+            spectra.push(("area (radial)", psd_area(&detrended, Window::None).map_err(fail)?));
+        }
+        let spectra: Vec<(&str, &Psd)> = spectra.iter().map(|(n, p)| (*n, p)).collect();
+        figures::psd_page(&name, &spectra, options.lambda_s, options.lambda_c).map_err(failure)?
+    } else {
+        let load = a.load.load()?;
+        let materials = a.materials.any().then(|| a.materials.materials(&[])).transpose()?;
+        let cutoff = match (a.read.resolution, a.read.tip_radius) {
+            (None, None) => None,
+            _ => a
+                .read
+                .reliability(&t)
+                .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
+        };
+        let range = ScanRange {
+            per_decade: a.per_decade,
+            ..ScanRange::default_for(&t)
+        };
+        let rows = scan(&t, &options, &range, cutoff, |_, _| {}).map_err(|e| Failure::of("--scan", e))?;
+        let mut points = Vec::with_capacity(rows.len());
+        for row in rows {
+            let Ok(surface) = row.surface else { continue };
+            let params = materials
+                .as_ref()
+                .map(|m| crate::surface::params(&surface, m, None, FitArg::Consistent, ModelKindArg::Ke))
+                .transpose()
+                .ok()
+                .flatten();
+            let mu = match (&load, &params, &materials) {
+                (Some(load), Some(p), Some(m)) => ke_friction::Model::new(p.clone())
+                    .ok()
+                    .and_then(|model| load.friction(&model, &surface.physical(m)).ok())
+                    .map(|f| f.mu),
+                _ => None,
+            };
+            points.push(figures::ScanPoint {
+                lambda_s: row.lambda_s,
+                mu,
+                psi: params.map(|p| p.psi),
+                beta: surface.stats().beta,
+            });
+        }
+        figures::scan_page(&name, &points, cutoff).map_err(failure)?
+    };
+    page.save_scaled(out, scale).map_err(failure)?;
+    wrote(out)
 }
 
 fn figure(fig: Figure, o: &Out) -> Result<(), Failure> {

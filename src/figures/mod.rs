@@ -34,7 +34,9 @@ pub use distributions::{
     DISTRIBUTION_SET,
 };
 pub use paper::paper_sweep;
-pub use surface::{surface_page, SURFACE_BINS};
+#[cfg(feature = "topography")]
+pub use surface::psd_page;
+pub use surface::{scan_page, surface_page, ScanPoint, SURFACE_BINS};
 
 use crate::build::BuildError;
 use crate::{EvalError, LookupError, ParamError};

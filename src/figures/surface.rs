@@ -138,3 +138,139 @@ pub fn surface_page(
         }),
     })
 }
+
+/// A log axis over the positive data of `series` (title `title`).
+fn log_axis(title: &str, series: &[Series], x: bool) -> Result<ChartAxis, FigureError> {
+    let ((x0, x1), (y0, y1)) = super::chart::extent(series);
+    let (lo, hi) = if x { (x0, x1) } else { (y0, y1) };
+    if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo) {
+        return Err(FigureError::Empty(format!(
+            "nothing positive to draw on the {title} axis"
+        )));
+    }
+    let (lo, hi) = if hi > lo { (lo, hi) } else { (lo / 2.0, hi * 2.0) };
+    Ok(ChartAxis {
+        title: title.into(),
+        log: true,
+        range: super::chart::log_range(lo, hi),
+        ticks: None,
+    })
+}
+
+/// A vertical dotted line at `x` across `range`, labelled `label`.
+fn marker(label: &str, x: f64, range: (f64, f64), color: usize) -> Series {
+    Series {
+        style: LineStyle::Dotted,
+        ..Series::line(Some(label.into()), vec![(x, range.0), (x, range.1)], color)
+    }
+}
+
+#[cfg(feature = "topography")]
+/// The power spectral densities of a surface (log–log): each of `spectra`
+/// (a name — "along x", "along y", "area (radial)" — and its q, C), with
+/// the filters' wavevectors 2π/λs and 2π/λc marked where given. `title`
+/// names the surface.
+pub fn psd_page(
+    title: &str,
+    spectra: &[(&str, &crate::topography::Psd)],
+    lambda_s: Option<f64>,
+    lambda_c: Option<f64>,
+) -> Result<Page, FigureError> {
+    let mut series: Vec<Series> = spectra
+        .iter()
+        .enumerate()
+        .map(|(i, (name, p))| {
+            let points =
+                p.q.iter()
+                    .zip(&p.c)
+                    .filter(|(q, c)| **q > 0.0 && **c > 0.0)
+                    .map(|(q, c)| (*q, *c))
+                    .collect();
+            Series::line(Some((*name).to_string()), points, i)
+        })
+        .collect();
+    let x = log_axis("q (rad/m)", &series, true)?;
+    let y = log_axis("C (m³; m⁴ for the area)", &series, false)?;
+    let n = series.len();
+    for (k, (name, lambda)) in [("2π/λs", lambda_s), ("2π/λc", lambda_c)].into_iter().enumerate() {
+        if let Some(lambda) = lambda {
+            series.push(marker(name, 2.0 * std::f64::consts::PI / lambda, y.range, n + k));
+        }
+    }
+    Ok(Page::single(Chart {
+        title: Some(format!("power spectral density: {title}")),
+        x,
+        y,
+        series,
+        legend: Corner::UpperRight,
+    }))
+}
+
+/// One λs of a scan: μ (with a load), ψ (with materials) and β.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ScanPoint {
+    /// The S-filter's nesting index (m).
+    pub lambda_s: f64,
+    /// μ at the load, if any.
+    pub mu: Option<f64>,
+    /// ψ, if the materials are given.
+    pub psi: Option<f64>,
+    /// β.
+    pub beta: f64,
+}
+
+/// μ (above; ψ when there is no load) and ψ, β (below) against λs on a
+/// log axis, the instrument's reliability cut-off marked: the scales left
+/// of it are distorted by the instrument.
+pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Result<Page, FigureError> {
+    let line = |label: &str, f: &dyn Fn(&ScanPoint) -> Option<f64>, color: usize| Series {
+        markers: Some(Markers {
+            shape: SHAPES[color % SHAPES.len()],
+            phase: 0.0,
+        }),
+        ..Series::line(
+            Some(label.into()),
+            points
+                .iter()
+                .filter_map(|p| f(p).filter(|v| v.is_finite() && *v > 0.0).map(|v| (p.lambda_s, v)))
+                .collect(),
+            color,
+        )
+    };
+    let has_mu = points.iter().any(|p| p.mu.is_some());
+    let mut top = vec![if has_mu {
+        line("μ", &|p| p.mu, 0)
+    } else {
+        line("ψ", &|p| p.psi, 1)
+    }];
+    let mut bottom = vec![line("β", &|p| Some(p.beta), 2)];
+    if points.iter().any(|p| p.psi.is_some()) {
+        bottom.insert(0, line("ψ", &|p| p.psi, 1));
+    }
+    let x = log_axis("λs (m)", &top, true).or_else(|_| log_axis("λs (m)", &bottom, true))?;
+    let y_top = log_axis(if has_mu { "μ" } else { "ψ" }, &top, false)?;
+    let y_bottom = log_axis("ψ, β", &bottom, false)?;
+    if let Some(cutoff) = cutoff {
+        top.push(marker("reliability cut-off", cutoff, y_top.range, super::BLACK_INDEX));
+        bottom.push(Series {
+            label: None,
+            ..marker("", cutoff, y_bottom.range, super::BLACK_INDEX)
+        });
+    }
+    Ok(Page {
+        top: Chart {
+            title: Some(format!("against the S-filter nesting index λs: {title}")),
+            x: x.clone(),
+            y: y_top,
+            series: top,
+            legend: Corner::UpperLeft,
+        },
+        bottom: Some(Chart {
+            title: None,
+            x,
+            y: y_bottom,
+            series: bottom,
+            legend: Corner::UpperRight,
+        }),
+    })
+}

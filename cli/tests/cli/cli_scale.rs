@@ -235,3 +235,34 @@ fn bad_scales_are_refused_naming_the_numbers() {
         assert_bad_input(&o, needle);
     }
 }
+
+#[test]
+fn plot_surface_draws_the_psd_and_the_scan() {
+    let dir = TempDir::new("scale-plots");
+    let (file, _) = map(&dir);
+    for (what, extra) in [
+        ("psd", &["--psd", "--lambda-s", "4e-6"][..]),
+        (
+            "scan",
+            &["--scan", "--resolution", "5e-6", "--force", "10", "--area", "1e-5"][..],
+        ),
+    ] {
+        let out = dir.arg(&format!("{what}.png"));
+        let mut args = vec!["plot", "surface", file.as_str(), "--scale", "1", "--out", out.as_str()];
+        args.extend(extra);
+        if what == "scan" {
+            args.extend(MATERIALS);
+        }
+        let o = kefric(&args);
+        assert!(o.status.success(), "{what}: {}", stderr(&o));
+        let png = std::fs::read(&out).unwrap();
+        assert!(
+            png.starts_with(b"\x89PNG") && png.len() > 10_000,
+            "{what}: {} bytes",
+            png.len()
+        );
+    }
+    let out = dir.arg("two.png");
+    let o = kefric(&["plot", "surface", &file, &file, "--psd", "--out", &out]);
+    assert_bad_input(&o, "take one surface file");
+}
