@@ -7,22 +7,7 @@ use crate::support::{assert_bad_input, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use serde_json::Value;
 
-const MATERIALS: &[&str] = &[
-    "--e1",
-    "70e9",
-    "--nu1",
-    "0.33",
-    "--e2",
-    "200e9",
-    "--nu2",
-    "0.31",
-    "--hardness",
-    "1e9",
-    "--delta-gamma",
-    "0.5",
-    "--epsilon",
-    "0.4e-9",
-];
+use crate::cli_surface::MATERIAL_FLAGS as MATERIALS;
 
 /// A rough map: waves from 4 µm to 150 µm, dx = 1 µm, dy = 1.5 µm.
 fn map(dir: &TempDir) -> (String, Topography) {

@@ -18,7 +18,7 @@ const MATERIALS: Materials = Materials {
     epsilon: 0.4e-9,
 };
 
-const MATERIAL_FLAGS: &[&str] = &[
+pub(crate) const MATERIAL_FLAGS: &[&str] = &[
     "--e1",
     "70e9",
     "--nu1",
