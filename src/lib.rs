@@ -54,6 +54,7 @@ mod num;
 pub mod paper;
 mod params;
 mod rng;
+mod special;
 mod spline;
 pub mod table;
 #[cfg(feature = "topography")]
