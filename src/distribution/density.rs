@@ -5,7 +5,7 @@
 use super::empirical::{kde_value, kde_value_slope, Kde};
 use super::pearson::{PearsonType, Stable};
 use super::HeightDistribution;
-use crate::model::quadrature::{Rule, NODES};
+use crate::quadrature::{Rule, NODES};
 use crate::special::atan2;
 use std::sync::Arc;
 

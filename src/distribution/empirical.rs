@@ -1,7 +1,7 @@
 //! The empirical family: a kernel density of measured heights (MODEL.md §9).
 
 use super::EMPIRICAL_MIN_HEIGHTS;
-use crate::params::{check, ParamError};
+use crate::checks::{check, ParamError};
 use std::sync::Arc;
 
 /// An empirical density of measured heights (MODEL.md §9): the heights are

@@ -28,8 +28,8 @@ pub(crate) use density::{End, PowerTails, JACOBI_POWER_MAX};
 pub use empirical::{Empirical, KDE_CENTRES};
 pub use pearson::PearsonType;
 
+use crate::checks::{check, ParamError};
 use crate::num::Shortest;
-use crate::params::{check, ParamError};
 
 /// The shape of the asperity heights' distribution: one of the model
 /// constants ([`Constants::distribution`](crate::Constants::distribution)).
