@@ -65,7 +65,7 @@ pub mod topography;
 pub use checks::ParamError;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use distribution::{
-    Density, DistributionError, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
+    Density, DistributionError, Empirical, Family, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
 pub use error::{Classify, ErrorKind};

@@ -63,6 +63,33 @@ pub enum HeightDistribution {
     Empirical(Empirical),
 }
 
+/// A family of asperity-height distributions: the shape of a
+/// [`HeightDistribution`] without its parameters
+/// ([`HeightDistribution::family_kind`]). Its names are the record name
+/// `distribution` (JSON, the NumPy export, the bindings).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// [`HeightDistribution::Gaussian`].
+    Gaussian,
+    /// [`HeightDistribution::Pearson`].
+    Pearson,
+    /// [`HeightDistribution::Weibull`].
+    Weibull,
+    /// [`HeightDistribution::Empirical`].
+    Empirical,
+}
+
+crate::named!(
+    Family,
+    "distribution",
+    [
+        Gaussian = "gaussian",
+        Pearson = "pearson",
+        Weibull = "weibull",
+        Empirical = "empirical"
+    ]
+);
+
 /// Bounds of the Weibull skewness (MODEL.md §9): Sk in (WEIBULL_SKEWNESS_MIN, WEIBULL_SKEWNESS_MAX].
 pub const WEIBULL_SKEWNESS_MIN: f64 = -1.1395;
 /// Upper bound of the Weibull skewness.
@@ -76,8 +103,14 @@ pub const PEARSON_KURTOSIS_MAX: f64 = 100.0;
 pub const PEARSON_SKEWNESS_MAX: f64 = 5.0;
 
 impl HeightDistribution {
-    /// Every family name, as [`family`](Self::family) spells it.
-    pub const FAMILIES: [&'static str; 4] = ["gaussian", "pearson", "weibull", "empirical"];
+    /// Every family name, as [`family`](Self::family) spells it (the
+    /// names of [`Family::ALL`]).
+    pub const FAMILIES: [&'static str; 4] = [
+        Family::ALL[0].name(),
+        Family::ALL[1].name(),
+        Family::ALL[2].name(),
+        Family::ALL[3].name(),
+    ];
 
     /// The Pearson distribution with skewness `skewness` and kurtosis
     /// `kurtosis` (not excess), validated: K > Sk² + 1, |Sk| ≤ 5, K ≤ 100.
@@ -123,25 +156,27 @@ impl HeightDistribution {
     ) -> Result<HeightDistribution, DistributionError> {
         let conflict = |name: &'static str, reason: String| Err(DistributionError::Conflict { name, reason });
         let family = match (family, heights) {
-            (Some(f), _) => f,
-            (None, Some(_)) => "empirical",
-            (None, None) if skewness.is_some() || kurtosis.is_some() => "pearson",
-            (None, None) => "gaussian",
+            (Some(f), _) => match Family::from_name(f) {
+                Some(family) => family,
+                None => {
+                    return conflict(
+                        "distribution",
+                        format!("must be gaussian, pearson, weibull or empirical (not {f:?})"),
+                    )
+                }
+            },
+            (None, Some(_)) => Family::Empirical,
+            (None, None) if skewness.is_some() || kurtosis.is_some() => Family::Pearson,
+            (None, None) => Family::Gaussian,
         };
-        if !HeightDistribution::FAMILIES.contains(&family) {
-            return conflict(
-                "distribution",
-                format!("must be gaussian, pearson, weibull or empirical (not {family:?})"),
-            );
-        }
-        if family != "empirical" && heights.is_some() {
+        if family != Family::Empirical && heights.is_some() {
             return conflict(
                 "heights",
                 format!("only with the empirical distribution (not {family})"),
             );
         }
         let d = match family {
-            "gaussian" => {
+            Family::Gaussian => {
                 for (name, value, normal) in [("skewness", skewness, 0.0), ("kurtosis", kurtosis, 3.0)] {
                     if value.is_some_and(|v| v != normal) {
                         return conflict(
@@ -152,8 +187,8 @@ impl HeightDistribution {
                 }
                 HeightDistribution::Gaussian
             }
-            "pearson" => HeightDistribution::pearson(skewness.unwrap_or(0.0), kurtosis.unwrap_or(3.0))?,
-            "weibull" => {
+            Family::Pearson => HeightDistribution::pearson(skewness.unwrap_or(0.0), kurtosis.unwrap_or(3.0))?,
+            Family::Weibull => {
                 let d = HeightDistribution::weibull(skewness.unwrap_or(0.0))?;
                 if let Some(k) = kurtosis {
                     let implied = d.kurtosis();
@@ -170,7 +205,7 @@ impl HeightDistribution {
                 }
                 d
             }
-            _ => {
+            Family::Empirical => {
                 if let Some(name) = [("skewness", skewness), ("kurtosis", kurtosis)]
                     .into_iter()
                     .find_map(|(name, v)| v.map(|_| name))
@@ -189,13 +224,27 @@ impl HeightDistribution {
         Ok(d)
     }
 
-    /// The family's record name: `"gaussian"`, `"pearson"`, `"weibull"` or `"empirical"`.
+    /// The family's record name: `"gaussian"`, `"pearson"`, `"weibull"` or
+    /// `"empirical"` (the name of [`family_kind`](Self::family_kind)).
     pub fn family(&self) -> &'static str {
+        self.family_kind().name()
+    }
+
+    /// The family ([`Family`]). Pearson(0, 3) is [`Family::Pearson`]
+    /// here, though it equals the Gaussian.
+    ///
+    /// ```
+    /// use ke_friction::{Family, HeightDistribution, Named};
+    /// assert_eq!(HeightDistribution::weibull(0.5)?.family_kind(), Family::Weibull);
+    /// assert_eq!(Family::parse("pearson")?.name(), "pearson");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn family_kind(&self) -> Family {
         match self {
-            HeightDistribution::Gaussian => "gaussian",
-            HeightDistribution::Pearson { .. } => "pearson",
-            HeightDistribution::Weibull { .. } => "weibull",
-            HeightDistribution::Empirical(_) => "empirical",
+            HeightDistribution::Gaussian => Family::Gaussian,
+            HeightDistribution::Pearson { .. } => Family::Pearson,
+            HeightDistribution::Weibull { .. } => Family::Weibull,
+            HeightDistribution::Empirical(_) => Family::Empirical,
         }
     }
 
@@ -358,5 +407,28 @@ impl serde::Serialize for HeightDistribution {
             m.serialize_entry("heights", &e.0.n)?;
         }
         m.end()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Named;
+
+    #[test]
+    fn family_names_are_the_record_names() {
+        assert_eq!(HeightDistribution::FAMILIES.to_vec(), Family::names());
+        for (d, name) in [
+            (HeightDistribution::Gaussian, "gaussian"),
+            (HeightDistribution::pearson(0.0, 3.0).unwrap(), "pearson"),
+            (HeightDistribution::weibull(0.0).unwrap(), "weibull"),
+        ] {
+            assert_eq!(d.family(), name);
+            assert_eq!(Family::parse(name), Ok(d.family_kind()));
+        }
+        assert_eq!(
+            Family::parse("normal").unwrap_err().to_string(),
+            "distribution 'normal' is unknown: must be one of gaussian, pearson, weibull, empirical"
+        );
     }
 }
