@@ -2,31 +2,19 @@
 //! of the crate: ln Γ (the Weibull moments) and a fast `atan2` (the Pearson
 //! type IV log-density).
 
-/// ln Γ(x) for x > 0 (Lanczos, g = 7, n = 9: about 1e-15 relative).
+/// ln Γ(x) for x > 0: `libm::lgamma` (the FreeBSD/musl `lgamma`, pure Rust).
+///
+/// It replaced a Lanczos approximation (g = 7, n = 9), measured against it
+/// on 1e5 points: in (2.5, 200) the two agree to 8.7e-15 relative (52 ulps);
+/// in (0.5, 200) and the Weibull arguments 1 + j/k ∈ (1.001, 9) to 4.5e-13
+/// and 1.2e-14 absolute (the relative difference, up to 4.6e-10, is only
+/// at the zeros x = 1, 2 of ln Γ, where the Lanczos sum loses its digits). At
+/// exact points libm is the closer: ln n! (n < 20) to 2.1e-16 relative
+/// against 1.0e-15, ln Γ(½) and ln Γ(3/2) to 1e-16 against 4e-16. Every
+/// non-Gaussian reference stays green and the default table is
+/// byte-identical (it is Gaussian: no Γ in it).
 pub(crate) fn ln_gamma(x: f64) -> f64 {
-    const G: f64 = 7.0;
-    const C: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    if x < 0.5 {
-        let pi = core::f64::consts::PI;
-        return (pi / (pi * x).sin()).ln() - ln_gamma(1.0 - x);
-    }
-    let x = x - 1.0;
-    let mut a = C[0];
-    let t = x + G + 0.5;
-    for (i, c) in C.iter().enumerate().skip(1) {
-        a += c / (x + i as f64);
-    }
-    0.5 * (2.0 * core::f64::consts::PI).ln() + (x + 0.5) * t.ln() - t + a.ln()
+    libm::lgamma(x)
 }
 
 /// `atan2(y, x)` to about an ulp, at half the cost of the C library's
