@@ -37,6 +37,7 @@
 
 #[cfg(feature = "builder")]
 pub mod build;
+mod checks;
 mod curve;
 mod distribution;
 mod error;
@@ -53,15 +54,18 @@ mod num;
 #[cfg(feature = "paper")]
 pub mod paper;
 mod params;
+mod quadrature;
 mod rng;
+mod special;
 mod spline;
 pub mod table;
 #[cfg(feature = "topography")]
 pub mod topography;
 
+pub use checks::ParamError;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY};
 pub use distribution::{
-    Density, DistributionError, Empirical, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
+    Density, DistributionError, Empirical, Family, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
 pub use error::{Classify, ErrorKind};
@@ -70,8 +74,8 @@ pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
 pub use num::Shortest;
 pub use params::{
-    Constants, Fit, Kind, Materials, ParamError, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR,
-    DEFAULT_NU, EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
+    Constants, Fit, Kind, Materials, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
+    EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
 pub use spline::{Axis, Scale};
 pub use table::{

@@ -2,7 +2,7 @@
 //! friction it meets: F* = F/(A_n·H) (MODEL.md §1), μ at that F*, the
 //! friction force Q = μ·F and the separation h = h*·σ.
 
-use crate::params::check;
+use crate::checks::check;
 use crate::{Contact, EvalError, Model, ParamError, Physical};
 
 /// A normal load on a rough contact, in SI units.

@@ -1,5 +1,6 @@
 //! Model parameters: dimensionless (MODEL.md §1) or from physical quantities.
 
+use crate::checks::{check, ParamError};
 use crate::distribution::HeightDistribution;
 
 /// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
@@ -368,33 +369,6 @@ impl Materials {
     }
 }
 
-/// An input outside its valid range. The message names the input, its
-/// value and the range, e.g. `theta = -0.2 is out of range: must be >= 0`.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{name} = {} is out of range: must be {range}", crate::num::Shortest(*.value))]
-pub struct ParamError {
-    /// The input's name, as in [`Params`] / [`Physical`].
-    pub name: &'static str,
-    /// The rejected value.
-    pub value: f64,
-    /// The valid range, in words.
-    pub range: &'static str,
-}
-
-/// Rejects NaN, infinities and values failing `ok`.
-pub(crate) fn check(
-    name: &'static str,
-    value: f64,
-    range: &'static str,
-    ok: impl Fn(f64) -> bool,
-) -> Result<(), ParamError> {
-    if value.is_finite() && ok(value) {
-        Ok(())
-    } else {
-        Err(ParamError { name, value, range })
-    }
-}
-
 /// Hardness coefficient `K = 0.454 + 0.41ν` (MODEL.md §2).
 pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
     0.454 + 0.41 * nu
@@ -413,13 +387,6 @@ fn beta_admissible(beta: f64) -> bool {
 /// `σ_s/σ = (1 − 3.717e-4/β²)^½` (McCool; MODEL.md §2).
 pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
     sigma_s_ratio_squared(beta).sqrt()
-}
-
-impl crate::Classify for ParamError {
-    /// [`crate::ErrorKind::Argument`] for NaN or ∞, else [`crate::ErrorKind::Domain`].
-    fn kind(&self) -> crate::ErrorKind {
-        crate::ErrorKind::of_value(self.value)
-    }
 }
 
 #[cfg(test)]

@@ -9,9 +9,10 @@
 
 pub mod verify;
 
+use crate::checks::{check, ParamError};
 use crate::model::{EvalError, Model, H_LIMIT};
 use crate::num::Shortest;
-use crate::params::{check, Constants, ParamError, Params, PSI_MAX, PSI_MIN, THETA_MAX};
+use crate::params::{Constants, Params, PSI_MAX, PSI_MIN, THETA_MAX};
 use crate::spline::{fit_3d, Axis, Scale, Start};
 use crate::table::format::{self, AxisSpec, BuildSpec, Coefs, DistributionSpec, ModelSpec, Payload};
 pub use crate::table::Precision;

@@ -14,7 +14,7 @@ pub const SAMPLES: std::ops::RangeInclusive<usize> = 2..=10_000_000;
 /// `Ok` for an accepted number of verification points, else a message
 /// naming the range.
 pub fn check_samples(samples: usize) -> Result<(), crate::ParamError> {
-    crate::params::check("samples", samples as f64, "a whole number from 2 to 10000000", |v| {
+    crate::checks::check("samples", samples as f64, "a whole number from 2 to 10000000", |v| {
         SAMPLES.contains(&(v as usize))
     })
 }

@@ -2,11 +2,11 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
-pub(crate) mod quadrature;
 mod surface;
 
+use crate::checks::ParamError;
 use crate::num::Shortest;
-use crate::params::{ParamError, Params};
+use crate::params::Params;
 use surface::Surface;
 
 /// The state of the contact at one separation (all quantities dimensionless,

@@ -1,0 +1,454 @@
+//! The standardised density g of a [`HeightDistribution`] (its value,
+//! support, mode and moments) and the quadrature driver that integrates
+//! against it: panels from the mode outwards, Gauss–Jacobi at finite ends.
+
+use super::empirical::{kde_value, kde_value_slope, Kde};
+use super::pearson::{PearsonType, Stable};
+use super::HeightDistribution;
+use crate::quadrature::{Rule, NODES};
+use crate::special::atan2;
+use std::sync::Arc;
+
+/// The power tails of a density (types IV, VII): see [`Density::power_tails`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct PowerTails {
+    /// The real part of the complex singularities.
+    pub centre: f64,
+    /// Their distance from the real axis.
+    pub half_width: f64,
+    /// `q` in `g ~ |x − centre|^−q` (> 5 for every admissible pair).
+    pub exponent: f64,
+}
+
+/// A finite end of a density's support: `g(x) ~ |x − at|^power` next to it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct End {
+    pub at: f64,
+    pub power: f64,
+    /// Widest panel the Gauss–Jacobi rule may take at this end (where the
+    /// rest of the density is not analytic at the end: Weibull's `e^(−w^k)`).
+    pub jacobi_width: f64,
+}
+
+/// An end with `power` below this gets a Gauss–Jacobi rule with that very
+/// weight (the 12-point rules integrate `t^power·t^k`, k < 24, to 1e-13 up
+/// to here). Above it, next to the normal point, graded panels from a tiny
+/// first one: many more nodes (a type I/II end of power 3.5 cost 5× the
+/// Gaussian's solve that way, against 1.6× with its rule).
+pub(crate) const JACOBI_POWER_MAX: f64 = 64.0;
+
+impl End {
+    /// The Gauss–Jacobi rule with this end's weight `t^power`, if the end
+    /// takes one (`power` < [`JACOBI_POWER_MAX`]).
+    pub(crate) fn jacobi_rule(&self) -> Option<Rule> {
+        (self.power < JACOBI_POWER_MAX).then(|| Rule::jacobi(self.power))
+    }
+
+    /// Whether a panel of `width` (standardised units) reaching this end
+    /// takes its Gauss–Jacobi rule.
+    pub(crate) fn takes_jacobi(&self, width: f64) -> bool {
+        self.power < JACOBI_POWER_MAX && width <= self.jacobi_width
+    }
+}
+
+#[derive(Debug, Clone)]
+pub(super) enum Shape {
+    Normal,
+    /// Types I, II, VI: `−c_a·ln(1 − x/r_a) − c_b·ln(1 − x/r_b)`, or
+    /// where that cancels (roots close together, near type V) the same as
+    /// `−e·ln(B(x)/B0) − f·G(x)` with `G = ∫₀^x dt/B(t)` ([`Stable`]).
+    TwoRoots {
+        ra: f64,
+        rb: f64,
+        ca: f64,
+        cb: f64,
+        stable: Option<Stable>,
+    },
+    /// Near the normal point every closed form cancels: `−∫₀^x (A1t +
+    /// A0)/B(t) dt` by Gauss–Legendre (the roots of B are ≥ NEAR_NORMAL
+    /// away, so the rule is exact to rounding).
+    NearNormal,
+    /// Type III: `c1·x + c2·ln(1 + x/e₀)` with the end at `−e₀`.
+    Gamma {
+        c1: f64,
+        c2: f64,
+        inv_e0: f64,
+    },
+    /// Type V: `cv1·ln(1 − x/r) + cv2·(1/(x − r) + 1/r)`.
+    TypeV {
+        r: f64,
+        cv1: f64,
+        cv2: f64,
+    },
+    /// Types IV, VII.
+    Complex {
+        b0: f64,
+        b1: f64,
+        b2: f64,
+        w: f64,
+        c4a: f64,
+        c4b: f64,
+    },
+    Weibull {
+        k: f64,
+        mu: f64,
+        sd: f64,
+    },
+    Kde(Arc<Kde>),
+}
+
+/// A standardised density g (mean 0, variance 1) of a
+/// [`HeightDistribution`]: its value, support, mode and moments.
+#[derive(Debug, Clone)]
+pub struct Density {
+    pub(super) shape: Shape,
+    /// `(A1, A0, B0, B1, B2)` of a Pearson density.
+    pub(super) pearson: Option<([f64; 5], PearsonType)>,
+    pub(super) lo: Option<End>,
+    pub(super) hi: Option<End>,
+    /// ln g(x) = ln_norm + shape(x).
+    pub(super) ln_norm: f64,
+    pub(super) mode: f64,
+}
+
+impl Density {
+    /// The density of a distribution that validated.
+    pub(crate) fn new(dist: &HeightDistribution) -> Density {
+        let mut d = match dist {
+            _ if dist.is_gaussian() => Density::plain(Shape::Normal, None, None, 0.0),
+            HeightDistribution::Pearson { skewness, kurtosis } => Density::pearson(*skewness, *kurtosis),
+            HeightDistribution::Weibull { skewness } => Density::weibull(*skewness),
+            HeightDistribution::Empirical(e) => {
+                let kde = &e.0;
+                let mode = kde
+                    .centres
+                    .iter()
+                    .copied()
+                    .max_by(|a, b| kde_value(kde, *a).total_cmp(&kde_value(kde, *b)))
+                    .unwrap_or(0.0);
+                Density::plain(Shape::Kde(e.0.clone()), None, None, mode)
+            }
+            HeightDistribution::Gaussian => unreachable!("is_gaussian"),
+        };
+        d.ln_norm = match d.shape {
+            Shape::Normal => -0.5 * (2.0 * core::f64::consts::PI).ln(),
+            Shape::Kde(_) | Shape::Weibull { .. } => 0.0,
+            _ => -d.integrate(|_| 1.0).ln(),
+        };
+        d
+    }
+
+    pub(super) fn plain(shape: Shape, lo: Option<End>, hi: Option<End>, mode: f64) -> Density {
+        Density {
+            shape,
+            pearson: None,
+            lo,
+            hi,
+            ln_norm: 0.0,
+            mode,
+        }
+    }
+
+    /// The support `(lo, hi)` (infinite where unbounded).
+    pub fn support(&self) -> (f64, f64) {
+        (
+            self.lo.map_or(f64::NEG_INFINITY, |e| e.at),
+            self.hi.map_or(f64::INFINITY, |e| e.at),
+        )
+    }
+
+    /// Where g is largest (for a J-shaped density, the end where it is unbounded).
+    pub fn mode(&self) -> f64 {
+        self.mode
+    }
+
+    /// Below the first and above the second, g only falls away from its
+    /// mass: the mode for the unimodal families, the outermost kernel
+    /// centres for an empirical density (whose outliers make it
+    /// multimodal: a tail may not be cut at the first dip).
+    pub(crate) fn tails(&self) -> (f64, f64) {
+        match &self.shape {
+            Shape::Kde(kde) => (kde.centres[0], kde.centres[kde.centres.len() - 1]),
+            _ => (self.mode, self.mode),
+        }
+    }
+
+    /// The Pearson type, for a Pearson density (the Gaussian is
+    /// [`PearsonType::Normal`]).
+    pub fn pearson_type(&self) -> Option<PearsonType> {
+        match self.shape {
+            Shape::Normal => Some(PearsonType::Normal),
+            _ => self.pearson.map(|(_, t)| t),
+        }
+    }
+
+    /// The power tails of a type IV or VII density: `g ~ |x − centre|^−exponent`
+    /// on both sides, with g analytic in `1/(x − centre)` out to infinity
+    /// (its only singularities are the complex roots of the Pearson
+    /// quadratic B(x), `centre ± i·half_width`).
+    pub(crate) fn power_tails(&self) -> Option<PowerTails> {
+        match self.shape {
+            Shape::Complex { b1, b2, w, c4a, .. } => Some(PowerTails {
+                centre: -b1 / (2.0 * b2),
+                half_width: w / (2.0 * b2.abs()),
+                exponent: -2.0 * c4a,
+            }),
+            _ => None,
+        }
+    }
+
+    pub(crate) fn lower_end(&self) -> Option<End> {
+        self.lo
+    }
+
+    pub(crate) fn upper_end(&self) -> Option<End> {
+        self.hi
+    }
+
+    /// The scale (in standardised units) on which g may change shape
+    /// without its log-slope showing it: a kernel's width for an empirical
+    /// density, else unlimited.
+    pub(crate) fn smoothness_scale(&self) -> f64 {
+        match &self.shape {
+            Shape::Kde(kde) => kde.h,
+            _ => f64::INFINITY,
+        }
+    }
+
+    /// ln g(x); −∞ outside the support.
+    pub fn ln_pdf(&self, x: f64) -> f64 {
+        if let Some(e) = self.lo {
+            if x <= e.at {
+                return if x == e.at {
+                    self.ln_pdf_at_end(e, 0.0)
+                } else {
+                    f64::NEG_INFINITY
+                };
+            }
+        }
+        if let Some(e) = self.hi {
+            if x >= e.at {
+                return if x == e.at {
+                    self.ln_pdf_at_end(e, 0.0)
+                } else {
+                    f64::NEG_INFINITY
+                };
+            }
+        }
+        self.ln_norm + self.shape_ln(x)
+    }
+
+    /// g(x); 0 outside the support.
+    pub fn pdf(&self, x: f64) -> f64 {
+        self.ln_pdf(x).exp()
+    }
+
+    /// g'(x)/g(x) inside the support.
+    pub fn dln_pdf(&self, x: f64) -> f64 {
+        if let Some(([a1, a0, b0, b1, b2], _)) = self.pearson {
+            return -(a1 * x + a0) / (b0 + x * (b1 + x * b2));
+        }
+        match &self.shape {
+            Shape::Weibull { k, mu, sd } => {
+                let w = mu + sd * x;
+                sd * ((k - 1.0) / w - k * w.powf(k - 1.0))
+            }
+            Shape::Kde(kde) => {
+                let (v, dv) = kde_value_slope(kde, x);
+                dv / v
+            }
+            _ => -x,
+        }
+    }
+
+    /// ln g at distance `dist ≥ 0` inside the support from its finite end
+    /// `e`, computed from the distance itself (no rounding of `e.at ± dist`).
+    pub(crate) fn ln_pdf_at_end(&self, e: End, dist: f64) -> f64 {
+        let upper = self.hi == Some(e);
+        let x = if upper { e.at - dist } else { e.at + dist };
+        self.ln_norm
+            + match self.shape {
+                Shape::TwoRoots { ra, rb, ca, cb, .. } => {
+                    let term = |r: f64, c: f64| {
+                        if r == e.at {
+                            -c * (dist / r.abs()).ln()
+                        } else {
+                            -c * (-x / r).ln_1p()
+                        }
+                    };
+                    term(ra, ca) + term(rb, cb)
+                }
+                Shape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (dist * inv_e0.abs()).ln(),
+                Shape::TypeV { r, cv1, cv2 } => {
+                    let xr = if upper { -dist } else { dist };
+                    cv1 * (dist / r.abs()).ln() + cv2 * (1.0 / xr + 1.0 / r)
+                }
+                Shape::Weibull { k, mu: _, sd } => {
+                    let w = sd * dist;
+                    (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
+                }
+                _ => self.shape_ln(x),
+            }
+    }
+
+    /// ln g(x) − ln_norm inside the support.
+    fn shape_ln(&self, x: f64) -> f64 {
+        match &self.shape {
+            Shape::Normal => -0.5 * x * x,
+            Shape::TwoRoots { stable: Some(st), .. } => {
+                let [b0, b1, b2] = st.b;
+                let g = (x * st.k / (b0 * (1.0 - x / st.rb))).ln_1p() / st.k;
+                -st.e * ((b1 * x + b2 * x * x) / b0).ln_1p() - st.f * g
+            }
+            Shape::TwoRoots { ra, rb, ca, cb, .. } => -ca * (-x / ra).ln_1p() - cb * (-x / rb).ln_1p(),
+            Shape::NearNormal => {
+                let ([a1, a0, b0, b1, b2], _) = self.pearson.expect("a Pearson density");
+                let r = Rule::shared_legendre();
+                -x * (0..NODES)
+                    .map(|i| {
+                        let t = x * r.t[i];
+                        r.w[i] * (a1 * t + a0) / (b0 + t * (b1 + t * b2))
+                    })
+                    .sum::<f64>()
+            }
+            Shape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (x * inv_e0).ln_1p(),
+            Shape::TypeV { r, cv1, cv2 } => cv1 * (-x / r).ln_1p() + cv2 * (1.0 / (x - r) + 1.0 / r),
+            Shape::Complex {
+                b0,
+                b1,
+                b2,
+                w,
+                c4a,
+                c4b,
+            } => {
+                // ln(1 + u), not ln_1p(u): the density is exp of this, so
+                // only its absolute error matters (≤ 2^-53, the rounding
+                // of 1 + u), and ln costs a third of ln_1p.
+                let ln = c4a * (1.0 + (b1 * x + b2 * x * x) / b0).ln();
+                if *c4b == 0.0 {
+                    // Type VII (Sk = 0): no arctangent term; a third of
+                    // the work per node.
+                    return ln;
+                }
+                // atan2(2B2x/w, 1 + uv) with both arguments times w²: no
+                // cancellation when w is small (near type V).
+                let y = 2.0 * b2 * x * w;
+                let xx = w * w + (2.0 * b2 * x + b1) * b1;
+                ln + c4b * atan2(y, xx)
+            }
+            Shape::Weibull { k, mu, sd } => {
+                let w = mu + sd * x;
+                (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(*k)
+            }
+            Shape::Kde(kde) => kde_value(kde, x).ln(),
+        }
+    }
+
+    /// `[∫g, mean, variance, skewness, kurtosis]`, by the same quadrature
+    /// the model uses (to about 1e-13 for densities with light tails).
+    pub fn moments(&self) -> [f64; 5] {
+        let m = |k: i32| self.integrate(|x| x.powi(k));
+        let (m0, m1) = (m(0), m(1));
+        let mean = m1 / m0;
+        let c = |k: i32| self.integrate(|x| (x - mean).powi(k)) / m0;
+        let var = c(2);
+        [m0, mean, var, c(3) / var.powf(1.5), c(4) / (var * var)]
+    }
+
+    /// `∫ f(x)·g(x) dx` over the support, split at the mode, with
+    /// Gauss–Jacobi panels at finite ends and geometric panels into the tails.
+    pub(crate) fn integrate(&self, f: impl Fn(f64) -> f64) -> f64 {
+        let (lo, hi) = self.support();
+        let mut sum = 0.0;
+        let mode = self.mode.clamp(lo, hi);
+        let start = if mode > lo && mode < hi { mode } else { 0.0 };
+        for dir in [-1.0, 1.0] {
+            let end = if dir > 0.0 { self.hi } else { self.lo };
+            march(self, start, dir, end, &mut |x0, x1, rule| {
+                sum += panel_sum(self, x0, x1, rule, end, &f)
+            });
+        }
+        sum
+    }
+}
+
+/// How one panel is integrated.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum PanelRule {
+    /// Gauss–Legendre.
+    Legendre,
+    /// Gauss–Jacobi with the end's weight `|x − end|^power` at `x1`.
+    JacobiEnd,
+}
+
+/// Walks from `x` in direction `dir` (±1) in panels until the support end
+/// (`end`) or until the density has become negligible; calls `f(x0, x1,
+/// rule)` (with `x0 < x1`).
+fn march(g: &Density, x: f64, dir: f64, end: Option<End>, f: &mut impl FnMut(f64, f64, PanelRule)) {
+    let peak = g.ln_pdf(g.mode).max(g.ln_pdf(x));
+    let peak = if peak.is_finite() { peak } else { g.ln_pdf(x) };
+    let mut x = x;
+    for _ in 0..100_000 {
+        let mut step = 8.0 / g.dln_pdf(x).abs().max(1e-300);
+        step = step.max(1e-3 * (1.0 + x.abs()) * f64::EPSILON.sqrt());
+        // Far out, panels grow with |x| (power tails) but stay within their
+        // distance from 0 for the x^k weights.
+        step = step.min(0.5 * (1.0 + x.abs())).min(g.smoothness_scale());
+        if let Some(e) = end {
+            let dist = (e.at - x) * dir;
+            if dist <= 0.0 {
+                return;
+            }
+            if step >= 0.5 * dist && e.takes_jacobi(dist) {
+                let (a, b) = if dir > 0.0 { (x, e.at) } else { (e.at, x) };
+                f(a, b, PanelRule::JacobiEnd);
+                return;
+            }
+            step = step.min(0.5 * dist);
+        }
+        let x1 = x + dir * step;
+        let (a, b) = if dir > 0.0 { (x, x1) } else { (x1, x) };
+        f(a, b, PanelRule::Legendre);
+        x = x1;
+        // Negligible: the density times (1 + x²)² has fallen by e^−60.
+        let ln_g = match end {
+            Some(e) => g.ln_pdf_at_end(e, (e.at - x) * dir),
+            None => g.ln_pdf(x),
+        };
+        if ln_g + 2.0 * (1.0 + x * x).ln() < peak - 60.0 || ln_g == f64::NEG_INFINITY {
+            return;
+        }
+    }
+}
+
+/// One panel of [`Density::integrate`].
+fn panel_sum(g: &Density, x0: f64, x1: f64, rule: PanelRule, end: Option<End>, f: &impl Fn(f64) -> f64) -> f64 {
+    let width = x1 - x0;
+    match rule {
+        PanelRule::Legendre => {
+            let r = Rule::shared_legendre();
+            (0..NODES)
+                .map(|i| {
+                    let x = x0 + width * r.t[i];
+                    width * r.w[i] * f(x) * g.pdf(x)
+                })
+                .sum()
+        }
+        PanelRule::JacobiEnd => {
+            let Some(r) = end.and_then(|e| e.jacobi_rule().map(|r| (e, r))) else {
+                return 0.0;
+            };
+            let (e, r) = r;
+            let upper = e.at == x1;
+            // ∫ |x − e|^p·(g/|x − e|^p) over the panel, in the distance t·width.
+            (0..NODES)
+                .map(|i| {
+                    let dist = width * r.t[i];
+                    let x = if upper { x1 - dist } else { x0 + dist };
+                    let regular = g.ln_pdf_at_end(e, dist) - e.power * dist.ln();
+                    width.powf(e.power + 1.0) * r.w[i] * f(x) * regular.exp()
+                })
+                .sum()
+        }
+    }
+}
