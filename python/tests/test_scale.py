@@ -104,7 +104,7 @@ def test_filtered_keeps_detrend_and_derivative(files):
     paths, arrays = files
     s = kf.Surface.from_heights(arrays["map"], DX, DY, detrend="line", derivative="spectral")
     f = s.filtered(lambda_s=3e-6)
-    assert (f.detrend, f.derivative) == ("line", "spectral")
+    assert (f.detrend, f.derivative) == ("line", "spectral") and repr(f).endswith("lambda_s=3e-06)")
     assert_same(f.stats, kf.Surface.from_heights(arrays["map"], DX, DY, detrend="line", derivative="spectral",
                                                  lambda_s=3e-6).stats)
     # Its heights are the same: unfiltered again, the same statistics.
@@ -394,3 +394,13 @@ def test_reliability_cutoff(files):
     missing[7] = np.nan
     with pytest.raises(ValueError, match="missing"):
         kf.Surface.from_heights(missing, DX).reliability_cutoff(1e-6)
+
+
+def test_from_topography_takes_the_filters(files):
+    st = pytest.importorskip("SurfaceTopography")
+    _, arrays = files
+    z = arrays["map"]
+    t = st.Topography(z.T.copy(), (128 * DX, 96 * DY), periodic=False, unit="m")
+    s = kf.Surface.from_topography(t, lambda_s="auto", lambda_c=30e-6, tip_radius=1e-4)
+    ref = kf.Surface.from_heights(z, DX, DY, lambda_s="auto", lambda_c=30e-6, tip_radius=1e-4)
+    assert s.stats == ref.stats and s.lambda_s == ref.cutoff

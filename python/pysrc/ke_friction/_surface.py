@@ -646,4 +646,6 @@ class Surface:
         shape = f"map {s['nx']} x {s['ny']}, dx={s['dx']!r}, dy={s['dy']!r}" if s["dy"] is not None \
             else f"profile of {s['nx']}, dx={s['dx']!r}"
         pair = "pair, " if self.is_pair else ""
-        return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, derivative={self.derivative!r})"
+        band = "".join(f", {k}={s[k]!r}" for k in ("lambda_s", "lambda_c") if s[k] is not None)
+        return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, " \
+            f"derivative={self.derivative!r}{band})"
