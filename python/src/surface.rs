@@ -7,7 +7,9 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    read_file, Derivative, Detrend, ReadOptions, StatsOptions, Surface, Topography, MAX_POINTS,
+    psd_area, psd_profile_x, psd_profile_y, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
+    tip_reliability_cutoff, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError, StatsOptions,
+    Surface, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -30,7 +32,7 @@ fn derivative_of(name: &str) -> PyResult<Derivative> {
     })
 }
 
-/// The statistics' options of the Python keywords.
+/// The statistics' options of the Python keywords (no filters).
 fn options(detrend: &str, derivative: &str) -> PyResult<StatsOptions> {
     Ok(StatsOptions {
         detrend: detrend_of(detrend)?,
@@ -38,6 +40,84 @@ fn options(detrend: &str, derivative: &str) -> PyResult<StatsOptions> {
         lambda_s: None,
         lambda_c: None,
     })
+}
+
+/// The safety factor of the tip-radius cut-off (Sanner et al. 2022, as
+/// `kefric surface --tip-radius` and SurfaceTopography take it).
+const SAFETY_FACTOR: f64 = 0.5;
+
+/// What is known of the instrument's reliability cut-off (m) of a
+/// topography: nothing (`Unknown`), or a cut-off that may be `None` (a
+/// tip whose radius distorts no scale of the data).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Cutoff {
+    Unknown,
+    Known(Option<f64>),
+}
+
+impl Cutoff {
+    /// The cut-off of a `resolution` (taking precedence) or a
+    /// `tip_radius` on `t`, as `kefric surface --resolution/--tip-radius`.
+    fn of(t: &Topography, tip_radius: Option<f64>, resolution: Option<f64>) -> PyResult<Cutoff> {
+        match (resolution, tip_radius) {
+            (Some(r), _) => {
+                if !(r.is_finite() && r > 0.0) {
+                    return Err(value_error(format!(
+                        "resolution = {r:e} is out of range: must be > 0 and finite (metres)"
+                    )));
+                }
+                Ok(Cutoff::Known(Some(r)))
+            }
+            (None, Some(radius)) => tip_reliability_cutoff(t, radius, SAFETY_FACTOR)
+                .map(Cutoff::Known)
+                .map_err(|e| value_error(format!("tip_radius: {e}"))),
+            (None, None) => Ok(Cutoff::Unknown),
+        }
+    }
+
+    fn value(self) -> Option<f64> {
+        match self {
+            Cutoff::Unknown => None,
+            Cutoff::Known(c) => c,
+        }
+    }
+}
+
+/// The S-filter's nesting index of the Python keywords: `lambda_s` metres,
+/// or with `auto` the reliability cut-off (none if the instrument
+/// distorts no scale; an error if nothing is known of it).
+fn lambda_s_of(lambda_s: Option<f64>, auto: bool, cutoff: Cutoff) -> PyResult<Option<f64>> {
+    match (auto, cutoff) {
+        (false, _) => Ok(lambda_s),
+        (true, Cutoff::Known(c)) => Ok(c),
+        (true, Cutoff::Unknown) => Err(value_error(
+            "lambda_s = \"auto\": give tip_radius or resolution for the reliability cut-off",
+        )),
+    }
+}
+
+/// The surface of `t` with `options`, its statistics checked against the
+/// reliability `cutoff` (an unreliable-scale warning if below).
+fn surface_of(t: Topography, options: StatsOptions, cutoff: Cutoff) -> Result<Surface, StatsError> {
+    let mut surface = Surface::new(t, options)?;
+    if let Some(c) = cutoff.value() {
+        surface.check_reliability(c);
+    }
+    Ok(surface)
+}
+
+/// A power spectral density as `(q, c)` arrays.
+fn psd_arrays<'py>(py: Python<'py>, p: Psd) -> (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>) {
+    (PyArray1::from_vec(py, p.q), PyArray1::from_vec(py, p.c))
+}
+
+/// The window of the Python keyword.
+fn window_of(name: &str) -> PyResult<Window> {
+    match name {
+        "none" => Ok(Window::None),
+        "hann" => Ok(Window::Hann),
+        _ => Err(value_error(format!("window = {name:?}: must be \"none\" or \"hann\""))),
+    }
 }
 
 /// The topography of `heights` (row-major, `ny` rows of `nx`): a profile
@@ -65,52 +145,159 @@ fn materials((e1, nu1, e2, nu2, hardness, delta_gamma, epsilon): (f64, f64, f64,
     }
 }
 
-/// A measured surface: one topography, or the equivalent surface of two.
+/// The exception of statistics that cannot be taken with `options`: a
+/// filter's refused nesting index names its keyword (`lambda_s: the
+/// cut-off wavelength lambda = … m is out of range: must be at least … m`).
+fn stats_error(e: StatsError, options: &StatsOptions, what: Option<&str>) -> PyErr {
+    let name = match &e {
+        StatsError::Filter(f) => {
+            let lambda = match f {
+                FilterError::Cutoff { lambda } | FilterError::TooShort { lambda, .. } => Some(*lambda),
+                FilterError::TooLong { lambda, .. } => Some(*lambda),
+                _ => None,
+            };
+            let same = |l: Option<f64>| {
+                l.is_some() && (l == lambda || l.zip(lambda).is_some_and(|(a, b)| a.is_nan() && b.is_nan()))
+            };
+            if same(options.lambda_s) {
+                Some("lambda_s")
+            } else if same(options.lambda_c) {
+                Some("lambda_c")
+            } else {
+                None
+            }
+        }
+        _ => None,
+    };
+    let prefix = [what, name].into_iter().flatten().collect::<Vec<_>>().join(": ");
+    if prefix.is_empty() {
+        raise(e)
+    } else {
+        exception(e.kind(), format!("{prefix}: {e}"))
+    }
+}
+
+/// A measured surface: one topography, or the equivalent surface of two;
+/// and what is known of the instrument's reliability cut-off.
 #[pyclass(frozen, module = "ke_friction._core")]
-pub struct SurfaceCore(Surface);
+pub struct SurfaceCore {
+    surface: Surface,
+    cutoff: Cutoff,
+}
+
+impl SurfaceCore {
+    /// The surface of the parts `topographies`, each with its own cut-off,
+    /// taken with `options`.
+    fn build(
+        py: Python<'_>,
+        topographies: Vec<(Topography, Cutoff)>,
+        options: StatsOptions,
+        what: Option<&str>,
+    ) -> PyResult<SurfaceCore> {
+        let cutoff = match &topographies[..] {
+            [(_, c)] => *c,
+            [(_, a), (_, b)] if a == b => *a,
+            _ => Cutoff::Unknown,
+        };
+        let n = topographies.len();
+        let surface = py.detach(|| {
+            let mut surfaces = Vec::with_capacity(n);
+            for (t, c) in topographies {
+                surfaces.push(surface_of(t, options, c)?);
+            }
+            match <[Surface; 1]>::try_from(surfaces) {
+                Ok([one]) => Ok(Ok(one)),
+                Err(v) => match <[Surface; 2]>::try_from(v) {
+                    Ok([a, b]) => Ok(Surface::join(a, b).map_err(raise)),
+                    Err(v) => Ok(Err(value_error(format!(
+                        "a surface has one or two parts, not {}",
+                        v.len()
+                    )))),
+                },
+            }
+        });
+        match surface {
+            Ok(Ok(surface)) => Ok(SurfaceCore { surface, cutoff }),
+            Ok(Err(e)) => Err(e),
+            Err(e) => Err(stats_error(e, &options, what)),
+        }
+    }
+
+    /// The one topography of a single surface (`what` names the
+    /// operation in the error of a pair).
+    fn single(&self, what: &str) -> PyResult<&Topography> {
+        match self.surface.parts() {
+            [(t, _)] => Ok(t),
+            _ => Err(value_error(format!("{what}: of a single surface, not a pair"))),
+        }
+    }
+}
 
 #[pymethods]
 impl SurfaceCore {
     /// The surface of one topography (`parts` of one) or of two pressed
     /// together: each part `(heights, nx, ny, dx, dy)`, heights row-major
-    /// in metres (NaN = missing), `dy` None for a profile.
+    /// in metres (NaN = missing), `dy` None for a profile. `lambda_s`,
+    /// `lambda_c`: the filters' nesting indices (m); `auto`: `lambda_s` is
+    /// the reliability cut-off of `resolution` or `tip_radius` (each
+    /// part's); `no_cutoff`: the cut-off is known to be none (a pickled
+    /// surface's).
     #[staticmethod]
-    #[allow(clippy::type_complexity)]
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
+    #[pyo3(signature = (parts, detrend, derivative, lambda_s=None, lambda_c=None, auto=false, tip_radius=None,
+                        resolution=None, no_cutoff=false))]
     fn new(
         py: Python<'_>,
         parts: Vec<(PyReadonlyArray1<'_, f64>, usize, usize, f64, Option<f64>)>,
         detrend: &str,
         derivative: &str,
+        lambda_s: Option<f64>,
+        lambda_c: Option<f64>,
+        auto: bool,
+        tip_radius: Option<f64>,
+        resolution: Option<f64>,
+        no_cutoff: bool,
     ) -> PyResult<SurfaceCore> {
-        let options = options(detrend, derivative)?;
+        let base = options(detrend, derivative)?;
+        if parts.is_empty() || parts.len() > 2 {
+            return Err(value_error(format!(
+                "a surface has one or two parts, not {}",
+                parts.len()
+            )));
+        }
         let mut topographies = Vec::with_capacity(parts.len());
+        let mut lambda = None;
         for (heights, nx, ny, dx, dy) in &parts {
             let heights = slice("heights", heights)?.into_owned();
-            topographies.push(topography(heights, *nx, *ny, *dx, *dy)?);
+            let t = topography(heights, *nx, *ny, *dx, *dy)?;
+            let cutoff = if no_cutoff {
+                Cutoff::Known(None)
+            } else {
+                py.detach(|| Cutoff::of(&t, tip_radius, resolution))?
+            };
+            lambda = Some(lambda_s_of(lambda_s, auto, cutoff)?);
+            topographies.push((t, cutoff));
         }
-        let surface = py.detach(|| match <[Topography; 1]>::try_from(topographies) {
-            Ok([one]) => Ok(Surface::new(one, options)),
-            Err(v) => match <[Topography; 2]>::try_from(v) {
-                Ok([a, b]) => Ok(Surface::pair(a, b, options)),
-                Err(v) => Err(v.len()),
-            },
-        });
-        match surface {
-            Ok(s) => s.map(SurfaceCore).map_err(raise),
-            Err(n) => Err(value_error(format!("a surface has one or two parts, not {n}"))),
-        }
+        let options = StatsOptions {
+            lambda_s: lambda.flatten(),
+            lambda_c,
+            ..base
+        };
+        SurfaceCore::build(py, topographies, options, None)
     }
 
     /// The surface in the file `path` (X3P, `.npy` or text), by the core's
     /// reader: `dx`, `dy` in metres for files that give none, `z_unit`
     /// metres per unit of `.npy` and text heights, `xy_unit` of the x, y
     /// columns of text (both finite and > 0), `max_points` the most points
-    /// the surface may have (None: the core's `MAX_POINTS`). A file that
+    /// the surface may have (None: the core's `MAX_POINTS`); the filters
+    /// and the cut-off as in `new`. A file that
     /// cannot be read is an `OSError`, a bad one or one over `max_points`
     /// a `ValueError`, heights that cannot be allocated a `MemoryError`;
     /// all name the file.
     #[staticmethod]
-    #[pyo3(signature = (path, dx, dy, z_unit, xy_unit, detrend, derivative, max_points=None))]
+    #[pyo3(signature = (path, dx, dy, z_unit, xy_unit, detrend, derivative, max_points=None, lambda_s=None,
+                        lambda_c=None, auto=false, tip_radius=None, resolution=None))]
     #[allow(clippy::too_many_arguments)]
     fn read(
         py: Python<'_>,
@@ -122,8 +309,13 @@ impl SurfaceCore {
         detrend: &str,
         derivative: &str,
         max_points: Option<u64>,
+        lambda_s: Option<f64>,
+        lambda_c: Option<f64>,
+        auto: bool,
+        tip_radius: Option<f64>,
+        resolution: Option<f64>,
     ) -> PyResult<SurfaceCore> {
-        let options = options(detrend, derivative)?;
+        let base = options(detrend, derivative)?;
         let read = ReadOptions {
             dx,
             dy,
@@ -133,14 +325,22 @@ impl SurfaceCore {
             ..ReadOptions::default()
         };
         let topography = py.detach(|| read_file(&path, &read)).map_err(read_error)?;
-        py.detach(|| Surface::new(topography, options))
-            .map(SurfaceCore)
-            .map_err(|e| exception(e.kind(), format!("{}: {e}", path.display())))
+        let name = path.display().to_string();
+        let cutoff = py
+            .detach(|| Cutoff::of(&topography, tip_radius, resolution))
+            .map_err(|e| value_error(format!("{name}: {e}")))?;
+        let options = StatsOptions {
+            lambda_s: lambda_s_of(lambda_s, auto, cutoff)?,
+            lambda_c,
+            ..base
+        };
+        SurfaceCore::build(py, vec![(topography, cutoff)], options, Some(&name))
     }
 
     /// Two surfaces pressed together: the equivalent surface of the
     /// topographies of `a` and `b` (one each), statistics taken with
-    /// `detrend` and `derivative`.
+    /// `detrend` and `derivative` and the filters the two share (a
+    /// `ValueError` if they differ).
     #[staticmethod]
     fn pair(
         py: Python<'_>,
@@ -149,48 +349,222 @@ impl SurfaceCore {
         detrend: &str,
         derivative: &str,
     ) -> PyResult<SurfaceCore> {
-        let options = options(detrend, derivative)?;
-        let one = |s: &SurfaceCore, name: &str| match s.0.parts() {
+        let (oa, ob) = (a.surface.options(), b.surface.options());
+        if (oa.lambda_s, oa.lambda_c) != (ob.lambda_s, ob.lambda_c) {
+            return Err(value_error(format!(
+                "the surfaces are filtered differently: lambda_s {:?} and {:?}, lambda_c {:?} and {:?}",
+                oa.lambda_s, ob.lambda_s, oa.lambda_c, ob.lambda_c
+            )));
+        }
+        let options = StatsOptions {
+            lambda_s: oa.lambda_s,
+            lambda_c: oa.lambda_c,
+            ..options(detrend, derivative)?
+        };
+        let one = |s: &SurfaceCore, name: &str| match s.surface.parts() {
             [(t, _)] => Ok(t.clone()),
             _ => Err(value_error(format!(
                 "{name} is a pair already: give two single surfaces"
             ))),
         };
         let (ta, tb) = (one(a, "a")?, one(b, "b")?);
-        py.detach(|| {
-            if a.0.options() == options && b.0.options() == options {
-                // Their statistics are taken already.
-                Surface::join(a.0.clone(), b.0.clone())
+        if oa == options && ob == options {
+            // Their statistics are taken already.
+            let cutoff = if a.cutoff == b.cutoff {
+                a.cutoff
             } else {
-                Surface::pair(ta, tb, options)
+                Cutoff::Unknown
+            };
+            let surface = py
+                .detach(|| Surface::join(a.surface.clone(), b.surface.clone()))
+                .map_err(raise)?;
+            return Ok(SurfaceCore { surface, cutoff });
+        }
+        SurfaceCore::build(py, vec![(ta, a.cutoff), (tb, b.cutoff)], options, None)
+    }
+
+    /// The same heights, detrending and derivative (and reliability
+    /// cut-off) with the filters `lambda_s` (`auto`: the cut-off) and
+    /// `lambda_c`.
+    #[pyo3(signature = (lambda_s=None, lambda_c=None, auto=false))]
+    fn filtered(
+        &self,
+        py: Python<'_>,
+        lambda_s: Option<f64>,
+        lambda_c: Option<f64>,
+        auto: bool,
+    ) -> PyResult<SurfaceCore> {
+        let options = StatsOptions {
+            lambda_s: lambda_s_of(lambda_s, auto, self.cutoff)?,
+            lambda_c,
+            ..self.surface.options()
+        };
+        let parts = self
+            .surface
+            .parts()
+            .iter()
+            .map(|(t, _)| (t.clone(), self.cutoff))
+            .collect();
+        SurfaceCore::build(py, parts, options, None)
+    }
+
+    /// `(lambda_s, lambda_c)`: the filters' nesting indices (m), None
+    /// where not applied.
+    fn filters(&self) -> (Option<f64>, Option<f64>) {
+        let o = self.surface.options();
+        (o.lambda_s, o.lambda_c)
+    }
+
+    /// `(known, cutoff)`: whether the reliability cut-off is known, and
+    /// the cut-off (m; None when known to be none).
+    fn cutoff(&self) -> (bool, Option<f64>) {
+        match self.cutoff {
+            Cutoff::Unknown => (false, None),
+            Cutoff::Known(c) => (true, c),
+        }
+    }
+
+    /// The power spectral densities of the detrended, unfiltered heights
+    /// (as `kefric surface --psd`): `[("x", q, c)]` of a profile, and
+    /// `("y", …)`, `("area", …)` of a map; `window` "none" or "hann".
+    #[allow(clippy::type_complexity)]
+    fn psd<'py>(
+        &self,
+        py: Python<'py>,
+        window: &str,
+    ) -> PyResult<Vec<(&'static str, Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)>> {
+        let window = window_of(window)?;
+        let t = self.single("psd")?;
+        let detrend = self.surface.options().detrend;
+        let spectra = py.detach(|| -> PyResult<Vec<(&'static str, Psd)>> {
+            let heights = t.detrended(detrend).map_err(raise)?;
+            let detrended = match t.dy() {
+                Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
+                None => Topography::profile(heights, t.dx()),
             }
-        })
-        .map(SurfaceCore)
-        .map_err(raise)
+            .map_err(raise)?;
+            let mut spectra = vec![("x", psd_profile_x(&detrended, window).map_err(raise)?)];
+            if !detrended.is_profile() {
+                spectra.push(("y", psd_profile_y(&detrended, window).map_err(raise)?));
+                spectra.push(("area", psd_area(&detrended, window).map_err(raise)?));
+            }
+            Ok(spectra)
+        })?;
+        Ok(spectra
+            .into_iter()
+            .map(|(name, p)| {
+                let (q, c) = psd_arrays(py, p);
+                (name, q, c)
+            })
+            .collect())
+    }
+
+    /// The surface at each S-filter nesting index λs from `from_` to `to`
+    /// (None: the core's defaults), `per_decade` a decade (as `kefric
+    /// surface --scan`), the other options this surface's. The cut-off:
+    /// of `resolution` or `tip_radius`, else this surface's. Returns
+    /// `(cutoff, rows)`, each row `(lambda_s, reliable, surface, error)`:
+    /// `reliable` None without a cut-off, `surface` None with `error` the
+    /// message where the statistics cannot be taken.
+    #[allow(clippy::type_complexity, clippy::too_many_arguments)]
+    #[pyo3(signature = (from_=None, to=None, per_decade=5, tip_radius=None, resolution=None))]
+    fn scan(
+        &self,
+        py: Python<'_>,
+        from_: Option<f64>,
+        to: Option<f64>,
+        per_decade: usize,
+        tip_radius: Option<f64>,
+        resolution: Option<f64>,
+    ) -> PyResult<(
+        Option<f64>,
+        Vec<(f64, Option<bool>, Option<SurfaceCore>, Option<String>)>,
+    )> {
+        let t = self.single("scan")?;
+        let cutoff = match py.detach(|| Cutoff::of(t, tip_radius, resolution))? {
+            Cutoff::Unknown => self.cutoff,
+            known => known,
+        };
+        let default = ScanRange::default_for(t);
+        let range = ScanRange {
+            from: from_.unwrap_or(default.from),
+            to: to.unwrap_or(default.to),
+            per_decade,
+        };
+        let options = self.surface.options();
+        let rows = py
+            .detach(|| scan(t, &options, &range, cutoff.value(), |_, _| {}))
+            .map_err(|e| exception(e.kind(), format!("scan: {e}")))?;
+        Ok((
+            cutoff.value(),
+            rows.into_iter()
+                .map(|row| match row.surface {
+                    Ok(surface) => (row.lambda_s, row.reliable, Some(SurfaceCore { surface, cutoff }), None),
+                    Err(e) => (row.lambda_s, row.reliable, None, Some(e.to_string())),
+                })
+                .collect(),
+        ))
+    }
+
+    /// The scale-dependent rms slope (`order` 1) or curvature (2) at each
+    /// distance (m) of the unfiltered heights: `(x, y)`, `y` None for a
+    /// profile.
+    #[allow(clippy::type_complexity)]
+    fn scale_dependent<'py>(
+        &self,
+        py: Python<'py>,
+        distances: PyReadonlyArray1<'_, f64>,
+        order: u8,
+    ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<Bound<'py, PyArray1<f64>>>)> {
+        let t = self.single("scale_dependent")?;
+        let distances = slice("distances", &distances)?.into_owned();
+        let rows = py
+            .detach(|| match order {
+                1 => Ok(scale_dependent_slope(t, &distances)),
+                2 => Ok(scale_dependent_curvature(t, &distances)),
+                _ => Err(value_error(format!(
+                    "order = {order}: must be 1 (slope) or 2 (curvature)"
+                ))),
+            })?
+            .map_err(raise)?;
+        let x: Vec<f64> = rows.iter().map(|r| r.x).collect();
+        let y = t
+            .dy()
+            .map(|_| PyArray1::from_vec(py, rows.iter().map(|r| r.y.unwrap_or(f64::NAN)).collect()));
+        Ok((PyArray1::from_vec(py, x), y))
+    }
+
+    /// The reliability cut-off (m) of a scanning-probe tip of radius
+    /// `tip_radius` (m) on the unfiltered heights, or None if the tip
+    /// distorts no scale (the core's `tip_reliability_cutoff`).
+    fn reliability_cutoff(&self, py: Python<'_>, tip_radius: f64, safety_factor: f64) -> PyResult<Option<f64>> {
+        let t = self.single("reliability_cutoff")?;
+        py.detach(|| tip_reliability_cutoff(t, tip_radius, safety_factor))
+            .map_err(raise)
     }
 
     /// The statistics: the core's `SurfaceStats` record (what `kefric
     /// surface --json` prints as "surface").
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        record(py, serde_json::to_string(self.0.stats()))
+        record(py, serde_json::to_string(self.surface.stats()))
     }
 
     /// The parts' own statistics records (one, or two for a pair).
     fn parts<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let parts: Vec<_> = self.0.parts().iter().map(|(_, s)| s).collect();
+        let parts: Vec<_> = self.surface.parts().iter().map(|(_, s)| s).collect();
         record(py, serde_json::to_string(&parts))
     }
 
     /// Whether this is the equivalent surface of two.
     fn is_pair(&self) -> bool {
-        self.0.parts().len() == 2
+        self.surface.parts().len() == 2
     }
 
     /// The parts' topographies, `(heights, nx, ny, dx, dy)` each: heights
     /// row-major (metres, NaN = missing), `dy` None for a profile.
     #[allow(clippy::type_complexity)]
     fn topographies<'py>(&self, py: Python<'py>) -> Vec<(Bound<'py, PyArray1<f64>>, usize, usize, f64, Option<f64>)> {
-        self.0
+        self.surface
             .parts()
             .iter()
             .map(|(t, _)| (PyArray1::from_slice(py, t.heights()), t.nx(), t.ny(), t.dx(), t.dy()))
@@ -199,7 +573,7 @@ impl SurfaceCore {
 
     /// `(detrend, derivative)`, by the Python keywords' names.
     fn options(&self) -> (&'static str, &'static str) {
-        let o = self.0.options();
+        let o = self.surface.options();
         (o.detrend.name(), o.derivative.name())
     }
 
@@ -207,7 +581,7 @@ impl SurfaceCore {
     /// `Surface::distribution`.
     #[pyo3(signature = (family=None))]
     fn distribution(&self, py: Python<'_>, family: Option<&str>) -> PyResult<DistributionCore> {
-        py.detach(|| self.0.distribution(family))
+        py.detach(|| self.surface.distribution(family))
             .map(DistributionCore::of)
             .map_err(raise)
     }
@@ -217,9 +591,9 @@ impl SurfaceCore {
     /// (`DistributionCore.empirical` of the one, or
     /// `DistributionCore.empirical_sum` of the two, rebuilds it).
     fn empirical_parts<'py>(&self, py: Python<'py>) -> PyResult<Vec<(Bound<'py, PyArray1<f64>>, f64)>> {
-        let detrend = self.0.options().detrend;
+        let detrend = self.surface.options().detrend;
         let mut out = Vec::with_capacity(2);
-        for (t, s) in self.0.parts() {
+        for (t, s) in self.surface.parts() {
             let heights = py.detach(|| t.detrended(detrend)).map_err(raise)?;
             out.push((PyArray1::from_vec(py, heights), s.sigma));
         }
@@ -236,7 +610,7 @@ impl SurfaceCore {
         distribution: &DistributionCore,
     ) -> PyResult<Bound<'py, PyAny>> {
         let p = self
-            .0
+            .surface
             .params(&self::materials(materials), distribution.dist.clone())
             .map_err(raise)?;
         record(py, serde_json::to_string(&p))
@@ -260,7 +634,7 @@ impl SurfaceCore {
             (None, None, Some(p)) => Load::Pressure(p),
             _ => return Err(value_error("give force with area, or pressure alone")),
         };
-        let physical = self.0.physical(&self::materials(materials));
+        let physical = self.surface.physical(&self::materials(materials));
         let friction = py.detach(|| load.friction(&model.0, &physical)).map_err(raise)?;
         record(py, serde_json::to_string(&friction))
     }

@@ -12,8 +12,12 @@ theta = dgamma/(sigma H) and the roughness (beta, nu, eps_star):
   :class:`Model` takes: Gaussian (the paper's), Pearson (skewness and
   kurtosis), Weibull, or the empirical density of measured heights;
 * :class:`Surface` -- a measured surface (X3P, .npy, text, an array or a
-  SurfaceTopography object), or two pressed together: its statistics,
-  and with the materials its :class:`Model` and friction;
+  SurfaceTopography object), or two pressed together: its statistics
+  (in a band of the ISO 16610 S- and L-filters, ``lambda_s``,
+  ``lambda_c``), and with the materials its :class:`Model` and friction;
+  against the scale (:meth:`Surface.scan`), its power spectral density
+  (:meth:`Surface.psd`), scale-dependent slope and curvature and a
+  scanning probe's reliability cut-off;
 * :func:`params_from_physical` -- psi, theta, beta, nu, eps_star from SI inputs.
 
 Lookups take Python floats (and return a float) or array-likes, which

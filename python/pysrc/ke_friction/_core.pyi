@@ -107,19 +107,48 @@ class ModelCore:
 # "spectral". Materials: (e1, nu1, e2, nu2, hardness, delta_gamma, epsilon).
 class SurfaceCore:
     # One or two parts (heights row-major in metres, NaN missing, nx, ny, dx,
-    # dy; dy None for a profile).
+    # dy; dy None for a profile). lambda_s, lambda_c: the S- and L-filters'
+    # nesting indices (m); auto: lambda_s = the reliability cut-off of
+    # resolution or tip_radius (ValueError without either); no_cutoff: the
+    # cut-off is known to be none (a pickled surface's).
     @staticmethod
     def new(parts: List[Tuple[_F64, int, int, float, Optional[float]]], detrend: str,
-            derivative: str) -> SurfaceCore: ...
+            derivative: str, lambda_s: Optional[float] = None, lambda_c: Optional[float] = None,
+            auto: bool = False, tip_radius: Optional[float] = None, resolution: Optional[float] = None,
+            no_cutoff: bool = False) -> SurfaceCore: ...
     # The core's reader (OSError if unreadable, ValueError naming the file,
     # MemoryError if the heights cannot be allocated). z_unit, xy_unit finite
     # and > 0; max_points: the most points (ReadOptions::max_points), None =
-    # the library's MAX_POINTS (2**28); a file over it is a ValueError.
+    # the library's MAX_POINTS (2**28); a file over it is a ValueError. The
+    # filters and the cut-off as in new.
     @staticmethod
     def read(path: str, dx: Optional[float], dy: Optional[float], z_unit: float, xy_unit: float, detrend: str,
-             derivative: str, max_points: Optional[int] = None) -> SurfaceCore: ...
+             derivative: str, max_points: Optional[int] = None, lambda_s: Optional[float] = None,
+             lambda_c: Optional[float] = None, auto: bool = False, tip_radius: Optional[float] = None,
+             resolution: Optional[float] = None) -> SurfaceCore: ...
+    # The two must share their filters (ValueError otherwise).
     @staticmethod
     def pair(a: SurfaceCore, b: SurfaceCore, detrend: str, derivative: str) -> SurfaceCore: ...
+    # The same heights, options and cut-off with other filters.
+    def filtered(self, lambda_s: Optional[float] = None, lambda_c: Optional[float] = None,
+                 auto: bool = False) -> SurfaceCore: ...
+    # (lambda_s, lambda_c), None where not applied.
+    def filters(self) -> Tuple[Optional[float], Optional[float]]: ...
+    # (known, cutoff): whether the reliability cut-off is known, and it.
+    def cutoff(self) -> Tuple[bool, Optional[float]]: ...
+    # [(name, q, c)]: "x", and "y", "area" of a map (kefric surface --psd);
+    # window "none" or "hann". ValueError for a pair.
+    def psd(self, window: str) -> List[Tuple[str, _F64, _F64]]: ...
+    # (cutoff, rows), each row (lambda_s, reliable, surface, error) as
+    # kefric surface --scan; None for from/to: the core's defaults.
+    def scan(self, from_: Optional[float] = None, to: Optional[float] = None, per_decade: int = 5,
+             tip_radius: Optional[float] = None,
+             resolution: Optional[float] = None
+             ) -> Tuple[Optional[float], List[Tuple[float, Optional[bool], Optional[SurfaceCore], Optional[str]]]]: ...
+    # (x, y) rms slope (order 1) or curvature (2) at the distances; y None for a profile.
+    def scale_dependent(self, distances: _F64, order: int) -> Tuple[_F64, Optional[_F64]]: ...
+    # The core's tip_reliability_cutoff (None: the tip distorts no scale).
+    def reliability_cutoff(self, tip_radius: float, safety_factor: float) -> Optional[float]: ...
     # The SurfaceStats record (as `kefric surface --json` prints "surface").
     def stats(self) -> Dict[str, Any]: ...
     def parts(self) -> List[Dict[str, Any]]: ...

@@ -52,12 +52,63 @@ def _materials(values: Dict[str, Any]) -> Tuple[float, ...]:
     return tuple(float(values[k]) for k in _MATERIALS)
 
 
-def _surface_of(parts: Any, detrend: str, derivative: str) -> "Surface":
+def _load(force: Any, area: Any, pressure: Any) -> Tuple[Optional[float], Optional[float], Optional[float]]:
+    """The load of :meth:`Surface.friction`'s keywords, ``(force, area,
+    pressure)`` as the native layer takes it: a force with an area, or a
+    pressure alone (ValueError naming the keyword otherwise)."""
+    if force is not None and area is not None and pressure is None:
+        _check_real(force=force, area=area)
+        return float(force), float(area), None
+    if force is None and area is None and pressure is not None:
+        _check_real(pressure=pressure)
+        return None, None, float(pressure)
+    name = "pressure" if pressure is not None else "area" if force is not None else "force"
+    raise ValueError(f"{name}: give force with area, or pressure alone")
+
+
+def _length(name: str, value: Any) -> Optional[float]:
+    """An optional length keyword (metres) as a float; its range is the
+    library's to check (its message gives the limits)."""
+    if value is None:
+        return None
+    _check_real(**{name: value})
+    return float(value)
+
+
+def _filters(lambda_s: Any, lambda_c: Any, tip_radius: Any = None, resolution: Any = None) -> Dict[str, Any]:
+    """The native layer's filter keywords of the Python ones: ``lambda_s``
+    metres or ``"auto"`` (the reliability cut-off), ``lambda_c`` metres,
+    the instrument's ``tip_radius`` or ``resolution`` (metres, finite and
+    > 0)."""
+    auto = isinstance(lambda_s, str)
+    if auto and lambda_s != "auto":
+        raise ValueError(f"lambda_s = {lambda_s!r}: must be a length in metres, \"auto\" or None")
+    out: Dict[str, Any] = dict(lambda_s=None if auto else _length("lambda_s", lambda_s),
+                               lambda_c=_length("lambda_c", lambda_c), auto=auto)
+    for name, value in (("tip_radius", tip_radius), ("resolution", resolution)):
+        out[name] = None if value is None else _interval(name, value)
+    return out
+
+
+def _surface_of(parts: Any, detrend: str, derivative: str, lambda_s: Optional[float] = None,
+                lambda_c: Optional[float] = None, known: bool = False,
+                cutoff: Optional[float] = None) -> "Surface":
     """A pickled :class:`Surface`: its topographies (``(heights, nx, ny,
-    dx, dy)`` each, heights flat and row-major) and its options."""
+    dx, dy)`` each, heights flat and row-major), its options, filters and
+    reliability cut-off (``known``: whether one is known; ``cutoff``: it,
+    or None when known to be none)."""
     return Surface(_core.SurfaceCore.new([(np.ascontiguousarray(h, dtype=np.float64), int(nx), int(ny),
                                            float(dx), None if dy is None else float(dy))
-                                          for h, nx, ny, dx, dy in parts], detrend, derivative))
+                                          for h, nx, ny, dx, dy in parts], detrend, derivative,
+                                         lambda_s=lambda_s, lambda_c=lambda_c, resolution=cutoff,
+                                         no_cutoff=known and cutoff is None))
+
+
+#: The columns of :meth:`Surface.scan` from the statistics, the model and
+#: the friction record (``kefric surface --scan --csv``'s, by the same names).
+_SCAN_STATS = ("sigma", "skewness", "kurtosis", "m2", "m4", "alpha", "eta", "radius", "beta")
+_SCAN_MODEL = ("psi", "theta")
+_SCAN_FRICTION = ("pressure", "mu", "friction_force", "friction_stress", "separation")
 
 
 class Surface:
@@ -80,6 +131,20 @@ class Surface:
     the default; ``"spectral"``: periodic spectral moments, for periodic
     data without missing points). beta and psi depend on the sampling
     intervals and compare only at the same band.
+
+    The band: ``lambda_s`` (metres) applies the ISO 16610-61 Gaussian
+    S-filter (wavelengths shorter than it removed; at least 2 max(dx, dy))
+    before the detrending, ``lambda_c`` (metres) the L-filter after it
+    (longer ones removed; at most the scan size), as ``kefric surface
+    --lambda-s --lambda-c``. ``lambda_s="auto"`` is the instrument's
+    reliability cut-off: ``resolution`` (metres, an optical instrument's
+    lateral resolution) or, from a scanning probe's ``tip_radius``
+    (metres), :meth:`reliability_cutoff` (no filter when the tip distorts
+    no scale). With either given, the statistics warn
+    (``"unreliable_scale"``) when the shortest scale analysed is below the
+    cut-off. :meth:`filtered` changes the filters, :meth:`scan` runs
+    lambda_s over a range, :meth:`psd` and :meth:`scale_dependent` give
+    the spectrum and the scale-dependent slope and curvature.
 
     Immutable; a surface pickles as its heights, intervals and options
     (rebuilt to the bit), and ``copy`` and ``deepcopy`` give it itself.
@@ -109,7 +174,11 @@ class Surface:
 
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
         parts = tuple((h, nx, ny, dx, dy) for h, nx, ny, dx, dy in self._core.topographies())
-        return _surface_of, (parts, *self._core.options())
+        lambda_s, lambda_c = self._core.filters()
+        known, cutoff = self._core.cutoff()
+        if lambda_s is None and lambda_c is None and not known:
+            return _surface_of, (parts, *self._core.options())
+        return _surface_of, (parts, *self._core.options(), lambda_s, lambda_c, known, cutoff)
 
     def __copy__(self) -> "Surface":
         return self
@@ -123,15 +192,18 @@ class Surface:
 
     @staticmethod
     def from_heights(z: ArrayLike, dx: float, dy: Optional[float] = None, *, detrend: str = "plane",
-                     derivative: str = "fd") -> "Surface":
+                     derivative: str = "fd", lambda_s: Union[float, str, None] = None,
+                     lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
+                     resolution: Optional[float] = None) -> "Surface":
         """The surface of measured heights ``z`` (metres; NaN, or a masked
         entry of a NumPy masked array, marks a missing point): a 1-D array
         is a profile sampled every ``dx`` metres (no ``dy``), a 2-D array a
         map whose rows are y (``z[j, i]`` at x = i dx, y = j dy; ``dy``
         defaults to ``dx``). Any real dtype,
         byte order and memory layout (copied as needed; the surface keeps
-        its own copy). ``detrend`` and ``derivative`` as in
-        :class:`Surface`.
+        its own copy). ``detrend``, ``derivative``, the filters
+        ``lambda_s``, ``lambda_c`` and the instrument's ``tip_radius`` or
+        ``resolution`` as in :class:`Surface`.
 
         ValueError: ``dx`` or ``dy`` not finite and > 0, an array of
         another dimension, an infinite height, fewer than 16 points along a
@@ -141,6 +213,7 @@ class Surface:
         if a.ndim not in (1, 2):
             raise ValueError(f"z must be 1-D (a profile) or 2-D (a map, rows = y), not {a.ndim}-D (shape {a.shape})")
         options = Surface._options(detrend, derivative)
+        filters = _filters(lambda_s, lambda_c, tip_radius, resolution)
         dx = _interval("dx", dx)
         if a.ndim == 1:
             if dy is not None:
@@ -148,12 +221,14 @@ class Surface:
             ny, nx, dy = 1, a.shape[0], None
         else:
             (ny, nx), dy = a.shape, dx if dy is None else _interval("dy", dy)
-        return Surface(_core.SurfaceCore.new([(a.reshape(-1), nx, ny, dx, dy)], *options))
+        return Surface(_core.SurfaceCore.new([(a.reshape(-1), nx, ny, dx, dy)], *options, **filters))
 
     @staticmethod
     def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
              z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd",
-             max_points: Optional[int] = None) -> "Surface":
+             max_points: Optional[int] = None, lambda_s: Union[float, str, None] = None,
+             lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
+             resolution: Optional[float] = None) -> "Surface":
         """The surface in the file ``path``, by the library's reader (as
         ``kefric surface`` reads it): ISO 25178-72 X3P (``.x3p``), NumPy
         ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
@@ -167,7 +242,10 @@ class Surface:
         files (1e-6 for micrometres; X3P stores metres). ``xy_unit``:
         metres per unit of the x, y columns of ``x z`` and ``x y z`` text.
         Both finite and > 0 (ValueError naming the argument otherwise).
-        ``detrend``, ``derivative`` as in :class:`Surface`.
+        ``detrend``, ``derivative``, the filters ``lambda_s``, ``lambda_c``
+        and the instrument's ``tip_radius`` or ``resolution`` as in
+        :class:`Surface` (``kefric surface --lambda-s``, ``--lambda-c``,
+        ``--tip-radius``, ``--resolution``).
         ``max_points``: the most points (heights) the surface may have,
         an integer >= 1; None (the default) is the library's limit,
         ``MAX_POINTS`` = 2**28. A file whose declared size is over it is
@@ -181,6 +259,7 @@ class Surface:
         if not isinstance(path, (str, os.PathLike)):
             raise TypeError(f"path must be a str or os.PathLike, not {type(path).__name__}")
         options = Surface._options(detrend, derivative)
+        filters = _filters(lambda_s, lambda_c, tip_radius, resolution)
         dx = None if dx is None else _interval("dx", dx)
         dy = dx if dy is None else _interval("dy", dy)
         _check_real(z_unit=z_unit, xy_unit=xy_unit)
@@ -195,19 +274,22 @@ class Surface:
             if not 1 <= max_points < 2**64:
                 raise ValueError(f"max_points = {max_points} is out of range: must be an integer in [1, 2**64 - 1] "
                                  "(points), or None for the library's limit")
-        return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options, max_points))
+        return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options, max_points,
+                                              **filters))
 
     @staticmethod
     def from_topography(topography: Any, *, unit: Optional[str] = None, detrend: str = "plane",
-                        derivative: str = "fd") -> "Surface":
+                        derivative: str = "fd", lambda_s: Union[float, str, None] = None,
+                        lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
+                        resolution: Optional[float] = None) -> "Surface":
         """The surface of a SurfaceTopography object on a regular grid (a
         ``Topography`` map or a ``UniformLineScan`` profile, detrended or
         not): its heights, pixel size and ``unit`` (``"m"``, ``"mm"``,
         ``"µm"`` or ``"um"``, ``"nm"``, ``"Å"``, ``"pm"``, ...), converted to
         metres. ``unit`` here names the topography's unit where it has none
         (or overrides it). Undefined (masked) and NaN heights stay missing.
-        The heights are copied; ``detrend``, ``derivative`` as in
-        :class:`Surface`.
+        The heights are copied; ``detrend``, ``derivative``, ``lambda_s``,
+        ``lambda_c``, ``tip_radius``, ``resolution`` as in :class:`Surface`.
 
         Needs the SurfaceTopography package (ImportError without it).
         TypeError for anything else (a nonuniform line scan);
@@ -232,7 +314,8 @@ class Surface:
         pixel = [float(p) * metres for p in np.atleast_1d(topography.pixel_size)]
         # SurfaceTopography indexes heights [x, y]; a map here has rows = y.
         z = h * metres if topography.dim == 1 else h.T * metres
-        return Surface.from_heights(z, *pixel, detrend=detrend, derivative=derivative)
+        return Surface.from_heights(z, *pixel, detrend=detrend, derivative=derivative, lambda_s=lambda_s,
+                                    lambda_c=lambda_c, tip_radius=tip_radius, resolution=resolution)
 
     @staticmethod
     def pair(a: "Surface", b: "Surface", *, detrend: Optional[str] = None,
@@ -272,8 +355,12 @@ class Surface:
         ``sigma`` (Sq), ``skewness``, ``kurtosis`` (not excess), the moments
         ``m20``, ``m02``, ``m40``, ``m04``, ``m2``, ``m4``, the bandwidth
         ``alpha``, the summit density ``eta``, radius ``radius``, ``beta``,
-        ``sigma_s``, ``y_s``, the anisotropy ratios, and ``warnings`` (a
-        list of ``{"kind", "message", ...}``)."""
+        ``sigma_s``, ``y_s``, the anisotropy ratios, the scan size
+        ``size_x``, ``size_y`` (None for a profile), the filters' nesting
+        indices ``lambda_s``, ``lambda_c`` (None where not applied), and
+        ``warnings`` (a list of ``{"kind", "message", ...}``; kind
+        ``"unreliable_scale"`` when a reliability cut-off is known and the
+        shortest scale analysed, lambda_s or 2 max(dx, dy), is below it)."""
         return self._core.stats()
 
     @property
@@ -377,24 +464,188 @@ class Surface:
         ValueError naming the keyword for a load out of range (or given
         otherwise than a force with an area, or a pressure alone), and
         when the model has no mu at that F*."""
-        if force is not None and area is not None and pressure is None:
-            _check_real(force=force, area=area)
-            load = (float(force), float(area), None)
-        elif force is None and area is None and pressure is not None:
-            _check_real(pressure=pressure)
-            load = (None, None, float(pressure))
+        load = _load(force, area, pressure)
+        materials = dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                         epsilon=epsilon)
+        return self._evaluate(materials, load, distribution, fit, model)[1]
+
+    def _evaluate(self, materials: Dict[str, Any], load: Optional[Tuple[Optional[float], ...]], distribution: str,
+                  fit: str, model: str) -> Tuple[Model, Optional[Dict[str, Any]]]:
+        """The :meth:`model` of ``materials`` (the seven keywords) and, with
+        a ``load`` (:func:`_load`'s), its friction record: the one path of
+        :meth:`friction` and :meth:`scan` (as the CLI's single command and
+        its ``--scan``)."""
+        mats = _materials(materials)
+        m = self.model(**materials, distribution=distribution, fit=fit, model=model)
+        return m, None if load is None else self._core.friction(m._core, mats, *load)
+
+    def filtered(self, lambda_s: Union[float, str, None] = None, lambda_c: Optional[float] = None) -> "Surface":
+        """A new surface of the same heights, detrending and derivative
+        (and reliability cut-off) with the filters ``lambda_s`` (metres,
+        or ``"auto"``: the reliability cut-off of the ``tip_radius`` or
+        ``resolution`` this surface was made with) and ``lambda_c``
+        (metres); None: no such filter. As ``kefric surface --lambda-s
+        --lambda-c``. ValueError for a nesting index out of range (its
+        message names the keyword and the limit)."""
+        f = _filters(lambda_s, lambda_c)
+        return Surface(self._core.filtered(f["lambda_s"], f["lambda_c"], f["auto"]))
+
+    @property
+    def lambda_s(self) -> Optional[float]:
+        """The S-filter's nesting index (metres), None if not applied."""
+        return self._core.filters()[0]
+
+    @property
+    def lambda_c(self) -> Optional[float]:
+        """The L-filter's nesting index (metres), None if not applied."""
+        return self._core.filters()[1]
+
+    @property
+    def cutoff(self) -> Optional[float]:
+        """The instrument's reliability cut-off (metres) of the
+        ``resolution`` or ``tip_radius`` the surface was made with; None
+        if none was given or the tip distorts no scale."""
+        return self._core.cutoff()[1]
+
+    def psd(self, window: str = "none") -> Dict[str, Tuple[np.ndarray, np.ndarray]]:
+        """The power spectral density of the detrended, unfiltered heights
+        (as ``kefric surface --psd``), in SurfaceTopography's conventions:
+        ``{"x": (q, c)}`` of a profile (q in rad/m, C in m^3, averaged over
+        the lines along x), and for a map also ``"y"`` (along y) and
+        ``"area"`` (the radially averaged 2-D PSD, C in m^4). ``window``:
+        ``"none"`` or ``"hann"``. Of a single surface (ValueError for a
+        pair) without missing points."""
+        window = _choice("window", window, ("none", "hann"))
+        return {name: (q, c) for name, q, c in self._core.psd(window)}
+
+    def scale_dependent(self, distances: Optional[ArrayLike] = None, order: int = 1) -> Dict[str, np.ndarray]:
+        """The scale-dependent rms slope (``order=1``) or curvature
+        (``order=2``, 1/m) of the unfiltered heights at each stencil length
+        in ``distances`` (metres; by default log-spaced, 5 a decade, from
+        ``order`` dx to half the scan size) (Sanner et al. 2022; the
+        library's ``scale_dependent_slope``, ``scale_dependent_curvature``):
+        ``{"distance", "x"}``, and ``"y"`` for a map; NaN where fewer than 4
+        points have their stencil in the data. Of a single surface without
+        missing points (ValueError otherwise)."""
+        if isinstance(order, bool) or order not in (1, 2):
+            raise ValueError(f"order = {order!r}: must be 1 (slope) or 2 (curvature)")
+        if distances is None:
+            s = self.stats
+            size = s["size_x"] if s["size_y"] is None else min(s["size_x"], s["size_y"])
+            lo, hi = order * max(s["dx"], s["dy"] or 0.0), size / 2
+            n = max(int(np.ceil(5 * np.log10(hi / lo))), 1)
+            d = np.append(lo * 10.0 ** (np.arange(n) / 5), hi)
         else:
-            name = "pressure" if pressure is not None else "area" if force is not None else "force"
-            raise ValueError(f"{name}: give force with area, or pressure alone")
-        mats = _materials(dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
-                               epsilon=epsilon))
-        m = self.model(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
-                       epsilon=epsilon, distribution=distribution, fit=fit, model=model)
-        return self._core.friction(m._core, mats, *load)
+            d = np.ascontiguousarray(np.atleast_1d(np.asarray(distances, dtype=np.float64)))
+            if d.ndim != 1:
+                raise ValueError(f"distances must be 1-D, not {d.ndim}-D")
+        x, y = self._core.scale_dependent(d, int(order))
+        out = {"distance": d.copy(), "x": x}
+        if y is not None:
+            out["y"] = y
+        return out
+
+    def reliability_cutoff(self, tip_radius: float, safety_factor: float = 0.5) -> Optional[float]:
+        """The length (metres) below which a scanning-probe tip of radius
+        ``tip_radius`` (metres) distorts these heights, or None if it
+        distorts no scale (the library's ``tip_reliability_cutoff``,
+        SurfaceTopography's ``scanning_probe_reliability_cutoff``; safety
+        factor 1/2 as in the paper and ``kefric surface --tip-radius``).
+        Of a single surface without missing points."""
+        _check_real(tip_radius=tip_radius, safety_factor=safety_factor)
+        return self._core.reliability_cutoff(float(tip_radius), float(safety_factor))
+
+    def scan(self, *, from_: Optional[float] = None, to: Optional[float] = None, per_decade: int = 5,
+             tip_radius: Optional[float] = None, resolution: Optional[float] = None,
+             force: Optional[float] = None, area: Optional[float] = None, pressure: Optional[float] = None,
+             e1: Optional[float] = None, nu1: Optional[float] = None, e2: Optional[float] = None,
+             nu2: Optional[float] = None, hardness: Optional[float] = None, delta_gamma: Optional[float] = None,
+             epsilon: Optional[float] = None, distribution: str = "pearson", fit: str = "consistent",
+             model: str = "ke") -> Dict[str, Any]:
+        """The surface against the scale it is looked at (``kefric surface
+        --scan``): the statistics at S-filter nesting indices lambda_s
+        log-spaced from ``from_`` (default 2 max(dx, dy)) to ``to`` (default
+        a tenth of the scan size), ``per_decade`` a decade (1 to 100), the
+        other options (detrending, derivative, lambda_c) this surface's.
+        Each row equals ``filtered(lambda_s=...)`` at its lambda_s. With the
+        seven materials keywords (all or none) also psi and theta of
+        :meth:`model`, and with a load (as :meth:`friction`) mu. The
+        reliability cut-off: of ``resolution`` or ``tip_radius`` (metres),
+        else the surface's own.
+
+        A dict of NumPy arrays, one element a row: ``lambda_s``,
+        ``reliable`` (bool: lambda_s at or above the cut-off; all True
+        without one), ``sigma``, ``skewness``, ``kurtosis``, ``m2``,
+        ``m4``, ``alpha``, ``eta``, ``radius``, ``beta``; with materials
+        ``psi``, ``theta``; with a load ``pressure``, ``mu``,
+        ``friction_force`` (NaN for a pressure), ``friction_stress``,
+        ``separation``. Besides: ``cutoff`` (metres or None) and
+        ``errors``, a list of ``(index, lambda_s, message)`` of the rows
+        with no result (NaN in their columns: all of them where the
+        statistics cannot be taken, the model's and the friction's where
+        the model cannot be made).
+
+        ValueError for a range out of order or out of range (its message
+        gives both ends), or a load without materials."""
+        materials = dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
+                         epsilon=epsilon)
+        given = [k for k, v in materials.items() if v is not None]
+        if given and len(given) < len(materials):
+            missing = [k for k in _MATERIALS if materials[k] is None]
+            raise ValueError(f"{missing[0]}: give all the materials ({', '.join(_MATERIALS)}) or none")
+        load = None if force is None and area is None and pressure is None else _load(force, area, pressure)
+        if load is not None and not given:
+            raise ValueError(f"{'pressure' if pressure is not None else 'force'}: a load needs the materials")
+        if given:
+            _materials(materials)
+            for name, value in (("fit", fit), ("model", model)):
+                if not isinstance(value, str):
+                    raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+            _choice("distribution", distribution, _FAMILIES)
+        if isinstance(per_decade, bool) or not isinstance(per_decade, numbers.Integral):
+            raise TypeError(f"per_decade must be an int, not {type(per_decade).__name__}")
+        if not 1 <= per_decade <= 100:
+            raise ValueError(f"per_decade = {per_decade}: must be 1 to 100 (values a decade)")
+        f = _filters(None, None, tip_radius, resolution)
+        cutoff, rows = self._core.scan(_length("from_", from_), _length("to", to), int(per_decade),
+                                       f["tip_radius"], f["resolution"])
+        n = len(rows)
+        columns = list(_SCAN_STATS) + (list(_SCAN_MODEL) if given else []) + \
+            (list(_SCAN_FRICTION) if load is not None else [])
+        out: Dict[str, Any] = {"lambda_s": np.array([r[0] for r in rows], dtype=np.float64),
+                               "reliable": np.array([r[1] is not False for r in rows], dtype=bool)}
+        for c in columns:
+            out[c] = np.full(n, np.nan)
+        errors = []
+        for i, (lambda_s, _, core, message) in enumerate(rows):
+            if core is None:
+                errors.append((i, lambda_s, message))
+                continue
+            surface = Surface(core)
+            stats = surface.stats
+            for c in _SCAN_STATS:
+                out[c][i] = stats[c]
+            if not given:
+                continue
+            try:
+                m, friction = surface._evaluate(materials, load, distribution, fit, model)
+            except ValueError as e:
+                errors.append((i, lambda_s, str(e)))
+                continue
+            for c in _SCAN_MODEL:
+                out[c][i] = m.params[c]
+            for c in _SCAN_FRICTION if friction is not None else ():
+                v = friction.get(c)
+                out[c][i] = np.nan if v is None else v
+        out["cutoff"] = cutoff
+        out["errors"] = errors
+        return out
 
     def __repr__(self) -> str:
         s = self.stats
         shape = f"map {s['nx']} x {s['ny']}, dx={s['dx']!r}, dy={s['dy']!r}" if s["dy"] is not None \
             else f"profile of {s['nx']}, dx={s['dx']!r}"
         pair = "pair, " if self.is_pair else ""
-        return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, derivative={self.derivative!r})"
+        band = "".join(f", {k}={s[k]!r}" for k in ("lambda_s", "lambda_c") if s[k] is not None)
+        return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, " \
+            f"derivative={self.derivative!r}{band})"
