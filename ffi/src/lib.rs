@@ -31,7 +31,7 @@
 #![allow(non_camel_case_types)]
 
 use ke_friction::{
-    Classify, Constants, Curve, ErrorKind, EvalError, Fit, HeightDistribution, Kind, LookupError, Model, OnError,
+    Classify, Constants, Curve, ErrorKind, EvalError, Fit, HeightDistribution, LookupError, Model, ModelKind, OnError,
     Params, Physical, Table,
 };
 use std::borrow::Cow;
@@ -547,8 +547,8 @@ fn fit_named(name: &CStr) -> Result<Fit, Failure> {
 }
 
 /// The model named `name`.
-fn kind_named(name: &CStr) -> Result<Kind, Failure> {
-    named("model", name, Kind::from_name, &Kind::ALL, Kind::name)
+fn kind_named(name: &CStr) -> Result<ModelKind, Failure> {
+    named("model", name, ModelKind::from_name, &ModelKind::ALL, ModelKind::name)
 }
 
 /// The distribution of family `family` (a `KEF_DIST_*` code other than

@@ -2,8 +2,11 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
+mod laws;
 pub(crate) mod quadrature;
 mod surface;
+
+pub(crate) use laws::{LawInfo, LAWS};
 
 use crate::num::Shortest;
 use crate::params::{ParamError, Params};
