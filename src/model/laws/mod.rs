@@ -171,6 +171,8 @@ pub trait ContactLaw {
 
 /// The planned laws: the wrapper the surface dispatches on (one `match`
 /// per evaluation).
+// One per Surface, read on every evaluation: inline, not boxed.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub(crate) enum Law {
     Ke(ke::KogutEtsion),
