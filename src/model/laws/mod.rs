@@ -37,19 +37,10 @@ pub struct LawInfo {
 
 /// Every law, in the order of [`ModelKind`]'s variants (checked at
 /// compile time by `named!`).
+#[rustfmt::skip]
 pub const LAWS: [LawInfo; 2] = [
-    LawInfo {
-        kind: ModelKind::KogutEtsion,
-        name: "ke",
-        code: 0,
-        label: "Kogut–Etsion",
-    },
-    LawInfo {
-        kind: ModelKind::CebType,
-        name: "ceb",
-        code: 1,
-        label: "CEB-type (approx.)",
-    },
+    LawInfo { kind: ModelKind::KogutEtsion, name: "ke", code: 0, label: "Kogut–Etsion" },
+    LawInfo { kind: ModelKind::CebType, name: "ceb", code: 1, label: "CEB-type (approx.)" },
 ];
 
 /// A regime's load law `P̄/P̄_c` before its coefficient ([`Regime::coef`]).
