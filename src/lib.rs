@@ -5,7 +5,7 @@
 //! roughness, the materials and the adhesion.
 //!
 //! - [`Model`]: the model by direct integration (microseconds), at a
-//!   separation h* or an external force F*; [`Kind::CebType`] gives the
+//!   separation h* or an external force F*; [`ModelKind::CebType`] gives the
 //!   CEB-type comparison model.
 //! - [`Table`]: μ(ψ, θ, F*) from a precomputed table (nanoseconds); the
 //!   default table is compiled in.
@@ -73,9 +73,12 @@ pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
 pub use num::Shortest;
+/// The former name of [`ModelKind`].
+#[allow(deprecated)]
+pub use params::Kind;
 pub use params::{
-    Constants, Fit, Kind, Materials, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
-    EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
+    Constants, Fit, Materials, ModelKind, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR,
+    DEFAULT_NU, EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
 pub use spline::{Axis, Scale};
 pub use table::{

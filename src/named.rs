@@ -102,7 +102,42 @@ macro_rules! named {
                     $($ty::$variant => $name),+
                 }
             }
+        }
+        $crate::named!(@common $ty, $what);
+    };
+    // The values and names from a registry: a `const` array of entries
+    // with fields `kind` (the value) and `name`, in the enum's order
+    // (checked at compile time).
+    ($ty:ident, $what:literal, registry = $table:path) => {
+        const _: () = {
+            let mut i = 0;
+            while i < $table.len() {
+                assert!($table[i].kind as usize == i, "the registry is not in the enum's order");
+                i += 1;
+            }
+        };
 
+        impl $ty {
+            /// Every value, in the documented order.
+            pub const ALL: [$ty; $table.len()] = {
+                let mut all = [$table[0].kind; $table.len()];
+                let mut i = 1;
+                while i < $table.len() {
+                    all[i] = $table[i].kind;
+                    i += 1;
+                }
+                all
+            };
+
+            /// The name users type and read (CLI flags, JSON, the bindings).
+            pub const fn name(self) -> &'static str {
+                $table[self as usize].name
+            }
+        }
+        $crate::named!(@common $ty, $what);
+    };
+    (@common $ty:ident, $what:literal) => {
+        impl $ty {
             /// The value named `name` (exactly as `name()` spells it), if any;
             /// [`Named::parse`](crate::Named::parse) gives an error instead.
             pub fn from_name(name: &str) -> Option<$ty> {

@@ -18,9 +18,11 @@ pub enum Fit {
     AsPrinted,
 }
 
-/// Which surface friction model to evaluate.
+/// Which surface friction model to evaluate: which single-asperity
+/// contact law the surface integrals use (one registry line each in
+/// `src/model/laws/mod.rs`, docs/ARCHITECTURE.md).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
-pub enum Kind {
+pub enum ModelKind {
     /// Kogut & Etsion (2004), MODEL.md §4.
     #[default]
     KogutEtsion,
@@ -32,7 +34,23 @@ pub enum Kind {
 }
 
 crate::named!(Fit, "fit", [Consistent = "consistent", AsPrinted = "as-printed"]);
-crate::named!(Kind, "model", [KogutEtsion = "ke", CebType = "ceb"]);
+crate::named!(ModelKind, "model", registry = crate::model::LAWS);
+
+/// The former name of [`ModelKind`].
+#[deprecated(note = "renamed ModelKind")]
+pub type Kind = ModelKind;
+
+impl ModelKind {
+    /// The law's registry entry (name, table code, label).
+    pub(crate) const fn law(self) -> crate::model::LawInfo {
+        crate::model::LAWS[self as usize]
+    }
+
+    /// The value stored as `code` in a table file's header, if any.
+    pub(crate) fn from_code(code: u8) -> Option<ModelKind> {
+        crate::model::LAWS.iter().find(|l| l.code == code).map(|l| l.kind)
+    }
+}
 
 /// The model constants of a material pair: everything fixed apart from ψ
 /// and θ (MODEL.md §1). A table is built for one set of constants; a
@@ -59,10 +77,10 @@ pub struct Constants {
     pub eps_star: f64,
     /// Which friction row to use (default [`Fit::Consistent`]).
     pub fit: Fit,
-    /// Which model to evaluate (default [`Kind::KogutEtsion`]); its record
+    /// Which model to evaluate (default [`ModelKind::KogutEtsion`]); its record
     /// name is `model`.
     #[serde(rename = "model")]
-    pub kind: Kind,
+    pub kind: ModelKind,
     /// The asperity heights' distribution (default
     /// [`HeightDistribution::Gaussian`]); its record names are
     /// `distribution`, `skewness` and `kurtosis`.
@@ -71,14 +89,14 @@ pub struct Constants {
 }
 
 impl Default for Constants {
-    /// β = 0.04, ν = 0.3, ε* = 0.004, [`Fit::Consistent`], [`Kind::KogutEtsion`].
+    /// β = 0.04, ν = 0.3, ε* = 0.004, [`Fit::Consistent`], [`ModelKind::KogutEtsion`].
     fn default() -> Constants {
         Constants {
             beta: DEFAULT_BETA,
             nu: DEFAULT_NU,
             eps_star: DEFAULT_EPS_STAR,
             fit: Fit::Consistent,
-            kind: Kind::KogutEtsion,
+            kind: ModelKind::KogutEtsion,
             distribution: HeightDistribution::Gaussian,
         }
     }
@@ -109,8 +127,8 @@ impl Constants {
         self
     }
 
-    /// Sets the model ([`Kind`]).
-    pub fn kind(mut self, kind: Kind) -> Constants {
+    /// Sets the model ([`ModelKind`]).
+    pub fn kind(mut self, kind: ModelKind) -> Constants {
         self.kind = kind;
         self
     }
@@ -202,7 +220,7 @@ pub const EPS_STAR_MAX: f64 = 100.0;
 
 impl Params {
     /// Parameters with the default [`Constants`]: β = 0.04, ν = 0.3,
-    /// ε* = 0.004, [`Fit::Consistent`] and [`Kind::KogutEtsion`].
+    /// ε* = 0.004, [`Fit::Consistent`] and [`ModelKind::KogutEtsion`].
     pub fn new(psi: f64, theta: f64) -> Params {
         Constants::default().unchecked_at(psi, theta)
     }
@@ -231,8 +249,8 @@ impl Params {
         self
     }
 
-    /// Sets the model ([`Kind`]).
-    pub fn kind(mut self, kind: Kind) -> Params {
+    /// Sets the model ([`ModelKind`]).
+    pub fn kind(mut self, kind: ModelKind) -> Params {
         self.constants.kind = kind;
         self
     }

@@ -3,7 +3,7 @@
 
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Classify, Constants, ErrorKind, Fit, HeightDistribution, Kind, Materials, Model, Params};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, HeightDistribution, Materials, Model, ModelKind, Params};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -540,11 +540,11 @@ pub enum ModelKindArg {
     Ceb,
 }
 
-impl From<ModelKindArg> for Kind {
-    fn from(k: ModelKindArg) -> Kind {
+impl From<ModelKindArg> for ModelKind {
+    fn from(k: ModelKindArg) -> ModelKind {
         match k {
-            ModelKindArg::Ke => Kind::KogutEtsion,
-            ModelKindArg::Ceb => Kind::CebType,
+            ModelKindArg::Ke => ModelKind::KogutEtsion,
+            ModelKindArg::Ceb => ModelKind::CebType,
         }
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::error::Failure;
 use crate::macros::{free, Arg};
-use ke_friction::{Constants, Fit, Kind};
+use ke_friction::{Constants, Fit, ModelKind};
 use std::ffi::{c_char, c_int, CStr, CString};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
@@ -61,8 +61,8 @@ fn fit_named(name: &CStr) -> Result<Fit, Failure> {
 }
 
 /// The model named `name`.
-fn kind_named(name: &CStr) -> Result<Kind, Failure> {
-    named("model", name, Kind::from_name, &Kind::ALL, Kind::name)
+fn kind_named(name: &CStr) -> Result<ModelKind, Failure> {
+    named("model", name, ModelKind::from_name, &ModelKind::ALL, ModelKind::name)
 }
 
 /// `name` as a C string for the life of the program (one allocation per

@@ -5,7 +5,7 @@ use crate::convert::{record, same_len, slice, slice_mut};
 use crate::distribution::DistributionCore;
 use crate::error::{raise, value_error, Failure};
 use crate::parallel::{cut, MODEL_WORK};
-use ke_friction::{Classify, Constants, ErrorKind, Fit, Kind, Model, Params, Physical};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, Model, ModelKind, Params, Physical};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
@@ -45,7 +45,7 @@ impl ModelCore {
             c.fit = by_name("fit", fit, &Fit::ALL, Fit::name)?;
         }
         if let Some(model) = model {
-            c.kind = by_name("model", model, &Kind::ALL, Kind::name)?;
+            c.kind = by_name("model", model, &ModelKind::ALL, ModelKind::name)?;
         }
         c.beta = beta.unwrap_or(c.beta);
         c.nu = nu.unwrap_or(c.nu);

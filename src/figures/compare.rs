@@ -7,7 +7,7 @@ use super::chart::{
 use super::paper::mu_points;
 use super::FigureError;
 use crate::build::verify::direct_mu;
-use crate::{Kind, Model, Params, Table};
+use crate::{Model, Params, Table};
 
 /// The model constants a table holds, or a curve asks for, in words.
 fn constants(p: &Params) -> String {
@@ -23,10 +23,7 @@ fn constants(p: &Params) -> String {
 /// relative difference μ_table/μ − 1 at the loads inside the table's domain.
 pub fn curve_page(model: &Model, table: Option<&Table>, f_star: Option<(f64, f64)>) -> Result<Page, FigureError> {
     let params = model.params().clone();
-    let name = match params.constants.kind {
-        Kind::KogutEtsion => "Kogut–Etsion",
-        Kind::CebType => "CEB-type (approx.)",
-    };
+    let name = params.constants.kind.law().label;
     let direct = match f_star {
         None => mu_points(model)?,
         Some((lo, hi)) => {

@@ -7,7 +7,7 @@ use super::chart::{
 use super::{FigureError, H_SAMPLES, PAPER_THETA};
 use crate::paper::fits::h_points;
 use crate::paper::PAPER_F_STAR_MAX;
-use crate::{Contact, Kind, Model, Params};
+use crate::{Contact, Model, ModelKind, Params};
 
 /// The contacts of a curve in the paper's range: [`H_SAMPLES`] separations
 /// over 0 ≤ h* ≤ 3 with 0 < F* ≤ 0.1, ordered by decreasing F*; if F* > 0.1
@@ -30,7 +30,7 @@ pub fn paper_sweep(model: &Model) -> Result<Vec<Contact>, FigureError> {
     Ok(out)
 }
 
-fn model(psi: f64, theta: f64, kind: Kind) -> Result<Model, FigureError> {
+fn model(psi: f64, theta: f64, kind: ModelKind) -> Result<Model, FigureError> {
     Ok(Model::new(Params::new(psi, theta).kind(kind))?)
 }
 
@@ -82,7 +82,7 @@ fn linear_chart(title: &str, y_title: &str, series: Vec<Series>) -> Chart {
 fn psi_series(y: impl Fn(&Contact) -> f64) -> Result<Vec<Series>, FigureError> {
     let mut series = Vec::new();
     for (k, psi) in PSIS.into_iter().enumerate() {
-        let m = model(psi, PAPER_THETA, Kind::KogutEtsion)?;
+        let m = model(psi, PAPER_THETA, ModelKind::KogutEtsion)?;
         series.push(Series {
             markers: markers(k, k, PSIS.len()),
             ..Series::line(
@@ -149,10 +149,10 @@ pub(super) fn fig5() -> Result<Page, FigureError> {
     let mut series = Vec::new();
     let psis = &PSIS[..3];
     for (k, &psi) in psis.iter().enumerate() {
-        for (j, kind) in [Kind::KogutEtsion, Kind::CebType].into_iter().enumerate() {
+        for (j, kind) in [ModelKind::KogutEtsion, ModelKind::CebType].into_iter().enumerate() {
             let m = model(psi, PAPER_THETA, kind)?;
             series.push(Series {
-                label: (kind == Kind::KogutEtsion).then(|| psi_label(psi)),
+                label: (kind == ModelKind::KogutEtsion).then(|| psi_label(psi)),
                 points: mu_points(&m)?,
                 color: k,
                 style: if j == 0 { LineStyle::Solid } else { LineStyle::Dashed },
@@ -197,7 +197,7 @@ pub(super) fn fig6() -> Result<Chart, FigureError> {
     let thetas = [1e-4, 1e-3, 3e-3];
     for (j, psi) in [0.5, 2.0].into_iter().enumerate() {
         for (k, theta) in thetas.into_iter().enumerate() {
-            let m = model(psi, theta, Kind::KogutEtsion)?;
+            let m = model(psi, theta, ModelKind::KogutEtsion)?;
             series.push(Series {
                 label: (j == 0).then(|| format!("θ = {}", num(theta))),
                 points: mu_points(&m)?,

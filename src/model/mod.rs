@@ -2,7 +2,10 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
+mod laws;
 mod surface;
+
+pub(crate) use laws::{LawInfo, LAWS};
 
 use crate::checks::ParamError;
 use crate::num::Shortest;

@@ -13,9 +13,10 @@
 //! integrated out to infinity in one panel, in `1/(z* − c)` ([`TailRule`]).
 //! No allocation, no recursion: a fixed amount of arithmetic per panel.
 
-use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
+use super::asperity::{self, adhesion, load, X_ELASTIC};
+use super::laws::{ContactLaw, Law, LoadLaw, Regime};
 use crate::distribution::{Density, End, PowerTails, JACOBI_POWER_MAX};
-use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
+use crate::params::{hardness_coefficient, sigma_s_ratio, Params};
 use crate::quadrature::{Rule, NODES};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
@@ -32,13 +33,14 @@ const STEP_DECAY: f64 = 8.0;
 /// (the "plan"; MODEL.md §2).
 #[derive(Debug, Clone)]
 pub(crate) struct Surface {
-    kind: Kind,
+    /// The planned single-asperity law.
+    law: Law,
     /// σ_s/σ.
     s: f64,
     /// The density of asperity heights φ*.
     heights: Heights,
     /// ω_c* = s/ψ².
-    omega: f64,
+    pub(super) omega: f64,
     /// y_s* = h* − d*.
     pub ys: f64,
     eps: f64,
@@ -46,29 +48,21 @@ pub(crate) struct Surface {
     load_pref: f64,
     /// 2πβθ, in front of Fs*.
     adh_pref: f64,
-    /// 3/K, the fully plastic load.
-    plastic: f64,
     /// `a·r^c` of the three contact adhesion rows.
     adh_coef: [f64; 3],
-    /// Coefficient of `x^1.425·μ_ep(x)` in the 1st elastic-plastic friction row.
-    q_ep: f64,
-    /// Whether the friction row goes on past x₀ (the printed form).
-    q_unclipped: bool,
-    rules: &'static Rules,
-    ceb: CebCapacity,
+    pub(super) rules: &'static Rules,
 }
 
 /// The Gauss rules, the same for every model: computed once per process.
 #[derive(Debug)]
-struct Rules {
+pub(super) struct Rules {
     gl: Rule,
-    /// Gauss–Jacobi rules for `x^1.5`, `x^0.298`, `x^0.982` (first panels).
+    /// Gauss–Jacobi rules for `x^1.5`, `x^0.298` (first panels).
     gj_load: Rule,
     gj_adh: Rule,
-    gj_fric: Rule,
     /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1), which is
     /// also the weight `x^0.5` of the Hertz load's slope.
-    gj_half: Rule,
+    pub(super) gj_half: Rule,
     /// Gauss–Jacobi rule for `x^−0.702`, the elastic adhesion's slope.
     gj_adh_slope: Rule,
 }
@@ -80,7 +74,6 @@ impl Rules {
             gl: Rule::legendre(),
             gj_load: Rule::jacobi(load::ELASTIC.1),
             gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
-            gj_fric: Rule::jacobi(FRICTION_ELASTIC.1),
             gj_half: Rule::jacobi(0.5),
             gj_adh_slope: Rule::jacobi(adhesion::ELASTIC.1 - 1.0),
         })
@@ -110,7 +103,7 @@ pub(crate) struct Sums {
 /// support, with `d` and ln φ* at its largest on `[d, ∞)` to tell where
 /// an unbounded tail becomes negligible.
 #[derive(Debug, Clone, Copy)]
-struct Window {
+pub(super) struct Window {
     lo: f64,
     hi: f64,
     d: f64,
@@ -136,7 +129,7 @@ const MAX_PANELS: usize = 100_000;
 const NEGLIGIBLE: f64 = 4.248354255291589e-18;
 
 /// The density of asperity heights φ*(z*) as the integrals see it.
-trait Phi {
+pub(super) trait Phi {
     /// Whether this is a general density (support ends, unbounded tails);
     /// false for the Gaussian, whose integrals keep their fixed windows.
     const GENERAL: bool;
@@ -222,7 +215,7 @@ impl Phi for Gauss {
 
 /// A finite end of the support in z*: `φ* ~ |z* − z|^power` next to it.
 #[derive(Debug, Clone)]
-struct ZEnd {
+pub(super) struct ZEnd {
     z: f64,
     power: f64,
     /// The end in the standardised density's units.
@@ -448,7 +441,7 @@ enum Heights {
 
 /// Which end of the support a panel touches (general densities).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum EndSide {
+pub(super) enum EndSide {
     None,
     Lower,
     Upper,
@@ -458,15 +451,15 @@ enum EndSide {
 
 /// One panel `[x0, x1]` of an integral in x.
 #[derive(Debug, Clone, Copy)]
-struct Panel {
-    x0: f64,
-    x1: f64,
+pub(super) struct Panel {
+    pub x0: f64,
+    pub x1: f64,
     /// It starts at the regime's start (the contact point for x = 0).
-    first: bool,
+    pub first: bool,
     /// It ends at the regime's end (not cut by the window).
-    last: bool,
+    pub last: bool,
     /// It touches an end of the support (Gauss–Jacobi with the end's weight).
-    at_end: EndSide,
+    pub at_end: EndSide,
 }
 
 /// Adds a node's load `p` and, with an adhesion exponent `b_adh`, its
@@ -490,7 +483,7 @@ fn add_node<H: Phi>(acc: &mut Sums, p: f64, dp_dx: f64, x: f64, lx: f64, w: f64,
 /// Adds the Hertz load `x^1.5` and the elastic adhesion `x^0.298` (both
 /// models) at an interior node; returns `x^1.5`.
 #[inline(always)]
-fn elastic_node<H: Phi>(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
+pub(super) fn elastic_node<H: Phi>(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: f64, adh: bool) -> f64 {
     let p = x * x.sqrt();
     add_node::<H>(acc, p, 1.5 * x.sqrt(), x, lx, w, dw, adh.then_some(adhesion::ELASTIC.1));
     p
@@ -509,10 +502,6 @@ impl Surface {
         let k = hardness_coefficient(p.constants.nu);
         let omega = s / (p.psi * p.psi);
         let r = p.constants.eps_star / omega;
-        let (q_ep, q_unclipped) = match p.constants.fit {
-            Fit::Consistent => (load::EP1.0, false),
-            Fit::AsPrinted => (FRICTION_ELASTIC.0, true),
-        };
         let gauss = Gauss {
             s,
             inv_s2: 1.0 / (s * s),
@@ -526,7 +515,7 @@ impl Surface {
             Heights::General(std::sync::Arc::new(General::new(g, s)))
         };
         Surface {
-            kind: p.constants.kind,
+            law: Law::new(&p.constants),
             s,
             heights,
             omega,
@@ -534,30 +523,33 @@ impl Surface {
             eps: p.constants.eps_star,
             load_pref: (2.0 / 3.0) * pi * p.constants.beta * k * omega,
             adh_pref: 2.0 * pi * p.constants.beta * p.theta,
-            plastic: 3.0 / k,
-            adh_coef: [adhesion::ELASTIC, adhesion::EP1, adhesion::EP2].map(|(a, _, c)| a * r.powf(c)),
-            q_ep,
-            q_unclipped,
+            adh_coef: adhesion::ROWS.map(|(a, _, c)| a * r.powf(c)),
             rules: Rules::get(),
-            ceb: CebCapacity::new(p.constants.nu),
         }
     }
 
-    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`.
+    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`:
+    /// one `match` on the law, then static calls.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
+        match &self.law {
+            Law::Ke(law) => self.evaluate_law(law, d, want_q),
+            Law::Ceb(law) => self.evaluate_law(law, d, want_q),
+        }
+    }
+
+    /// [`evaluate`](Self::evaluate) with the law `law`.
+    #[inline(always)]
+    pub(super) fn evaluate_law<L: ContactLaw>(&self, law: &L, d: f64, want_q: bool) -> Sums {
         match &self.heights {
-            Heights::Gauss(h) => self.evaluate_with(h, d, want_q),
-            Heights::General(h) => self.evaluate_with(&**h, d, want_q),
+            Heights::Gauss(h) => self.evaluate_with(law, h, d, want_q),
+            Heights::General(h) => self.evaluate_with(law, &**h, d, want_q),
         }
     }
 
     #[inline(always)]
-    fn evaluate_with<H: Phi>(&self, h: &H, d: f64, want_q: bool) -> Sums {
+    fn evaluate_with<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, want_q: bool) -> Sums {
         let win = h.window(d);
-        let mut c = match self.kind {
-            Kind::KogutEtsion => self.contact_ke(h, d, win, want_q),
-            Kind::CebType => self.contact_ceb(h, d, win, want_q),
-        };
+        let mut c = self.contact(law, h, d, win, want_q);
         if self.adh_pref != 0.0 {
             let (j, dj) = self.noncontact(h, d);
             c.fs += j;
@@ -572,161 +564,127 @@ impl Surface {
         }
     }
 
-    /// Contact integrals of MODEL.md §4, without their prefactors.
-    fn contact_ke<H: Phi>(&self, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
+    /// Contact integrals of MODEL.md §4 (§8 for the CEB-type law), without
+    /// their prefactors: the law's elastic regime, then its regimes above,
+    /// each times its coefficients.
+    fn contact<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
         let adh = self.adh_pref != 0.0;
-        let el = self.elastic(h, d, win, adh, want_q);
-        // A power-law regime [xa, xc]: load x^b_load, adhesion exponent b_adh.
-        let regime = |xa: f64, xc: f64, b_load: f64, b_adh: f64, want_q: bool| {
-            let law = move |x: f64, lx: f64| {
-                let p = (b_load * lx).exp();
-                (p, b_load * p / x)
-            };
-            self.smooth(h, d, win, xa, xc, law, adh.then_some(b_adh), want_q)
+        let el = law.elastic(self, h, d, win, adh, want_q);
+        let c = &self.adh_coef;
+        let mut sums = Sums {
+            p: el.p,
+            dp: el.dp,
+            fs: c[0] * el.fs,
+            dfs: c[0] * el.dfs,
+            q: el.q,
         };
-        let ep1a = regime(X_ELASTIC, X0, load::EP1.1, adhesion::EP1.1, want_q);
-        let ep1b = regime(X0, X_EP1, load::EP1.1, adhesion::EP1.1, want_q && self.q_unclipped);
-        let ep2 = regime(X_EP1, X_PLASTIC, load::EP2.1, adhesion::EP2.1, false);
-        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, |x, _| (x, 1.0), None, false);
-        let (a1, a2, a3) = (load::EP1.0, load::EP2.0, self.plastic);
-        let p = el.p + a1 * (ep1a.p + ep1b.p) + a2 * ep2.p + a3 * pl.p;
-        let dp = el.dp + a1 * (ep1a.dp + ep1b.dp) + a2 * ep2.dp + a3 * pl.dp;
-        let [c0, c1, c2] = self.adh_coef;
-        let fs = c0 * el.fs + c1 * (ep1a.fs + ep1b.fs) + c2 * ep2.fs;
-        let dfs = c0 * el.dfs + c1 * (ep1a.dfs + ep1b.dfs) + c2 * ep2.dfs;
-        let q = FRICTION_ELASTIC.0 * el.q + self.q_ep * (ep1a.q + ep1b.q);
-        let mut sums = Sums { p, dp, fs, dfs, q };
+        for r in law.regimes() {
+            let s = self.regime(law, h, d, win, r, adh, want_q);
+            sums.p += r.coef * s.p;
+            sums.dp += r.coef * s.dp;
+            if let Some(row) = r.adhesion {
+                sums.fs += c[row] * s.fs;
+                sums.dfs += c[row] * s.dfs;
+            }
+            if let Some(f) = r.friction {
+                sums.q += f.coef * s.q;
+            }
+        }
         if H::GENERAL {
-            // The load laws at the regime boundaries, below and above.
-            let law = |(a, b): (f64, f64), x: f64| a * x.powf(b);
-            let loads = [
-                (law(load::ELASTIC, X_ELASTIC), law(load::EP1, X_ELASTIC)),
-                (law(load::EP1, X_EP1), law(load::EP2, X_EP1)),
-                (law(load::EP2, X_PLASTIC), a3 * X_PLASTIC),
-            ];
-            self.add_jumps(h, d, loads, &mut sums);
+            self.add_jumps(law, h, d, &mut sums);
         }
         sums
+    }
+
+    /// One regime's raw integrals (before its coefficients), in two pieces
+    /// where it is split.
+    #[allow(clippy::too_many_arguments)]
+    fn regime<L: ContactLaw, H: Phi>(
+        &self,
+        law: &L,
+        h: &H,
+        d: f64,
+        win: Window,
+        r: &Regime,
+        adh: bool,
+        want_q: bool,
+    ) -> Sums {
+        let b_adh = r.adhesion.filter(|_| adh).map(|row| adhesion::ROWS[row].1);
+        let q_to = r.friction.map_or(f64::NEG_INFINITY, |f| f.to);
+        match r.split.filter(|&x| x > r.xa && x < r.xc) {
+            Some(x) => {
+                let a = self.piece(law, h, d, win, r.xa, x, r.load, b_adh, want_q && r.xa < q_to);
+                let b = self.piece(law, h, d, win, x, r.xc, r.load, b_adh, want_q && x < q_to);
+                Sums {
+                    p: a.p + b.p,
+                    dp: a.dp + b.dp,
+                    fs: a.fs + b.fs,
+                    dfs: a.dfs + b.dfs,
+                    q: a.q + b.q,
+                }
+            }
+            None => self.piece(law, h, d, win, r.xa, r.xc, r.load, b_adh, want_q && r.xa < q_to),
+        }
+    }
+
+    /// `[xa, xc]` with the load law `load` (one instance of
+    /// [`smooth`](Self::smooth) per kind of law: no branch per node).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn piece<L: ContactLaw, H: Phi>(
+        &self,
+        law: &L,
+        h: &H,
+        d: f64,
+        win: Window,
+        xa: f64,
+        xc: f64,
+        load: LoadLaw,
+        b_adh: Option<f64>,
+        want_q: bool,
+    ) -> Sums {
+        match load {
+            LoadLaw::Power(b) => {
+                let f = move |x: f64, lx: f64| {
+                    let p = (b * lx).exp();
+                    (p, b * p / x)
+                };
+                self.smooth(law, h, d, win, xa, xc, f, b_adh, want_q)
+            }
+            LoadLaw::Linear => self.smooth(law, h, d, win, xa, xc, |x, _| (x, 1.0), b_adh, want_q),
+            LoadLaw::Affine(a, b, c) => {
+                let f = move |x: f64, _: f64| (a * (b * x + c), a * b);
+                self.smooth(law, h, d, win, xa, xc, f, b_adh, want_q)
+            }
+        }
     }
 
     /// The terms of ∂P*/∂d*, ∂Fs*/∂d* from the jumps of the laws at the
-    /// regime boundaries x = 1, 6, 110, which move with d* (general
-    /// densities, whose derivatives come from the laws' slopes): the load
-    /// `loads[k] = (below, above)` and the contact adhesion (the same in
-    /// both models; none is counted beyond x = 110), each times φ* there.
-    fn add_jumps<H: Phi>(&self, h: &H, d: f64, loads: [(f64, f64); 3], sums: &mut Sums) {
-        let [c0, c1, c2] = self.adh_coef;
-        // adh_coef holds the laws' coefficients: here x^b alone.
-        let law = |(_, b, _): (f64, f64, f64), x: f64| x.powf(b);
-        let adhesion = [
-            (
-                c0 * law(adhesion::ELASTIC, X_ELASTIC),
-                c1 * law(adhesion::EP1, X_ELASTIC),
-            ),
-            (c1 * law(adhesion::EP1, X_EP1), c2 * law(adhesion::EP2, X_EP1)),
-            (c2 * law(adhesion::EP2, X_PLASTIC), 0.0),
-        ];
-        for ((x, (p_below, p_above)), (f_below, f_above)) in
-            [X_ELASTIC, X_EP1, X_PLASTIC].into_iter().zip(loads).zip(adhesion)
-        {
-            let phi = h.phi(d + self.omega * x);
-            sums.dp += (p_below - p_above) * phi;
-            sums.dfs += (f_below - f_above) * phi;
+    /// regime boundaries (x = 1, 6, 110 for both laws here), which move
+    /// with d* (general densities, whose derivatives come from the laws'
+    /// slopes): the load and the contact adhesion below and above each
+    /// boundary, times φ* there.
+    fn add_jumps<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, sums: &mut Sums) {
+        // adh_coef holds the rows' coefficients, the jumps x^b alone.
+        let c = &self.adh_coef;
+        for j in law.jumps() {
+            let phi = h.phi(d + self.omega * j.x);
+            let [(r0, f0), (r1, f1)] = j.adhesion;
+            sums.dp += (j.load[0] - j.load[1]) * phi;
+            sums.dfs += (c[r0] * f0 - c[r1] * f1) * phi;
         }
     }
 
-    /// Contact integrals of the CEB-type model (MODEL.md §8): Hertz load
-    /// and `μ_CEB` below x = 1, the volume-conserving load `1.5(2x − 1)`
-    /// above, and the Kogut–Etsion adhesion throughout.
-    fn contact_ceb<H: Phi>(&self, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
-        let adh = self.adh_pref != 0.0;
-        let el = self.elastic_ceb(h, d, win, adh, want_q);
-        let law = |x: f64, _: f64| (1.5 * (2.0 * x - 1.0), 3.0);
-        let ep1 = self.smooth(h, d, win, X_ELASTIC, X_EP1, law, adh.then_some(adhesion::EP1.1), false);
-        let ep2 = self.smooth(h, d, win, X_EP1, X_PLASTIC, law, adh.then_some(adhesion::EP2.1), false);
-        let pl = self.smooth(h, d, win, X_PLASTIC, f64::INFINITY, law, None, false);
-        let p = el.p + ep1.p + ep2.p + pl.p;
-        let dp = el.dp + ep1.dp + ep2.dp + pl.dp;
-        let [c0, c1, c2] = self.adh_coef;
-        let fs = c0 * el.fs + c1 * ep1.fs + c2 * ep2.fs;
-        let dfs = c0 * el.dfs + c1 * ep1.dfs + c2 * ep2.dfs;
-        let mut sums = Sums {
-            p,
-            dp,
-            fs,
-            dfs,
-            q: el.q,
-        };
-        if H::GENERAL {
-            // Hertz below x = 1, then 1.5(2x − 1) throughout.
-            self.add_jumps(h, d, [(1.0, 1.5), (0.0, 0.0), (0.0, 0.0)], &mut sums);
-        }
-        sums
-    }
-
-    /// The elastic regime of the CEB-type model: `Q̄ = μ_CEB·P̄`, with the
-    /// branch `μ2` below the crossing `xc` and `μ1` (which vanishes like
-    /// `(1 − x)^½` at x = 1) above it.
-    fn elastic_ceb<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
-        let xc = self.ceb.x_cross;
-        let ceb = &self.ceb;
+    /// The elastic regime `0 ≤ x < 1` without friction: the Hertz load and
+    /// the elastic adhesion (the default of [`ContactLaw::elastic`]).
+    pub(super) fn elastic_hertz<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool) -> Sums {
         let mut acc = Sums::default();
-        let m15 = ceb.mu2_power_coefficient();
-        self.panels(h, d, win, 0.0, xc, |p| {
-            if p.first {
-                self.elastic_first_panel(h, d, p.x1, adh, &mut acc);
-                if want_q {
-                    // acc.p is so far just ∫₀^x1 x^1.5 φ*, the first panel's load.
-                    acc.q += m15 * acc.p;
-                    self.legendre_panel(h, d, p, |x, w, _| acc.q += x * ceb.mu2_remainder(x) * w);
-                }
-            } else {
-                self.legendre_panel(h, d, p, |x, w, dw| {
-                    let load = elastic_node::<H>(&mut acc, x, x.ln(), w, dw, adh);
-                    if want_q {
-                        acc.q += (m15 * load + x * ceb.mu2_remainder(x)) * w;
-                    }
-                });
-            }
-        });
-        self.panels(h, d, win, xc, X_ELASTIC, |p| {
-            let last = p.last && p.at_end == EndSide::None;
-            self.legendre_panel(h, d, p, |x, w, dw| {
-                elastic_node::<H>(&mut acc, x, x.ln(), w, dw, adh);
-                if want_q && !last {
-                    acc.q += ceb.mu1_factor(x) * (1.0 - x).sqrt() * w;
-                }
-            });
-            if want_q && last {
-                // (1 − x)^½ at x = 1: the mirrored Gauss–Jacobi rule.
-                let width = X_ELASTIC - p.x0;
-                let scale = self.omega * width.powf(1.5);
-                for (t, wt) in self.rules.gj_half.t.iter().zip(&self.rules.gj_half.w) {
-                    let x = X_ELASTIC - width * t;
-                    acc.q += scale * wt * h.phi(d + self.omega * x) * ceb.mu1_factor(x);
-                }
-            }
-        });
-        acc
-    }
-
-    /// The fully elastic regime `0 ≤ x < 1` of the Kogut–Etsion model.
-    fn elastic<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
-        let mut acc = Sums::default();
-        let b_fric = FRICTION_ELASTIC.1;
         self.panels(h, d, win, 0.0, X_ELASTIC, |p| {
             if p.first {
                 self.elastic_first_panel(h, d, p.x1, adh, &mut acc);
-                if want_q {
-                    self.jacobi_panel(h, d, &self.rules.gj_fric, b_fric, p.x1, |_, w, _| acc.q += w);
-                }
             } else {
                 self.legendre_panel(h, d, p, |x, w, dw| {
-                    let lx = x.ln();
-                    elastic_node::<H>(&mut acc, x, lx, w, dw, adh);
-                    if want_q {
-                        acc.q += (b_fric * lx).exp() * w;
-                    }
+                    elastic_node::<H>(&mut acc, x, x.ln(), w, dw, adh);
                 });
             }
         });
@@ -738,7 +696,7 @@ impl Surface {
     /// A general density also needs the laws' slopes `1.5·x^0.5` and
     /// `0.298·x^−0.702`: their rules give the laws too (`x^1.5 = x^0.5·x`,
     /// `x^0.298 = x^−0.702·x`), so φ* is evaluated on two rules, not four.
-    fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
+    pub(super) fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
         if H::GENERAL {
             let b = load::ELASTIC.1;
             self.jacobi_panel(h, d, &self.rules.gj_half, b - 1.0, x1, |x, w, dw| {
@@ -768,10 +726,11 @@ impl Surface {
 
     /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
     /// load and its slope `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
-    /// friction factor `x^1.425·μ_ep(x)`.
+    /// friction factor `load(x)·μ(x)` (the law's [`ContactLaw::mu`]).
     #[allow(clippy::too_many_arguments)]
-    fn smooth<H: Phi>(
+    fn smooth<L: ContactLaw, H: Phi>(
         &self,
+        law: &L,
         h: &H,
         d: f64,
         win: Window,
@@ -788,7 +747,7 @@ impl Surface {
                 let (p, dp_dx) = load(x, lx);
                 add_node::<H>(&mut acc, p, dp_dx, x, lx, w, dw, b_adh);
                 if want_q {
-                    acc.q += p * asperity::mu_ep(x) * w;
+                    acc.q += p * law.mu(x) * w;
                 }
             })
         });
@@ -918,7 +877,7 @@ impl Surface {
     /// window; `first` marks a panel starting at `xa`, `last` one ending at
     /// `xc` (not cut by the window).
     #[inline(always)]
-    fn panels<H: Phi>(&self, h: &H, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(Panel)) {
+    pub(super) fn panels<H: Phi>(&self, h: &H, d: f64, win: Window, xa: f64, xc: f64, mut f: impl FnMut(Panel)) {
         let (om, inv_om) = (self.omega, 1.0 / self.omega);
         let x_lo = (win.lo - d) * inv_om;
         let x_hi = (win.hi - d) * inv_om;
@@ -1011,7 +970,7 @@ impl Surface {
     /// support, Gauss–Jacobi with the end's weight): calls `f(x, w·φ,
     /// w·φ')` with the weights for `dz* = ω dx`.
     #[inline(always)]
-    fn legendre_panel<H: Phi>(&self, h: &H, d: f64, p: Panel, mut f: impl FnMut(f64, f64, f64)) {
+    pub(super) fn legendre_panel<H: Phi>(&self, h: &H, d: f64, p: Panel, mut f: impl FnMut(f64, f64, f64)) {
         let (x0, x1) = (p.x0, p.x1);
         if H::GENERAL && p.at_end != EndSide::None {
             let (lo_end, hi_end) = h.ends();
@@ -1048,7 +1007,15 @@ impl Surface {
     /// Gauss–Jacobi for `∫₀^x1 x^b (…) dz*`: calls `f(x, w·φ, w·φ')` with
     /// weights that already include `x^b`.
     #[inline(always)]
-    fn jacobi_panel<H: Phi>(&self, h: &H, d: f64, rule: &Rule, b: f64, x1: f64, mut f: impl FnMut(f64, f64, f64)) {
+    pub(super) fn jacobi_panel<H: Phi>(
+        &self,
+        h: &H,
+        d: f64,
+        rule: &Rule,
+        b: f64,
+        x1: f64,
+        mut f: impl FnMut(f64, f64, f64),
+    ) {
         let scale = self.omega * x1.powf(b + 1.0);
         for i in 0..NODES {
             let x = x1 * rule.t[i];
@@ -1062,6 +1029,7 @@ impl Surface {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::params::Constants;
     use serde_json::Value;
 
     impl Surface {
@@ -1114,5 +1082,49 @@ mod tests {
             n += 1;
         }
         assert!(n >= 6);
+    }
+
+    /// The test-only Hertz law (x^1.5 at every interference, no plastic
+    /// regime) through the same integrals: P* matches the closed form
+    /// `(2/3)πβKω_c*·I^1.5[0,∞)` (MODEL.md §5), and, where every contact
+    /// is elastic (ψ small), the Kogut–Etsion model; with a bounded Pearson
+    /// density (K = 2.5) too: the general path, with the jumps.
+    #[test]
+    fn a_test_only_hertz_law_goes_through_the_same_integrals() {
+        use crate::model::laws::hertz::Hertz;
+        let doc: Value = serde_json::from_str(include_str!("../../tests/data/reference_points.json")).unwrap();
+        let p = doc["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["kind"] == "closed_form" && p["b"] == 1.5)
+            .expect("a closed form for b = 1.5");
+        let f = |k: &str| p[k].as_f64().unwrap();
+        let surface = Surface::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
+        let s = surface.evaluate_law(&Hertz::new(), f("d_star"), true);
+        let want = surface.load_pref * f("i_0_inf");
+        assert!(s.p.is_finite() && s.p > 0.0 && s.dp < 0.0, "{s:?}");
+        assert!(((s.p - want) / want).abs() < 1e-12, "P* = {:e} vs {want:e}", s.p);
+        assert_eq!((s.fs, s.q), (0.0, 0.0));
+
+        let gaussian = Constants::default();
+        let pearson = Constants::default().distribution(crate::HeightDistribution::pearson(0.0, 2.5).unwrap());
+        for c in [gaussian, pearson] {
+            let params = c.at(0.1, 0.003).unwrap();
+            let surface = Surface::new(&params);
+            for d in [0.5, 1.0, 2.0] {
+                let hertz = surface.evaluate_law(&Hertz::new(), d, true);
+                let ke = surface.evaluate(d, true);
+                assert!(hertz.p.is_finite() && hertz.p > 0.0, "{hertz:?}");
+                for (what, a, b) in [
+                    ("P*", hertz.p, ke.p),
+                    ("dP*", hertz.dp, ke.dp),
+                    ("Fs*", hertz.fs, ke.fs),
+                    ("dFs*", hertz.dfs, ke.dfs),
+                ] {
+                    assert!(((a - b) / b).abs() < 1e-9, "d* = {d}: {what} {a:e} vs {b:e}");
+                }
+            }
+        }
     }
 }

@@ -26,7 +26,7 @@
 //! 0) gives m = 0.573 instead of 0.62.
 
 use super::{PaperError, PAPER_F_STAR_MAX, PAPER_H_STAR_RANGE};
-use crate::{Contact, Kind, Model, Params};
+use crate::{Contact, Model, ModelKind, Params};
 
 /// Points of the h* sweep: h* = 0, 0.01, …, 3.
 pub const SWEEP_POINTS: usize = 301;
@@ -224,7 +224,7 @@ pub fn friction_peak(model: &Model, (a, b): (f64, f64)) -> Result<Contact, Paper
 /// μ_KE / μ_CEB at each load (default β, ν, ε*; MODEL.md §8).
 pub fn ke_over_ceb(psi: f64, theta: f64, loads: &[f64]) -> Result<Vec<f64>, PaperError> {
     let ke = Model::new(Params::new(psi, theta))?;
-    let ceb = Model::new(Params::new(psi, theta).kind(Kind::CebType))?;
+    let ceb = Model::new(Params::new(psi, theta).kind(ModelKind::CebType))?;
     loads
         .iter()
         .map(|&f| {

@@ -107,7 +107,7 @@ use fits::{
     power_m, Coverage, MIN_FIT_POINTS,
 };
 
-use crate::{EvalError, Kind, Model, ParamError, Params};
+use crate::{EvalError, Model, ModelKind, ParamError, Params};
 
 /// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
 pub const PAPER_H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
@@ -461,7 +461,7 @@ pub fn statements() -> Result<Vec<Statement>, PaperError> {
         ),
     ] {
         let ke = model(psi, 0.003)?;
-        let ceb = Model::new(Params::new(psi, 0.003).kind(Kind::CebType))?;
+        let ceb = Model::new(Params::new(psi, 0.003).kind(ModelKind::CebType))?;
         let c = holds_where(
             plotted_loads(&[&ke, &ceb])?,
             |f| ke_over_ceb_at(&ke, &ceb, f),

@@ -56,7 +56,7 @@
 //! targets in `fuzz/` check each point with crafted files.
 
 use crate::distribution::HeightDistribution;
-use crate::params::{Constants, Fit, Kind};
+use crate::params::{Constants, Fit, ModelKind};
 use serde::de::{self, EnumAccess, VariantAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
@@ -292,10 +292,7 @@ impl ModelSpec {
                 Fit::Consistent => 0,
                 Fit::AsPrinted => 1,
             },
-            kind: match c.kind {
-                Kind::KogutEtsion => 0,
-                Kind::CebType => 1,
-            },
+            kind: c.kind.law().code,
         }
     }
 
@@ -307,10 +304,9 @@ impl ModelSpec {
             1 => Fit::AsPrinted,
             f => return Err(format!("unknown fit code {f}")),
         };
-        let kind = match self.kind {
-            0 => Kind::KogutEtsion,
-            1 => Kind::CebType,
-            k => return Err(format!("unknown model code {k}")),
+        let kind = match ModelKind::from_code(self.kind) {
+            Some(kind) => kind,
+            None => return Err(format!("unknown model code {}", self.kind)),
         };
         Ok(Constants {
             beta: self.beta,

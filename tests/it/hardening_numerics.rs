@@ -2,7 +2,7 @@
 //! parameter space (fixed seeds): finite outputs everywhere, μ defined
 //! exactly where F* > 0, and `at_f_star` converging to the requested F*.
 
-use ke_friction::{Contact, EvalError, Fit, Kind, Model, Params};
+use ke_friction::{Contact, EvalError, Fit, Model, ModelKind, Params};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -35,9 +35,9 @@ fn random_params(rng: &mut ChaCha8Rng) -> Params {
             Fit::AsPrinted
         })
         .kind(if rng.gen_bool(0.5) {
-            Kind::KogutEtsion
+            ModelKind::KogutEtsion
         } else {
-            Kind::CebType
+            ModelKind::CebType
         })
 }
 
@@ -50,7 +50,7 @@ fn corner_params() -> Vec<Params> {
                 for nu in [0.0, 0.4999] {
                     for eps in [1e-6, 1.0] {
                         for fit in [Fit::Consistent, Fit::AsPrinted] {
-                            for kind in [Kind::KogutEtsion, Kind::CebType] {
+                            for kind in [ModelKind::KogutEtsion, ModelKind::CebType] {
                                 v.push(
                                     Params::new(psi, theta)
                                         .beta(beta)
@@ -210,7 +210,7 @@ fn far_separations_are_fast_and_match_the_asymptote() {
         for p in [
             Params::new(1.0, 0.001),
             Params::new(0.05, 1.0).beta(0.0193).eps_star(1e-6),
-            Params::new(50.0, 1e-6).beta(1.0).eps_star(1.0).kind(Kind::CebType),
+            Params::new(50.0, 1e-6).beta(1.0).eps_star(1.0).kind(ModelKind::CebType),
         ] {
             let model = Model::new(p.clone()).unwrap();
             let s2 = 1.0 - 3.717e-4 / (p.constants.beta * p.constants.beta);
@@ -256,7 +256,7 @@ fn strong_adhesion_roots_lie_deep_and_are_found() {
         .beta(0.0193)
         .nu(0.49)
         .eps_star(1e-6)
-        .kind(Kind::CebType);
+        .kind(ModelKind::CebType);
     let model = Model::new(p).unwrap();
     for f in [1e-8, 1e-4, 0.01, 1.0] {
         let c = model.at_f_star(f).unwrap_or_else(|e| panic!("F* = {f}: {e:?}"));
@@ -294,7 +294,7 @@ fn the_limits() {
         for theta in [0.0, 1e3] {
             for beta in [0.0193, 100.0] {
                 for eps in [1e-9, 100.0] {
-                    for kind in [Kind::KogutEtsion, Kind::CebType] {
+                    for kind in [ModelKind::KogutEtsion, ModelKind::CebType] {
                         let p = Params::new(psi, theta).beta(beta).nu(0.3).eps_star(eps).kind(kind);
                         let model = Model::new(p.clone()).unwrap_or_else(|e| panic!("{p:?}: {e}"));
                         for h in [-1e6, -1e3, -5.0, 0.0, 3.0, 10.0, 1e3, 1e6] {

@@ -6,12 +6,12 @@
 //! probability 1/4, otherwise log-uniform in [1e-4, 1e-2], h* uniform in
 //! [0, 3].
 use crate::common::rel;
-use ke_friction::{EvalError, Fit, Kind, Model, Params};
+use ke_friction::{EvalError, Fit, Model, ModelKind, Params};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 const CASES: usize = 200;
-const KINDS: [Kind; 2] = [Kind::KogutEtsion, Kind::CebType];
+const KINDS: [ModelKind; 2] = [ModelKind::KogutEtsion, ModelKind::CebType];
 
 fn rng(seed: u64) -> ChaCha8Rng {
     ChaCha8Rng::seed_from_u64(seed)
@@ -32,7 +32,7 @@ fn random_params(rng: &mut ChaCha8Rng) -> (f64, f64) {
     (psi, theta)
 }
 
-fn model(psi: f64, theta: f64, kind: Kind) -> Model {
+fn model(psi: f64, theta: f64, kind: ModelKind) -> Model {
     Model::new(Params::new(psi, theta).kind(kind)).unwrap()
 }
 
@@ -196,11 +196,11 @@ fn as_printed_fit_gives_negative_friction_at_psi_2() {
 /// undefined).
 #[test]
 fn mu_is_none_exactly_when_f_star_is_not_positive() {
-    let c = model(0.5, 0.01, Kind::KogutEtsion).at_h_star(4.0).unwrap();
+    let c = model(0.5, 0.01, ModelKind::KogutEtsion).at_h_star(4.0).unwrap();
     assert!(c.f_star < 0.0 && c.f_star > -1e-5, "{c:?}");
     assert_eq!(c.mu, None);
     assert!(c.q_star > 0.0, "Q* is still defined: {c:?}");
-    let c = model(0.5, 0.01, Kind::KogutEtsion).at_h_star(2.0).unwrap();
+    let c = model(0.5, 0.01, ModelKind::KogutEtsion).at_h_star(2.0).unwrap();
     assert!(c.f_star > 0.0 && c.mu.unwrap() > 0.0, "{c:?}");
 
     // F* ≤ 0 needs small ψ and large θ: the sweep is biased there.
@@ -262,14 +262,14 @@ fn invalid_inputs_are_rejected() {
 #[test]
 fn mu_is_smooth_in_f_star() {
     let mut cases = vec![
-        (0.5, 0.0, Kind::KogutEtsion),
-        (0.5, 0.01, Kind::KogutEtsion),
-        (1.0, 0.003, Kind::KogutEtsion),
-        (2.0, 0.003, Kind::KogutEtsion),
-        (8.0, 0.0001, Kind::KogutEtsion),
-        (8.0, 0.01, Kind::KogutEtsion),
-        (1.0, 0.003, Kind::CebType),
-        (4.0, 0.0, Kind::CebType),
+        (0.5, 0.0, ModelKind::KogutEtsion),
+        (0.5, 0.01, ModelKind::KogutEtsion),
+        (1.0, 0.003, ModelKind::KogutEtsion),
+        (2.0, 0.003, ModelKind::KogutEtsion),
+        (8.0, 0.0001, ModelKind::KogutEtsion),
+        (8.0, 0.01, ModelKind::KogutEtsion),
+        (1.0, 0.003, ModelKind::CebType),
+        (4.0, 0.0, ModelKind::CebType),
     ];
     let mut rng = rng(9);
     for i in 0..12 {

@@ -2,7 +2,7 @@
 //! (`tools/reference.py generate`) at random points nobody picked by hand:
 //! default and non-default constants, both fits, both models, h* and F*.
 use crate::common::{assert_rel, REFERENCE_REL};
-use ke_friction::{Fit, Kind, Model, Params};
+use ke_friction::{Fit, Model, ModelKind, Params};
 use serde_json::Value;
 
 fn points() -> Vec<Value> {
@@ -30,9 +30,9 @@ fn model_agrees_with_mpmath_at_random_points() {
     let mut checked = 0;
     for p in points().iter().filter(|p| p.get("model").is_some()) {
         let kind = if p["model"] == "ceb" {
-            Kind::CebType
+            ModelKind::CebType
         } else {
-            Kind::KogutEtsion
+            ModelKind::KogutEtsion
         };
         let fit = if p["fit"] == "as-printed" {
             Fit::AsPrinted

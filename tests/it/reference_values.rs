@@ -1,6 +1,6 @@
 //! The reference values of MODEL.md §7 and §8 (30-digit quadrature).
 use crate::common::{assert_rel, REFERENCE_REL};
-use ke_friction::{Kind, Model, Params};
+use ke_friction::{Model, ModelKind, Params};
 
 /// (ψ, θ, h*, d*, P*, Fs*, Q*, F*, μ) from MODEL.md §7.
 const KE_AT_H: [[f64; 9]; 6] = [
@@ -149,7 +149,7 @@ fn kogut_etsion_at_f_star_matches_model_md_section_7() {
 #[test]
 fn ceb_type_matches_model_md_section_8() {
     for [psi, theta, h, p, q, f, mu] in CEB_AT_H {
-        let model = Model::new(Params::new(psi, theta).kind(Kind::CebType)).unwrap();
+        let model = Model::new(Params::new(psi, theta).kind(ModelKind::CebType)).unwrap();
         let c = model.at_h_star(h).unwrap();
         let tag = format!("CEB ψ={psi} θ={theta} h*={h}");
         assert_rel(&format!("{tag} P*"), c.p_star, p, PRINTED);
@@ -158,7 +158,7 @@ fn ceb_type_matches_model_md_section_8() {
         assert_rel(&format!("{tag} μ"), c.mu.unwrap(), mu, PRINTED);
     }
     for [psi, theta, f, h, mu] in CEB_AT_F {
-        let model = Model::new(Params::new(psi, theta).kind(Kind::CebType)).unwrap();
+        let model = Model::new(Params::new(psi, theta).kind(ModelKind::CebType)).unwrap();
         let c = model.at_f_star(f).unwrap();
         let tag = format!("CEB ψ={psi} θ={theta} F*={f}");
         assert!((c.h_star - h).abs() < 1e-10, "{tag}: h* {} vs {h}", c.h_star);

@@ -62,7 +62,7 @@ fn the_handle_round_trips_and_changes_the_model() {
         let expected = core_mu(
             ke_friction::Constants::default()
                 .fit(ke_friction::Fit::AsPrinted)
-                .kind(ke_friction::Kind::CebType),
+                .kind(ke_friction::ModelKind::CebType),
             0.01,
         );
         assert_eq!(ceb_mu, expected);
