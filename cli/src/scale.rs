@@ -84,10 +84,10 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
                     Ok((params, friction)) => {
                         record["surface"] = serde_json::to_value(surface.stats()).expect("a record");
                         if let Some(p) = params {
-                            record["model"] = serde_json::to_value(&p).expect("a record");
+                            record["model"] = serde_json::to_value(p).expect("a record");
                         }
                         if let Some(f) = friction {
-                            record["friction"] = serde_json::to_value(&f).expect("a record");
+                            record["friction"] = serde_json::to_value(f).expect("a record");
                         }
                     }
                     Err(f) => record["error"] = f.message().into(),

@@ -97,7 +97,7 @@ pub struct SurfaceArgs {
     /// S-filter nesting index λs in metres (ISO 16610-61 Gaussian, 50 % transmission at λs): wavelengths shorter than λs are removed before the statistics; `auto` = the reliability cut-off of --tip-radius or --resolution. At least 2·max(dx, dy).
     #[arg(long, value_name = "M|auto", value_parser = parse_lambda)]
     pub lambda_s: Option<Lambda>,
-    /// L-filter nesting index λc in metres (ISO 16610-61 Gaussian): form and waviness longer than λc are removed (the roughness is z − G_λc[z]), after the detrending. At most the scan size.
+    /// L-filter nesting index λc in metres (ISO 16610-61 Gaussian): form and waviness longer than λc are removed (the roughness is z minus its Gaussian mean at λc), after the detrending. At most the scan size.
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
     pub lambda_c: Option<f64>,
     /// Scanning-probe tip radius (m): the reliability cut-off is the scale below which the scale-dependent curvature reaches −1/(2·R) (Sanner et al. 2022).

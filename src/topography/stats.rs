@@ -103,7 +103,7 @@ crate::named!(
 ///
 /// The pipeline is ISO 25178-3's, in its order: S-filter (λs, the
 /// Gaussian of ISO 16610-61, removes wavelengths shorter than λs) →
-/// F-operation ([`Detrend`]) → L-filter (λc: the roughness is z − G_λc[z],
+/// F-operation ([`Detrend`]) → L-filter (λc: the roughness is z − G_λc\[z\],
 /// removing wavelengths longer than λc) → statistics.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StatsOptions {

@@ -22,8 +22,13 @@ fn map(dir: &TempDir) -> (String, Topography) {
     let waves: Vec<(f64, f64, f64, f64)> = (0..40)
         .map(|k| {
             let wavelength = 4e-6 * (150.0f64 / 4.0).powf(k as f64 / 39.0);
-            let angle = 6.283 * next();
-            (wavelength, angle, 6.283 * next(), 1e-7 * (wavelength / 4e-6).powf(0.8))
+            let angle = std::f64::consts::TAU * next();
+            (
+                wavelength,
+                angle,
+                std::f64::consts::TAU * next(),
+                1e-7 * (wavelength / 4e-6).powf(0.8),
+            )
         })
         .collect();
     let z = (0..nx * ny)
@@ -31,7 +36,7 @@ fn map(dir: &TempDir) -> (String, Topography) {
             let (x, y) = ((k % nx) as f64 * 1e-6, (k / nx) as f64 * 1.5e-6);
             waves
                 .iter()
-                .map(|&(l, a, p, amp)| amp * (6.283185307179586 / l * (x * a.cos() + y * a.sin()) + p).sin())
+                .map(|&(l, a, p, amp)| amp * (std::f64::consts::TAU / l * (x * a.cos() + y * a.sin()) + p).sin())
                 .sum::<f64>()
         })
         .collect();

@@ -491,8 +491,16 @@ fn the_architecture_map_lists_every_folder_and_source_file() {
 fn the_readme_stays_a_short_manual() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
     let lines = readme.lines().count();
-    assert!(lines <= 250, "README.md has {lines} lines: move reference text to docs/ (the limit is 250)");
-    for doc in ["docs/REFERENCE.md", "docs/RELIABILITY.md", "docs/ARCHITECTURE.md", "docs/MODEL.md"] {
+    assert!(
+        lines <= 250,
+        "README.md has {lines} lines: move reference text to docs/ (the limit is 250)"
+    );
+    for doc in [
+        "docs/REFERENCE.md",
+        "docs/RELIABILITY.md",
+        "docs/ARCHITECTURE.md",
+        "docs/MODEL.md",
+    ] {
         assert!(readme.contains(doc), "the README does not link {doc}");
     }
 }

@@ -5,9 +5,9 @@
 
 use super::{jumps_of, ContactLaw, FrictionRow, Jump, LoadLaw, Regime};
 use crate::model::asperity::{X_ELASTIC, X_EP1, X_PLASTIC};
-use crate::quadrature::Rule;
 use crate::model::surface::{elastic_node, Phi, Sums, Surface, Window};
 use crate::params::{hardness_coefficient, Constants, Fit};
+use crate::quadrature::Rule;
 
 /// Root of [`mu_ep`]: a preloaded asperity beyond it carries no tangential
 /// load (MODEL.md §6, item 2). 30-digit value from mpmath's `findroot`.
