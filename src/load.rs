@@ -20,6 +20,19 @@ pub enum Load {
 }
 
 impl Load {
+    /// The load of a front end's three optional inputs: a force with an
+    /// area, or a pressure alone, or none (`None`); any other combination
+    /// is [`LoadError::Parts`]. The values are checked by
+    /// [`Load::pressure`].
+    pub fn from_parts(force: Option<f64>, area: Option<f64>, pressure: Option<f64>) -> Result<Option<Load>, LoadError> {
+        match (force, area, pressure) {
+            (Some(force), Some(area), None) => Ok(Some(Load::Force { force, area })),
+            (None, None, Some(p)) => Ok(Some(Load::Pressure(p))),
+            (None, None, None) => Ok(None),
+            _ => Err(LoadError::Parts),
+        }
+    }
+
     /// The nominal pressure F/A_n (Pa), the load checked: a force and an
     /// area (or a pressure) finite and > 0.
     pub fn pressure(&self) -> Result<f64, ParamError> {
@@ -127,6 +140,9 @@ pub struct Friction {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum LoadError {
+    /// Neither a force with an area nor a pressure alone.
+    #[error("give the force with the area, or the pressure alone")]
+    Parts,
     /// The force, area, pressure or the F* they give is out of range.
     #[error(transparent)]
     Load(#[from] ParamError),
@@ -139,6 +155,7 @@ pub enum LoadError {
 impl crate::Classify for LoadError {
     fn kind(&self) -> crate::ErrorKind {
         match self {
+            LoadError::Parts => crate::ErrorKind::Argument,
             LoadError::Load(e) => e.kind(),
             LoadError::Eval(e) => e.kind(),
         }

@@ -348,11 +348,10 @@ pub struct LoadArgs {
 impl LoadArgs {
     /// The load, if one is given, checked (a message names the flag).
     pub fn load(&self) -> Result<Option<Load>, Failure> {
-        let load = match (self.force, self.area, self.pressure) {
-            (Some(force), Some(area), None) => Load::Force { force, area },
-            (None, None, Some(p)) => Load::Pressure(p),
-            (None, None, None) => return Ok(None),
-            _ => return Err(Failure::input("--force: give --force with --area, or --pressure alone")),
+        let Some(load) = Load::from_parts(self.force, self.area, self.pressure)
+            .map_err(|e| Failure::input(format!("--force: {e} (--pressure)")))?
+        else {
+            return Ok(None);
         };
         load.pressure().map_err(|e| {
             Failure::input(format!(

@@ -3,7 +3,7 @@
 use crate::constants::kef_constants;
 use crate::error::Failure;
 use crate::macros::set;
-use ke_friction::{Constants, EvalError, Model};
+use ke_friction::{Constants, Model};
 use std::ffi::c_int;
 
 /// The constants of the functions that take β, ν and ε* themselves.
@@ -13,12 +13,7 @@ pub(crate) fn explicit(beta: f64, nu: f64, eps_star: f64) -> Constants {
 
 /// μ by direct integration at F* = `f_star`.
 fn model_mu(constants: &Constants, psi: f64, theta: f64, f_star: f64) -> Result<f64, Failure> {
-    let contact = Model::new(constants.at(psi, theta)?)?.at_f_star(f_star)?;
-    let no_mu = EvalError::NoMu {
-        f_star: contact.f_star,
-        h_star: contact.h_star,
-    };
-    Ok(contact.mu.ok_or(no_mu)?)
+    Ok(Model::new(constants.at(psi, theta)?)?.at_f_star(f_star)?.mu_or_err()?)
 }
 
 /// μ of the Kogut–Etsion model by direct integration (microseconds) at

@@ -629,11 +629,9 @@ impl SurfaceCore {
         area: Option<f64>,
         pressure: Option<f64>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let load = match (force, area, pressure) {
-            (Some(force), Some(area), None) => Load::Force { force, area },
-            (None, None, Some(p)) => Load::Pressure(p),
-            _ => return Err(value_error("give force with area, or pressure alone")),
-        };
+        let load = Load::from_parts(force, area, pressure)
+            .map_err(raise)?
+            .ok_or_else(|| value_error("give force with area, or pressure alone"))?;
         let physical = self.surface.physical(&self::materials(materials));
         let friction = py.detach(|| load.friction(&model.0, &physical)).map_err(raise)?;
         record(py, serde_json::to_string(&friction))

@@ -3,7 +3,7 @@
 //! `kefric verify` give.
 
 use super::{BuildError, Progress};
-use crate::model::{EvalError, Model};
+use crate::model::Model;
 use crate::rng::SplitMix64;
 use crate::table::{Accuracy, Table};
 use rayon::prelude::*;
@@ -130,10 +130,7 @@ pub fn direct_mu(table: &Table, psi: f64, theta: f64, f_star: f64) -> Result<f64
     let eval = |error| BuildError::Eval { psi, theta, error };
     let model = Model::new(table.domain().params(psi, theta))?;
     let contact = model.at_f_star(f_star).map_err(eval)?;
-    contact.mu.ok_or(eval(EvalError::NoMu {
-        f_star: contact.f_star,
-        h_star: contact.h_star,
-    }))
+    contact.mu_or_err().map_err(eval)
 }
 
 /// How far this machine's lookups ([`Table::mu`], the f32 kernel where

@@ -33,6 +33,17 @@ pub struct Contact {
     pub mu: Option<f64>,
 }
 
+impl Contact {
+    /// μ, or [`EvalError::NoMu`] (naming F* and h*) where it is undefined:
+    /// what every front end reports for a contact without μ.
+    pub fn mu_or_err(&self) -> Result<f64, EvalError> {
+        self.mu.ok_or(EvalError::NoMu {
+            f_star: self.f_star,
+            h_star: self.h_star,
+        })
+    }
+}
+
 /// An evaluation that cannot be done.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -159,13 +170,7 @@ impl Model {
     pub fn mu_with_slope_at_f_star(&self, f_star: f64) -> Result<(f64, f64), EvalError> {
         let h = self.solve_h(f_star, 1.0)?;
         let (force, d_force) = self.force(h);
-        let mu_at = |h: f64| -> Result<f64, EvalError> {
-            let c = self.at_h_star(h)?;
-            c.mu.ok_or(EvalError::NoMu {
-                f_star: c.f_star,
-                h_star: c.h_star,
-            })
-        };
+        let mu_at = |h: f64| -> Result<f64, EvalError> { self.at_h_star(h)?.mu_or_err() };
         // A step that moves F* by about 0.1%, at most 1e-3·(1 + |h*|): where
         // dF*/dh* nearly vanishes (a J-shaped end meeting a regime
         // boundary) the step would otherwise leave the contact altogether.
