@@ -43,13 +43,17 @@ const LANES: usize = 8;
 #[non_exhaustive]
 pub enum FilterError {
     /// The cut-off is not finite and > 0.
-    #[error("the cut-off wavelength lambda = {lambda:e} m is out of range: the cut-off must be > 0 and finite (metres)")]
+    #[error(
+        "the cut-off wavelength lambda = {lambda:e} m is out of range: the cut-off must be > 0 and finite (metres)"
+    )]
     Cutoff {
         /// The cut-off given (metres).
         lambda: f64,
     },
     /// The cut-off is shorter than two sampling intervals.
-    #[error("the cut-off wavelength lambda = {lambda:e} m is out of range: must be at least 2·max(dx, dy) = {min:e} m")]
+    #[error(
+        "the cut-off wavelength lambda = {lambda:e} m is out of range: must be at least 2·max(dx, dy) = {min:e} m"
+    )]
     TooShort {
         /// The cut-off given (metres).
         lambda: f64,

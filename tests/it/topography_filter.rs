@@ -384,10 +384,7 @@ fn refusals_name_the_numbers() {
     );
     assert_eq!(e.kind(), ErrorKind::Domain);
     let msg = e.to_string();
-    assert!(
-        msg.contains("2.9e-6") && msg.contains("3e-6"),
-        "{msg}"
-    );
+    assert!(msg.contains("2.9e-6") && msg.contains("3e-6"), "{msg}");
     assert!(s_filter(&map, 3e-6).is_ok());
 
     let e = l_filter(&map, 40.5e-6).unwrap_err();
