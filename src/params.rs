@@ -1,6 +1,8 @@
 //! Model parameters: dimensionless (MODEL.md §1) or from physical quantities.
 
+use crate::bound::{Bound, End};
 use crate::distribution::HeightDistribution;
+use crate::gw::{sigma_s_ratio, BETA_MIN};
 
 /// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
@@ -140,9 +142,7 @@ impl Constants {
     /// Checks every constant against MODEL.md §1 and the numerical limits
     /// documented on the fields.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("beta", self.beta, "in (0.01928, 100]", |v| {
-            v > 0.0 && v <= BETA_MAX && beta_admissible(v)
-        })?;
+        check_in("beta", self.beta, &BETA)?;
         check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
         check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
             (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
@@ -178,8 +178,6 @@ pub const DEFAULT_BETA: f64 = 0.04;
 pub const DEFAULT_NU: f64 = 0.3;
 /// Default intermolecular distance ε* (MODEL.md §6, item 3).
 pub const DEFAULT_EPS_STAR: f64 = 0.004;
-/// β must exceed this for σ_s/σ = (1 − 3.717e-4/β²)^½ to be real.
-pub const BETA_MIN: f64 = 0.019_279_523_8;
 
 // Upper (and for ψ, ε* lower) limits. MODEL.md §1 only asks ψ, ε* > 0 and
 // θ ≥ 0, but far outside these bounds the model degenerates in double
@@ -194,6 +192,11 @@ pub const PSI_MAX: f64 = 1e3;
 pub const THETA_MAX: f64 = 1e3;
 /// Largest accepted β.
 pub const BETA_MAX: f64 = 100.0;
+/// The accepted β: (β_min, 100] (σ_s real, [`BETA_MIN`]).
+static BETA: Bound = Bound::new(End::Open(BETA_MIN), End::Closed(BETA_MAX));
+/// The β at which σ_s is real (> [`BETA_MIN`]): what a β computed from
+/// physical inputs or a measured surface must satisfy.
+pub(crate) static BETA_ADMISSIBLE: Bound = Bound::above(BETA_MIN);
 /// Smallest accepted ε*.
 pub const EPS_STAR_MIN: f64 = 1e-9;
 /// Largest accepted ε*.
@@ -287,7 +290,7 @@ impl Params {
         check("delta_gamma", phys.delta_gamma, ">= 0 J/m²", |v| v >= 0.0)?;
         check("epsilon", phys.epsilon, "> 0 m", positive)?;
         let beta = phys.density * phys.radius * phys.sigma;
-        check("beta (= density·radius·sigma)", beta, "> 0.01928", beta_admissible)?;
+        check_in("beta (= density·radius·sigma)", beta, &BETA_ADMISSIBLE)?;
         let inv_e = (1.0 - phys.nu1 * phys.nu1) / phys.e1 + (1.0 - phys.nu2 * phys.nu2) / phys.e2;
         let e = 1.0 / inv_e;
         let k = hardness_coefficient(phys.nu1);
@@ -381,6 +384,20 @@ pub struct ParamError {
     pub range: &'static str,
 }
 
+/// Rejects NaN, infinities and values outside `bound`, which states
+/// itself in the message.
+pub(crate) fn check_in(name: &'static str, value: f64, bound: &'static Bound) -> Result<(), ParamError> {
+    if value.is_finite() && bound.contains(value) {
+        Ok(())
+    } else {
+        Err(ParamError {
+            name,
+            value,
+            range: bound.range(),
+        })
+    }
+}
+
 /// Rejects NaN, infinities and values failing `ok`.
 pub(crate) fn check(
     name: &'static str,
@@ -398,21 +415,6 @@ pub(crate) fn check(
 /// Hardness coefficient `K = 0.454 + 0.41ν` (MODEL.md §2).
 pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
     0.454 + 0.41 * nu
-}
-
-/// `1 − 3.717e-4/β²`, the square of σ_s/σ (McCool; MODEL.md §2).
-fn sigma_s_ratio_squared(beta: f64) -> f64 {
-    1.0 - 3.717e-4 / (beta * beta)
-}
-
-/// Whether σ_s/σ is real and positive at `beta` (NaN is not).
-fn beta_admissible(beta: f64) -> bool {
-    sigma_s_ratio_squared(beta) > 0.0
-}
-
-/// `σ_s/σ = (1 − 3.717e-4/β²)^½` (McCool; MODEL.md §2).
-pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
-    sigma_s_ratio_squared(beta).sqrt()
 }
 
 impl crate::Classify for ParamError {
@@ -440,6 +442,20 @@ mod tests {
             "eps_star"
         );
         assert!(Params::new(1.0, 0.0).beta(0.0193).validate().is_ok());
+    }
+
+    #[test]
+    fn beta_is_checked_against_beta_min() {
+        let beta = |b: f64| Params::new(1.0, 0.0).beta(b).validate();
+        assert_eq!(
+            beta(0.019).unwrap_err().to_string(),
+            "beta = 0.019 is out of range: must be in (0.01928, 100]"
+        );
+        assert!(beta(BETA_MIN).is_err() && beta(BETA_MIN.next_up()).is_ok());
+        assert!(beta(BETA_MAX).is_ok() && beta(BETA_MAX.next_up()).is_err());
+        // σ_s/σ is real exactly above BETA_MIN.
+        assert!(sigma_s_ratio(BETA_MIN).is_nan() || sigma_s_ratio(BETA_MIN) == 0.0);
+        assert!(sigma_s_ratio(BETA_MIN.next_up()) > 0.0);
     }
 
     #[test]
@@ -474,5 +490,13 @@ mod tests {
         assert!((p.constants.eps_star - 0.006).abs() < 1e-12);
         let bad = Physical { hardness: -1.0, ..phys };
         assert_eq!(Params::from_physical(&bad).unwrap_err().name, "hardness");
+        let rough = Physical {
+            density: 0.019 / (20e-6 * 50e-9),
+            ..phys
+        };
+        assert_eq!(
+            Params::from_physical(&rough).unwrap_err().to_string(),
+            "beta (= density·radius·sigma) = 0.019 is out of range: must be > 0.01928"
+        );
     }
 }

@@ -16,7 +16,8 @@
 use super::asperity::{self, adhesion, load, CebCapacity, FRICTION_ELASTIC, X0, X_ELASTIC, X_EP1, X_PLASTIC};
 use super::quadrature::{Rule, NODES};
 use crate::distribution::{Density, End, PowerTails, JACOBI_POWER_MAX};
-use crate::params::{hardness_coefficient, sigma_s_ratio, Fit, Kind, Params};
+use crate::gw::sigma_s_ratio;
+use crate::params::{hardness_coefficient, Fit, Kind, Params};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`
 /// relative to its value at the start of the integral (below 1e-17, far

@@ -2,10 +2,12 @@
 //! spectral moments m0, m2, m4 (MODEL.md §10).
 
 use super::{finite, positive, StatsError};
-use std::f64::consts::PI;
+use crate::bound::Bound;
+use crate::gw;
 
-/// 16/π − 3√3 + 1 = 0.89680576…: α must exceed it (σ_s real, MODEL.md §10).
-const ALPHA_MIN: f64 = 16.0 / PI - 3.0 * 1.732_050_807_568_877_2 + 1.0;
+/// The bandwidths α at which σ_s is real: > 16/π − 3√3 + 1 = 0.89680576…
+/// (MODEL.md §10).
+pub(super) static ALPHA_ADMISSIBLE: Bound = Bound::above(gw::ALPHA_MIN);
 
 /// α, η, R, β, σ_s, y_s from m0, m2, m4 (MODEL.md §10).
 pub(super) struct Derived {
@@ -23,17 +25,17 @@ impl Derived {
         positive("m2", m2)?;
         finite("m4", m4)?;
         let alpha = m0 * m4 / (m2 * m2);
-        let beta = alpha.max(0.0).sqrt() / (16.0 * (3.0 * PI).sqrt());
-        if !(alpha > ALPHA_MIN && alpha.is_finite()) {
+        let beta = gw::beta_of_alpha(alpha);
+        if !(ALPHA_ADMISSIBLE.contains(alpha) && alpha.is_finite()) {
             return Err(StatsError::Bandwidth { alpha, beta });
         }
         let derived = Derived {
             alpha,
-            eta: m4 / (6.0 * PI * 3f64.sqrt() * m2),
-            radius: 0.375 * (PI / m4).sqrt(),
+            eta: gw::summit_density(m2, m4),
+            radius: gw::summit_radius(m4),
             beta,
-            sigma_s: m0.sqrt() * (1.0 - ALPHA_MIN / alpha).sqrt(),
-            y_s: 4.0 * (m0 / (PI * alpha)).sqrt(),
+            sigma_s: m0.sqrt() * gw::sigma_s_ratio_of_alpha(alpha),
+            y_s: gw::summit_mean_height(m0, alpha),
         };
         positive("eta", derived.eta)?;
         positive("radius", derived.radius)?;
@@ -48,8 +50,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn alpha_min_is_the_constant() {
-        assert!((ALPHA_MIN - 0.896_805_76).abs() < 1e-8);
-        assert!((ALPHA_MIN - (16.0 / PI - 3.0 * 3f64.sqrt() + 1.0)).abs() < 1e-15);
+    fn the_bandwidth_refusal_states_both_bounds() {
+        let e = StatsError::Bandwidth { alpha: 0.5, beta: 0.01 };
+        assert_eq!(
+            e.to_string(),
+            "alpha = 0.5 is out of range: must be > 0.8968 (beta = 0.01 must be > 0.01928), else sigma_s is imaginary"
+        );
+        assert!(!ALPHA_ADMISSIBLE.contains(gw::ALPHA_MIN) && ALPHA_ADMISSIBLE.contains(gw::ALPHA_MIN.next_up()));
+        assert!(Derived::new(1.0, 1.0, gw::ALPHA_MIN).is_err());
+        assert!(Derived::new(1.0, 1.0, 1.0).is_ok());
     }
 }

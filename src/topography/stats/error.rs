@@ -56,8 +56,9 @@ pub enum StatsError {
     },
     /// α ≤ 0.8968 (β ≤ 0.01928): σ_s would be imaginary.
     #[error(
-        "alpha = {alpha} is out of range: must be > 0.8968 (beta = {beta} must be > 0.01928), \
-         else sigma_s is imaginary"
+        "alpha = {alpha} is out of range: must be {} (beta = {beta} must be {}), else sigma_s is imaginary",
+        super::derived::ALPHA_ADMISSIBLE.range(),
+        crate::params::BETA_ADMISSIBLE.range()
     )]
     Bandwidth {
         /// The bandwidth α = m0·m4/m2².
