@@ -72,7 +72,7 @@ pub enum StatsError {
         /// Missing points.
         missing: usize,
     },
-    /// [`combine`](super::combine) of a profile with a map, or a
+    /// [`combine`](super::combine()) of a profile with a map, or a
     /// [`Surface::join`](crate::topography::Surface::join) of surfaces that
     /// are not two single ones taken alike.
     #[error("cannot combine these surfaces: both must be profiles or both maps, single surfaces, with the same detrending and derivative")]

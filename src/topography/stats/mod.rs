@@ -17,10 +17,11 @@
 //! filters before the statistics), `sums` (the fit sums, the detrending and
 //! the finite-difference sweeps), `spectral` (the spectral moments),
 //! `derived` (the Greenwood–Williamson quantities from m0, m2, m4),
-//! `combine` (two surfaces in one) and `limits` (heights at f64's limits).
+//! `composite` (the equivalent surface of two, [`combine`]) and `limits`
+//! (heights at f64's limits).
 
 mod band;
-mod combine;
+mod composite;
 mod derived;
 mod error;
 mod limits;
@@ -28,7 +29,7 @@ mod spectral;
 mod sums;
 mod warning;
 
-pub use combine::combine;
+pub use composite::combine;
 pub use error::StatsError;
 pub use warning::Warning;
 
@@ -118,7 +119,7 @@ crate::named!(
 ///
 /// The pipeline is ISO 25178-3's, in its order: S-filter (λs, the
 /// Gaussian of ISO 16610-61, removes wavelengths shorter than λs) →
-/// F-operation ([`Detrend`]) → L-filter (λc: the roughness is z − G_λc[z],
+/// F-operation ([`Detrend`]) → L-filter (λc: the roughness is z − G_λc\[z\],
 /// removing wavelengths longer than λc) → statistics.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StatsOptions {

@@ -21,7 +21,7 @@ pub enum Warning {
         /// Its value.
         value: f64,
     },
-    /// [`combine`](super::combine): the two surfaces were sampled at intervals differing by
+    /// [`combine`](super::combine()): the two surfaces were sampled at intervals differing by
     /// more than 1 %, so their m2, m4 belong to different bands.
     IntervalMismatch {
         /// `"dx"` or `"dy"`.
