@@ -104,7 +104,7 @@ pub struct ScaleRow {
 /// The scale-dependent rms slope at each distance (metres): along x of a
 /// profile, along x and y of a map; upwind differences `[h(x + d) −
 /// h(x)]/d` with linear interpolation between grid points (see the
-/// [module documentation](self) for the stencils and the trimmed edges).
+/// module documentation (`src/topography/scale.rs`) for the stencils and the trimmed edges).
 /// SurfaceTopography's `scale_dependent_statistical_property(lambda x,
 /// y=None: np.mean(x*x), n=1, distance=distances, reliable=False)`, square
 /// rooted, per direction (Sanner et al. 2022, doi
@@ -127,7 +127,7 @@ pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<Sc
 /// distance (metres): along x of a profile, along x and y of a map;
 /// central differences `[h(x − d/2) − 2h(x) + h(x + d/2)]/(d/2)²` with
 /// linear interpolation between grid points (see the
-/// [module documentation](self)). SurfaceTopography's
+/// module documentation (`src/topography/scale.rs`)). SurfaceTopography's
 /// `scale_dependent_statistical_property(lambda x, y=None: np.mean(x*x),
 /// n=2, distance=distances, reliable=False)`, square rooted, per direction
 /// (Sanner et al. 2022, doi 10.1016/j.apsadv.2021.100190).

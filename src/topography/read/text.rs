@@ -2,7 +2,7 @@
 //! per line; blank lines and lines starting with `#` are skipped; `nan`
 //! (any case) marks a missing point. By the number of columns: 1 = a
 //! profile, 2 = `x z` pairs, 3 = `x y z` triples on a regular grid,
-//! otherwise (or with [`Format::Matrix`](super::Format::Matrix)) a matrix,
+//! otherwise (or with [`Format::MATRIX`](super::Format::MATRIX)) a matrix,
 //! rows = y. A single line is a profile.
 
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source, CHUNK};
