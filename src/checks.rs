@@ -2,6 +2,7 @@
 //! range) and one error naming the input, its value and the range. A leaf:
 //! the parameters and the distributions both use it.
 
+use crate::bound::Bound;
 use crate::error::{Classify, ErrorKind};
 use crate::num::Shortest;
 
@@ -16,6 +17,20 @@ pub struct ParamError {
     pub value: f64,
     /// The valid range, in words.
     pub range: &'static str,
+}
+
+/// Rejects NaN, infinities and values outside `bound`, which states
+/// itself in the message.
+pub(crate) fn check_in(name: &'static str, value: f64, bound: &'static Bound) -> Result<(), ParamError> {
+    if value.is_finite() && bound.contains(value) {
+        Ok(())
+    } else {
+        Err(ParamError {
+            name,
+            value,
+            range: bound.range(),
+        })
+    }
 }
 
 /// Rejects NaN, infinities and values failing `ok`.

@@ -35,6 +35,7 @@
 // Every unsafe block says why it is sound; every unsafe fn states its contract.
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 
+mod bound;
 #[cfg(feature = "builder")]
 pub mod build;
 mod checks;
@@ -45,6 +46,7 @@ mod error;
 pub mod export;
 #[cfg(feature = "plot")]
 pub mod figures;
+mod gw;
 #[cfg(feature = "builder")]
 mod io;
 mod load;
@@ -69,6 +71,7 @@ pub use distribution::{
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
 };
 pub use error::{Classify, ErrorKind};
+pub use gw::BETA_MIN;
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
@@ -77,8 +80,8 @@ pub use num::Shortest;
 #[allow(deprecated)]
 pub use params::Kind;
 pub use params::{
-    Constants, Fit, Materials, ModelKind, Params, Physical, BETA_MAX, BETA_MIN, DEFAULT_BETA, DEFAULT_EPS_STAR,
-    DEFAULT_NU, EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
+    Constants, Fit, Materials, ModelKind, Params, Physical, BETA_MAX, DEFAULT_BETA, DEFAULT_EPS_STAR, DEFAULT_NU,
+    EPS_STAR_MAX, EPS_STAR_MIN, PSI_MAX, PSI_MIN, THETA_MAX,
 };
 pub use spline::{Axis, Scale};
 pub use table::{

@@ -1,7 +1,9 @@
 //! Model parameters: dimensionless (MODEL.md §1) or from physical quantities.
 
-use crate::checks::{check, ParamError};
+use crate::bound::{Bound, End};
+use crate::checks::{check_in, ParamError};
 use crate::distribution::HeightDistribution;
+use crate::gw::{sigma_s_ratio, BETA_MIN};
 
 /// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
@@ -159,13 +161,9 @@ impl Constants {
     /// Checks every constant against MODEL.md §1 and the numerical limits
     /// documented on the fields.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("beta", self.beta, "in (0.01928, 100]", |v| {
-            v > 0.0 && v <= BETA_MAX && beta_admissible(v)
-        })?;
-        check("nu", self.nu, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
-        check("eps_star", self.eps_star, "in [1e-9, 100]", |v| {
-            (EPS_STAR_MIN..=EPS_STAR_MAX).contains(&v)
-        })?;
+        check_in("beta", self.beta, &BETA)?;
+        check_in("nu", self.nu, &NU)?;
+        check_in("eps_star", self.eps_star, &EPS_STAR)?;
         self.distribution.validate()
     }
 }
@@ -197,8 +195,6 @@ pub const DEFAULT_BETA: f64 = 0.04;
 pub const DEFAULT_NU: f64 = 0.3;
 /// Default intermolecular distance ε* (MODEL.md §6, item 3).
 pub const DEFAULT_EPS_STAR: f64 = 0.004;
-/// β must exceed this for σ_s/σ = (1 − 3.717e-4/β²)^½ to be real.
-pub const BETA_MIN: f64 = 0.019_279_523_8;
 
 // Upper (and for ψ, ε* lower) limits. MODEL.md §1 only asks ψ, ε* > 0 and
 // θ ≥ 0, but far outside these bounds the model degenerates in double
@@ -213,6 +209,21 @@ pub const PSI_MAX: f64 = 1e3;
 pub const THETA_MAX: f64 = 1e3;
 /// Largest accepted β.
 pub const BETA_MAX: f64 = 100.0;
+/// The accepted ψ: [1e-3, 1e3].
+static PSI: Bound = Bound::new(End::Closed(PSI_MIN), End::Closed(PSI_MAX));
+/// θ >= 0 (checked first: a negative θ is refused as such).
+static THETA_NON_NEGATIVE: Bound = Bound::at_least(0.0);
+/// θ <= 1e3.
+static THETA_AT_MOST: Bound = Bound::at_most(THETA_MAX);
+/// The accepted β: (β_min, 100] (σ_s real, [`BETA_MIN`]).
+static BETA: Bound = Bound::new(End::Open(BETA_MIN), End::Closed(BETA_MAX));
+/// The accepted Poisson's ratio of the softer material: [0, 0.5).
+static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
+/// The accepted ε*: [1e-9, 100].
+static EPS_STAR: Bound = Bound::new(End::Closed(EPS_STAR_MIN), End::Closed(EPS_STAR_MAX));
+/// The β at which σ_s is real (> [`BETA_MIN`]): what a β computed from
+/// physical inputs or a measured surface must satisfy.
+pub(crate) static BETA_ADMISSIBLE: Bound = Bound::above(BETA_MIN);
 /// Smallest accepted ε*.
 pub const EPS_STAR_MIN: f64 = 1e-9;
 /// Largest accepted ε*.
@@ -271,9 +282,9 @@ impl Params {
     /// documented on the fields. The one place parameters are validated;
     /// [`Model::new`](crate::Model::new) calls it.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check("psi", self.psi, "in [1e-3, 1e3]", |v| (PSI_MIN..=PSI_MAX).contains(&v))?;
-        check("theta", self.theta, ">= 0", |v| v >= 0.0)?;
-        check("theta", self.theta, "<= 1e3", |v| v <= THETA_MAX)?;
+        check_in("psi", self.psi, &PSI)?;
+        check_in("theta", self.theta, &THETA_NON_NEGATIVE)?;
+        check_in("theta", self.theta, &THETA_AT_MOST)?;
         self.constants.validate()
     }
 
@@ -294,19 +305,23 @@ impl Params {
     /// assert!((p.constants.eps_star - 0.004).abs() < 1e-12);
     /// ```
     pub fn from_physical(phys: &Physical) -> Result<Params, ParamError> {
-        let positive = |v: f64| v > 0.0;
-        check("e1", phys.e1, "> 0 Pa", positive)?;
-        check("e2", phys.e2, "> 0 Pa", positive)?;
-        check("nu1", phys.nu1, "in [0, 0.5)", |v| (0.0..0.5).contains(&v))?;
-        check("nu2", phys.nu2, "in [-1, 0.5]", |v| (-1.0..=0.5).contains(&v))?;
-        check("hardness", phys.hardness, "> 0 Pa", positive)?;
-        check("sigma", phys.sigma, "> 0 m", positive)?;
-        check("radius", phys.radius, "> 0 m", positive)?;
-        check("density", phys.density, "> 0 per m²", positive)?;
-        check("delta_gamma", phys.delta_gamma, ">= 0 J/m²", |v| v >= 0.0)?;
-        check("epsilon", phys.epsilon, "> 0 m", positive)?;
+        static PASCALS: Bound = Bound::above(0.0).unit("Pa");
+        static METRES: Bound = Bound::above(0.0).unit("m");
+        static DENSITY: Bound = Bound::above(0.0).unit("per m²");
+        static ENERGY: Bound = Bound::at_least(0.0).unit("J/m²");
+        static NU2: Bound = Bound::new(End::Closed(-1.0), End::Closed(0.5));
+        check_in("e1", phys.e1, &PASCALS)?;
+        check_in("e2", phys.e2, &PASCALS)?;
+        check_in("nu1", phys.nu1, &NU)?;
+        check_in("nu2", phys.nu2, &NU2)?;
+        check_in("hardness", phys.hardness, &PASCALS)?;
+        check_in("sigma", phys.sigma, &METRES)?;
+        check_in("radius", phys.radius, &METRES)?;
+        check_in("density", phys.density, &DENSITY)?;
+        check_in("delta_gamma", phys.delta_gamma, &ENERGY)?;
+        check_in("epsilon", phys.epsilon, &METRES)?;
         let beta = phys.density * phys.radius * phys.sigma;
-        check("beta (= density·radius·sigma)", beta, "> 0.01928", beta_admissible)?;
+        check_in("beta (= density·radius·sigma)", beta, &BETA_ADMISSIBLE)?;
         let inv_e = (1.0 - phys.nu1 * phys.nu1) / phys.e1 + (1.0 - phys.nu2 * phys.nu2) / phys.e2;
         let e = 1.0 / inv_e;
         let k = hardness_coefficient(phys.nu1);
@@ -392,21 +407,6 @@ pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
     0.454 + 0.41 * nu
 }
 
-/// `1 − 3.717e-4/β²`, the square of σ_s/σ (McCool; MODEL.md §2).
-fn sigma_s_ratio_squared(beta: f64) -> f64 {
-    1.0 - 3.717e-4 / (beta * beta)
-}
-
-/// Whether σ_s/σ is real and positive at `beta` (NaN is not).
-fn beta_admissible(beta: f64) -> bool {
-    sigma_s_ratio_squared(beta) > 0.0
-}
-
-/// `σ_s/σ = (1 − 3.717e-4/β²)^½` (McCool; MODEL.md §2).
-pub(crate) fn sigma_s_ratio(beta: f64) -> f64 {
-    sigma_s_ratio_squared(beta).sqrt()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -425,6 +425,58 @@ mod tests {
             "eps_star"
         );
         assert!(Params::new(1.0, 0.0).beta(0.0193).validate().is_ok());
+    }
+
+    #[test]
+    fn messages_state_the_bounds() {
+        let p = Params::new(1.0, 0.0);
+        let text = |r: Result<(), ParamError>| r.unwrap_err().to_string();
+        let cases = [
+            (
+                text(Params::new(0.0, 0.0).validate()),
+                "psi = 0 is out of range: must be in [1e-3, 1e3]",
+            ),
+            (
+                text(Params::new(1.0, 2e3).validate()),
+                "theta = 2000 is out of range: must be <= 1e3",
+            ),
+            (
+                text(p.clone().nu(0.5).validate()),
+                "nu = 0.5 is out of range: must be in [0, 0.5)",
+            ),
+            (
+                text(p.clone().eps_star(1e3).validate()),
+                "eps_star = 1000 is out of range: must be in [1e-9, 100]",
+            ),
+        ];
+        for (got, want) in cases {
+            assert_eq!(got, want);
+        }
+        for (v, ok) in [
+            (1e-3, true),
+            (1e-3f64.next_down(), false),
+            (1e3, true),
+            (1e3f64.next_up(), false),
+        ] {
+            assert_eq!(Params::new(v, 0.0).validate().is_ok(), ok, "{v}");
+        }
+        assert!(Params::new(1.0, -0.0).validate().is_ok());
+        assert!(p.clone().nu(0.0).validate().is_ok() && p.clone().nu(0.5f64.next_down()).validate().is_ok());
+        assert!(p.clone().eps_star(1e-9).validate().is_ok() && p.clone().eps_star(100.0).validate().is_ok());
+    }
+
+    #[test]
+    fn beta_is_checked_against_beta_min() {
+        let beta = |b: f64| Params::new(1.0, 0.0).beta(b).validate();
+        assert_eq!(
+            beta(0.019).unwrap_err().to_string(),
+            "beta = 0.019 is out of range: must be in (0.01928, 100]"
+        );
+        assert!(beta(BETA_MIN).is_err() && beta(BETA_MIN.next_up()).is_ok());
+        assert!(beta(BETA_MAX).is_ok() && beta(BETA_MAX.next_up()).is_err());
+        // σ_s/σ is real exactly above BETA_MIN.
+        assert!(sigma_s_ratio(BETA_MIN).is_nan() || sigma_s_ratio(BETA_MIN) == 0.0);
+        assert!(sigma_s_ratio(BETA_MIN.next_up()) > 0.0);
     }
 
     #[test]
@@ -459,5 +511,36 @@ mod tests {
         assert!((p.constants.eps_star - 0.006).abs() < 1e-12);
         let bad = Physical { hardness: -1.0, ..phys };
         assert_eq!(Params::from_physical(&bad).unwrap_err().name, "hardness");
+        let refused = |phys: Physical| Params::from_physical(&phys).unwrap_err().to_string();
+        assert_eq!(
+            refused(Physical { e1: -1.0, ..phys }),
+            "e1 = -1 is out of range: must be > 0 Pa"
+        );
+        assert_eq!(
+            refused(Physical { nu2: 0.6, ..phys }),
+            "nu2 = 0.6 is out of range: must be in [-1, 0.5]"
+        );
+        assert_eq!(
+            refused(Physical { density: 0.0, ..phys }),
+            "density = 0 is out of range: must be > 0 per m²"
+        );
+        assert_eq!(
+            refused(Physical {
+                delta_gamma: -1.0,
+                ..phys
+            }),
+            "delta_gamma = -1 is out of range: must be >= 0 J/m²"
+        );
+        assert_eq!(
+            refused(Physical { radius: 0.0, ..phys }),
+            "radius = 0 is out of range: must be > 0 m"
+        );
+        let rough = Physical {
+            density: 0.019 / (20e-6 * 50e-9),
+            ..phys
+        };
+        let text = Params::from_physical(&rough).unwrap_err().to_string();
+        assert!(text.starts_with("beta (= density·radius·sigma) = 0.0190"), "{text}");
+        assert!(text.ends_with(" is out of range: must be > 0.01928"), "{text}");
     }
 }

@@ -16,7 +16,8 @@
 use super::asperity::{self, adhesion, load, X_ELASTIC};
 use super::laws::{ContactLaw, Law, LoadLaw, Regime};
 use crate::distribution::{Density, End, PowerTails, JACOBI_POWER_MAX};
-use crate::params::{hardness_coefficient, sigma_s_ratio, Params};
+use crate::gw::sigma_s_ratio;
+use crate::params::{hardness_coefficient, Params};
 use crate::quadrature::{Rule, NODES};
 
 /// Gaussian tails are cut where the density has fallen by `e^−TAIL`

@@ -41,7 +41,7 @@ pub const MAX_POINTS: u64 = 1 << 28;
 const CONFLICT_REL: f64 = 1e-6;
 
 /// A file format the readers know: a handle to its entry in the
-/// registry [`Format::all`]. Compare by [`Format::name`].
+/// registry ([`Format::all`]). Compare by [`Format::name`].
 #[derive(Clone, Copy)]
 pub struct Format(&'static Entry);
 

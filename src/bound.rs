@@ -1,0 +1,179 @@
+//! A range of accepted values that states itself: one constant gives both
+//! the check and the words of the message (`in (0.01928, 100]`, `> 0 Pa`),
+//! so the two cannot drift apart.
+//!
+//! A leaf module: it uses nothing else of the crate.
+
+use std::fmt::Write as _;
+use std::sync::OnceLock;
+
+/// One end of a [`Bound`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum End {
+    /// The value must be beyond this one (`(`, `>`).
+    Open(f64),
+    /// The value may equal this one (`[`, `>=`).
+    Closed(f64),
+    /// No limit at this end.
+    Unbounded,
+}
+
+/// A range of accepted values, and its description, made once on first
+/// use (declare bounds as `static`s: the description is kept in them).
+#[derive(Debug)]
+pub(crate) struct Bound {
+    lo: End,
+    hi: End,
+    unit: &'static str,
+    text: OnceLock<String>,
+}
+
+impl Bound {
+    /// The values between `lo` and `hi`.
+    pub(crate) const fn new(lo: End, hi: End) -> Bound {
+        Bound {
+            lo,
+            hi,
+            unit: "",
+            text: OnceLock::new(),
+        }
+    }
+
+    /// The values above `lo` (`> lo`).
+    pub(crate) const fn above(lo: f64) -> Bound {
+        Bound::new(End::Open(lo), End::Unbounded)
+    }
+
+    /// The values from `lo` up (`>= lo`).
+    pub(crate) const fn at_least(lo: f64) -> Bound {
+        Bound::new(End::Closed(lo), End::Unbounded)
+    }
+
+    /// The values up to `hi` (`<= hi`).
+    pub(crate) const fn at_most(hi: f64) -> Bound {
+        Bound::new(End::Unbounded, End::Closed(hi))
+    }
+
+    /// The same range, its description ending in `unit` (`> 0 Pa`).
+    pub(crate) const fn unit(self, unit: &'static str) -> Bound {
+        let (lo, hi) = (self.lo, self.hi);
+        // `self`'s description is empty (not yet made): nothing to free,
+        // and a const fn may not drop it.
+        std::mem::forget(self);
+        Bound {
+            lo,
+            hi,
+            unit,
+            text: OnceLock::new(),
+        }
+    }
+
+    /// Whether `value` is in the range (NaN never is).
+    pub(crate) fn contains(&self, value: f64) -> bool {
+        let lo = match self.lo {
+            End::Open(lo) => value > lo,
+            End::Closed(lo) => value >= lo,
+            End::Unbounded => !value.is_nan(),
+        };
+        let hi = match self.hi {
+            End::Open(hi) => value < hi,
+            End::Closed(hi) => value <= hi,
+            End::Unbounded => !value.is_nan(),
+        };
+        lo && hi
+    }
+
+    /// The range in words, as messages state it after "must be ":
+    /// `in (0.01928, 100]`, `in [0, 0.5)`, `>= 0`, `<= 1e3`, `> 0 Pa`.
+    pub(crate) fn range(&'static self) -> &'static str {
+        self.text.get_or_init(|| self.describe())
+    }
+
+    fn describe(&self) -> String {
+        let mut text = match (self.lo, self.hi) {
+            (End::Unbounded, End::Unbounded) => String::from("any number"),
+            (lo, End::Unbounded) => match lo {
+                End::Open(lo) => format!("> {}", number(lo)),
+                _ => format!(">= {}", number(end_value(lo))),
+            },
+            (End::Unbounded, hi) => match hi {
+                End::Open(hi) => format!("< {}", number(hi)),
+                _ => format!("<= {}", number(end_value(hi))),
+            },
+            (lo, hi) => format!(
+                "in {}{}, {}{}",
+                if matches!(lo, End::Open(_)) { '(' } else { '[' },
+                number(end_value(lo)),
+                number(end_value(hi)),
+                if matches!(hi, End::Open(_)) { ')' } else { ']' },
+            ),
+        };
+        if !self.unit.is_empty() {
+            let _ = write!(text, " {}", self.unit);
+        }
+        text
+    }
+}
+
+fn end_value(end: End) -> f64 {
+    match end {
+        End::Open(x) | End::Closed(x) => x,
+        End::Unbounded => f64::NAN,
+    }
+}
+
+/// `x` rounded to 4 significant digits, in the shorter of plain and
+/// exponent form, plain on a tie: `0.01928`, `0.5`, `100`, `1e-3`, `1e3`.
+fn number(x: f64) -> String {
+    let r: f64 = format!("{x:.3e}").parse().unwrap_or(x);
+    let (plain, exponent) = (format!("{r}"), format!("{r:e}"));
+    if exponent.len() < plain.len() {
+        exponent
+    } else {
+        plain
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bounds_state_themselves() {
+        static BETA: Bound = Bound::new(End::Open(0.019_279_522_815_671_55), End::Closed(100.0));
+        static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
+        static PSI: Bound = Bound::new(End::Closed(1e-3), End::Closed(1e3));
+        static EPS: Bound = Bound::new(End::Closed(1e-9), End::Closed(100.0));
+        static NU2: Bound = Bound::new(End::Closed(-1.0), End::Closed(0.5));
+        static E: Bound = Bound::above(0.0).unit("Pa");
+        static GAMMA: Bound = Bound::at_least(0.0).unit("J/m²");
+        static THETA: Bound = Bound::at_most(1e3);
+        static ALPHA: Bound = Bound::above(0.896_805_76);
+        for (bound, text) in [
+            (&BETA, "in (0.01928, 100]"),
+            (&NU, "in [0, 0.5)"),
+            (&PSI, "in [1e-3, 1e3]"),
+            (&EPS, "in [1e-9, 100]"),
+            (&NU2, "in [-1, 0.5]"),
+            (&E, "> 0 Pa"),
+            (&GAMMA, ">= 0 J/m²"),
+            (&THETA, "<= 1e3"),
+            (&ALPHA, "> 0.8968"),
+        ] {
+            assert_eq!(bound.range(), text);
+            assert_eq!(bound.range(), text, "kept");
+        }
+    }
+
+    #[test]
+    fn bounds_check_their_ends() {
+        static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
+        assert!(NU.contains(0.0) && NU.contains(0.4999) && !NU.contains(0.5) && !NU.contains(-1e-300));
+        assert!(!NU.contains(f64::NAN));
+        static POSITIVE: Bound = Bound::above(0.0);
+        assert!(POSITIVE.contains(f64::MIN_POSITIVE) && !POSITIVE.contains(0.0) && !POSITIVE.contains(-0.0));
+        assert!(POSITIVE.contains(f64::INFINITY) && !POSITIVE.contains(f64::NAN));
+        static MOST: Bound = Bound::at_most(1e3);
+        assert!(MOST.contains(1e3) && !MOST.contains(1e3f64.next_up()) && MOST.contains(f64::NEG_INFINITY));
+    }
+}
