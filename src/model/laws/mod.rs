@@ -8,7 +8,7 @@
 //! load law `P̄/P̄_c` on each, which adhesion row applies there, the
 //! friction row `Q̄/P̄_c`, and (read off the regimes) the jumps of the laws
 //! at the regime boundaries. The integrals themselves (panels, Gauss rules,
-//! the height density, the non-contact adhesion) stay in `surface.rs`, the
+//! the height density, the non-contact adhesion) stay in `surface/`, the
 //! same for every law.
 //!
 //! Dispatch is static: [`Law`] wraps the planned laws, and
