@@ -1,9 +1,12 @@
 //! What the subcommands share: failures and their exit codes, number
 //! parsing, the model's flags, progress bars, tables and output paths.
 
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use ke_friction::paper::PAPER_F_STAR_MAX;
 use ke_friction::Shortest;
-use ke_friction::{Classify, Constants, ErrorKind, Fit, HeightDistribution, Materials, Model, ModelKind, Params};
+use ke_friction::{
+    Classify, Constants, ErrorKind, Family, Fit, HeightDistribution, Materials, Model, ModelKind, Named, Params,
+};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -286,11 +289,11 @@ pub struct ConstantsArgs {
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub eps_star: Option<f64>,
     /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18; negative μ for ψ ≳ 2).
-    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
-    pub fit: FitArg,
+    #[arg(long, value_parser = named::<Fit>(), default_value_t = Fit::Consistent)]
+    pub fit: Fit,
     /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model, MODEL.md §8).
-    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
-    pub model: ModelKindArg,
+    #[arg(long, value_parser = named::<ModelKind>(), default_value_t = ModelKind::KogutEtsion)]
+    pub model: ModelKind,
     #[command(flatten)]
     pub heights: DistributionArgs,
 }
@@ -301,8 +304,8 @@ pub struct ConstantsArgs {
 #[derive(Debug, Clone, clap::Args)]
 pub struct DistributionArgs {
     /// Distribution of the asperity heights (MODEL.md §9) [default: gaussian; pearson with --skewness or --kurtosis; empirical with --heights].
-    #[arg(long, value_enum)]
-    pub distribution: Option<DistributionArg>,
+    #[arg(long, value_parser = named::<Family>())]
+    pub distribution: Option<Family>,
     /// Skewness Sk of the heights (ISO Ssk): pearson (K > Sk² + 1, |Sk| ≤ 5) or weibull (-1.1395 < Sk ≤ 2) [default: 0].
     #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
     pub skewness: Option<f64>,
@@ -323,8 +326,8 @@ impl ConstantsArgs {
             beta: self.beta.unwrap_or(d.beta),
             nu: self.nu.unwrap_or(d.nu),
             eps_star: self.eps_star.unwrap_or(d.eps_star),
-            fit: self.fit.into(),
-            kind: self.model.into(),
+            fit: self.fit,
+            kind: self.model,
             distribution: self.heights.distribution()?,
         })
     }
@@ -469,7 +472,7 @@ impl DistributionArgs {
     pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
         let heights = self.heights.as_deref().map(crate::heights::read).transpose()?;
         HeightDistribution::from_arguments(
-            self.distribution.map(DistributionArg::name),
+            self.distribution.map(Family::name),
             self.skewness,
             self.kurtosis,
             heights.as_deref(),
@@ -488,65 +491,11 @@ impl DistributionArgs {
     }
 }
 
-/// `--distribution` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum DistributionArg {
-    /// The paper's Gaussian heights.
-    Gaussian,
-    /// The Pearson system from --skewness and --kurtosis.
-    Pearson,
-    /// Weibull from --skewness.
-    Weibull,
-    /// A kernel density of the heights in --heights FILE.
-    Empirical,
-}
-
-impl DistributionArg {
-    /// The family's name, as the core spells it.
-    pub fn name(self) -> &'static str {
-        match self {
-            DistributionArg::Gaussian => "gaussian",
-            DistributionArg::Pearson => "pearson",
-            DistributionArg::Weibull => "weibull",
-            DistributionArg::Empirical => "empirical",
-        }
-    }
-}
-
-/// `--fit` values.
-#[derive(Debug, Clone, Copy, clap::ValueEnum)]
-pub enum FitArg {
-    /// MODEL.md §4 (the default).
-    Consistent,
-    /// The literal printed Eq. 18 (negative μ for ψ ≳ 2).
-    AsPrinted,
-}
-
-impl From<FitArg> for Fit {
-    fn from(f: FitArg) -> Fit {
-        match f {
-            FitArg::Consistent => Fit::Consistent,
-            FitArg::AsPrinted => Fit::AsPrinted,
-        }
-    }
-}
-
-/// `--model` values.
-#[derive(Debug, Clone, Copy, clap::ValueEnum)]
-pub enum ModelKindArg {
-    /// Kogut–Etsion (2004).
-    Ke,
-    /// CEB-type (approximate reconstruction).
-    Ceb,
-}
-
-impl From<ModelKindArg> for ModelKind {
-    fn from(k: ModelKindArg) -> ModelKind {
-        match k {
-            ModelKindArg::Ke => ModelKind::KogutEtsion,
-            ModelKindArg::Ceb => ModelKind::CebType,
-        }
-    }
+/// The value parser of a flag taking one of a core set of names
+/// ([`Named`]): `--help` lists the names, and clap refuses any other with
+/// them (so the core's parse cannot fail; its error is passed on if it did).
+pub fn named<T: Named + Send + Sync>() -> impl TypedValueParser<Value = T> {
+    PossibleValuesParser::new(T::names()).try_map(|s: String| T::parse(&s))
 }
 
 impl ModelArgs {

@@ -2,12 +2,11 @@
 //! map, μ(F*) for non-Gaussian heights. PNG or SVG by the output file's extension.
 
 use crate::args::{
-    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, DistributionArg, Failure,
-    FitArg, ModelArgs, ModelKindArg,
+    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
 };
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::topography::{psd_area, psd_profile_x, psd_profile_y, scan, Psd, ScanRange, Topography, Window};
-use ke_friction::LookupError;
+use ke_friction::{Family, Fit, LookupError, ModelKind};
 use std::path::{Path, PathBuf};
 
 /// Draw the paper's figures, a curve, or a table's error map, as PNG or SVG
@@ -185,22 +184,23 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let surface = a.read.surface("surface", &a.files)?;
             let materials = a.materials.materials(&[])?;
             let mut fits = Vec::new();
-            for family in [
-                DistributionArg::Gaussian,
-                DistributionArg::Pearson,
-                DistributionArg::Empirical,
-            ] {
-                let fit =
-                    crate::surface::params(&surface, &materials, Some(family), FitArg::Consistent, ModelKindArg::Ke)
-                        .and_then(|p| {
-                            ke_friction::Model::new(p)
-                                .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))
-                        });
+            for family in [Family::Gaussian, Family::Pearson, Family::Empirical] {
+                let fit = crate::surface::params(
+                    &surface,
+                    &materials,
+                    Some(family),
+                    Fit::Consistent,
+                    ModelKind::KogutEtsion,
+                )
+                .and_then(|p| {
+                    ke_friction::Model::new(p)
+                        .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))
+                });
                 match fit {
                     Ok(model) => fits.push((model.params().constants.distribution.to_string(), model)),
                     // A fit the surface does not admit (e.g. a skewness
                     // beyond Pearson's range) is left out, and said so.
-                    Err(f) if family != DistributionArg::Gaussian => {
+                    Err(f) if family != Family::Gaussian => {
                         errln!("note: no {} fit: {}", family.name(), f.message())
                     }
                     Err(f) => return Err(f),
@@ -288,7 +288,7 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
             let Ok(surface) = row.surface else { continue };
             let params = materials
                 .as_ref()
-                .map(|m| crate::surface::params(&surface, m, None, FitArg::Consistent, ModelKindArg::Ke))
+                .map(|m| crate::surface::params(&surface, m, None, Fit::Consistent, ModelKind::KogutEtsion))
                 .transpose()
                 .ok()
                 .flatten();

@@ -3,12 +3,12 @@
 //! load). The flags that read a surface ([`SurfaceArgs`]) and take a load
 //! ([`LoadArgs`]) are shared with `eval` and `plot`.
 
-use crate::args::{parse_f64, physical_failure, DistributionArg, Failure, FitArg, MaterialsArgs, ModelKindArg};
+use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
     read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
     SurfaceStats, Topography, MAX_POINTS,
 };
-use ke_friction::{Friction, Load, Materials, Model, Params, Shortest};
+use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Statistics of a measured surface and, with materials and a load, μ.
@@ -33,14 +33,14 @@ pub struct Args {
     #[command(flatten)]
     pub materials: MaterialsArgs,
     /// Height distribution of the model: pearson (from the measured Ssk, Sku), gaussian, weibull (from Ssk) or empirical (the measured heights) [default: pearson].
-    #[arg(long, value_enum)]
-    pub distribution: Option<DistributionArg>,
+    #[arg(long, value_parser = named::<Family>())]
+    pub distribution: Option<Family>,
     /// Friction row: consistent (MODEL.md §4), or as-printed.
-    #[arg(long, value_enum, default_value_t = FitArg::Consistent)]
-    pub fit: FitArg,
+    #[arg(long, value_parser = named::<Fit>(), default_value_t = Fit::Consistent)]
+    pub fit: Fit,
     /// Model: ke (Kogut–Etsion), or ceb (the CEB-type comparison model).
-    #[arg(long, value_enum, default_value_t = ModelKindArg::Ke)]
-    pub model: ModelKindArg,
+    #[arg(long, value_parser = named::<ModelKind>(), default_value_t = ModelKind::KogutEtsion)]
+    pub model: ModelKind,
     #[command(flatten)]
     pub load: LoadArgs,
     /// Print one JSON object (SI units; the library's record names).
@@ -80,17 +80,17 @@ pub struct SurfaceArgs {
     #[arg(long, value_name = "DY", value_parser = parse_f64, allow_hyphen_values = true)]
     pub dy: Option<f64>,
     /// Unit of the heights in .npy and text files (X3P stores metres).
-    #[arg(long, value_enum, default_value_t = Unit::M)]
-    pub z_unit: Unit,
+    #[arg(long, value_parser = named::<LengthUnit>(), default_value_t = LengthUnit::M)]
+    pub z_unit: LengthUnit,
     /// Unit of --dx, --dy and of the x, y columns of xyz text files.
-    #[arg(long, value_enum, default_value_t = Unit::M)]
-    pub xy_unit: Unit,
+    #[arg(long, value_parser = named::<LengthUnit>(), default_value_t = LengthUnit::M)]
+    pub xy_unit: LengthUnit,
     /// Detrending: the least-squares plane (a line for a profile), a line along x, or the mean only.
-    #[arg(long, value_enum, default_value_t = DetrendArg::Plane)]
-    pub detrend: DetrendArg,
+    #[arg(long, value_parser = named::<Detrend>(), default_value_t = Detrend::Plane)]
+    pub detrend: Detrend,
     /// Slope and curvature moments: non-periodic finite differences, or periodic spectral moments (periodic data, no missing points).
-    #[arg(long, value_enum, default_value_t = DerivativeArg::Fd)]
-    pub derivative: DerivativeArg,
+    #[arg(long, value_parser = named::<Derivative>(), default_value_t = Derivative::FiniteDifference)]
+    pub derivative: Derivative,
     /// The most points (heights) a surface file may have: one that declares more is refused before anything is read or allocated (reading needs about 8 bytes a point) [default: 268435456 = 2^28, 2 GiB of heights].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub max_points: Option<u64>,
@@ -137,79 +137,12 @@ fn parse_lambda(s: &str) -> Result<Lambda, String> {
     }
 }
 
-/// Length units of the heights and intervals.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum Unit {
-    /// Metres.
-    M,
-    /// Millimetres.
-    Mm,
-    /// Micrometres.
-    Um,
-    /// Nanometres.
-    Nm,
-    /// Picometres.
-    Pm,
-}
-
-impl Unit {
-    /// Metres per unit.
-    fn metres(self) -> f64 {
-        match self {
-            Unit::M => 1.0,
-            Unit::Mm => 1e-3,
-            Unit::Um => 1e-6,
-            Unit::Nm => 1e-9,
-            Unit::Pm => 1e-12,
-        }
-    }
-}
-
-/// `--detrend` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum DetrendArg {
-    /// The least-squares plane (a line for a profile).
-    Plane,
-    /// The least-squares line along x.
-    Line,
-    /// The mean height only.
-    Mean,
-}
-
-/// `--derivative` values.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
-pub enum DerivativeArg {
-    /// Non-periodic finite differences.
-    Fd,
-    /// Periodic spectral moments.
-    Spectral,
-}
-
-impl From<DetrendArg> for Detrend {
-    fn from(d: DetrendArg) -> Detrend {
-        match d {
-            DetrendArg::Plane => Detrend::Plane,
-            DetrendArg::Line => Detrend::Line,
-            DetrendArg::Mean => Detrend::Mean,
-        }
-    }
-}
-
-impl From<DerivativeArg> for Derivative {
-    fn from(d: DerivativeArg) -> Derivative {
-        match d {
-            DerivativeArg::Fd => Derivative::FiniteDifference,
-            DerivativeArg::Spectral => Derivative::Spectral,
-        }
-    }
-}
-
 impl SurfaceArgs {
     /// The options of the statistics.
     pub fn options(&self) -> StatsOptions {
         StatsOptions {
-            detrend: self.detrend.into(),
-            derivative: self.derivative.into(),
+            detrend: self.detrend,
+            derivative: self.derivative,
             lambda_s: None,
             lambda_c: None,
         }
@@ -381,12 +314,12 @@ pub fn intervals(s: &SurfaceStats) -> String {
 pub fn params(
     surface: &Surface,
     materials: &Materials,
-    family: Option<DistributionArg>,
-    fit: FitArg,
-    model: ModelKindArg,
+    family: Option<Family>,
+    fit: Fit,
+    model: ModelKind,
 ) -> Result<Params, Failure> {
-    let distribution = surface.distribution(family.map(DistributionArg::name)).map_err(|e| {
-        let hint = if family == Some(DistributionArg::Empirical) {
+    let distribution = surface.distribution(family.map(Family::name)).map_err(|e| {
+        let hint = if family == Some(Family::Empirical) {
             ""
         } else {
             " (try --distribution empirical)"
@@ -397,7 +330,7 @@ pub fn params(
         .params(materials, distribution)
         .map_err(|e| physical_failure(e, "the surface with these materials"))?;
     // Params::from_physical validated it; fit and model change no range.
-    Ok(p.fit(fit.into()).kind(model.into()))
+    Ok(p.fit(fit).kind(model))
 }
 
 /// Runs `kefric surface`.
@@ -606,28 +539,36 @@ fn print_text(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use clap::ValueEnum;
+    use clap::{Args as _, Command};
+    use ke_friction::Named;
 
+    /// Every flag naming one of the core's sets takes exactly its names
+    /// (in its order) and parses them to its values.
     #[test]
     fn flag_values_are_the_cores_names() {
-        let names = |v: &[Option<clap::builder::PossibleValue>]| -> Vec<String> {
-            v.iter().map(|p| p.as_ref().unwrap().get_name().to_string()).collect()
-        };
-        let detrend: Vec<_> = DetrendArg::value_variants()
-            .iter()
-            .map(|d| d.to_possible_value())
-            .collect();
-        let derivative: Vec<_> = DerivativeArg::value_variants()
-            .iter()
-            .map(|d| d.to_possible_value())
-            .collect();
-        assert_eq!(names(&detrend), Detrend::ALL.map(|d| d.name()));
-        assert_eq!(names(&derivative), Derivative::ALL.map(|d| d.name()));
-        for d in DetrendArg::value_variants() {
-            assert_eq!(Detrend::from(*d).name(), d.to_possible_value().unwrap().get_name());
+        fn check<T: Named + std::fmt::Debug + Send + Sync>(command: &Command, id: &str) {
+            let arg = command.get_arguments().find(|a| a.get_id() == id).unwrap();
+            let names: Vec<String> = arg
+                .get_possible_values()
+                .iter()
+                .map(|p| p.get_name().to_string())
+                .collect();
+            assert_eq!(names, T::names(), "--{id}");
+            for &v in T::all() {
+                let flag = format!("--{}", id.replace('_', "-"));
+                let m = Args::augment_args(Command::new("t"))
+                    .try_get_matches_from(["t", "f", &flag, v.name()])
+                    .unwrap();
+                assert_eq!(m.get_one::<T>(id), Some(&v), "{flag} {}", v.name());
+            }
         }
-        for d in DerivativeArg::value_variants() {
-            assert_eq!(Derivative::from(*d).name(), d.to_possible_value().unwrap().get_name());
-        }
+        let command = Args::augment_args(Command::new("t"));
+        check::<Family>(&command, "distribution");
+        check::<Fit>(&command, "fit");
+        check::<ModelKind>(&command, "model");
+        check::<LengthUnit>(&command, "z_unit");
+        check::<LengthUnit>(&command, "xy_unit");
+        check::<Detrend>(&command, "detrend");
+        check::<Derivative>(&command, "derivative");
     }
 }

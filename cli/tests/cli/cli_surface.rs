@@ -468,6 +468,9 @@ fn dx_alone_keeps_the_files_own_dy() {
     // --dx that agrees with the file's, with or without --dy.
     assert_eq!(intervals(&["--dx", "2e-6"]), own);
     assert_eq!(intervals(&["--dx", "2", "--xy-unit", "um"]), own);
+    // Every length unit of the core: km and angstrom too.
+    assert_eq!(intervals(&["--dx", "20000", "--xy-unit", "angstrom"]), own);
+    assert_eq!(intervals(&["--dx", "2e-9", "--xy-unit", "km"]), own);
     assert_eq!(intervals(&["--dx", "2e-6", "--dy", "5e-6"]), own);
     // A --dx that contradicts the file's names --dx, not dy.
     let o = kefric(&["surface", &x3p, "--dx", "5e-7"]);
