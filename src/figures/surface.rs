@@ -251,7 +251,12 @@ pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Resu
     let y_top = log_axis(if has_mu { "μ" } else { "ψ" }, &top, false)?;
     let y_bottom = log_axis("ψ, β", &bottom, false)?;
     if let Some(cutoff) = cutoff {
-        top.push(marker("reliability cut-off (unreliable left of it)", cutoff, y_top.range, super::BLACK_INDEX));
+        top.push(marker(
+            "reliability cut-off (unreliable left of it)",
+            cutoff,
+            y_top.range,
+            super::BLACK_INDEX,
+        ));
         bottom.push(Series {
             label: None,
             ..marker("", cutoff, y_bottom.range, super::BLACK_INDEX)
