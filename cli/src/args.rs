@@ -569,6 +569,8 @@ impl ModelArgs {
             files: self.surface.iter().map(|p| p.display().to_string()).collect(),
             dx: surface.stats().dx,
             dy: surface.stats().dy,
+            lambda_s: surface.stats().lambda_s,
+            lambda_c: surface.stats().lambda_c,
         };
         Ok((params, source))
     }
@@ -609,6 +611,12 @@ pub struct SurfaceSource {
     /// Sampling interval along y (m), for a map.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dy: Option<f64>,
+    /// The S-filter's nesting index (m), if filtered.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda_s: Option<f64>,
+    /// The L-filter's nesting index (m), if filtered.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda_c: Option<f64>,
 }
 
 impl std::fmt::Display for SurfaceSource {
@@ -619,10 +627,15 @@ impl std::fmt::Display for SurfaceSource {
             self.files.join(" + "),
             Shortest(self.dx)
         )?;
-        match self.dy {
-            Some(dy) => write!(f, ", dy = {} m", Shortest(dy)),
-            None => Ok(()),
+        if let Some(dy) = self.dy {
+            write!(f, ", dy = {} m", Shortest(dy))?;
         }
+        for (name, lambda) in [("lambda_s", self.lambda_s), ("lambda_c", self.lambda_c)] {
+            if let Some(lambda) = lambda {
+                write!(f, ", {name} = {} m", Shortest(lambda))?;
+            }
+        }
+        Ok(())
     }
 }
 

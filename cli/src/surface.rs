@@ -303,10 +303,17 @@ pub fn sig(x: f64) -> Shortest {
 
 /// The sampling intervals, for beside β and ψ: `dx = 1e-6 m, dy = 1e-6 m`.
 pub fn intervals(s: &SurfaceStats) -> String {
-    match s.dy {
+    let mut text = match s.dy {
         Some(dy) => format!("dx = {} m, dy = {} m", sig(s.dx), sig(dy)),
         None => format!("dx = {} m", sig(s.dx)),
+    };
+    // The band, where filtered: β and ψ depend on it as on the intervals.
+    for (name, lambda) in [("lambda_s", s.lambda_s), ("lambda_c", s.lambda_c)] {
+        if let Some(lambda) = lambda {
+            text.push_str(&format!(", {name} = {} m", sig(lambda)));
+        }
     }
+    text
 }
 
 /// The model's inputs for `materials` on `surface` with the distribution

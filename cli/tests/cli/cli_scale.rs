@@ -83,6 +83,21 @@ fn filtered_statistics_are_the_librarys_and_record_the_band() {
     // The band narrows the roughness: σ and m4 are below the unfiltered ones.
     let raw = Surface::new(t, StatsOptions::default()).unwrap();
     assert!(lib.stats().sigma < raw.stats().sigma && lib.stats().m4 < 0.5 * raw.stats().m4);
+    // Every text output beside β and ψ states the band.
+    let mut args = vec![
+        "eval",
+        "--surface",
+        file.as_str(),
+        "--f-star",
+        "1e-3",
+        "--lambda-s",
+        "5e-6",
+    ];
+    args.extend(MATERIALS);
+    let o = kefric(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("dy = 1.5e-6 m, lambda_s = 5e-6 m"), "{text}");
     // Unfiltered, the record says so.
     let v = json(&["surface", &file, "--json"]);
     assert!(v["surface"]["lambda_s"].is_null() && v["surface"]["lambda_c"].is_null());
