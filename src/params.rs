@@ -43,7 +43,9 @@ crate::named!(ModelKind, "model", registry = crate::model::LAWS);
 pub type Kind = ModelKind;
 
 impl ModelKind {
-    /// The law's registry entry (name, table code, label).
+    /// The law's registry entry (name, table code, label): read by the
+    /// table writer and the figures.
+    #[cfg(any(feature = "builder", feature = "plot", test))]
     pub(crate) const fn law(self) -> crate::model::LawInfo {
         crate::model::LAWS[self as usize]
     }

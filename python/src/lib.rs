@@ -18,6 +18,7 @@ mod parallel;
 mod surface;
 mod table;
 
+use ke_friction::Named;
 use pyo3::prelude::*;
 
 #[pymodule]
@@ -31,6 +32,13 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("CURVE_ACCURACY", ke_friction::CURVE_ACCURACY)?;
+    // The core's name lists (one definition, `named!`): what the Python
+    // side checks its string arguments against.
+    m.add("DETRENDS", <ke_friction::topography::Detrend as Named>::names())?;
+    m.add("DERIVATIVES", <ke_friction::topography::Derivative as Named>::names())?;
+    m.add("FAMILIES", <ke_friction::Family as Named>::names())?;
+    m.add("FITS", <ke_friction::Fit as Named>::names())?;
+    m.add("MODELS", <ke_friction::ModelKind as Named>::names())?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;
     Ok(())

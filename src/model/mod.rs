@@ -5,7 +5,9 @@ pub mod asperity;
 mod laws;
 mod surface;
 
-pub(crate) use laws::{LawInfo, LAWS};
+#[cfg(any(feature = "builder", feature = "plot", test))]
+pub(crate) use laws::LawInfo;
+pub(crate) use laws::LAWS;
 
 use crate::checks::ParamError;
 use crate::num::Shortest;

@@ -16,6 +16,11 @@ _F64 = npt.NDArray[np.float64]
 # The crate's version.
 __version__: str
 CURVE_ACCURACY: float
+DETRENDS: list[str]
+DERIVATIVES: list[str]
+FAMILIES: list[str]
+FITS: list[str]
+MODELS: list[str]
 # The library's default model constants (Constants::default()): beta, nu,
 # eps_star, fit, model, distribution, skewness, kurtosis.
 DEFAULTS: Dict[str, Any]

@@ -20,9 +20,10 @@ from ._model import Model
 #: topographies' ``unit`` (µ as the micro sign or the Greek letter, or u).
 _LENGTH_UNITS = {"km": 1e3, "m": 1.0, "cm": 1e-2, "mm": 1e-3, "\u00b5m": 1e-6, "\u03bcm": 1e-6, "um": 1e-6,
                  "nm": 1e-9, "\u00c5": 1e-10, "A": 1e-10, "pm": 1e-12}
-_DETRENDS = ("plane", "line", "mean")
-_DERIVATIVES = ("fd", "spectral")
-_FAMILIES = ("gaussian", "pearson", "weibull", "empirical")
+# The core's name lists (defined once, in Rust).
+_DETRENDS = tuple(_core.DETRENDS)
+_DERIVATIVES = tuple(_core.DERIVATIVES)
+_FAMILIES = tuple(_core.FAMILIES)
 _MATERIALS = ("e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon")
 
 
