@@ -5,7 +5,7 @@ use crate::args::{
     check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
 };
 use ke_friction::figures::{self, Figure, FigureError, Format};
-use ke_friction::topography::{psd_area, psd_profile_x, psd_profile_y, scan, Psd, ScanRange, Topography, Window};
+use ke_friction::topography::{psd_all, scan, Psd, ScanRange, Window};
 use ke_friction::{Family, Fit, LookupError, ModelKind};
 use std::path::{Path, PathBuf};
 
@@ -254,19 +254,17 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
     let t = a.read.read("surface", path)?;
     let options = a.read.options_for("surface", path, &t)?;
     let page = if a.psd {
-        let heights = t.detrended(options.detrend).map_err(|e| Failure::of("surface", e))?;
-        let detrended = match t.dy() {
-            Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
-            None => Topography::profile(heights, t.dx()),
-        }
-        .map_err(|e| Failure::of("surface", e))?;
-        let fail = |e| Failure::of(format!("--psd: {}", path.display()), e);
-        let mut spectra = vec![("along x", psd_profile_x(&detrended, Window::None).map_err(fail)?)];
-        if !detrended.is_profile() {
-            spectra.push(("along y", psd_profile_y(&detrended, Window::None).map_err(fail)?));
-            spectra.push(("area (radial)", psd_area(&detrended, Window::None).map_err(fail)?));
-        }
-        let spectra: Vec<(&str, &Psd)> = spectra.iter().map(|(n, p)| (*n, p)).collect();
+        let detrended = t
+            .detrended_topography(options.detrend)
+            .map_err(|e| Failure::of("surface", e))?;
+        let spectra =
+            psd_all(&detrended, Window::None).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
+        let label = |name| match name {
+            "x" => "along x",
+            "y" => "along y",
+            _ => "area (radial)",
+        };
+        let spectra: Vec<(&str, &Psd)> = spectra.iter().map(|(n, p)| (label(n), p)).collect();
         figures::psd_page(&name, &spectra, options.lambda_s, options.lambda_c).map_err(failure)?
     } else {
         let load = a.load.load()?;

@@ -3,7 +3,7 @@
 
 use crate::args::Failure;
 use crate::surface::{evaluate, sig, Args};
-use ke_friction::topography::{psd_area, psd_profile_x, psd_profile_y, scan, PsdError, ScanRange, Topography, Window};
+use ke_friction::topography::{psd_all, scan, ScanRange, Window};
 use ke_friction::Shortest;
 use std::path::Path;
 
@@ -202,21 +202,11 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
     let t = args.read.read("surface", path)?;
-    let heights = t
-        .detrended(args.read.options().detrend)
+    let detrended = t
+        .detrended_topography(args.read.options().detrend)
         .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;
-    let detrended = match t.dy() {
-        Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
-        None => Topography::profile(heights, t.dx()),
-    }
-    .map_err(|e| Failure::of("surface", e))?;
     let window = if args.hann { Window::Hann } else { Window::None };
-    let fail = |e: PsdError| Failure::of(format!("--psd: {}", path.display()), e);
-    let mut spectra = vec![("x", psd_profile_x(&detrended, window).map_err(fail)?)];
-    if !detrended.is_profile() {
-        spectra.push(("y", psd_profile_y(&detrended, window).map_err(fail)?));
-        spectra.push(("area", psd_area(&detrended, window).map_err(fail)?));
-    }
+    let spectra = psd_all(&detrended, window).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
     if args.json {
         let mut doc = serde_json::Map::new();
         doc.insert("files".into(), serde_json::json!([path.display().to_string()]));

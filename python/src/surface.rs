@@ -7,9 +7,9 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    psd_area, psd_profile_x, psd_profile_y, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
-    tip_reliability_cutoff, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError, StatsOptions,
-    Surface, Topography, Window, MAX_POINTS,
+    psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan, tip_reliability_cutoff, Derivative,
+    Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError, StatsOptions, Surface, Topography, Window,
+    MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -437,17 +437,8 @@ impl SurfaceCore {
         let t = self.single("psd")?;
         let detrend = self.surface.options().detrend;
         let spectra = py.detach(|| -> PyResult<Vec<(&'static str, Psd)>> {
-            let heights = t.detrended(detrend).map_err(raise)?;
-            let detrended = match t.dy() {
-                Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
-                None => Topography::profile(heights, t.dx()),
-            }
-            .map_err(raise)?;
-            let mut spectra = vec![("x", psd_profile_x(&detrended, window).map_err(raise)?)];
-            if !detrended.is_profile() {
-                spectra.push(("y", psd_profile_y(&detrended, window).map_err(raise)?));
-                spectra.push(("area", psd_area(&detrended, window).map_err(raise)?));
-            }
+            let detrended = t.detrended_topography(detrend).map_err(raise)?;
+            let spectra = psd_all(&detrended, window).map_err(raise)?;
             Ok(spectra)
         })?;
         Ok(spectra

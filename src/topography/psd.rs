@@ -97,6 +97,17 @@ impl crate::Classify for PsdError {
     }
 }
 
+/// Every spectrum of `t`: `("x", …)` for a profile; `("x", …)`, `("y", …)`
+/// and `("area", …)` for a map (the names are the JSON records' keys).
+pub fn psd_all(t: &Topography, window: Window) -> Result<Vec<(&'static str, Psd)>, PsdError> {
+    let mut spectra = vec![("x", psd_profile_x(t, window)?)];
+    if !t.is_profile() {
+        spectra.push(("y", psd_profile_y(t, window)?));
+        spectra.push(("area", psd_area(t, window)?));
+    }
+    Ok(spectra)
+}
+
 /// The 1-D PSD along x: of the profile, or the mean of the PSDs of the
 /// rows of a map (SurfaceTopography's `power_spectrum_from_profile` with
 /// `resampling_method=None`). q_k = 2πk/Lx for k = 0 … ⌊Nx/2⌋ − 1 (below

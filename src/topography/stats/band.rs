@@ -20,9 +20,22 @@ impl Topography {
         let Some(lambda) = options.lambda_c else {
             return Ok(Some((s, options.detrend)));
         };
-        let heights = s.detrended(options.detrend)?;
-        let detrended = Topography::new(heights, s.nx, s.ny, s.dx, s.dy)?;
-        Ok(Some((l_filter(&detrended, lambda)?, Detrend::Mean)))
+        Ok(Some((
+            l_filter(&s.detrended_topography(options.detrend)?, lambda)?,
+            Detrend::Mean,
+        )))
+    }
+
+    /// The surface detrended as `detrend` says (missing points stay
+    /// missing): what the L-filter and the power spectra start from.
+    pub fn detrended_topography(&self, detrend: Detrend) -> Result<Topography, StatsError> {
+        Ok(Topography::new(
+            self.detrended(detrend)?,
+            self.nx,
+            self.ny,
+            self.dx,
+            self.dy,
+        )?)
     }
 
     /// The heights the statistics see: in the band `options` states
