@@ -46,7 +46,7 @@ pub struct Args {
     /// Print one JSON object (SI units; the library's record names).
     #[arg(long)]
     pub json: bool,
-    /// Print CSV (with --scan or --psd): a header line, then one row a scale or wavevector.
+    /// Print CSV (with --scan, --psd or --scale-dependent): a header line, then one row a scale or wavevector.
     #[arg(long, conflicts_with = "json")]
     pub csv: bool,
     /// μ against the scale: the statistics (with materials: ψ, θ; with a load: μ) at S-filter nesting indices λs log-spaced from --from to --to, one row each, equal to the single command at that --lambda-s.
@@ -67,6 +67,9 @@ pub struct Args {
     /// A Hann window for --psd.
     #[arg(long, requires = "psd")]
     pub hann: bool,
+    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights as read (unfiltered, undetrended) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
+    #[arg(long, conflicts_with_all = ["psd", "scan"])]
+    pub scale_dependent: bool,
 }
 
 /// How a surface file is read and its statistics taken.
@@ -346,10 +349,13 @@ pub fn params(
 
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    if args.csv && !(args.scan || args.psd) {
+    if args.csv && !(args.scan || args.psd || args.scale_dependent) {
         return Err(Failure::input(
-            "--csv: with --scan or --psd (the single record is --json)",
+            "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
         ));
+    }
+    if args.scale_dependent {
+        return crate::scale::run_scale_dependent(&args);
     }
     if args.psd {
         return crate::scale::run_psd(&args);

@@ -7,9 +7,9 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan, tip_reliability_cutoff, Channel,
-    Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError, StatsOptions, Surface, Topography,
-    Window, MAX_POINTS,
+    default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
+    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError,
+    StatsOptions, Surface, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -499,6 +499,13 @@ impl SurfaceCore {
                 })
                 .collect(),
         ))
+    }
+
+    /// The core's default stencil lengths (m) of `order` (1 slope, 2
+    /// curvature): `default_distances`.
+    fn default_distances<'py>(&self, py: Python<'py>, order: u32) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let t = self.single("scale_dependent")?;
+        Ok(PyArray1::from_vec(py, default_distances(t, order)))
     }
 
     /// The scale-dependent rms slope (`order` 1) or curvature (2) at each

@@ -21,7 +21,10 @@ pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, C
 pub use metadata::Metadata;
 pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
 pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
-pub use scale::{scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow};
+pub use scale::{
+    default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
+    DISTANCES_PER_DECADE,
+};
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,

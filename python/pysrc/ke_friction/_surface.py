@@ -542,8 +542,10 @@ class Surface:
     def scale_dependent(self, distances: Optional[ArrayLike] = None, order: int = 1) -> Dict[str, np.ndarray]:
         """The scale-dependent rms slope (``order=1``) or curvature
         (``order=2``, 1/m) of the unfiltered heights at each stencil length
-        in ``distances`` (metres; by default log-spaced, 5 a decade, from
-        ``order`` dx to half the scan size) (Sanner et al. 2022; the
+        in ``distances`` (metres; by default the library's
+        ``default_distances``: log-spaced, 5 a decade, from ``order`` x
+        max(dx, dy) to half the scan size, as ``kefric surface
+        --scale-dependent``) (Sanner et al. 2022; the
         library's ``scale_dependent_slope``, ``scale_dependent_curvature``):
         ``{"distance", "x"}``, and ``"y"`` for a map; NaN where fewer than 4
         points have their stencil in the data. Of a single surface without
@@ -551,11 +553,7 @@ class Surface:
         if isinstance(order, bool) or order not in (1, 2):
             raise ValueError(f"order = {order!r}: must be 1 (slope) or 2 (curvature)")
         if distances is None:
-            s = self.stats
-            size = s["size_x"] if s["size_y"] is None else min(s["size_x"], s["size_y"])
-            lo, hi = order * max(s["dx"], s["dy"] or 0.0), size / 2
-            n = max(int(np.ceil(5 * np.log10(hi / lo))), 1)
-            d = np.append(lo * 10.0 ** (np.arange(n) / 5), hi)
+            d = self._core.default_distances(int(order))
         else:
             d = np.ascontiguousarray(np.atleast_1d(np.asarray(distances, dtype=np.float64)))
             if d.ndim != 1:
