@@ -521,7 +521,7 @@ fn the_readme_lists_every_format_extension_of_the_registry() {
         for e in f.extensions() {
             let listed = readme
                 .lines()
-                .any(|l| l.starts_with("- ") && l.split(|c: char| c == '`' || c == ' ').any(|w| w == format!(".{e}")));
+                .any(|l| l.starts_with("- ") && l.split(['`', ' ']).any(|w| w == format!(".{e}")));
             assert!(listed, "README.md's list of formats lacks .{e} ({})", f.description());
         }
     }
