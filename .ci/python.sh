@@ -12,7 +12,8 @@
 #
 # Environment: KEFRIC (the CLI, for reference values and the export; default
 # $CARGO_TARGET_DIR or target, /release/kefric, built if missing), PYTHON
-# (default python3).
+# (default python3), KEF_TOPOGRAPHIES (the instruments' example files;
+# default ../shared/topographies beside the checkout).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -29,7 +30,10 @@ if [ ! -x "$KEFRIC" ]; then
 fi
 
 # ziglang: the zig that links the wheel against glibc 2.17 (below).
-"$py" -m pip install --quiet maturin ziglang pytest numpy scipy matplotlib 'dask[distributed]'
+# SurfaceTopography: the oracle of tests/test_formats_a.py (the
+# instruments' files read by its readers; a binary wheel, ~20 s when
+# missing).
+"$py" -m pip install --quiet maturin ziglang pytest numpy scipy matplotlib 'dask[distributed]' SurfaceTopography
 export KEF_REQUIRE_DASK=1
 
 t0=$SECONDS
@@ -43,6 +47,12 @@ rm -rf "$out" && mkdir -p "$out"
 cargo build --release --quiet -p ke-friction --example crafted_tables
 export KEF_CRAFTED_DIR=$out/crafted
 "$target/release/examples/crafted_tables" "$KEF_CRAFTED_DIR" > /dev/null
+# The library's raw reading of the instruments' files (test_formats_a.py),
+# and the files: ../shared/topographies beside the checkout unless
+# KEF_TOPOGRAPHIES says otherwise (the test skips, saying so, without them).
+cargo build --release --quiet -p ke-friction --features topography --example read_dump
+export KEF_READ_DUMP=$target/release/examples/read_dump
+export KEF_TOPOGRAPHIES=${KEF_TOPOGRAPHIES:-$root/../shared/topographies}
 # From outside python/, so that the installed package is what is tested
 # (not python/pysrc, which has no native module).
 (cd "$out" && "$py" -m pytest -q -p no:cacheprovider "$root/python/tests")

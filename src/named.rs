@@ -206,6 +206,18 @@ crate::named!(
 );
 
 impl LengthUnit {
+    /// The unit an instrument's file writes as `symbol` (surrounding
+    /// spaces ignored): `km`, `m`, `mm`, `µm` (the micro sign or the Greek
+    /// mu), `um`, `~m` and `æm` (old code pages' micro sign), `nm`, `Å`,
+    /// `A`, `pm`, or one of the names of [`LengthUnit::ALL`].
+    pub fn from_symbol(symbol: &str) -> Option<LengthUnit> {
+        match symbol.trim() {
+            "\u{b5}m" | "\u{3bc}m" | "~m" | "\u{e6}m" => Some(LengthUnit::Um),
+            "\u{c5}" | "A" => Some(LengthUnit::Angstrom),
+            other => LengthUnit::from_name(other),
+        }
+    }
+
     /// Metres per unit.
     pub const fn metres(self) -> f64 {
         match self {

@@ -5,17 +5,17 @@
 
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
-    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Metadata, ReadError, ReadOptions, StatsOptions,
-    Surface, SurfaceStats, Topography, MAX_POINTS,
+    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, Metadata, ReadError, ReadOptions,
+    StatsOptions, Surface, SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Statistics of a measured surface and, with materials and a load, μ.
 ///
-/// Reads a height map or profile (ISO 25178-72 X3P, .npy, or text: one
+/// Reads a height map or profile (ISO 25178-72 X3P, .npy, text: one
 /// column = a profile, a matrix = a map, `x y z` triples on a regular
-/// grid), detrends it, and prints σ (Sq), Sk (Ssk), K (Sku), the spectral
+/// grid; or an instrument's own file: the list below), detrends it, and prints σ (Sq), Sk (Ssk), K (Sku), the spectral
 /// moments m0, m2, m4 and the summit density η, radius R and β of
 /// MODEL.md §10. Two files are two rough surfaces pressed together: their
 /// equivalent surface (heights added) against a flat. With the seven
@@ -24,6 +24,7 @@ use std::path::{Path, PathBuf};
 /// Q = μF and the separation. β and ψ depend on the sampling intervals,
 /// which are printed beside them.
 #[derive(Debug, clap::Args)]
+#[command(after_help = formats_help())]
 pub struct Args {
     /// The surface file, and optionally a second rough surface pressed against it.
     #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
@@ -70,6 +71,23 @@ pub struct Args {
     /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights as read (unfiltered, undetrended) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
     #[arg(long, conflicts_with_all = ["psd", "scan"])]
     pub scale_dependent: bool,
+}
+
+/// The formats read, one line each, from the library's registry (by the
+/// file's extension, else by its content).
+fn formats_help() -> String {
+    let mut help = String::from("Formats (by the file's extension, else by its content):\n");
+    // A format chosen by neither (text read as a matrix) is left out.
+    for f in Format::all().filter(|f| !f.extensions().is_empty()) {
+        let extensions: Vec<String> = f.extensions().iter().map(|e| format!(".{e}")).collect();
+        help.push_str(&format!(
+            "  {:<7} {:<24} {}\n",
+            f.name(),
+            extensions.join(" "),
+            f.description()
+        ));
+    }
+    help
 }
 
 /// How a surface file is read and its statistics taken.

@@ -491,3 +491,38 @@ fn dx_alone_keeps_the_files_own_dy() {
         (Some(2e-6), Some(2e-6))
     );
 }
+
+#[test]
+fn surface_help_lists_every_format_of_the_registry_one_line_each() {
+    let o = kefric(&["surface", "--help"]);
+    assert!(o.status.success());
+    let help = String::from_utf8_lossy(&o.stdout);
+    for f in ke_friction::topography::Format::all().filter(|f| !f.extensions().is_empty()) {
+        let lines: Vec<&str> = help
+            .lines()
+            .filter(|l| l.trim_start().starts_with(&format!("{} ", f.name())) && l.contains(f.description()))
+            .collect();
+        assert_eq!(lines.len(), 1, "{}: {lines:?}\n{help}", f.name());
+        for e in f.extensions() {
+            assert!(
+                lines[0].contains(&format!(".{e}")),
+                "{}: .{e} missing: {}",
+                f.name(),
+                lines[0]
+            );
+        }
+    }
+}
+
+#[test]
+fn the_readme_lists_every_format_extension_of_the_registry() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    for f in ke_friction::topography::Format::all() {
+        for e in f.extensions() {
+            let listed = readme
+                .lines()
+                .any(|l| l.starts_with("- ") && l.split(['`', ' ']).any(|w| w == format!(".{e}")));
+            assert!(listed, "README.md's list of formats lacks .{e} ({})", f.description());
+        }
+    }
+}

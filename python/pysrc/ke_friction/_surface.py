@@ -235,6 +235,9 @@ class Surface:
         ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
         other extension, text (one column a profile, ``x z`` pairs,
         ``x y z`` triples on a regular grid, or a matrix of heights).
+        Instruments' own files: Digital Surf ``.sur``, Sensofar ``.plu``
+        (``.apx``), Bruker/Veeco ``.opd``, Alicona ``.al3d`` (heights in
+        metres from the file's units, its intervals, missing points NaN).
 
         ``dx``, ``dy``: the sampling intervals in metres, for files that
         give none (``.npy``, a text matrix or column); ``dy`` defaults to

@@ -1,5 +1,7 @@
 //! Reading measured surfaces from files (MODEL.md §10): ISO 25178-72 X3P,
-//! NumPy `.npy` and text (the writer is [`super::write`]).
+//! NumPy `.npy`, text, and the instruments' own formats (Digital Surf
+//! `.sur`, Sensofar `.plu`, Bruker/Veeco `.opd`, Alicona `.al3d`; the
+//! writer is [`super::write`]).
 //!
 //! The formats are a registry ([`Format::all`]): each is a module here
 //! with its entry (name, extensions, signature, reader). The format comes
@@ -17,7 +19,12 @@
 //! before anything is allocated. A bad file gives a [`ReadError`] naming
 //! the file and the problem; nothing panics.
 
+mod al3d;
+mod binary;
 mod npy;
+mod opd;
+mod plu;
+mod sur;
 mod text;
 pub(super) mod x3p;
 
@@ -63,9 +70,19 @@ struct Entry {
 /// A reader: the file's context, its bytes, their length, the options.
 type ReadFn = fn(&Ctx, &mut dyn Source, u64, &ReadOptions) -> Result<Topography, ReadError>;
 
-/// The formats, in the order a format is chosen by sniffing. Text is
-/// last: any file is text to it.
-static REGISTRY: [Entry; 4] = [x3p::ENTRY, npy::ENTRY, text::ENTRY, text::MATRIX];
+/// The formats, in the order a format is chosen by sniffing (text and
+/// matrix have no signature: any file is text to them, chosen when no
+/// signature matches).
+static REGISTRY: [Entry; 8] = [
+    x3p::ENTRY,
+    npy::ENTRY,
+    text::ENTRY,
+    text::MATRIX,
+    sur::ENTRY,
+    plu::ENTRY,
+    opd::ENTRY,
+    al3d::ENTRY,
+];
 
 impl Format {
     /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
@@ -83,6 +100,16 @@ impl Format {
     /// Text read as a matrix whatever its number of columns: a line is a
     /// row (rows = y), a column is x. A single line is a profile.
     pub const MATRIX: Format = Format(&REGISTRY[3]);
+    /// Digital Surf `.sur` (MountainsMap): 16- or 32-bit integer heights
+    /// with the header's scale and units; special points are missing.
+    pub const SUR: Format = Format(&REGISTRY[4]);
+    /// Sensofar `.plu` / `.apx`: f32 heights in µm, one channel a layer.
+    pub const PLU: Format = Format(&REGISTRY[5]);
+    /// Bruker/Veeco Vision `.opd`: a directory of blocks; each height
+    /// raster a channel, in waves of the file's wavelength.
+    pub const OPD: Format = Format(&REGISTRY[6]);
+    /// Alicona `.al3d`: tags, then f32 heights in metres.
+    pub const AL3D: Format = Format(&REGISTRY[7]);
 
     /// Every format, in the registry's order.
     pub fn all() -> impl Iterator<Item = Format> {
@@ -628,7 +655,6 @@ impl Ctx<'_> {
     }
 
     /// A malformed file of `format` (its description).
-    #[allow(dead_code)] // until the instrument readers use it
     fn format(&self, format: &'static str, detail: impl Into<String>) -> ReadError {
         ReadError::Format {
             path: self.path(),
@@ -641,7 +667,6 @@ impl Ctx<'_> {
     /// channels, in order): the one the options ask for, else `default`
     /// (the file's height channel, if the reader can tell), else the only
     /// one; an error listing them when the choice is wrong or ambiguous.
-    #[allow(dead_code)] // until the instrument readers use it
     fn channel(&self, names: &[String], default: Option<usize>, options: &ReadOptions) -> Result<usize, ReadError> {
         let error = |detail: String| ReadError::Channel {
             path: self.path(),
