@@ -1,5 +1,7 @@
 //! Reading measured surfaces from files (MODEL.md §10): ISO 25178-72 X3P,
-//! NumPy `.npy` and text (the writer is [`super::write`]).
+//! NumPy `.npy`, text, and the instruments' own formats: Zygo MetroPro
+//! `.dat`, Bruker Nanoscope and Nanosurf `.nid` (the writer is
+//! [`super::write`]).
 //!
 //! The formats are a registry ([`Format::all`]): each is a module here
 //! with its entry (name, extensions, signature, reader). The format comes
@@ -8,7 +10,10 @@
 //! where the extension is not a format's (`.x3p`, `.npy`, anything else is
 //! text) unless [`ReadOptions::format`] says otherwise. Heights come out in
 //! metres: X3P stores metres; `.npy` and text heights are multiplied by
-//! [`ReadOptions::z_unit`] (1 by default, i.e. already metres).
+//! [`ReadOptions::z_unit`] (1 by default, i.e. already metres); the
+//! instruments' formats with their own scale factors and units. A file
+//! with several channels (AFM) gives its first height channel, or the one
+//! [`ReadOptions::channel`] names.
 //!
 //! Missing points (NaN in the file, or marked invalid by an X3P validity
 //! mask) stay missing (NaN): never filled. Reads are bounded: a file, or an
@@ -17,6 +22,10 @@
 //! before anything is allocated. A bad file gives a [`ReadError`] naming
 //! the file and the problem; nothing panics.
 
+mod instrument;
+mod metropro;
+mod nanoscope;
+mod nid;
 mod npy;
 mod text;
 pub(super) mod x3p;
@@ -65,7 +74,21 @@ type ReadFn = fn(&Ctx, &mut dyn Source, u64, &ReadOptions) -> Result<Topography,
 
 /// The formats, in the order a format is chosen by sniffing. Text is
 /// last: any file is text to it.
-static REGISTRY: [Entry; 4] = [x3p::ENTRY, npy::ENTRY, text::ENTRY, text::MATRIX];
+static REGISTRY: [Entry; 7] = [
+    x3p::ENTRY,
+    npy::ENTRY,
+    metropro::ENTRY,
+    nanoscope::ENTRY,
+    nid::ENTRY,
+    text::ENTRY,
+    text::MATRIX,
+];
+
+/// Extensions other programs use too (`.dat` for any data, `.spm`, the
+/// numbered `.001`, ...): a file with one is its format's only if its
+/// content has the format's signature; else it is detected as a file of
+/// no known extension (by another format's signature, else text).
+const SHARED_EXTENSIONS: [&str; 8] = ["dat", "di", "spm", "001", "002", "003", "004", "005"];
 
 impl Format {
     /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
@@ -79,10 +102,20 @@ impl Format {
     /// pairs of a profile; 3 = `x y z` triples on a regular grid (the
     /// intervals come from the grid); otherwise a matrix as in
     /// [`Format::MATRIX`]. A single line is a profile.
-    pub const TEXT: Format = Format(&REGISTRY[2]);
+    pub const TEXT: Format = Format(&REGISTRY[5]);
     /// Text read as a matrix whatever its number of columns: a line is a
     /// row (rows = y), a column is x. A single line is a profile.
-    pub const MATRIX: Format = Format(&REGISTRY[3]);
+    pub const MATRIX: Format = Format(&REGISTRY[6]);
+    /// Zygo MetroPro `.dat` (a white-light interferometer's phase map;
+    /// invalid points missing).
+    pub const METROPRO: Format = Format(&REGISTRY[2]);
+    /// Bruker (Digital Instruments, Veeco) Nanoscope AFM files (`.di`,
+    /// `.spm`, `.001`, ...): several channels, the first height channel by
+    /// default ([`ReadOptions::channel`]).
+    pub const NANOSCOPE: Format = Format(&REGISTRY[3]);
+    /// Nanosurf `.nid` (and `.ezd`) AFM files: several channels, the first
+    /// height channel by default ([`ReadOptions::channel`]).
+    pub const NID: Format = Format(&REGISTRY[4]);
 
     /// Every format, in the registry's order.
     pub fn all() -> impl Iterator<Item = Format> {
@@ -121,16 +154,22 @@ impl Format {
 
     /// The format of a file called `path` whose first bytes are `head`:
     /// by an extension of a format with a signature (its reader says what
-    /// is wrong if the content is not one); else by the content's
-    /// signature (a zip of an X3P called `.dat`, a `.npy` without its
-    /// extension); else by a text extension; else text.
+    /// is wrong if the content is not one), unless the extension is one
+    /// other programs use too ([`SHARED_EXTENSIONS`]) and the signature is
+    /// not there; else by the content's signature (a zip of an X3P called
+    /// `.dat`, a `.npy` without its extension); else by a text extension;
+    /// else text.
     pub fn detect(path: &Path, head: &[u8]) -> Format {
         let by_name = Format::by_extension(path);
+        let shared = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| SHARED_EXTENSIONS.iter().any(|s| s.eq_ignore_ascii_case(e)));
         match by_name {
-            Some(f) if f.0.sniff.is_some() => f,
+            Some(f) if f.0.sniff.is_some_and(|sniff| !shared || sniff(head)) => f,
             _ => Format::all()
                 .find(|f| f.0.sniff.is_some_and(|sniff| sniff(head)))
-                .or(by_name)
+                .or(by_name.filter(|f| f.0.sniff.is_none()))
                 .unwrap_or(Format::TEXT),
         }
     }
@@ -628,7 +667,6 @@ impl Ctx<'_> {
     }
 
     /// A malformed file of `format` (its description).
-    #[allow(dead_code)] // until the instrument readers use it
     fn format(&self, format: &'static str, detail: impl Into<String>) -> ReadError {
         ReadError::Format {
             path: self.path(),
@@ -641,7 +679,6 @@ impl Ctx<'_> {
     /// channels, in order): the one the options ask for, else `default`
     /// (the file's height channel, if the reader can tell), else the only
     /// one; an error listing them when the choice is wrong or ambiguous.
-    #[allow(dead_code)] // until the instrument readers use it
     fn channel(&self, names: &[String], default: Option<usize>, options: &ReadOptions) -> Result<usize, ReadError> {
         let error = |detail: String| ReadError::Channel {
             path: self.path(),
