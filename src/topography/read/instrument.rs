@@ -8,26 +8,41 @@ use std::io::{Read, SeekFrom};
 use super::{Ctx, ReadError, ReadOptions, Source, CHUNK};
 use crate::LengthUnit;
 
-/// The first `min(len, max)` bytes of the file (a text header; the
-/// bound keeps a hostile header's memory small), and whether that is the
-/// whole file.
+/// The file's text header: its bytes from the start up to and including
+/// the first `end` marker (bytes), read piece by piece; or up to
+/// `min(len, max)` bytes where the marker is not there (the bound keeps a
+/// hostile header's memory small), and whether that is the whole file.
+/// The caller says what a missing marker means.
 pub(super) fn head(
     cx: &Ctx,
     source: &mut dyn Source,
     len: u64,
     max: u64,
-    format: &'static str,
+    end: &[u8],
 ) -> Result<(Vec<u8>, bool), ReadError> {
     let take = len.min(max);
-    let mut bytes = cx.vec::<u8>(take)?;
-    source
-        .rewind()
-        .and_then(|()| source.take(take).read_to_end(&mut bytes))
-        .map_err(|e| cx.io(e))?;
-    if (bytes.len() as u64) < take {
-        return Err(cx.format(format, "the file ends in the header (truncated)"));
+    let mut bytes = Vec::new();
+    source.rewind().map_err(|e| cx.io(e))?;
+    let mut source = source.take(take);
+    let mut piece = vec![0u8; CHUNK];
+    loop {
+        let got = match source.read(&mut piece) {
+            Ok(0) => return Ok((bytes, take == len)),
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(cx.io(e)),
+        };
+        // Search from where a marker cut by the previous piece can start.
+        let from = bytes.len().saturating_sub(end.len());
+        bytes.extend_from_slice(&piece[..got]);
+        let found = bytes[from..]
+            .windows(end.len())
+            .position(|w| w.eq_ignore_ascii_case(end));
+        if let Some(i) = found {
+            bytes.truncate(from + i + end.len());
+            return Ok((bytes, false));
+        }
     }
-    Ok((bytes, take == len))
 }
 
 /// How the integers of a grid are stored.

@@ -206,7 +206,7 @@ fn int(section: &HashMap<String, String>, key: &str) -> Option<u64> {
 
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
-    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, DESCRIPTION)?;
+    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, b"\\*File list end")?;
     if bytes.starts_with(b"?*") {
         return Err(cx.unsupported("a Nanoscope file with its data stored as text (only binary data are read)"));
     }

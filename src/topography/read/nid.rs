@@ -50,7 +50,7 @@ struct Channel {
 
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
-    let (bytes, _) = instrument::head(cx, source, len, MAX_HEADER, DESCRIPTION)?;
+    let (bytes, _) = instrument::head(cx, source, len, MAX_HEADER, b"\n#!")?;
     if !sniff(&bytes) {
         return Err(bad("no \"[DataSet]\" line at the start".into()));
     }
