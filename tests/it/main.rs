@@ -24,6 +24,7 @@ mod surface_friction;
 mod table_lookup;
 mod topography_filter;
 mod topography_instruments_a;
+mod topography_instruments_b;
 mod topography_read;
 mod topography_scale;
 mod topography_stats;

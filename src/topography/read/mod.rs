@@ -1,7 +1,8 @@
 //! Reading measured surfaces from files (MODEL.md §10): ISO 25178-72 X3P,
 //! NumPy `.npy`, text, and the instruments' own formats (Digital Surf
-//! `.sur`, Sensofar `.plu`, Bruker/Veeco `.opd`, Alicona `.al3d`; the
-//! writer is [`super::write`]).
+//! `.sur`, Sensofar `.plu`, Bruker/Veeco `.opd`, Alicona `.al3d`, Zygo
+//! MetroPro `.dat`, Bruker Nanoscope, Nanosurf `.nid`; the writer is
+//! [`super::write`]).
 //!
 //! The formats are a registry ([`Format::all`]): each is a module here
 //! with its entry (name, extensions, signature, reader). The format comes
@@ -10,7 +11,10 @@
 //! where the extension is not a format's (`.x3p`, `.npy`, anything else is
 //! text) unless [`ReadOptions::format`] says otherwise. Heights come out in
 //! metres: X3P stores metres; `.npy` and text heights are multiplied by
-//! [`ReadOptions::z_unit`] (1 by default, i.e. already metres).
+//! [`ReadOptions::z_unit`] (1 by default, i.e. already metres); the
+//! instruments' formats with their own scale factors and units. A file
+//! with several channels (AFM) gives its first height channel, or the one
+//! [`ReadOptions::channel`] names.
 //!
 //! Missing points (NaN in the file, or marked invalid by an X3P validity
 //! mask) stay missing (NaN): never filled. Reads are bounded: a file, or an
@@ -21,6 +25,10 @@
 
 mod al3d;
 mod binary;
+mod instrument;
+mod metropro;
+mod nanoscope;
+mod nid;
 mod npy;
 mod opd;
 mod plu;
@@ -73,7 +81,7 @@ type ReadFn = fn(&Ctx, &mut dyn Source, u64, &ReadOptions) -> Result<Topography,
 /// The formats, in the order a format is chosen by sniffing (text and
 /// matrix have no signature: any file is text to them, chosen when no
 /// signature matches).
-static REGISTRY: [Entry; 8] = [
+static REGISTRY: [Entry; 11] = [
     x3p::ENTRY,
     npy::ENTRY,
     text::ENTRY,
@@ -82,7 +90,16 @@ static REGISTRY: [Entry; 8] = [
     plu::ENTRY,
     opd::ENTRY,
     al3d::ENTRY,
+    metropro::ENTRY,
+    nanoscope::ENTRY,
+    nid::ENTRY,
 ];
+
+/// Extensions other programs use too (`.dat` for any data, `.spm`, the
+/// numbered `.001`, ...): a file with one is its format's only if its
+/// content has the format's signature; else it is detected as a file of
+/// no known extension (by another format's signature, else text).
+const SHARED_EXTENSIONS: [&str; 8] = ["dat", "di", "spm", "001", "002", "003", "004", "005"];
 
 impl Format {
     /// ISO 25178-72 X3P: a zip of `main.xml` and the binary point data.
@@ -110,6 +127,16 @@ impl Format {
     pub const OPD: Format = Format(&REGISTRY[6]);
     /// Alicona `.al3d`: tags, then f32 heights in metres.
     pub const AL3D: Format = Format(&REGISTRY[7]);
+    /// Zygo MetroPro `.dat` (a white-light interferometer's phase map;
+    /// invalid points missing).
+    pub const METROPRO: Format = Format(&REGISTRY[8]);
+    /// Bruker (Digital Instruments, Veeco) Nanoscope AFM files (`.di`,
+    /// `.spm`, `.001`, ...): several channels, the first height channel by
+    /// default ([`ReadOptions::channel`]).
+    pub const NANOSCOPE: Format = Format(&REGISTRY[9]);
+    /// Nanosurf `.nid` (and `.ezd`) AFM files: several channels, the first
+    /// height channel by default ([`ReadOptions::channel`]).
+    pub const NID: Format = Format(&REGISTRY[10]);
 
     /// Every format, in the registry's order.
     pub fn all() -> impl Iterator<Item = Format> {
@@ -148,16 +175,22 @@ impl Format {
 
     /// The format of a file called `path` whose first bytes are `head`:
     /// by an extension of a format with a signature (its reader says what
-    /// is wrong if the content is not one); else by the content's
-    /// signature (a zip of an X3P called `.dat`, a `.npy` without its
-    /// extension); else by a text extension; else text.
+    /// is wrong if the content is not one), unless the extension is one
+    /// other programs use too ([`SHARED_EXTENSIONS`]) and the signature is
+    /// not there; else by the content's signature (a zip of an X3P called
+    /// `.dat`, a `.npy` without its extension); else by a text extension;
+    /// else text.
     pub fn detect(path: &Path, head: &[u8]) -> Format {
         let by_name = Format::by_extension(path);
+        let shared = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| SHARED_EXTENSIONS.iter().any(|s| s.eq_ignore_ascii_case(e)));
         match by_name {
-            Some(f) if f.0.sniff.is_some() => f,
+            Some(f) if f.0.sniff.is_some_and(|sniff| !shared || sniff(head)) => f,
             _ => Format::all()
                 .find(|f| f.0.sniff.is_some_and(|sniff| sniff(head)))
-                .or(by_name)
+                .or(by_name.filter(|f| f.0.sniff.is_none()))
                 .unwrap_or(Format::TEXT),
         }
     }

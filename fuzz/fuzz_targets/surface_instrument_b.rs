@@ -1,0 +1,358 @@
+//! Structure-aware instrument files of part b: Zygo MetroPro `.dat` (a
+//! binary header: signature, header size, intensity and phase sizes,
+//! phase resolution, scale factors, lateral resolution), Bruker Nanoscope
+//! (a text header of sections: version, soft scales, scan list, image
+//! sections with offsets, lengths, sizes, Z scales) and Nanosurf `.nid`
+//! (an INI header of groups and channels, `#!`, data), each with data of a
+//! length right or off, a few bytes flipped afterwards, a channel chosen
+//! or not, read by `read_bytes` under the file's name; a surface read
+//! keeps the invariant of surface_check.rs. Raw bytes rarely make a header
+//! that parses: this target reaches the size, scale, unit and channel
+//! handling every run.
+#![no_main]
+
+#[path = "surface_check.rs"]
+mod surface_check;
+
+use arbitrary::Arbitrary;
+use ke_friction::topography::{Channel, ReadOptions};
+use libfuzzer_sys::fuzz_target;
+use surface_check::OptionsSpec;
+
+/// The most data bytes generated.
+const MAX_DATA: usize = 1 << 16;
+
+/// A grid size: small, or one of the edge cases.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+enum Dim {
+    /// 0 … 31.
+    Small(u8),
+    Edge(u8),
+}
+
+impl Dim {
+    fn get(self) -> u64 {
+        const EDGE: [u64; 7] = [0, 1, 65535, 65536, 1 << 31, u32::MAX as u64, u64::MAX];
+        match self {
+            Dim::Small(k) => u64::from(k % 32),
+            Dim::Edge(k) => EDGE[k as usize % EDGE.len()],
+        }
+    }
+}
+
+/// A number as a header gives it: a sane one, a special one, or any bits.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+enum Num {
+    /// 10^(e/16).
+    Exp(i8),
+    Special(u8),
+    Raw(f64),
+}
+
+impl Num {
+    fn get(self) -> f64 {
+        const S: [f64; 7] = [0.0, -1.0, f64::NAN, f64::INFINITY, -0.0, 1e308, 5e-324];
+        match self {
+            Num::Exp(e) => 10f64.powf(f64::from(e) / 16.0),
+            Num::Special(k) => S[k as usize % S.len()],
+            Num::Raw(v) => v,
+        }
+    }
+}
+
+/// The data's length: what the header makes, that ± a few bytes, or none.
+#[derive(Debug, Clone, Copy, Arbitrary)]
+enum Len {
+    Exact,
+    Delta(i8),
+    Nothing,
+}
+
+/// The data: `want` bytes (or that ± a few), from the fuzzer's values.
+fn data(out: &mut Vec<u8>, want: u64, len: Len, values: &[u8]) {
+    let n = match len {
+        Len::Exact => want,
+        Len::Delta(d) => want.saturating_add_signed(i64::from(d)),
+        Len::Nothing => 0,
+    };
+    let n = n.min(MAX_DATA as u64) as usize;
+    if values.is_empty() {
+        out.extend(std::iter::repeat_n(0x5a, n));
+    } else {
+        out.extend(values.iter().copied().cycle().take(n));
+    }
+}
+
+#[derive(Debug, Arbitrary)]
+struct MetroPro {
+    /// 0, 1, 2: formats 1 to 3; else a wrong signature.
+    version: u8,
+    header_size_off: Option<i16>,
+    ac: (u8, u8, u8),
+    cn: (Dim, Dim),
+    phase_res: i16,
+    sign: i16,
+    scale: [Num; 3],
+    lateral: Num,
+    serial2: u32,
+    stamp: i32,
+}
+
+impl MetroPro {
+    fn bytes(&self, len: Len, values: &[u8]) -> Vec<u8> {
+        let magic = [0x6f, 0x70, 0x71, 0x72][self.version as usize % 4];
+        let size: u32 = if self.version % 4 == 2 { 4096 } else { 834 };
+        let size = (i64::from(size) + i64::from(self.header_size_off.unwrap_or(0))).max(0) as u32;
+        let mut h = vec![0u8; 834];
+        h[..4].copy_from_slice(&[0x88, 0x1b, 0x03, magic]);
+        h[6..10].copy_from_slice(&size.to_be_bytes());
+        let (aw, ah, buckets) = (
+            u16::from(self.ac.0 % 8),
+            u16::from(self.ac.1 % 8),
+            u16::from(self.ac.2 % 3),
+        );
+        h[52..54].copy_from_slice(&aw.to_be_bytes());
+        h[54..56].copy_from_slice(&ah.to_be_bytes());
+        h[56..58].copy_from_slice(&buckets.to_be_bytes());
+        let (w, hgt) = (self.cn.0.get() as u16, self.cn.1.get() as u16);
+        h[68..70].copy_from_slice(&w.to_be_bytes());
+        h[70..72].copy_from_slice(&hgt.to_be_bytes());
+        h[76..80].copy_from_slice(&self.stamp.to_be_bytes());
+        for (at, v) in [164, 168, 176].into_iter().zip(self.scale) {
+            h[at..at + 4].copy_from_slice(&(v.get() as f32).to_be_bytes());
+        }
+        h[184..188].copy_from_slice(&(self.lateral.get() as f32).to_be_bytes());
+        h[218..220].copy_from_slice(&(self.phase_res % 4).to_be_bytes());
+        h[232..234].copy_from_slice(&self.sign.to_be_bytes());
+        h[798..802].copy_from_slice(&self.serial2.to_le_bytes());
+        h.resize(size.min(8192) as usize, 0);
+        let want = 2 * u64::from(buckets) * u64::from(aw) * u64::from(ah) + 4 * u64::from(w) * u64::from(hgt);
+        data(&mut h, want, len, values);
+        h
+    }
+}
+
+/// A Nanoscope image section.
+#[derive(Debug, Arbitrary)]
+struct Image {
+    nx: Dim,
+    ny: Dim,
+    bytes_per_pixel: u8,
+    /// Where the data are: right after the previous section's, or any.
+    offset: Option<u32>,
+    length_off: Option<i16>,
+    /// `Scan Size` form: two numbers and a unit, one and a unit, garbage.
+    size_form: u8,
+    size: Num,
+    unit: u8,
+    /// The soft scale's name: `Sens. Zsens` (a length per volt), one of
+    /// the fuzzer's, or none.
+    quantity: Option<u8>,
+    z_scale: Num,
+    hard_unit: u8,
+    name: u8,
+}
+
+#[derive(Debug, Arbitrary)]
+struct Nanoscope {
+    version: u8,
+    /// Soft scales: `@Sens. Q{i}: V {value} {unit}/{per}`.
+    soft: Vec<(Num, u8, u8)>,
+    global: Option<(Dim, Dim)>,
+    slow_axis: Option<(Num, u8)>,
+    mode: u8,
+    images: Vec<Image>,
+    junk_line: Option<String>,
+}
+
+const UNITS: [&str; 10] = ["nm", "~m", "um", "µm", "m", "pm", "Å", "deg", "V", ""];
+const VOLTS: [&str; 4] = ["V", "mV", "LSB", ""];
+
+impl Nanoscope {
+    fn bytes(&self, len: Len, values: &[u8]) -> Vec<u8> {
+        let version = ["0x07200000", "0x09200000", "0x09010201", "0x05120000", "zz"][self.version as usize % 5];
+        let mode = ["Image", "Force", "Force Volume"][self.mode as usize % 3];
+        let mut t = format!("\\*File list\r\n\\Version: {version}\r\n\\Date: 09:57:48 AM Tue Jan 12 2016\r\n");
+        t += "\\*Equipment list\r\n\\Microscope: Dimension V\r\n\\*Scanner list\r\n";
+        t += "\\@Sens. Zsens: V 20.82646 nm/V\r\n";
+        for (i, (value, unit, per)) in self.soft.iter().take(4).enumerate() {
+            let unit = UNITS[*unit as usize % UNITS.len()];
+            let per = VOLTS[*per as usize % VOLTS.len()];
+            t += &format!("\\@Sens. Q{i}: V {} {unit}/{per}\r\n", value.get());
+        }
+        t += &format!("\\*Ciao scan list\r\n\\Operating mode: {mode}\r\n\\Scan Size: 500 nm\r\n");
+        if let Some((gx, gy)) = self.global {
+            t += &format!("\\Samps/line: {}\r\n\\Lines: {}\r\n", gx.get(), gy.get());
+        }
+        if let Some((size, unit)) = self.slow_axis {
+            t += &format!(
+                "\\Slow Axis Size: {} {}\r\n",
+                size.get(),
+                UNITS[unit as usize % UNITS.len()]
+            );
+        }
+        if let Some(junk) = &self.junk_line {
+            t += junk;
+            t += "\r\n";
+        }
+        // The data follow the header, each channel's after the previous.
+        let header = 4096u64;
+        let mut next = header;
+        let mut blocks = Vec::new();
+        for (i, im) in self.images.iter().take(4).enumerate() {
+            let (nx, ny) = (im.nx.get(), im.ny.get());
+            let bpp = [2u64, 4, 1, 3][im.bytes_per_pixel as usize % 4];
+            let want = nx.saturating_mul(ny).saturating_mul(bpp);
+            let length = (want as i64)
+                .saturating_add(i64::from(im.length_off.unwrap_or(0)))
+                .max(0);
+            let offset = im.offset.map_or(next, u64::from);
+            let unit = UNITS[im.unit as usize % UNITS.len()];
+            let size = im.size.get();
+            let size = match im.size_form % 3 {
+                0 => format!("{size} {size} {unit}"),
+                1 => format!("{size} {unit}"),
+                _ => unit.to_string(),
+            };
+            let quantity = im.quantity.map_or("[Sens. Zsens] ".to_string(), |q| match q % 6 {
+                5 => String::new(),
+                q => format!("[Sens. Q{q}] "),
+            });
+            let hard = VOLTS[im.hard_unit as usize % VOLTS.len()];
+            let name = ["Height", "Phase", "ZSensor", "Height"][im.name as usize % 4];
+            t += &format!(
+                "\\*Ciao image list\r\n\\Data offset: {offset}\r\n\\Data length: {length}\r\n\\Bytes/pixel: {bpp}\r\n\\Samps/line: {nx}\r\n\\Number of lines: {ny}\r\n\\Scan Size: {size}\r\n\\@2:Image Data: S [{name}] \"{name} {i}\"\r\n\\@2:Z scale: V {quantity}(0.005 {hard}/LSB) {} {hard}\r\n",
+                im.z_scale.get()
+            );
+            blocks.push(want.min(MAX_DATA as u64));
+            next = next.saturating_add(want);
+        }
+        t += "\\*File list end\r\n\x1a";
+        let mut out = t.into_bytes();
+        out.resize(out.len().max(header as usize), 0);
+        data(&mut out, blocks.iter().sum(), len, values);
+        out
+    }
+}
+
+#[derive(Debug, Arbitrary)]
+struct NidChannel {
+    points: Dim,
+    lines: Dim,
+    bits: u8,
+    signed: bool,
+    intel: bool,
+    binary: bool,
+    unit: u8,
+    lateral_unit: Option<u8>,
+    range: Num,
+    min: Option<Num>,
+    size: Num,
+}
+
+#[derive(Debug, Arbitrary)]
+struct Nid {
+    /// Channels of group 0, each listed or not.
+    channels: Vec<(bool, NidChannel)>,
+    count_off: i8,
+    groups: u8,
+    crlf: bool,
+    junk_line: Option<String>,
+}
+
+impl Nid {
+    fn bytes(&self, len: Len, values: &[u8]) -> Vec<u8> {
+        let eol = if self.crlf { "\r\n" } else { "\n" };
+        let channels: Vec<&(bool, NidChannel)> = self.channels.iter().take(6).collect();
+        let count = (channels.len() as i64 + i64::from(self.count_off % 3)).max(0);
+        let mut t = format!(
+            "[DataSet]{eol}GroupCount={}{eol}Gr0-Count={count}{eol}",
+            self.groups % 3
+        );
+        for (j, (listed, _)) in channels.iter().enumerate() {
+            if *listed {
+                t += &format!("Gr0-Ch{j}=DataSet-0:{j}{eol}");
+            }
+        }
+        t += &format!("[DataSet-Info]{eol}Date=03-11-2022{eol}Time=11:46:25{eol}Head type=DriveAFM{eol}");
+        if let Some(junk) = &self.junk_line {
+            t += junk;
+            t += eol;
+        }
+        let mut want = 0u64;
+        for (j, (_, c)) in channels.iter().enumerate() {
+            let bits = [8u64, 16, 32, 64, 12][c.bits as usize % 5];
+            let unit = ["m", "nm", "um", "N", "V", "A", "deg"][c.unit as usize % 7];
+            t += &format!(
+                "[DataSet-0:{j}]{eol}Points={}{eol}Lines={}{eol}Frame=Scan forward{eol}Dim0Range={}{eol}Dim1Range={}{eol}Dim2Name=Z{j}{eol}Dim2Unit={unit}{eol}Dim2Range={}{eol}SaveMode={}{eol}SaveBits={bits}{eol}SaveSign={}{eol}SaveOrder={}{eol}",
+                c.points.get(),
+                c.lines.get(),
+                c.size.get(),
+                c.size.get(),
+                c.range.get(),
+                if c.binary { "Binary" } else { "Text" },
+                if c.signed { "Signed" } else { "Unsigned" },
+                if c.intel { "Intel" } else { "Motorola" },
+            );
+            if let Some(u) = c.lateral_unit {
+                let u = ["m", "um", "nm", "V"][u as usize % 4];
+                t += &format!("Dim0Unit={u}{eol}Dim1Unit={u}{eol}");
+            }
+            if let Some(min) = c.min {
+                t += &format!("Dim2Min={}{eol}", min.get());
+            }
+            want = want.saturating_add(c.points.get().saturating_mul(c.lines.get()).saturating_mul(bits / 8));
+        }
+        t += "#!";
+        let mut out = t.into_bytes();
+        data(&mut out, want, len, values);
+        out
+    }
+}
+
+#[derive(Debug, Arbitrary)]
+enum File {
+    MetroPro(MetroPro),
+    Nanoscope(Nanoscope),
+    Nid(Nid),
+}
+
+#[derive(Debug, Arbitrary)]
+struct Input {
+    options: OptionsSpec,
+    /// The file's intervals win: the options' are dropped (else they must
+    /// agree with the file's).
+    no_intervals: bool,
+    channel: Option<Result<u8, u8>>,
+    file: File,
+    len: Len,
+    values: Vec<u8>,
+    flips: Vec<(u16, u8)>,
+    /// Read under another file name (the format then by the signature).
+    other_name: bool,
+}
+
+fuzz_target!(|input: Input| {
+    let mut options: ReadOptions = input.options.options(None);
+    if input.no_intervals {
+        options.dx = None;
+        options.dy = None;
+    }
+    options.channel = input.channel.map(|c| match c {
+        Ok(i) => Channel::Index(usize::from(i % 10)),
+        Err(k) => Channel::Name(["Height", "Phase", "Scan forward (Z1)", "zsensor"][k as usize % 4].to_string()),
+    });
+    let (mut bytes, name) = match &input.file {
+        File::MetroPro(f) => (f.bytes(input.len, &input.values), "surface.dat"),
+        File::Nanoscope(f) => (f.bytes(input.len, &input.values), "surface.di"),
+        File::Nid(f) => (f.bytes(input.len, &input.values), "surface.nid"),
+    };
+    if !bytes.is_empty() {
+        for &(at, value) in input.flips.iter().take(8) {
+            let n = bytes.len();
+            bytes[at as usize % n] = value;
+        }
+    }
+    let name = if input.other_name { "surface.bin" } else { name };
+    surface_check::read(&bytes, name, &options);
+});
