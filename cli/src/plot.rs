@@ -115,8 +115,7 @@ struct SurfacePlotArgs {
     read: crate::surface::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
-    /// Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: 1e-5:0.1].
-    #[arg(long, value_name = "LO:HI")]
+    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
     f_star: Option<String>,
     /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
     #[arg(long, conflicts_with = "scan")]
@@ -140,6 +139,16 @@ struct AllArgs {
     out_dir: PathBuf,
     #[command(flatten)]
     scale: Scale,
+}
+
+/// `plot surface --f-star`'s help, quoting the library's default range.
+fn surface_f_star_help() -> String {
+    let (lo, hi) = ke_friction::SURFACE_F_STAR;
+    format!(
+        "Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: {}:{}, the library's SURFACE_F_STAR]",
+        ke_friction::Shortest(lo),
+        ke_friction::Shortest(hi)
+    )
 }
 
 /// Cells of the error map along ψ and F*.

@@ -320,14 +320,37 @@ fn frame<'a, DB: DrawingBackend>(
     y_area: u32,
     s: u32,
 ) -> Result<Plot<'a, DB>, String> {
-    let mut builder = ChartBuilder::on(area);
+    let font: TextStyle = (FAMILY, CAPTION_PX * s).into_font().into();
+    let room = area.dim_in_pixel().0 as i32 - ((MARGIN_PX + MARGIN_RIGHT_PX) * s) as i32;
+    let lines = match title {
+        Some(t) => wrap(t, room, |text| {
+            area.estimate_text_size(text, &font).map_or(i32::MAX, |(w, _)| w as i32)
+        }),
+        None => Vec::new(),
+    };
+    // A title that fits is the builder's caption (as it always was); a
+    // longer one is wrapped into lines drawn above the chart's area.
+    let below_title;
+    let on = if lines.len() > 1 {
+        let mut a = area.margin(MARGIN_PX * s, 0, 0, 0);
+        for line in &lines {
+            a = a.titled(line, font.clone()).map_err(err)?;
+        }
+        below_title = a;
+        &below_title
+    } else {
+        area
+    };
+    let mut builder = ChartBuilder::on(on);
     builder
         .margin(MARGIN_PX * s)
         .margin_right(MARGIN_RIGHT_PX * s)
         .x_label_area_size(if x.title.is_empty() { X_TICKS_ONLY_PX } else { X_AREA_PX } * s)
         .y_label_area_size(y_area);
-    if let Some(t) = title {
-        builder.caption(t, (FAMILY, CAPTION_PX * s));
+    if lines.len() > 1 {
+        builder.margin_top(0);
+    } else if let Some(t) = title {
+        builder.caption(t, font);
     }
     let mut chart = builder.build_cartesian_2d(x.coord(), y.coord()).map_err(err)?;
     let fx = |u: &f64| x.label(*u);
@@ -348,6 +371,46 @@ fn frame<'a, DB: DrawingBackend>(
     }
     mesh.draw().map_err(err)?;
     Ok(chart)
+}
+
+/// `text` in lines at most `room` pixels wide by `width` (a text's
+/// width in pixels): broken after a comma where one fits, else between
+/// words; a single word wider than `room` is shortened with "…". One
+/// line when it all fits.
+fn wrap(text: &str, room: i32, width: impl Fn(&str) -> i32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    // Pieces that end after ", " (kept with the piece before), then words.
+    let push = |piece: &str, lines: &mut Vec<String>, line: &mut String| {
+        let joined = format!("{line}{piece}");
+        if line.is_empty() || width(joined.trim_end()) <= room {
+            *line = joined;
+        } else {
+            lines.push(line.trim_end().to_string());
+            *line = piece.to_string();
+        }
+    };
+    for chunk in text.split_inclusive(", ") {
+        if width(chunk.trim_end()) <= room {
+            push(chunk, &mut lines, &mut line);
+            continue;
+        }
+        for word in chunk.split_inclusive(' ') {
+            let mut word = word.to_string();
+            if width(word.trim_end()) > room {
+                let mut kept: String = word.trim_end().to_string();
+                while !kept.is_empty() && width(&format!("{kept}…")) > room {
+                    kept.pop();
+                }
+                word = format!("{kept}… ");
+            }
+            push(&word, &mut lines, &mut line);
+        }
+    }
+    if !line.trim_end().is_empty() || lines.is_empty() {
+        lines.push(line.trim_end().to_string());
+    }
+    lines
 }
 
 /// A box around the plotting area.
@@ -517,11 +580,23 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
     }
     let w = pad + sample + gap + text_w + pad;
     let h = 2 * pad + row * entries.len() as i32 - (row - LEGEND_PX as i32 * si);
-    let (aw, _) = area.dim_in_pixel();
+    let (aw, ah) = area.dim_in_pixel();
     let inset = 12 * si;
+    let left = inset;
+    let right = aw as i32 - w - inset;
     let (x, y) = match c.legend {
-        Corner::UpperLeft => (inset, inset),
-        Corner::UpperRight => (aw as i32 - w - inset, inset),
+        Corner::UpperLeft => (left, inset),
+        Corner::UpperRight => (right, inset),
+        Corner::Clear => {
+            let bottom = ah as i32 - h - inset;
+            let lines = lines_in_pixels(chart, c);
+            // The upper corners first, then the lower ones; ties keep the
+            // earlier.
+            [(right, inset), (left, inset), (right, bottom), (left, bottom)]
+                .into_iter()
+                .min_by_key(|&(x, y)| covered(&lines, (x, y), (w, h), si))
+                .unwrap_or((right, inset))
+        }
     };
     area.draw(&Rectangle::new([(x, y), (x + w, y + h)], WHITE.mix(0.92).filled()))
         .map_err(err)?;
@@ -555,6 +630,50 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
             .map_err(err)?;
     }
     Ok(())
+}
+
+/// The lines of `c` (and where their markers go) in the pixels of the
+/// plotting area of `chart`.
+fn lines_in_pixels<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart) -> Vec<Vec<(i32, i32)>> {
+    c.series
+        .iter()
+        .map(|line| {
+            line.points
+                .iter()
+                .filter(|&&(x, y)| (!c.x.log || x > 0.0) && (!c.y.log || y > 0.0))
+                .map(|&(x, y)| pixel(chart, c.x.to_plot(x), c.y.to_plot(y)))
+                .collect()
+        })
+        .collect()
+}
+
+/// How much of `lines` (pixel polylines) a box at `at` of `size` covers,
+/// with a margin of the lines' and markers' half-width (`s` the scale):
+/// the number of points, every pixel or so along each line, inside it.
+fn covered(lines: &[Vec<(i32, i32)>], at: (i32, i32), size: (i32, i32), s: i32) -> usize {
+    let pad = (MARKER_PX + MARKER_RIM_PX) as i32 * s;
+    let (x0, y0, x1, y1) = (at.0 - pad, at.1 - pad, at.0 + size.0 + pad, at.1 + size.1 + pad);
+    let inside = |x: f64, y: f64| x >= f64::from(x0) && x <= f64::from(x1) && y >= f64::from(y0) && y <= f64::from(y1);
+    let mut n = 0;
+    for line in lines {
+        if let [only] = line[..] {
+            n += usize::from(inside(f64::from(only.0), f64::from(only.1)));
+        }
+        for pair in line.windows(2) {
+            let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
+            let (dx, dy) = (f64::from(bx - ax), f64::from(by - ay));
+            // Steps of about a pixel; a segment far outside the image
+            // (a point off the axis) counts at most 10000 steps.
+            let steps = dx.abs().max(dy.abs()).clamp(1.0, 1e4) as usize;
+            n += (0..=steps)
+                .filter(|&k| {
+                    let t = k as f64 / steps as f64;
+                    inside(f64::from(ax) + t * dx, f64::from(ay) + t * dy)
+                })
+                .count();
+        }
+    }
+    n
 }
 
 impl Render for Page {
