@@ -568,3 +568,52 @@ fn the_readmes_first_example_shows_its_output_and_defines_its_columns() {
         );
     }
 }
+
+/// Every compiler line the docs and examples show (`cc`, `gcc`,
+/// `gfortran`) optimises (`-O2`): an unoptimised build of the examples
+/// is slower by half again (issue 37); and the CMake example defaults
+/// to Release.
+#[test]
+fn every_build_line_shown_optimises() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    let mut files = vec![
+        root.join("README.md"),
+        root.join("docs/REFERENCE.md"),
+        root.join("ffi/install.sh"),
+    ];
+    for entry in std::fs::read_dir(root.join("ffi/examples")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "c" || e == "f90") {
+            files.push(path);
+        }
+    }
+    let mut lines = 0;
+    let mut unoptimised = vec![];
+    for file in &files {
+        let text = std::fs::read_to_string(file).unwrap();
+        for line in text.lines() {
+            // The command after comment leaders and labels (`#   C:      cc …`).
+            let command = line.trim_start_matches(['#', '!', '*', '/', ' ']);
+            let command = command.split_once(": ").map_or(command, |(label, rest)| {
+                if label.split_whitespace().count() == 1 {
+                    rest.trim_start()
+                } else {
+                    command
+                }
+            });
+            if ["cc ", "gcc ", "gfortran "].iter().any(|c| command.starts_with(c)) {
+                lines += 1;
+                if !command.contains("-O") {
+                    unoptimised.push(format!("{}: {line}", file.display()));
+                }
+            }
+        }
+    }
+    assert!(lines >= 6, "only {lines} build lines found");
+    assert!(unoptimised.is_empty(), "build lines without -O2: {unoptimised:#?}");
+    let cmake = std::fs::read_to_string(root.join("ffi/examples/cmake/CMakeLists.txt")).unwrap();
+    assert!(
+        cmake.contains("set(CMAKE_BUILD_TYPE Release CACHE STRING"),
+        "the CMake example does not default to Release"
+    );
+}
