@@ -88,10 +88,15 @@ version=$(pkg-config --modversion kefriction)
 cc -O2 ffi/examples/contacts.c $(pkg-config --cflags --libs kefriction) -lm -Wl,-rpath,"$prefix/lib" \
   -o "$out/contacts_pc"
 (cd "$elsewhere" && "$out/contacts_pc") > "$out/contacts_pc.txt"
-# CMake: find_package(kefriction CONFIG) and kefriction::kefriction.
-cmake -S ffi/examples/cmake -B "$out/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
-  > "$out/cmake.log" 2>&1 && cmake --build "$out/cmake-build" >> "$out/cmake.log" 2>&1 \
+# CMake: find_package(kefriction CONFIG) and kefriction::kefriction,
+# configured as its header comment says (no build type: it defaults to
+# Release, an optimised build).
+cmake -S ffi/examples/cmake -B "$out/cmake-build" -DCMAKE_PREFIX_PATH="$prefix" \
+  > "$out/cmake.log" 2>&1 && cmake --build "$out/cmake-build" --verbose >> "$out/cmake.log" 2>&1 \
   || { cat "$out/cmake.log"; echo "ffi: the CMake example failed"; exit 1; }
+grep -q '^CMAKE_BUILD_TYPE:STRING=Release$' "$out/cmake-build/CMakeCache.txt" \
+  && grep -q -- '-O[23]' "$out/cmake.log" \
+  || { echo "ffi: the CMake example does not default to an optimised (Release) build"; exit 1; }
 (cd "$elsewhere" && "$out/cmake-build/contacts") > "$out/contacts_cmake.txt"
 # Fortran: the installed module (.mod and its library) by pkg-config.
 gfortran -O2 -Wall -Werror ffi/examples/contacts.f90 $(pkg-config --cflags --libs kefriction-fortran) \

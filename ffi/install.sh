@@ -21,14 +21,15 @@
 # with another, compile share/kefriction/ke_friction.f90 yourself.
 #
 # Use (the shared library has no rpath of its own: give yours one):
-#   C:      cc app.c $(pkg-config --cflags --libs kefriction) -Wl,-rpath,PREFIX/lib
-#   static: cc app.c -IPREFIX/include PREFIX/lib/libkefriction.a -lpthread -ldl -lm
+#   C:      cc -O2 app.c $(pkg-config --cflags --libs kefriction) -Wl,-rpath,PREFIX/lib
+#   static: cc -O2 app.c -IPREFIX/include PREFIX/lib/libkefriction.a -lpthread -ldl -lm
 #   CMake:  find_package(kefriction CONFIG REQUIRED)
 #           target_link_libraries(app PRIVATE kefriction::kefriction)
-#           (configure with -DCMAKE_PREFIX_PATH=PREFIX; targets:
+#           (configure with -DCMAKE_PREFIX_PATH=PREFIX
+#           -DCMAKE_BUILD_TYPE=Release, or CMake compiles without -O; targets:
 #           kefriction::kefriction (shared), kefriction::static,
 #           kefriction::fortran (the module, when installed))
-#   Fortran: gfortran app.f90 $(pkg-config --cflags --libs kefriction-fortran) -Wl,-rpath,PREFIX/lib
+#   Fortran: gfortran -O2 app.f90 $(pkg-config --cflags --libs kefriction-fortran) -Wl,-rpath,PREFIX/lib
 # (pkg-config finds PREFIX/lib/pkgconfig through PKG_CONFIG_PATH unless
 # PREFIX is a system prefix.)
 set -eu

@@ -65,7 +65,7 @@ pub mod table;
 pub mod topography;
 
 pub use checks::ParamError;
-pub use curve::{Curve, CurveError, CURVE_ACCURACY};
+pub use curve::{Curve, CurveError, CURVE_ACCURACY, SURFACE_F_STAR};
 pub use distribution::{
     Density, DistributionError, Empirical, Family, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
     PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,

@@ -179,6 +179,8 @@ pub enum LengthUnit {
     Km,
     /// Metres.
     M,
+    /// Centimetres.
+    Cm,
     /// Millimetres.
     Mm,
     /// Micrometres.
@@ -197,6 +199,7 @@ crate::named!(
     [
         Km = "km",
         M = "m",
+        Cm = "cm",
         Mm = "mm",
         Um = "um",
         Nm = "nm",
@@ -223,11 +226,39 @@ impl LengthUnit {
         match self {
             LengthUnit::Km => 1e3,
             LengthUnit::M => 1.0,
+            LengthUnit::Cm => 1e-2,
             LengthUnit::Mm => 1e-3,
             LengthUnit::Um => 1e-6,
             LengthUnit::Nm => 1e-9,
             LengthUnit::Pm => 1e-12,
             LengthUnit::Angstrom => 1e-10,
+        }
+    }
+
+    /// The other spellings of the units a file or a SurfaceTopography
+    /// object may give (µ as the micro sign or the Greek letter, Å or A),
+    /// beside the names.
+    pub const SYMBOLS: [(&'static str, LengthUnit); 4] = [
+        ("\u{b5}m", LengthUnit::Um),
+        ("\u{3bc}m", LengthUnit::Um),
+        ("\u{c5}", LengthUnit::Angstrom),
+        ("A", LengthUnit::Angstrom),
+    ];
+
+    /// The unit called `text`: one of the names (`um`) or of the
+    /// [`SYMBOLS`](Self::SYMBOLS) (`µm`), or an error listing the names.
+    ///
+    /// ```
+    /// use ke_friction::LengthUnit;
+    /// assert_eq!(LengthUnit::from_symbol("\u{b5}m")?, LengthUnit::Um);
+    /// assert_eq!(LengthUnit::from_symbol("nm")?.metres(), 1e-9);
+    /// assert!(LengthUnit::from_symbol("inch").is_err());
+    /// # Ok::<(), ke_friction::NameError>(())
+    /// ```
+    pub fn from_symbol(text: &str) -> Result<LengthUnit, crate::NameError> {
+        match Self::SYMBOLS.iter().find(|(s, _)| *s == text) {
+            Some(&(_, unit)) => Ok(unit),
+            None => <LengthUnit as crate::Named>::parse(text),
         }
     }
 }

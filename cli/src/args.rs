@@ -422,10 +422,15 @@ pub fn physical_failure(e: ke_friction::ParamError, roughness: &str) -> Failure 
     Failure::input(format!("{flag}: {e}"))
 }
 
+/// The help heading the SI inputs are declared under; [`help_headings`]
+/// replaces it in each subcommand by one naming the flags they replace
+/// there.
+const SI_HEADING: &str = "SI inputs";
+
 /// The SI inputs that give ψ, θ, β, ν and ε* ([`Params::from_physical`]):
 /// all ten together, in place of the dimensionless flags.
 #[derive(Debug, Clone, clap::Args)]
-#[command(next_help_heading = "SI inputs (all ten together, in place of --psi, --theta, --beta, --nu, --eps-star)")]
+#[command(next_help_heading = SI_HEADING)]
 pub struct SiArgs {
     #[command(flatten)]
     pub materials: MaterialsArgs,
@@ -700,4 +705,54 @@ impl PaperRange {
             Shortest::rounded(self.h_star_min)
         );
     }
+}
+
+/// The flags the SI inputs stand in for, where a subcommand has them.
+const DIMENSIONLESS: [&str; 5] = ["psi", "theta", "beta", "nu", "eps_star"];
+
+/// The seven material flags ([`MaterialsArgs`]), by id.
+const MATERIALS: [&str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
+
+/// `command` (and its subcommands) with the help headings that depend on
+/// its flag set: the SI inputs' heading names the dimensionless flags
+/// this subcommand has (`lookup` has no `--beta`, `params` none at all),
+/// and the material flags without the roughness ones are headed as
+/// materials. Generated, so the help cannot name a flag the subcommand
+/// does not take.
+pub fn help_headings(mut command: clap::Command) -> clap::Command {
+    let names: Vec<String> = command.get_subcommands().map(|c| c.get_name().to_string()).collect();
+    for name in names {
+        command = command.mut_subcommand(name, help_headings);
+    }
+    let has = |command: &clap::Command, id: &str| command.get_arguments().any(|a| a.get_id() == id);
+    if !has(&command, "e1") {
+        return command;
+    }
+    let (heading, ids): (String, Vec<String>) = if has(&command, "sigma") {
+        let replaced: Vec<String> = DIMENSIONLESS
+            .iter()
+            .filter(|id| has(&command, id))
+            .map(|id| flag_of(id))
+            .collect();
+        let heading = if replaced.is_empty() {
+            format!("{SI_HEADING} (all ten together)")
+        } else {
+            format!("{SI_HEADING} (all ten together, in place of {})", replaced.join(", "))
+        };
+        let ids = command
+            .get_arguments()
+            .filter(|a| a.get_help_heading() == Some(SI_HEADING))
+            .map(|a| a.get_id().to_string())
+            .chain(MATERIALS.iter().map(|id| id.to_string()))
+            .collect();
+        (heading, ids)
+    } else {
+        let heading = "Materials (all seven together)".to_string();
+        (heading, MATERIALS.iter().map(|id| id.to_string()).collect())
+    };
+    for id in ids {
+        let heading = heading.clone();
+        command = command.mut_arg(id, |a| a.help_heading(heading));
+    }
+    command
 }

@@ -37,7 +37,7 @@ mod validate;
 mod verify;
 
 use args::Failure;
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 fn main() {
     restore_sigpipe();
@@ -75,9 +75,15 @@ enum Command {
     Surface(surface::Args),
 }
 
+/// The command line's definition: the derived one with the help headings
+/// that depend on each subcommand's flags ([`args::help_headings`]).
+fn command() -> clap::Command {
+    args::help_headings(Cli::command())
+}
+
 /// Parses the command line, runs the subcommand, returns the exit status.
 fn run() -> i32 {
-    let cli = match Cli::try_parse() {
+    let cli = match command().try_get_matches().and_then(|m| Cli::from_arg_matches(&m)) {
         Ok(cli) => cli,
         Err(err) => return clap_exit(err),
     };
@@ -170,5 +176,154 @@ fn restore_sigpipe() {
         unsafe {
             signal(SIGPIPE, SIG_DFL);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::command;
+
+    /// The `--flag`s named in `text` (`--f-star`, not `--` alone or `---`).
+    fn flags_in(text: &str) -> Vec<String> {
+        let mut flags = Vec::new();
+        for (i, _) in text.match_indices("--") {
+            let before = text[..i].chars().next_back();
+            if before.is_some_and(|c| c == '-' || c.is_alphanumeric()) {
+                continue;
+            }
+            let name: String = text[i + 2..]
+                .chars()
+                .take_while(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || *c == '-')
+                .collect();
+            let name = name.trim_end_matches('-');
+            if name.starts_with(|c: char| c.is_ascii_lowercase()) {
+                flags.push(format!("--{name}"));
+            }
+        }
+        flags
+    }
+
+    /// The long flags `command` takes (with `--help`, `--version`).
+    fn flags_of(command: &clap::Command) -> Vec<String> {
+        command
+            .get_arguments()
+            .filter_map(|a| a.get_long())
+            .map(|l| format!("--{l}"))
+            .chain(["--help".to_string(), "--version".to_string()])
+            .collect()
+    }
+
+    /// Every subcommand, with its path (`["plot", "surface"]`).
+    fn walk(command: &clap::Command, path: Vec<String>, out: &mut Vec<(Vec<String>, clap::Command)>) {
+        for sub in command.get_subcommands() {
+            let mut p = path.clone();
+            p.push(sub.get_name().to_string());
+            walk(sub, p.clone(), out);
+            out.push((p, sub.clone()));
+        }
+    }
+
+    fn subcommands() -> Vec<(Vec<String>, clap::Command)> {
+        let mut cmd = command().bin_name("kefric");
+        cmd.build();
+        let mut out = Vec::new();
+        walk(&cmd, Vec::new(), &mut out);
+        out
+    }
+
+    /// Every flag a subcommand's help names (in a flag's help, a heading,
+    /// the about text) is one that subcommand takes: "in place of --beta"
+    /// in a command without `--beta` would send a user to a refusal.
+    #[test]
+    fn every_flag_named_in_a_subcommands_help_is_one_it_takes() {
+        let mut wrong = Vec::new();
+        for (path, mut sub) in subcommands() {
+            if path.iter().any(|p| p == "help") {
+                continue; // clap's own
+            }
+            let flags = flags_of(&sub);
+            let mut help = format!("{}\n{}", sub.render_long_help(), sub.render_help());
+            // A parent's list of subcommands quotes their abouts, each
+            // checked with its own subcommand.
+            while let Some(start) = help.find("\nCommands:\n") {
+                let end = help[start..].find("\n\n").map_or(help.len(), |e| start + e);
+                help.replace_range(start..end, "");
+            }
+            for flag in flags_in(&help) {
+                if !flags.contains(&flag) && !wrong.contains(&(path.join(" "), flag.clone())) {
+                    wrong.push((path.join(" "), flag));
+                }
+            }
+        }
+        assert!(
+            wrong.is_empty(),
+            "flags named in a help that the subcommand does not take: {wrong:?}"
+        );
+        // The check sees what it is meant to: the SI heading of `lookup`
+        // names exactly its dimensionless flags, and `params` none.
+        let help = |name: &str| {
+            let (_, mut sub) = subcommands().into_iter().find(|(p, _)| p == &[name]).unwrap();
+            sub.render_help().to_string()
+        };
+        assert!(help("lookup").contains("SI inputs (all ten together, in place of --psi, --theta):"));
+        assert!(help("eval").contains("in place of --psi, --theta, --beta, --nu, --eps-star):"));
+        assert!(help("params").contains("SI inputs (all ten together):"));
+        assert!(help("surface").contains("Materials (all seven together):"));
+    }
+
+    /// Every `kefric SUBCOMMAND …` line of the README's and REFERENCE.md's
+    /// code blocks (with its `\` continuations and its comment) uses only
+    /// flags that subcommand takes.
+    #[test]
+    fn every_flag_in_the_docs_code_blocks_belongs_to_its_subcommand() {
+        let subs = subcommands();
+        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+        let mut checked = 0;
+        let mut wrong = Vec::new();
+        for doc in ["README.md", "docs/REFERENCE.md"] {
+            let text = std::fs::read_to_string(format!("{root}/{doc}")).unwrap();
+            let mut in_block = false;
+            let mut lines = text.lines();
+            while let Some(line) = lines.next() {
+                if line.trim_start().starts_with("```") {
+                    in_block = !in_block;
+                    continue;
+                }
+                let Some(at) = line.find("kefric ").filter(|_| in_block) else {
+                    continue;
+                };
+                let mut command = line[at + "kefric ".len()..].to_string();
+                while command.trim_end().ends_with('\\') {
+                    command = command.trim_end().trim_end_matches('\\').to_string();
+                    command.push(' ');
+                    command.push_str(lines.next().unwrap_or_default());
+                }
+                let words: Vec<&str> = command.split_whitespace().collect();
+                // The longest subcommand path the words start with.
+                let Some((path, sub)) = subs
+                    .iter()
+                    .filter(|(p, _)| words.len() >= p.len() && p.iter().zip(&words).all(|(a, b)| a == b))
+                    .max_by_key(|(p, _)| p.len())
+                else {
+                    wrong.push((doc, command.clone(), "no such subcommand".to_string()));
+                    continue;
+                };
+                checked += 1;
+                let flags = flags_of(sub);
+                for flag in flags_in(&command) {
+                    if !flags.contains(&flag) {
+                        wrong.push((doc, path.join(" "), flag));
+                    }
+                }
+            }
+        }
+        assert!(
+            wrong.is_empty(),
+            "flags in the docs' examples their subcommand does not take: {wrong:#?}"
+        );
+        assert!(
+            checked >= 15,
+            "only {checked} kefric lines found in the docs' code blocks"
+        );
     }
 }

@@ -6,7 +6,7 @@ use crate::args::{
 };
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::topography::{psd_all, scan, Psd, ScanRange, Window};
-use ke_friction::{Family, Fit, LookupError, ModelKind};
+use ke_friction::{Family, Fit, LookupError, ModelKind, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Draw the paper's figures, a curve, or a table's error map, as PNG or SVG
@@ -115,8 +115,7 @@ struct SurfacePlotArgs {
     read: crate::surface::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
-    /// Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: 1e-5:0.1].
-    #[arg(long, value_name = "LO:HI")]
+    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
     f_star: Option<String>,
     /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
     #[arg(long, conflicts_with = "scan")]
@@ -140,6 +139,16 @@ struct AllArgs {
     out_dir: PathBuf,
     #[command(flatten)]
     scale: Scale,
+}
+
+/// `plot surface --f-star`'s help, quoting the library's default range.
+fn surface_f_star_help() -> String {
+    let (lo, hi) = ke_friction::SURFACE_F_STAR;
+    format!(
+        "Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: {}:{}, the library's SURFACE_F_STAR]",
+        ke_friction::Shortest(lo),
+        ke_friction::Shortest(hi)
+    )
 }
 
 /// Cells of the error map along ψ and F*.
@@ -197,7 +206,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                         .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))
                 });
                 match fit {
-                    Ok(model) => fits.push((model.params().constants.distribution.to_string(), model)),
+                    Ok(model) => fits.push((fit_label(family, surface.stats()), model)),
                     // A fit the surface does not admit (e.g. a skewness
                     // beyond Pearson's range) is left out, and said so.
                     Err(f) if family != Family::Gaussian => {
@@ -239,6 +248,21 @@ pub fn run(args: Args) -> Result<(), Failure> {
             }
             Ok(())
         }
+    }
+}
+
+/// A fit's legend label: its family and, for Pearson, the measured
+/// moments it matches (the empirical one matches them too); short, so
+/// that the legend leaves the curves room.
+fn fit_label(family: Family, stats: &ke_friction::topography::SurfaceStats) -> String {
+    match family {
+        Family::Pearson => format!(
+            "pearson (Ssk {}, Sku {})",
+            Shortest::rounded(stats.skewness),
+            Shortest::rounded(stats.kurtosis)
+        ),
+        Family::Empirical => "empirical (the measured heights)".to_string(),
+        other => other.name().to_string(),
     }
 }
 

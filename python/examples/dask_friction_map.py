@@ -5,6 +5,10 @@ Dask cluster (local processes here; a Slurm allocation with one change).
 Usage: python3 python/examples/dask_friction_map.py [--size N] [--chunk C]
        [--surfaces S] [--workers W] [--out RESULT.npz]
 
+Requires, besides ke_friction and NumPy: ``pip install "dask[array,distributed]"``
+(``dask.array`` for the map, ``dask.distributed`` for the cluster and
+``client.map``); on Slurm also ``dask-jobqueue`` (below).
+
 Two kinds of work:
 
 * a friction map: mu(psi, theta, F*) from the default table on an N x N

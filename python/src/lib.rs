@@ -29,9 +29,11 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<distribution::DistributionCore>()?;
     m.add_class::<surface::SurfaceCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("CURVE_ACCURACY", ke_friction::CURVE_ACCURACY)?;
+    m.add("SURFACE_F_STAR", ke_friction::SURFACE_F_STAR)?;
     // The core's name lists (one definition, `named!`): what the Python
     // side checks its string arguments against.
     m.add("DETRENDS", <ke_friction::topography::Detrend as Named>::names())?;
@@ -39,6 +41,12 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("FAMILIES", <ke_friction::Family as Named>::names())?;
     m.add("FITS", <ke_friction::Fit as Named>::names())?;
     m.add("MODELS", <ke_friction::ModelKind as Named>::names())?;
+    // The length units' names and symbols (`length_unit` gives metres).
+    let units: Vec<&str> = <ke_friction::LengthUnit as Named>::names()
+        .into_iter()
+        .chain(ke_friction::LengthUnit::SYMBOLS.iter().map(|(s, _)| *s))
+        .collect();
+    m.add("LENGTH_UNITS", units)?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;
     Ok(())

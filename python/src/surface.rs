@@ -17,6 +17,16 @@ use pyo3::prelude::*;
 use std::path::PathBuf;
 
 /// The detrending called `name` (the core's names).
+/// Metres per unit of a length unit's name or symbol (`"um"`, `"µm"`,
+/// `"Å"`: the core's `LengthUnit::from_symbol`, the names `kefric surface
+/// --z-unit` takes); ValueError listing the names otherwise.
+#[pyfunction]
+pub fn length_unit(name: &str) -> PyResult<f64> {
+    ke_friction::LengthUnit::from_symbol(name)
+        .map(ke_friction::LengthUnit::metres)
+        .map_err(raise)
+}
+
 fn detrend_of(name: &str) -> PyResult<Detrend> {
     Detrend::from_name(name).ok_or_else(|| {
         let names: Vec<String> = Detrend::ALL.iter().map(|d| format!("{:?}", d.name())).collect();

@@ -162,6 +162,70 @@ def test_read_text_and_units(tmp_path, files):
     assert s.stats["sigma"] == pytest.approx(ref.stats["sigma"], rel=1e-12)
 
 
+def test_units_by_name_as_the_cli_takes_them(tmp_path, files):
+    """z_unit and xy_unit take the CLI's --z-unit names (the core's list,
+    ``_core.LENGTH_UNITS``) and symbols as well as numbers, with the same
+    result; the record equals ``kefric surface --z-unit um``'s."""
+    paths, arrays = files
+    path = tmp_path / "um.txt"
+    np.savetxt(path, arrays["b"] * 1e6)
+    by_number = kf.Surface.read(path, dx=DX, dy=DY, z_unit=1e-6)
+    for name in ["um", "\u00b5m", "\u03bcm"]:
+        assert kf.Surface.read(path, dx=DX, dy=DY, z_unit=name).stats == by_number.stats, name
+    assert_same(by_number.stats, cli(str(path), "--dx", str(DX), "--dy", str(DY), "--z-unit", "um")["surface"])
+    # Every name the CLI lists is accepted, at its number of metres.
+    metres = {"km": 1e3, "m": 1.0, "cm": 1e-2, "mm": 1e-3, "um": 1e-6, "nm": 1e-9, "pm": 1e-12, "angstrom": 1e-10}
+    cli_names = [n for n in kf._core.LENGTH_UNITS if n.isascii() and n != "A"]
+    assert cli_names == list(metres)
+    nm = tmp_path / "nm.txt"
+    np.savetxt(nm, arrays["b"] * 1e9)
+    ref = kf.Surface.read(nm, dx=DX, dy=DY, z_unit=1e-9).stats
+    for name, m in metres.items():
+        assert kf._core.length_unit(name) == m, name
+    assert kf.Surface.read(nm, dx=DX, dy=DY, z_unit="nm").stats == ref
+    # x y z triples in micrometres, the columns' unit by name
+    ny, nx = arrays["b"].shape
+    y, x = np.mgrid[0:ny, 0:nx]
+    xyz = tmp_path / "map.xyz"
+    np.savetxt(xyz, np.column_stack([x.ravel() * 0.5, y.ravel() * 0.8, arrays["b"].ravel() * 1e6]))
+    assert (kf.Surface.read(xyz, z_unit="um", xy_unit="um").stats
+            == kf.Surface.read(xyz, z_unit=1e-6, xy_unit=1e-6).stats)
+    with pytest.raises(ValueError, match=r"z_unit: length unit 'inch' is unknown: must be one of km, m, cm, mm, um"):
+        kf.Surface.read(path, dx=DX, dy=DY, z_unit="inch")
+    with pytest.raises(TypeError, match="xy_unit"):
+        kf.Surface.read(path, dx=DX, dy=DY, xy_unit=[1e-6])
+
+
+def test_stats_is_both_an_attribute_and_a_call(files):
+    """``s.stats`` (the record, as before) and ``s.stats()`` (as model(),
+    curve(), friction() are called) give the same dict; it pickles as a
+    plain dict."""
+    _, arrays = files
+    s = kf.Surface.from_heights(arrays["b"], DX, DY)
+    assert s.stats() == s.stats and isinstance(s.stats(), dict)
+    assert s.stats()["sigma"] == s.stats["sigma"] > 0
+    assert type(pickle.loads(pickle.dumps(s.stats))) is dict
+    assert pickle.loads(pickle.dumps(s.stats)) == s.stats
+
+
+def test_curve_covers_the_light_loads_friction_answers(files):
+    """``curve()`` defaults to the library's SURFACE_F_STAR, [1e-7, 0.1]
+    (``kefric plot surface``'s range): a 2 kPa load on a 1 GPa hardness,
+    F* = 2e-6, which friction() and ``kefric surface --pressure`` answer,
+    is on it, with the same mu (within the curve's accuracy)."""
+    _, arrays = files
+    s = kf.Surface.from_heights(arrays["b"], DX, DY)
+    assert kf._core.SURFACE_F_STAR == (1e-7, 0.1)
+    c = s.curve(**MATERIALS, distribution="gaussian")
+    f = s.friction(pressure=2e3, **MATERIALS, distribution="gaussian")
+    assert f["f_star"] == pytest.approx(2e-6, rel=1e-12)
+    assert c.mu(f["f_star"]) == pytest.approx(f["mu"], rel=10 * kf.CURVE_ACCURACY)
+    assert c.mu(1e-7) > 0 and c.mu(0.1) > 0
+    with pytest.raises(ValueError):
+        c.mu(0.2)
+
+
+
 # ---- pairs ----------------------------------------------------------------
 
 def test_a_pair_equals_the_cli_record(files):

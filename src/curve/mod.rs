@@ -53,6 +53,13 @@ use crate::table::{LookupError, Table};
 /// error of μ against direct integration, measured at build time.
 pub const CURVE_ACCURACY: f64 = 1e-6;
 
+/// The F* range of a measured surface's μ(F*) by default, in every front
+/// end (`kefric plot surface`, Python's `Surface.curve`): from 1e-7 (a
+/// nominal pressure of 100 Pa on a hardness of 1 GPa: the light loads
+/// `kefric surface --pressure` answers, below the paper's 1e-5) to the
+/// paper's 0.1.
+pub const SURFACE_F_STAR: (f64, f64) = (1e-7, 0.1);
+
 /// The fewest cells per octave, as a power of two (16 cells).
 const MIN_CELL_BITS: u32 = 4;
 /// The most (256 cells per octave), which any smooth μ meets.

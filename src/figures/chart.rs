@@ -115,6 +115,9 @@ pub enum Corner {
     UpperLeft,
     /// Top right.
     UpperRight,
+    /// The corner (of the four) whose legend box covers the fewest of the
+    /// lines' pixels: where the data is not.
+    Clear,
 }
 
 /// A line chart.

@@ -100,7 +100,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>, f_star: Option<(f64, f64
         x: x.clone(),
         y,
         series: vec![curve],
-        legend: Corner::UpperRight,
+        legend: Corner::Clear,
     });
     if bottom.is_some() {
         // One axis title, under the lower panel.
@@ -116,7 +116,7 @@ pub fn curve_page(model: &Model, table: Option<&Table>, f_star: Option<(f64, f64
             x,
             y,
             series,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         },
         bottom,
     })

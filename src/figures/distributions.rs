@@ -108,7 +108,7 @@ pub fn distributions_page(psi: f64, theta: f64) -> Result<Page, FigureError> {
             x,
             y,
             series: mu_series,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         },
         bottom: Some(Chart {
             title: None,
@@ -125,7 +125,7 @@ pub fn distributions_page(psi: f64, theta: f64) -> Result<Page, FigureError> {
                 ticks: None,
             },
             series: g_series,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         }),
     })
 }

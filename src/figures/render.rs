@@ -322,14 +322,40 @@ fn frame<'a, DB: DrawingBackend>(
     y_area: u32,
     s: u32,
 ) -> Result<Plot<'a, DB>, String> {
-    let mut builder = ChartBuilder::on(area);
+    let font: TextStyle = (FAMILY, CAPTION_PX * s).into_font().into();
+    // The caption is centred between the margins, and must not reach over
+    // the vertical axis's labels on the left (its top tick label rises
+    // above the plotting area): as much room on the right.
+    let room = area.dim_in_pixel().0 as i32 - 2 * y_area as i32 - ((MARGIN_PX + MARGIN_RIGHT_PX) * s) as i32;
+    let lines = match title {
+        Some(t) => wrap(t, room, |text| {
+            area.estimate_text_size(text, &font).map_or(i32::MAX, |(w, _)| w as i32)
+        }),
+        None => Vec::new(),
+    };
+    // A title that fits is the builder's caption (as it always was); a
+    // longer one is wrapped into lines drawn above the chart's area.
+    let below_title;
+    let on = if lines.len() > 1 {
+        let mut a = area.margin(MARGIN_PX * s, 0, 0, 0);
+        for line in &lines {
+            a = a.titled(line, font.clone()).map_err(err)?;
+        }
+        below_title = a;
+        &below_title
+    } else {
+        area
+    };
+    let mut builder = ChartBuilder::on(on);
     builder
         .margin(MARGIN_PX * s)
         .margin_right(MARGIN_RIGHT_PX * s)
         .x_label_area_size(if x.title.is_empty() { X_TICKS_ONLY_PX } else { X_AREA_PX } * s)
         .y_label_area_size(y_area);
-    if let Some(t) = title {
-        builder.caption(t, (FAMILY, CAPTION_PX * s));
+    if lines.len() > 1 {
+        builder.margin_top(0);
+    } else if let Some(t) = title {
+        builder.caption(t, font);
     }
     let mut chart = builder.build_cartesian_2d(x.coord(), y.coord()).map_err(err)?;
     let fx = |u: &f64| x.label(*u);
@@ -350,6 +376,46 @@ fn frame<'a, DB: DrawingBackend>(
     }
     mesh.draw().map_err(err)?;
     Ok(chart)
+}
+
+/// `text` in lines at most `room` pixels wide by `width` (a text's
+/// width in pixels): broken after a comma where one fits, else between
+/// words; a single word wider than `room` is shortened with "…". One
+/// line when it all fits.
+fn wrap(text: &str, room: i32, width: impl Fn(&str) -> i32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    // Pieces that end after ", " (kept with the piece before), then words.
+    let push = |piece: &str, lines: &mut Vec<String>, line: &mut String| {
+        let joined = format!("{line}{piece}");
+        if line.is_empty() || width(joined.trim_end()) <= room {
+            *line = joined;
+        } else {
+            lines.push(line.trim_end().to_string());
+            *line = piece.to_string();
+        }
+    };
+    for chunk in text.split_inclusive(", ") {
+        if width(chunk.trim_end()) <= room {
+            push(chunk, &mut lines, &mut line);
+            continue;
+        }
+        for word in chunk.split_inclusive(' ') {
+            let mut word = word.to_string();
+            if width(word.trim_end()) > room {
+                let mut kept: String = word.trim_end().to_string();
+                while !kept.is_empty() && width(&format!("{kept}…")) > room {
+                    kept.pop();
+                }
+                word = format!("{kept}… ");
+            }
+            push(&word, &mut lines, &mut line);
+        }
+    }
+    if !line.trim_end().is_empty() || lines.is_empty() {
+        lines.push(line.trim_end().to_string());
+    }
+    lines
 }
 
 /// A box around the plotting area.
@@ -523,11 +589,23 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
     }
     let w = pad + sample + gap + text_w + pad;
     let h = 2 * pad + row * entries.len() as i32 - (row - LEGEND_PX as i32 * si);
-    let (aw, _) = area.dim_in_pixel();
+    let (aw, ah) = area.dim_in_pixel();
     let inset = 12 * si;
+    let left = inset;
+    let right = aw as i32 - w - inset;
     let (x, y) = match c.legend {
-        Corner::UpperLeft => (inset, inset),
-        Corner::UpperRight => (aw as i32 - w - inset, inset),
+        Corner::UpperLeft => (left, inset),
+        Corner::UpperRight => (right, inset),
+        Corner::Clear => {
+            let bottom = ah as i32 - h - inset;
+            let lines = lines_in_pixels(chart, c);
+            // The upper corners first, then the lower ones; ties keep the
+            // earlier.
+            [(right, inset), (left, inset), (right, bottom), (left, bottom)]
+                .into_iter()
+                .min_by_key(|&(x, y)| covered(&lines, (x, y), (w, h), si))
+                .unwrap_or((right, inset))
+        }
     };
     area.draw(&Rectangle::new([(x, y), (x + w, y + h)], WHITE.mix(0.92).filled()))
         .map_err(err)?;
@@ -565,6 +643,50 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
             .map_err(err)?;
     }
     Ok(())
+}
+
+/// The lines of `c` (and where their markers go) in the pixels of the
+/// plotting area of `chart`.
+fn lines_in_pixels<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart) -> Vec<Vec<(i32, i32)>> {
+    c.series
+        .iter()
+        .map(|line| {
+            line.points
+                .iter()
+                .filter(|&&(x, y)| (!c.x.log || x > 0.0) && (!c.y.log || y > 0.0))
+                .map(|&(x, y)| pixel(chart, c.x.to_plot(x), c.y.to_plot(y)))
+                .collect()
+        })
+        .collect()
+}
+
+/// How much of `lines` (pixel polylines) a box at `at` of `size` covers,
+/// with a margin of the lines' and markers' half-width (`s` the scale):
+/// the number of points, every pixel or so along each line, inside it.
+fn covered(lines: &[Vec<(i32, i32)>], at: (i32, i32), size: (i32, i32), s: i32) -> usize {
+    let pad = (MARKER_PX + MARKER_RIM_PX) as i32 * s;
+    let (x0, y0, x1, y1) = (at.0 - pad, at.1 - pad, at.0 + size.0 + pad, at.1 + size.1 + pad);
+    let inside = |x: f64, y: f64| x >= f64::from(x0) && x <= f64::from(x1) && y >= f64::from(y0) && y <= f64::from(y1);
+    let mut n = 0;
+    for line in lines {
+        if let [only] = line[..] {
+            n += usize::from(inside(f64::from(only.0), f64::from(only.1)));
+        }
+        for pair in line.windows(2) {
+            let ((ax, ay), (bx, by)) = (pair[0], pair[1]);
+            let (dx, dy) = (f64::from(bx - ax), f64::from(by - ay));
+            // Steps of about a pixel; a segment far outside the image
+            // (a point off the axis) counts at most 10000 steps.
+            let steps = dx.abs().max(dy.abs()).clamp(1.0, 1e4) as usize;
+            n += (0..=steps)
+                .filter(|&k| {
+                    let t = k as f64 / steps as f64;
+                    inside(f64::from(ax) + t * dx, f64::from(ay) + t * dy)
+                })
+                .count();
+        }
+    }
+    n
 }
 
 impl Render for Page {
@@ -748,6 +870,250 @@ impl Render for ErrorMap {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use plotters_backend::{BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingErrorKind};
+
+    /// A backend that draws nothing and records where each text would go
+    /// (its box, rotation included, in pixels): the measuring hook of
+    /// [`every_text_lies_inside_the_image`]. Text outside the canvas is
+    /// what the real backends silently clip.
+    struct Extents {
+        size: (u32, u32),
+        texts: Texts,
+    }
+
+    /// The texts drawn and their boxes (x0, y0, x1, y1), shared with the
+    /// test (the drawing area owns the backend).
+    type Texts = std::rc::Rc<std::cell::RefCell<Vec<(String, (i32, i32, i32, i32))>>>;
+
+    impl DrawingBackend for Extents {
+        type ErrorType = std::convert::Infallible;
+        fn get_size(&self) -> (u32, u32) {
+            self.size
+        }
+        fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn draw_pixel(&mut self, _: BackendCoord, _: BackendColor) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn draw_line<S: BackendStyle>(
+            &mut self,
+            _: BackendCoord,
+            _: BackendCoord,
+            _: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn draw_rect<S: BackendStyle>(
+            &mut self,
+            _: BackendCoord,
+            _: BackendCoord,
+            _: &S,
+            _: bool,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            _: I,
+            _: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            _: I,
+            _: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            Ok(())
+        }
+        /// The box the default `draw_text` fills, by the same arithmetic
+        /// (plotters-backend's): the layout box moved to the anchor, then
+        /// rotated about the anchor point.
+        fn draw_text<T: BackendTextStyle>(
+            &mut self,
+            text: &str,
+            style: &T,
+            pos: BackendCoord,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            let ((x0, y0), (x1, y1)) = style.layout_box(text).expect("the embedded font lays out");
+            let (w, h) = (x1 - x0, y1 - y0);
+            let dx = match style.anchor().h_pos {
+                HPos::Left => 0,
+                HPos::Right => -w,
+                HPos::Center => -w / 2,
+            };
+            let dy = match style.anchor().v_pos {
+                VPos::Top => 0,
+                VPos::Center => -h / 2,
+                VPos::Bottom => -h,
+            };
+            let t = style.transform();
+            let (a, b) = (t.transform(dx, dy), t.transform(dx + w, dy + h));
+            self.texts.borrow_mut().push((
+                text.to_string(),
+                (
+                    pos.0 + a.0.min(b.0),
+                    pos.1 + a.1.min(b.1),
+                    pos.0 + a.0.max(b.0),
+                    pos.1 + a.1.max(b.1),
+                ),
+            ));
+            Ok(())
+        }
+    }
+
+    /// The texts of `what` drawn at `scale` as the PNG is (supersampled)
+    /// that reach outside the canvas, and how many texts there were.
+    fn clipped(what: &impl Render, scale: u32) -> (Vec<String>, usize) {
+        fonts().unwrap();
+        let k = supersample(scale);
+        let (w, h) = size_at(scale).unwrap();
+        let texts = Texts::default();
+        let backend = Extents {
+            size: (w * k, h * k),
+            texts: std::rc::Rc::clone(&texts),
+        };
+        what.render(&backend.into_drawing_area(), scale * k).unwrap();
+        let (w, h) = ((w * k) as i32, (h * k) as i32);
+        let texts = texts.borrow();
+        let out = texts
+            .iter()
+            .filter(|(_, (x0, y0, x1, y1))| *x0 < 0 || *y0 < 0 || *x1 > w || *y1 > h)
+            .map(|(t, b)| format!("{t:?} at {b:?} in {w}x{h}"))
+            .collect();
+        (out, texts.len())
+    }
+
+    /// A surface page with the longest title the CLI writes: two long file
+    /// names, both intervals and both filters.
+    fn long_surface_page(pair: bool) -> Page {
+        use crate::{HeightDistribution, Model, Params};
+        let gauss = Model::new(Params::new(5.0, 0.001)).unwrap();
+        let pearson =
+            Model::new(Params::new(5.0, 0.001).distribution(HeightDistribution::pearson(0.3, 3.4).unwrap())).unwrap();
+        let fits = vec![
+            ("gaussian".to_string(), gauss),
+            ("pearson (Ssk 0.3, Sku 3.4)".to_string(), pearson),
+        ];
+        let heights: Vec<f64> = (0..4000).map(|i| ((i as f64) * 0.618034).fract() * 6.0 - 3.0).collect();
+        crate::figures::surface_page(
+            "instrument_export_2024-05-17_sample-03_area-2.x3p + counterface_disk_2024-05-17.x3p",
+            "at dx = 1.23457e-6 m, dy = 2.46914e-6 m, lambda_s = 4.5e-6 m, lambda_c = 0.000123457 m",
+            (!pair).then_some(&heights[..]),
+            &fits,
+            None,
+        )
+        .unwrap()
+    }
+
+    /// Every plot kind of `kefric plot`, at scale 1 and 2: no text (title,
+    /// axis title, tick label, legend) reaches outside the image, where it
+    /// would be cut.
+    #[test]
+    fn every_text_lies_inside_the_image() {
+        use crate::figures::{curve_page, distributions_page, scan_page, table_error, Figure, ScanPoint};
+        use crate::{Model, Params, Table};
+        let mut pages: Vec<(&str, Page)> = Vec::new();
+        for fig in [Figure::Fig3, Figure::Fig4, Figure::Fig5, Figure::Fig6] {
+            pages.push((fig.name(), fig.page().unwrap()));
+        }
+        let model = Model::new(Params::new(1.0, 0.003)).unwrap();
+        pages.push(("curve", curve_page(&model, Some(Table::embedded()), None).unwrap()));
+        pages.push(("distributions", distributions_page(1.0, 0.001).unwrap()));
+        pages.push(("surface", long_surface_page(false)));
+        pages.push(("surface (pair)", long_surface_page(true)));
+        let points: Vec<ScanPoint> = (0..12)
+            .map(|i| ScanPoint {
+                lambda_s: 2e-6 * 1.5f64.powi(i),
+                mu: Some(0.01 * 1.2f64.powi(i)),
+                psi: Some(5.0 / 1.3f64.powi(i)),
+                beta: 0.04 + 0.001 * f64::from(i),
+            })
+            .collect();
+        pages.push((
+            "surface --scan",
+            scan_page("instrument_export_2024-05-17_sample-03_area-2.x3p", &points, Some(5e-6)).unwrap(),
+        ));
+        #[cfg(feature = "topography")]
+        {
+            let q: Vec<f64> = (0..200).map(|i| 1e4 * 1.05f64.powi(i)).collect();
+            let psd = crate::topography::Psd {
+                c: q.iter().map(|q| 1e-30 * q.powf(-3.2)).collect(),
+                q,
+            };
+            let spectra = [("along x", &psd), ("along y", &psd), ("area (radial)", &psd)];
+            pages.push((
+                "surface --psd",
+                crate::figures::psd_page(
+                    "instrument_export_2024-05-17_sample-03_area-2.x3p",
+                    &spectra,
+                    Some(4.5e-6),
+                    Some(1.2e-4),
+                )
+                .unwrap(),
+            ));
+        }
+        let map = table_error(Table::embedded(), 0.003, 8, 12).unwrap();
+        for scale in [1, 2] {
+            for (name, page) in &pages {
+                let (out, n) = clipped(page, scale);
+                assert!(n >= 10, "{name}: only {n} texts drawn");
+                assert!(
+                    out.is_empty(),
+                    "{name} at scale {scale}: texts cut at the image's edge: {out:#?}"
+                );
+            }
+            let (out, n) = clipped(&map, scale);
+            assert!(n >= 10 && out.is_empty(), "table-error at scale {scale}: {out:#?}");
+        }
+        // The check sees a cut: the surface page's title on one line, as
+        // plotters' caption would draw it unwrapped, is wider than the image.
+        let (title_w, _) = {
+            fonts().unwrap();
+            let backend = Extents {
+                size: BASE_SIZE,
+                texts: std::rc::Rc::default(),
+            };
+            let font: TextStyle = (FAMILY, CAPTION_PX).into_font().into();
+            let title = long_surface_page(false).top.title.unwrap();
+            backend.estimate_text_size(&title, &font).unwrap()
+        };
+        assert!(
+            title_w > BASE_SIZE.0,
+            "the long title ({title_w} px) would fit unwrapped"
+        );
+    }
+
+    /// A title is broken after commas where it can be, between words
+    /// where it must, and a word wider than the room is shortened.
+    #[test]
+    fn titles_wrap_after_commas_then_between_words() {
+        let width = |t: &str| 10 * t.chars().count() as i32;
+        assert_eq!(wrap("a short one", 200, width), ["a short one"]);
+        assert_eq!(
+            wrap("psi = 5.06, theta = 0.001, beta = 0.1 at dx = 1e-6 m", 260, width),
+            ["psi = 5.06, theta = 0.001,", "beta = 0.1 at dx = 1e-6 m"]
+        );
+        assert_eq!(wrap("aaaa bbbb cccc", 90, width), ["aaaa bbbb", "cccc"]);
+        let cut = wrap("averyveryverylongword x", 100, width);
+        assert!(cut.iter().all(|l| width(l) <= 100) && cut[0].ends_with('…'), "{cut:?}");
+    }
+
+    /// The clear corner is the one the lines do not pass through.
+    #[test]
+    fn the_legend_goes_where_the_lines_are_not() {
+        // A line along the top from left to right and down the right edge:
+        // only the lower left corner is clear.
+        let lines = vec![vec![(0, 10), (980, 10), (980, 700)]];
+        let size = (300, 100);
+        let corners = [(690, 12), (12, 12), (690, 588), (12, 588)];
+        let n: Vec<usize> = corners.iter().map(|&at| covered(&lines, at, size, 1)).collect();
+        assert!(n[0] > 0 && n[1] > 0 && n[2] > 0 && n[3] == 0, "{n:?}");
+    }
 
     #[test]
     fn rings_stay_inside_the_frame() {

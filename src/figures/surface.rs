@@ -2,7 +2,7 @@
 //! and μ(F*) for each fit (`kefric plot surface`).
 
 use super::chart::{f_axis, mu_axis, num, Chart, ChartAxis, Corner, LineStyle, Markers, Page, Series};
-use super::distributions::{DENSITY_Y, DISTRIBUTIONS_F_STAR, DISTRIBUTIONS_LOADS};
+use super::distributions::{DENSITY_Y, DISTRIBUTIONS_LOADS};
 use super::paper::SHAPES;
 use super::FigureError;
 use crate::Model;
@@ -11,7 +11,7 @@ use crate::Model;
 pub const SURFACE_BINS: usize = 80;
 
 /// Two panels for one surface. Above, μ against F* (log F*, over
-/// `f_star`, default 1e-5 to 0.1) for each model of `fits` (label, model:
+/// `f_star`, default [`SURFACE_F_STAR`](crate::SURFACE_F_STAR)) for each model of `fits` (label, model:
 /// the same surface and materials with different height distributions;
 /// loads where μ is undefined are left out). Below, on a log axis, the
 /// histogram of `standardised` heights (height/σ of the detrended
@@ -27,7 +27,7 @@ pub fn surface_page(
     fits: &[(String, Model)],
     f_star: Option<(f64, f64)>,
 ) -> Result<Page, FigureError> {
-    let (lo, hi) = f_star.unwrap_or(DISTRIBUTIONS_F_STAR);
+    let (lo, hi) = f_star.unwrap_or(crate::SURFACE_F_STAR);
     let mut mu_series = Vec::with_capacity(fits.len());
     let mut g_series = Vec::with_capacity(fits.len() + 1);
     // The x range: the heights' own, else ±5.
@@ -117,7 +117,7 @@ pub fn surface_page(
             x,
             y,
             series: mu_series,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         },
         bottom: Some(Chart {
             title: Some(title.to_string()),
@@ -134,7 +134,7 @@ pub fn surface_page(
                 ticks: None,
             },
             series: g_series,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         }),
     })
 }
@@ -202,7 +202,7 @@ pub fn psd_page(
         x,
         y,
         series,
-        legend: Corner::UpperRight,
+        legend: Corner::Clear,
     }))
 }
 
@@ -282,14 +282,14 @@ pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Resu
             x: x.clone(),
             y: y_top,
             series: top,
-            legend: Corner::UpperLeft,
+            legend: Corner::Clear,
         },
         bottom: Some(Chart {
             title: None,
             x,
             y: y_bottom,
             series: bottom,
-            legend: Corner::UpperRight,
+            legend: Corner::Clear,
         }),
     })
 }

@@ -426,14 +426,18 @@ fn plot_surface_draws_the_fits_and_the_histogram() {
     let svg = std::fs::read_to_string(&out).unwrap();
     for text in [
         "gaussian",
-        "pearson (skewness",
-        "empirical (4096 heights",
+        "pearson (Ssk ",
+        "empirical (the measured heights)",
         "measured heights",
         "map.npy",
     ] {
         assert!(svg.contains(text), "no {text:?} in the figure");
     }
-    assert!(svg.contains("at dx = 2e-6 m, dy = 2e-6 m"), "the intervals beside psi");
+    // The intervals beside psi (the title may wrap between them).
+    assert!(
+        svg.contains("at dx = 2e-6 m,") && svg.contains("dy = 2e-6 m"),
+        "the intervals beside psi"
+    );
     // Materials are required; a bad range names its flag.
     assert_bad_input(
         &kefric(&["plot", "surface", &file, "--dx", "2e-6", "--out", &out]),

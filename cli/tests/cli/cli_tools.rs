@@ -504,3 +504,116 @@ fn the_readme_stays_a_short_manual() {
         assert!(readme.contains(doc), "the README does not link {doc}");
     }
 }
+
+/// The numbers of a line of text output (`2.08`, `1.0e-2`; the words
+/// and `name = value` pairs' names skipped).
+fn numbers_of(line: &str) -> Vec<f64> {
+    line.split([' ', ',', '='])
+        .filter_map(|w| w.trim().parse::<f64>().ok())
+        .collect()
+}
+
+/// The README's first example (`kefric eval` of steel on steel) shows
+/// what the program prints: the same columns, the same numbers (to the
+/// 6 digits printed), and a definition of every column below it.
+#[test]
+fn the_readmes_first_example_shows_its_output_and_defines_its_columns() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    let start = readme.find("kefric eval --e1").expect("the README's first example");
+    let command: String = readme[start..]
+        .lines()
+        .take_while(|l| !l.starts_with("```"))
+        .map(|l| l.trim().trim_end_matches('\\'))
+        .collect::<Vec<_>>()
+        .join(" ");
+    let args: Vec<&str> = command.split_whitespace().skip(1).collect();
+    let o = kefric(&args);
+    assert!(o.status.success(), "{command}: {}", stderr(&o));
+    let printed = String::from_utf8(o.stdout).unwrap();
+    let block_at = start + readme[start..].find("```text\n").expect("its output, in a text block") + 8;
+    let block_end = block_at + readme[block_at..].find("```").unwrap();
+    let shown: Vec<&str> = readme[block_at..block_end].lines().collect();
+    let printed: Vec<&str> = printed.lines().collect();
+    assert_eq!(shown.len(), printed.len(), "shown:\n{shown:#?}\nprinted:\n{printed:#?}");
+    for (s, p) in shown.iter().zip(&printed) {
+        let words = |l: &str| -> Vec<String> {
+            l.split([' ', ',', '='])
+                .filter(|w| !w.is_empty() && w.parse::<f64>().is_err())
+                .map(str::to_string)
+                .collect()
+        };
+        assert_eq!(words(s), words(p), "the README shows {s:?}, the program prints {p:?}");
+        let (a, b) = (numbers_of(s), numbers_of(p));
+        assert_eq!(a.len(), b.len(), "{s:?} against {p:?}");
+        for (x, y) in a.iter().zip(&b) {
+            // The README's numbers are the program's, as printed (at
+            // least 6 significant digits): 1e-5 relative.
+            assert!(
+                (x - y).abs() <= 1e-5 * y.abs(),
+                "the README shows {x}, the program prints {y}"
+            );
+        }
+    }
+    // Every column of the table is defined in the paragraph below it.
+    let header = printed
+        .iter()
+        .find(|l| l.trim_start().starts_with("h*"))
+        .expect("a header line");
+    let after = readme[block_end + 3..].trim_start();
+    let paragraph = &after[..after.find("\n\n").unwrap_or(after.len())];
+    for column in header.split_whitespace() {
+        assert!(
+            paragraph.contains(&format!("`{column}`")),
+            "the README does not define the column {column} below its first example"
+        );
+    }
+}
+
+/// Every compiler line the docs and examples show (`cc`, `gcc`,
+/// `gfortran`) optimises (`-O2`): an unoptimised build of the examples
+/// is slower by half again (issue 37); and the CMake example defaults
+/// to Release.
+#[test]
+fn every_build_line_shown_optimises() {
+    let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
+    let mut files = vec![
+        root.join("README.md"),
+        root.join("docs/REFERENCE.md"),
+        root.join("ffi/install.sh"),
+    ];
+    for entry in std::fs::read_dir(root.join("ffi/examples")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "c" || e == "f90") {
+            files.push(path);
+        }
+    }
+    let mut lines = 0;
+    let mut unoptimised = vec![];
+    for file in &files {
+        let text = std::fs::read_to_string(file).unwrap();
+        for line in text.lines() {
+            // The command after comment leaders and labels (`#   C:      cc …`).
+            let command = line.trim_start_matches(['#', '!', '*', '/', ' ']);
+            let command = command.split_once(": ").map_or(command, |(label, rest)| {
+                if label.split_whitespace().count() == 1 {
+                    rest.trim_start()
+                } else {
+                    command
+                }
+            });
+            if ["cc ", "gcc ", "gfortran "].iter().any(|c| command.starts_with(c)) {
+                lines += 1;
+                if !command.contains("-O") {
+                    unoptimised.push(format!("{}: {line}", file.display()));
+                }
+            }
+        }
+    }
+    assert!(lines >= 6, "only {lines} build lines found");
+    assert!(unoptimised.is_empty(), "build lines without -O2: {unoptimised:#?}");
+    let cmake = std::fs::read_to_string(root.join("ffi/examples/cmake/CMakeLists.txt")).unwrap();
+    assert!(
+        cmake.contains("set(CMAKE_BUILD_TYPE Release CACHE STRING"),
+        "the CMake example does not default to Release"
+    );
+}

@@ -16,11 +16,19 @@ _F64 = npt.NDArray[np.float64]
 # The crate's version.
 __version__: str
 CURVE_ACCURACY: float
+# The default F* range of a measured surface's curve (SURFACE_F_STAR, as
+# kefric plot surface's).
+SURFACE_F_STAR: Tuple[float, float]
 DETRENDS: list[str]
 DERIVATIVES: list[str]
 FAMILIES: list[str]
 FITS: list[str]
 MODELS: list[str]
+# The length units' names (LengthUnit, as kefric surface --z-unit takes
+# them) and then their other symbols ("µm", "Å", ...).
+LENGTH_UNITS: list[str]
+# Metres per unit of a name or symbol of LENGTH_UNITS (ValueError otherwise).
+def length_unit(name: str) -> float: ...
 # The library's default model constants (Constants::default()): beta, nu,
 # eps_star, fit, model, distribution, skewness, kurtosis.
 DEFAULTS: Dict[str, Any]

@@ -16,15 +16,31 @@ from ._curve import Curve
 from ._distribution import HeightDistribution, _heights_array, _heights_of
 from ._model import Model
 
-#: Metres per length unit, by the names SurfaceTopography gives its
-#: topographies' ``unit`` (µ as the micro sign or the Greek letter, or u).
-_LENGTH_UNITS = {"km": 1e3, "m": 1.0, "cm": 1e-2, "mm": 1e-3, "\u00b5m": 1e-6, "\u03bcm": 1e-6, "um": 1e-6,
-                 "nm": 1e-9, "\u00c5": 1e-10, "A": 1e-10, "pm": 1e-12}
 # The core's name lists (defined once, in Rust).
 _DETRENDS = tuple(_core.DETRENDS)
 _DERIVATIVES = tuple(_core.DERIVATIVES)
 _FAMILIES = tuple(_core.FAMILIES)
+#: The length units' names (``kefric surface --z-unit``'s) and the other
+#: symbols SurfaceTopography gives its topographies' ``unit`` ("µm", "Å").
+_LENGTH_UNITS = tuple(_core.LENGTH_UNITS)
 _MATERIALS = ("e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon")
+
+
+class _Record(dict):  # type: ignore[type-arg]
+    """A record (a dict) that may also be called, giving itself: the
+    statistics are :attr:`Surface.stats` as they always were and
+    ``Surface.stats()`` as :meth:`Surface.model`, :meth:`Surface.curve`
+    and :meth:`Surface.friction` are spelled. It pickles, compares and
+    serialises as the dict it is."""
+
+    __slots__ = ()
+
+    def __call__(self) -> "_Record":
+        return self
+
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
+        # A plain dict in a pickle: no private class to import to load it.
+        return dict, (dict(self),)
 
 
 def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
@@ -35,6 +51,24 @@ def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
     if value not in allowed:
         raise ValueError(f"{name} = {value!r}: must be " + " or ".join(repr(a) for a in allowed))
     return value
+
+
+def _unit(name: str, value: Any) -> float:
+    """Metres per unit of argument ``name``: a unit's name or symbol (one
+    of :data:`_LENGTH_UNITS`: ``"um"``, ``"nm"``, ``"µm"``, ... as
+    ``kefric surface --z-unit`` takes them; the core's list) or a number,
+    finite and > 0."""
+    if isinstance(value, str):
+        try:
+            return _core.length_unit(value)
+        except ValueError as e:
+            raise ValueError(f"{name}: {e} (or a number of metres per unit)") from None
+    _check_real(**{name: value})
+    v = float(value)
+    if not (math.isfinite(v) and v > 0):
+        raise ValueError(f"{name} = {v!r} is out of range: must be finite and > 0 (metres per unit), or a unit's "
+                         "name (" + ", ".join(_LENGTH_UNITS) + ")")
+    return v
 
 
 def _interval(name: str, value: Any) -> float:
@@ -226,7 +260,7 @@ class Surface:
 
     @staticmethod
     def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
-             z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd",
+             z_unit: Union[float, str] = 1.0, xy_unit: Union[float, str] = 1.0, detrend: str = "plane", derivative: str = "fd",
              max_points: Optional[int] = None, lambda_s: Union[float, str, None] = None,
              lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
              resolution: Optional[float] = None, channel: Union[str, int, None] = None) -> "Surface":
@@ -242,10 +276,15 @@ class Surface:
         ``dx``, ``dy``: the sampling intervals in metres, for files that
         give none (``.npy``, a text matrix or column); ``dy`` defaults to
         ``dx``; an interval that contradicts the file's own is an error.
-        ``z_unit``: metres per unit of the heights of ``.npy`` and text
-        files (1e-6 for micrometres; X3P stores metres). ``xy_unit``:
-        metres per unit of the x, y columns of ``x z`` and ``x y z`` text.
-        Both finite and > 0 (ValueError naming the argument otherwise).
+        ``z_unit``: the unit of the heights of ``.npy`` and text files
+        (X3P stores metres), ``xy_unit``: of the x, y columns of ``x z``
+        and ``x y z`` text (``dx`` and ``dy`` are in metres, unlike
+        ``kefric surface --dx``, which is in ``--xy-unit``). Each a
+        unit's name as ``kefric surface --z-unit`` takes it (``"km"``,
+        ``"m"``, ``"cm"``, ``"mm"``, ``"um"``, ``"nm"``, ``"pm"``,
+        ``"angstrom"``; or ``"µm"``, ``"Å"``) or a number of metres per
+        unit (1e-6 for micrometres), finite and > 0 (ValueError naming
+        the argument otherwise).
         ``detrend``, ``derivative``, the filters ``lambda_s``, ``lambda_c``
         and the instrument's ``tip_radius`` or ``resolution`` as in
         :class:`Surface` (``kefric surface --lambda-s``, ``--lambda-c``,
@@ -270,11 +309,7 @@ class Surface:
         filters = _filters(lambda_s, lambda_c, tip_radius, resolution)
         dx = None if dx is None else _interval("dx", dx)
         dy = dx if dy is None else _interval("dy", dy)
-        _check_real(z_unit=z_unit, xy_unit=xy_unit)
-        z_unit, xy_unit = float(z_unit), float(xy_unit)
-        for name, unit in (("z_unit", z_unit), ("xy_unit", xy_unit)):
-            if not (math.isfinite(unit) and unit > 0):
-                raise ValueError(f"{name} = {unit!r} is out of range: must be finite and > 0 (metres per unit)")
+        z_unit, xy_unit = _unit("z_unit", z_unit), _unit("xy_unit", xy_unit)
         if max_points is not None:
             if isinstance(max_points, bool) or not isinstance(max_points, numbers.Integral):
                 raise TypeError(f"max_points must be an int or None, not {type(max_points).__name__}")
@@ -321,9 +356,7 @@ class Surface:
             raise ValueError("unit: the topography has none: give its unit (unit=\"um\", ...)")
         if not isinstance(name, str):
             raise TypeError(f"unit must be a str, not {type(name).__name__}")
-        if name not in _LENGTH_UNITS:
-            raise ValueError(f"unit = {name!r}: must be one of " + ", ".join(repr(u) for u in _LENGTH_UNITS))
-        metres = _LENGTH_UNITS[name]
+        metres = _unit("unit", name)
         h = _heights_of("the topography's heights", topography.heights())
         pixel = [float(p) * metres for p in np.atleast_1d(topography.pixel_size)]
         # SurfaceTopography indexes heights [x, y]; a map here has rows = y.
@@ -371,9 +404,12 @@ class Surface:
         return self._core.metadata()
 
     @property
-    def stats(self) -> Dict[str, Any]:
+    def stats(self) -> "_Record":
         """The surface's statistics (of the equivalent surface, for a pair),
-        a new dict each time, by the library's record names (what ``kefric
+        a new dict each time; both spellings work: ``s.stats["sigma"]``
+        (an attribute, as before) and ``s.stats()["sigma"]`` (a call, as
+        :meth:`model`, :meth:`curve` and :meth:`friction`: the dict is
+        callable and returns itself). By the library's record names (what ``kefric
         surface --json`` prints as ``"surface"``), in SI units: ``points``,
         ``missing``, ``nx``, ``ny``, ``dx``, ``dy`` (None for a profile),
         ``sigma`` (Sq), ``skewness``, ``kurtosis`` (not excess), the moments
@@ -385,7 +421,7 @@ class Surface:
         ``warnings`` (a list of ``{"kind", "message", ...}``; kind
         ``"unreliable_scale"`` when a reliability cut-off is known and the
         shortest scale analysed, lambda_s or 2 max(dx, dy), is below it)."""
-        return self._core.stats()
+        return _Record(self._core.stats())
 
     @property
     def parts(self) -> "list[Dict[str, Any]]":
@@ -462,14 +498,18 @@ class Surface:
 
     def curve(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
               epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke",
-              f_star_min: float = 1e-5, f_star_max: float = 0.1) -> Curve:
+              f_star_min: Optional[float] = None, f_star_max: Optional[float] = None) -> Curve:
         """The :class:`Curve` mu(F*) of :meth:`model` (the same keywords)
-        for F* in [f_star_min, f_star_max] (by default the default table's
-        range), as :meth:`Curve.from_model` makes it (tens of
-        milliseconds)."""
+        for F* in [f_star_min, f_star_max], by default the library's
+        ``SURFACE_F_STAR``, [1e-7, 0.1] (``kefric plot surface``'s range:
+        down to the light loads :meth:`friction` and ``kefric surface``
+        answer, 100 Pa on a hardness of 1 GPa), as
+        :meth:`Curve.from_model` makes it (tens of milliseconds; seconds
+        for the ``"empirical"`` distribution)."""
         m = self.model(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
                        epsilon=epsilon, distribution=distribution, fit=fit, model=model)
-        return Curve.from_model(m, f_star_min, f_star_max)
+        lo, hi = _core.SURFACE_F_STAR
+        return Curve.from_model(m, lo if f_star_min is None else f_star_min, hi if f_star_max is None else f_star_max)
 
     def friction(self, *, force: Optional[float] = None, area: Optional[float] = None,
                  pressure: Optional[float] = None, e1: float, nu1: float, e2: float, nu2: float, hardness: float,
