@@ -466,13 +466,15 @@ pub struct Summary<'a> {
 }
 
 /// A summary is recorded as its worst warning's record with `count` and
-/// `of` (the results that gave the kind, and the results noted).
+/// `of` (the results that gave the kind, and the results noted) and
+/// `summary` (its Display: the line a front end shows).
 impl Serialize for Summary<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut map = serializer.serialize_map(None)?;
         self.worst.entries(&mut map)?;
         map.serialize_entry("count", &self.count)?;
         map.serialize_entry("of", &self.total)?;
+        map.serialize_entry("summary", &self.to_string())?;
         map.end()
     }
 }
@@ -518,7 +520,7 @@ mod tests {
     #[test]
     fn a_contact_in_the_papers_range_gives_no_warning() {
         let model = Model::new(Params::new(1.0, 0.001)).unwrap();
-        for f in [1e-5, 1e-3, 0.1] {
+        for f in [1e-5, 1e-3, 0.01] {
             let c = model.at_f_star(f).unwrap();
             assert_eq!(Warning::of_contact(&c).count(), 0, "F* = {f}");
         }

@@ -369,7 +369,7 @@ fn load_axis(
         (Some(first), Some(last)) => (value(first), value(last)),
         _ => (f64::NAN, f64::NAN),
     };
-    if !(lo < hi) {
+    if lo.is_nan() || hi.is_nan() || lo >= hi {
         return Err(Failure::input(format!(
             "{flag}: the plot needs a range START:STOP:COUNT with START < STOP"
         )));

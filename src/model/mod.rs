@@ -309,7 +309,8 @@ impl Model {
 /// Refuses F* above [`F_STAR_MAX`](crate::F_STAR_MAX) (a nominal pressure
 /// above the hardness), where the model has no meaning.
 fn check_f_star(f_star: f64) -> Result<(), EvalError> {
-    if f_star > crate::F_STAR_MAX {
+    // +∞ is not a number to compare: EvalError::FStar, from the solver.
+    if f_star.is_finite() && f_star > crate::F_STAR_MAX {
         return Err(EvalError::FStarAboveHardness(f_star));
     }
     Ok(())
