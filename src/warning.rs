@@ -233,7 +233,9 @@ impl Warning {
     /// [`Warning::of_contact`] of a point known by F*, h* and μ alone (a
     /// table's lookup).
     pub fn of_point(f_star: f64, h_star: f64, mu: Option<f64>) -> impl Iterator<Item = Warning> {
-        let below = (f_star < F_STAR_RANGE.0 * (1.0 - RANGE_SLACK)).then_some(Warning::FStarBelowRange { f_star });
+        // F* <= 0 has no μ (the contact's own answer), not a light load.
+        let below = (f_star > 0.0 && f_star < F_STAR_RANGE.0 * (1.0 - RANGE_SLACK))
+            .then_some(Warning::FStarBelowRange { f_star });
         let above = (f_star > F_STAR_RANGE.1 * (1.0 + RANGE_SLACK)).then_some(Warning::FStarAboveRange { f_star });
         let negative = (h_star < 0.0).then_some(Warning::NegativeSeparation { h_star });
         let adhesion = mu
@@ -530,6 +532,11 @@ mod tests {
     fn each_implausible_contact_gives_its_kind() {
         let kinds = |c: Contact| Warning::of_contact(&c).map(|w| w.kind()).collect::<Vec<_>>();
         assert_eq!(kinds(contact(3.0, 2e-11, Some(0.5))), [WarningKind::FStarBelowRange]);
+        assert_eq!(
+            kinds(contact(6.0, -2e-10, None)),
+            [],
+            "no mu, no load: not a light load"
+        );
         assert_eq!(
             kinds(contact(-0.5, 0.5, Some(0.1))),
             [WarningKind::FStarAboveRange, WarningKind::NegativeSeparation]

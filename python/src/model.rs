@@ -182,6 +182,10 @@ pub fn contact_warnings<'py>(py: Python<'py>, rows: PyReadonlyArray1<'py, f64>) 
             r[6].is_finite().then_some(r[6]),
         ));
     }
+    if warnings.is_empty() {
+        // The common case, without a JSON round trip (4.5 us → ~0.3 us a call).
+        return Ok(pyo3::types::PyList::empty(py).into_any());
+    }
     let summaries: Vec<ke_friction::Summary<'_>> = warnings.summaries().collect();
     crate::convert::record(py, serde_json::to_string(&summaries))
 }

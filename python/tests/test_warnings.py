@@ -54,7 +54,7 @@ def test_a_load_above_the_hardness_is_refused():
 
 
 def test_results_inside_the_papers_range_do_not_warn():
-    _, caught = recorded(lambda: kf.Model(1.0, 0.001).at_f_star(np.geomspace(1e-5, 0.1, 9)))
+    _, caught = recorded(lambda: kf.Model(1.0, 0.001).at_f_star(np.geomspace(1e-5, 0.01, 7)))
     assert caught == []
 
 
@@ -65,7 +65,8 @@ def test_implausible_contacts_warn_once_per_kind_with_the_worst():
     assert kinds == ["f_star_below_range", "adhesion_dominated", "f_star_above_range", "negative_separation"]
     below = caught[0]
     assert str(below).startswith("2 of 4 results; the worst: F* = 1e-9 is below the range the paper covers")
-    assert below.record["count"] == 2 and below.record["of"] == 4 and below.record["f_star"] == 1e-9
+    assert below.record["count"] == 2 and below.record["of"] == 4
+    assert below.record["f_star"] == pytest.approx(1e-9, rel=1e-9)
     assert c.mu[1] > 1
     # The same as the CLI's lines for the same points.
     if not os.path.exists(KEFRIC):

@@ -310,3 +310,32 @@ pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Resu
         }),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Params;
+
+    /// A load axis in newtons spans exactly the range given, and each point
+    /// is the model's μ at F* = F/(A_n·H).
+    #[test]
+    fn the_load_axis_is_the_range_given_in_its_unit() {
+        let model = Model::new(Params::new(1.0, 0.001)).unwrap();
+        // 1 cm² against 100 MPa: F* = F / 1e4 N.
+        let axis = LoadAxis {
+            title: "F (N)".into(),
+            per_f_star: 1e4,
+            range: (0.2, 300.0),
+        };
+        let fits = [("gaussian".to_string(), model.clone())];
+        let page = surface_page("t", "", None, &fits, Some(&axis)).unwrap();
+        assert_eq!(page.top.x.title, "F (N)");
+        assert_eq!(page.top.x.range, (0.2, 300.0));
+        let points = &page.top.series[0].points;
+        assert_eq!(points.len(), DISTRIBUTIONS_LOADS);
+        assert!((points[0].0 / 0.2 - 1.0).abs() < 1e-12 && (points[points.len() - 1].0 / 300.0 - 1.0).abs() < 1e-12);
+        for &(f, mu) in points {
+            assert_eq!(mu, model.at_f_star(f / 1e4).unwrap().mu.unwrap(), "F = {f} N");
+        }
+    }
+}

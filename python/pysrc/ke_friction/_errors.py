@@ -40,3 +40,14 @@ def _warn(summaries: List[Dict[str, Any]], stacklevel: int = 3) -> None:
     :class:`ModelWarning` with its ``summary`` (the line the CLI prints)."""
     for s in summaries:
         warnings.warn(ModelWarning(s["summary"], s), stacklevel=stacklevel)
+
+
+def _located(e: BaseException, shape: Tuple[int, ...]) -> BaseException:
+    """An exception of the native layer for an array of ``shape``: the same
+    class, its message ending in the bad element's index in that shape if
+    it has one (its ``index`` attribute: the flat index); else ``e``."""
+    index = getattr(e, "index", None)
+    if index is None or not shape:
+        return e
+    where = tuple(int(i) for i in np.unravel_index(index, shape))
+    return type(e)(f"{e} (at index {where})")

@@ -482,7 +482,7 @@ class Surface:
         dimensionless contact at F* = pressure/hardness: ``h_star``,
         ``d_star``, ``p_star``, ``fs_star``, ``q_star``, ``f_star``.
         The warnings ``kefric surface --json`` records (``"warnings"``, one
-        a kind) are warned as :class:`ModelWarning`\ s, each with its record:
+        a kind) are warned as :class:`ModelWarning` warnings, each with its record:
         the surface's, and the loads' (F* outside the paper's 1e-5..0.1,
         h* < 0, mu > 1 where adhesion dominates, fewer than 10 asperities
         in contact on the area).
