@@ -26,6 +26,10 @@ gcc -std=c99 -D_POSIX_C_SOURCE=199309L -O2 -Wall -Wextra -Werror -I ffi/include 
 # The batches' NaN mode and the stable kef_last_error pointer, from C.
 gcc -std=c99 -O2 -Wall -Wextra -Werror -I ffi/include \
   ffi/tests/batch_nan.c "$lib/libkefriction.a" -lpthread -ldl -lm -o "$out/batch_nan"
+# The warnings' bits and messages, and F* > 1 refused, from C.
+gcc -std=c99 -O2 -Wall -Wextra -Werror -I ffi/include \
+  ffi/tests/warnings.c "$lib/libkefriction.a" -lpthread -ldl -lm -o "$out/warnings"
+"$out/warnings"
 "$out/batch_nan"
 # The header from C++.
 printf '#include <kefriction.h>\nint main() { double mu; return kef_table_mu(kef_table_default(), 1.0, 0.001, 0.01, &mu); }\n' > "$out/use.cpp"

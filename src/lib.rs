@@ -63,6 +63,7 @@ mod spline;
 pub mod table;
 #[cfg(feature = "topography")]
 pub mod topography;
+mod warning;
 
 pub use checks::ParamError;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY, SURFACE_F_STAR};
@@ -87,3 +88,4 @@ pub use spline::{Axis, Scale};
 pub use table::{
     Accuracy, BuildRecord, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo, FAST_KERNEL_MAX_REL,
 };
+pub use warning::{Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_MAX, F_STAR_RANGE, MU_ADHESION};

@@ -3,7 +3,7 @@
 //! friction force Q = μ·F and the separation h = h*·σ.
 
 use crate::checks::check;
-use crate::{Contact, EvalError, Model, ParamError, Physical};
+use crate::{Contact, EvalError, Model, ParamError, Physical, Warning};
 
 /// A normal load on a rough contact, in SI units.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -134,6 +134,20 @@ pub struct Friction {
     /// The dimensionless contact at F* (h*, d*, P*, Fs*, Q*, F*, μ).
     #[serde(flatten)]
     pub contact: Contact,
+}
+
+impl Friction {
+    /// The plausibility warnings of this result on `model` (the one it
+    /// came from, with `physical`): the contact's
+    /// ([`Warning::of_contact`]) and, for a force on a known area, too
+    /// few asperities in contact ([`Warning::of_asperities`]: η·A_n
+    /// summits, those above d* touching).
+    pub fn warnings(&self, model: &Model, physical: &Physical) -> impl Iterator<Item = Warning> {
+        let few = self
+            .area
+            .and_then(|a| Warning::of_asperities(model.asperities_in_contact(&self.contact, physical.density * a)));
+        Warning::of_contact(&self.contact).chain(few)
+    }
 }
 
 /// Why a [`Load`] has no friction: a bad load, or the model's error at its F*.

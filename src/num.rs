@@ -31,6 +31,19 @@ impl Shortest {
     pub fn rounded(x: f64) -> Shortest {
         Shortest(format!("{x:.3e}").parse().unwrap_or(x))
     }
+
+    /// `x` rounded to 6 significant digits: the one format of numbers in
+    /// text output and in warnings (`1.36222`, not `1.36222e0` nor
+    /// `1.3622249834211117`); JSON keeps every digit.
+    ///
+    /// ```
+    /// use ke_friction::Shortest;
+    /// assert_eq!(Shortest::sig(1.3622249834211117).to_string(), "1.36222");
+    /// assert_eq!(Shortest::sig(2.0000000000000004e-11).to_string(), "2e-11");
+    /// ```
+    pub fn sig(x: f64) -> Shortest {
+        Shortest(format!("{x:.5e}").parse().unwrap_or(x))
+    }
 }
 
 impl fmt::Display for Shortest {

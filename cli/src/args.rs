@@ -2,11 +2,10 @@
 //! parsing, the model's flags, progress bars, tables and output paths.
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
-use ke_friction::paper::PAPER_F_STAR_MAX;
-use ke_friction::Shortest;
 use ke_friction::{
     Classify, Constants, ErrorKind, Family, Fit, HeightDistribution, Materials, Model, ModelKind, Named, Params,
 };
+use ke_friction::{Physical, Shortest, Warnings};
 use std::fmt::Display;
 
 /// A failure to report: the message, and whether it is the user's input
@@ -560,9 +559,9 @@ impl ModelArgs {
         }
         let surface = self.read.surface("--surface", &self.surface)?;
         let materials = self.si.materials.materials(&[])?;
-        for w in &surface.stats().warnings {
-            errln!("warning: {w}");
-        }
+        let mut warnings = Warnings::new();
+        warnings.extend(surface.stats().warnings.iter().cloned());
+        warn(&warnings);
         let params = crate::surface::params(
             &surface,
             &materials,
@@ -571,6 +570,7 @@ impl ModelArgs {
             self.constants.model,
         )?;
         let source = SurfaceSource {
+            physical: surface.physical(&materials),
             files: self.surface.iter().map(|p| p.display().to_string()).collect(),
             dx: surface.stats().dx,
             dy: surface.stats().dy,
@@ -578,6 +578,21 @@ impl ModelArgs {
             lambda_c: surface.stats().lambda_c,
         };
         Ok((params, source))
+    }
+
+    /// The SI quantities behind the model (the hardness and σ a load in
+    /// newtons or pascals needs): the surface's with the materials, or the
+    /// SI inputs; `None` for dimensionless inputs.
+    pub fn physical(&self, source: Option<&SurfaceSource>) -> Result<Option<Physical>, Failure> {
+        if let Some(source) = source {
+            return Ok(Some(source.physical));
+        }
+        if !self.si.any() {
+            return Ok(None);
+        }
+        let materials = self.si.materials.materials(&self.si.roughness())?;
+        let [sigma, radius, density] = self.si.roughness().map(|(_, v)| v.unwrap_or_default());
+        Ok(Some(materials.with_roughness(sigma, radius, density)))
     }
 
     /// The validated model, or a message naming the offending flag.
@@ -608,6 +623,9 @@ impl ModelArgs {
 /// the β and ψ it gives hold.
 #[derive(Debug, Clone, serde::Serialize)]
 pub struct SurfaceSource {
+    /// The surface's σ, R, η with the materials (for a load in SI units).
+    #[serde(skip)]
+    pub physical: Physical,
     /// The surface files.
     #[serde(rename = "surface")]
     pub files: Vec<String>,
@@ -644,16 +662,17 @@ impl std::fmt::Display for SurfaceSource {
     }
 }
 
-/// The model's settings as text, with the flags' spellings
+/// The model's settings as text (6 significant digits; `--json` has
+/// every digit), with the flags' spellings
 /// (`psi = 1, theta = 0.003, …, fit = consistent, model = ke`).
 pub fn describe(p: &Params) -> String {
     format!(
         "psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {}, model = {}",
-        Shortest(p.psi),
-        Shortest(p.theta),
-        Shortest(p.constants.beta),
-        Shortest(p.constants.nu),
-        Shortest(p.constants.eps_star),
+        Shortest::sig(p.psi),
+        Shortest::sig(p.theta),
+        Shortest::sig(p.constants.beta),
+        Shortest::sig(p.constants.nu),
+        Shortest::sig(p.constants.eps_star),
         p.constants.fit.name(),
         p.constants.kind.name()
     ) + &if p.constants.distribution.is_gaussian() {
@@ -663,47 +682,12 @@ pub fn describe(p: &Params) -> String {
     }
 }
 
-/// Where a point lies outside the range the paper covers (F* ≤ 0.1, h* ≥ 0).
-#[derive(Debug, Default)]
-pub struct PaperRange {
-    outside: usize,
-    total: usize,
-    f_star_max: f64,
-    h_star_min: f64,
-}
-
-impl PaperRange {
-    /// Counts the point (F*, h*).
-    pub fn note(&mut self, f_star: f64, h_star: f64) {
-        self.total += 1;
-        // A solved F* may exceed 0.1 by rounding (0.10000000000000003):
-        // not a point outside the paper's range.
-        if f_star > PAPER_F_STAR_MAX * (1.0 + 1e-9) || h_star < 0.0 {
-            if self.outside == 0 {
-                (self.f_star_max, self.h_star_min) = (f_star, h_star);
-            }
-            self.outside += 1;
-            self.f_star_max = self.f_star_max.max(f_star);
-            self.h_star_min = self.h_star_min.min(h_star);
-        }
-    }
-
-    /// Prints one warning line on stderr if any point was outside.
-    pub fn warn(&self) {
-        if self.outside == 0 {
-            return;
-        }
-        let which = if self.total == 1 {
-            "the point lies".to_string()
-        } else {
-            format!("{} of {} points lie", self.outside, self.total)
-        };
-        errln!(
-            "warning: {which} outside the range the paper covers (F* <= {}, h* >= 0): F* up to {}, h* down to {}; the model is extrapolated there",
-            Shortest(PAPER_F_STAR_MAX),
-            Shortest::rounded(self.f_star_max),
-            Shortest::rounded(self.h_star_min)
-        );
+/// Prints the warnings on stderr, one line a kind (`warning: …`, with the
+/// count and the worst value over many results): the CLI's one place for
+/// the core's warnings ([`ke_friction::Warnings`]).
+pub fn warn(warnings: &Warnings) {
+    for s in warnings.summaries() {
+        errln!("warning: {s}");
     }
 }
 

@@ -1,14 +1,17 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use crate::args::{describe, number, Failure, ModelArgs, PaperRange};
-use ke_friction::Contact;
+use crate::args::{describe, number, warn, Failure, ModelArgs};
+use crate::surface::{sig, LoadArgs};
+use ke_friction::{Contact, Friction, Warnings};
 
 /// Evaluate the model by direct integration at given h* or F*.
 ///
 /// A point is one number, or a range START:STOP:COUNT (linear for h*,
-/// logarithmic for F*).
+/// logarithmic for F*, the force and the pressure). A load in SI units
+/// (--force with --area, or --pressure) needs the SI inputs or --surface
+/// with the materials (for the hardness).
 #[derive(Debug, clap::Args)]
-#[command(group(clap::ArgGroup::new("at").required(true).args(["h_star", "f_star"])))]
+#[command(group(clap::ArgGroup::new("at").required(true).args(["h_star", "f_star", "force", "pressure"])))]
 pub struct Args {
     #[command(flatten)]
     pub model: ModelArgs,
@@ -18,6 +21,8 @@ pub struct Args {
     /// External force F* = F/(A_n·H) > 0 (or START:STOP:COUNT, logarithmic; COUNT up to 1000000).
     #[arg(long, value_name = "F|START:STOP:COUNT", allow_hyphen_values = true)]
     pub f_star: Option<String>,
+    #[command(flatten)]
+    pub load: LoadArgs,
     /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
@@ -78,6 +83,9 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
 /// Runs `kefric eval`.
 pub fn run(args: Args) -> Result<(), Failure> {
     let (model, source) = args.model.model_and_source()?;
+    if args.load.any() {
+        return run_loads(&args, &model, source.as_ref());
+    }
     let contacts: Vec<Result<Contact, ke_friction::EvalError>> = if let Some(h) = &args.h_star {
         points("--h-star", h, Spacing::Linear)?
             .into_iter()
@@ -96,7 +104,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| Failure::of(flag, e))?;
     let p = model.params();
-    let mut paper = PaperRange::default();
+    let mut warnings = Warnings::new();
     if args.json {
         // One record a line: the parameters and the contact, flat.
         #[derive(serde::Serialize)]
@@ -115,7 +123,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 source: source.as_ref(),
             };
             outln!("{}", serde_json::to_string(&row).expect("a contact serialises"))?;
-            paper.note(c.f_star, c.h_star);
+            warnings.note_contact(c);
         }
     } else {
         outln!("# {}", describe(p))?;
@@ -123,7 +131,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             outln!("# {source}")?;
         }
         outln!(
-            "{:>10} {:>10} {:>12} {:>12} {:>12} {:>12} {:>12}",
+            "{:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
             "h*",
             "d*",
             "P*",
@@ -133,20 +141,107 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "mu"
         )?;
         for c in &contacts {
-            let mu = c.mu.map_or("undefined".to_string(), |m| format!("{m:.5e}"));
+            let mu = c.mu.map_or("undefined".to_string(), |m| sig(m).to_string());
             outln!(
-                "{:>10.6} {:>10.6} {:>12.5e} {:>12.5e} {:>12.5e} {:>12.5e} {:>12}",
-                c.h_star,
-                c.d_star,
-                c.p_star,
-                c.fs_star,
-                c.q_star,
-                c.f_star,
+                "{:>12} {:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
+                sig(c.h_star).to_string(),
+                sig(c.d_star).to_string(),
+                sig(c.p_star).to_string(),
+                sig(c.fs_star).to_string(),
+                sig(c.q_star).to_string(),
+                sig(c.f_star).to_string(),
                 mu
             )?;
-            paper.note(c.f_star, c.h_star);
+            warnings.note_contact(c);
         }
     }
-    paper.warn();
+    warn(&warnings);
+    Ok(())
+}
+
+/// `kefric eval` at loads in SI units (--force on --area, or --pressure):
+/// F* = pressure/hardness, then the model there, one row a load.
+fn run_loads(
+    args: &Args,
+    model: &ke_friction::Model,
+    source: Option<&crate::args::SurfaceSource>,
+) -> Result<(), Failure> {
+    let flag = args.load.flag();
+    let Some(physical) = args.model.physical(source)? else {
+        return Err(Failure::input(format!(
+            "{flag}: a load in SI units needs the hardness: give the SI inputs or --surface with the materials (or --f-star)"
+        )));
+    };
+    let loads = args.load.loads()?.unwrap_or_default();
+    let mut warnings = Warnings::new();
+    let mut rows: Vec<Friction> = Vec::with_capacity(loads.len());
+    for load in &loads {
+        let f = load.friction(model, &physical).map_err(|e| Failure::of(flag, e))?;
+        warnings.note(f.warnings(model, &physical));
+        rows.push(f);
+    }
+    let p = model.params();
+    if args.json {
+        #[derive(serde::Serialize)]
+        struct Row<'a> {
+            #[serde(flatten)]
+            params: &'a ke_friction::Params,
+            #[serde(flatten)]
+            friction: &'a Friction,
+            #[serde(flatten, skip_serializing_if = "Option::is_none")]
+            source: Option<&'a crate::args::SurfaceSource>,
+        }
+        for f in &rows {
+            let row = Row {
+                params: p,
+                friction: f,
+                source,
+            };
+            outln!("{}", serde_json::to_string(&row).expect("a friction record serialises"))?;
+        }
+    } else {
+        outln!("# {}", describe(p))?;
+        if let Some(source) = source {
+            outln!("# {source}")?;
+        }
+        if let Some(area) = args.load.area {
+            outln!(
+                "# loads on A_n = {} m², hardness H = {} Pa",
+                sig(area),
+                sig(physical.hardness)
+            )?;
+        } else {
+            outln!("# hardness H = {} Pa", sig(physical.hardness))?;
+        }
+        let load = if args.load.force.is_some() { "F (N)" } else { "p (Pa)" };
+        outln!(
+            "{load:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
+            "F*",
+            "h*",
+            "d*",
+            "mu",
+            if args.load.force.is_some() {
+                "Q (N)"
+            } else {
+                "mu p (Pa)"
+            }
+        )?;
+        for f in &rows {
+            let (l, q) = match (f.force, f.friction_force) {
+                (Some(force), Some(q)) => (force, q),
+                _ => (f.pressure, f.friction_stress),
+            };
+            outln!(
+                "{:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
+                sig(l).to_string(),
+                sig(f.contact.f_star).to_string(),
+                sig(f.contact.h_star).to_string(),
+                sig(f.contact.d_star).to_string(),
+                sig(f.mu).to_string(),
+                sig(q).to_string()
+            )?;
+        }
+    }
+    warn(&warnings);
     Ok(())
 }

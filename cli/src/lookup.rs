@@ -1,7 +1,7 @@
 //! `kefric lookup`: μ, ∂μ/∂F* and h* from a table, for one point or for
 //! CSV rows streamed from stdin.
 
-use crate::args::{flag_of, load_table, parse_f64, DistributionArgs, Failure, PaperRange, SiArgs};
+use crate::args::{flag_of, load_table, parse_f64, DistributionArgs, Failure, SiArgs};
 use ke_friction::Shortest;
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
@@ -102,9 +102,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         outln!("dmu/dF* = {}", Shortest(r.slope))?;
         outln!("h* = {}", Shortest(r.h_star))?;
     }
-    let mut paper = PaperRange::default();
-    paper.note(f_star, r.h_star);
-    paper.warn();
+    let mut warnings = ke_friction::Warnings::new();
+    warnings.note(ke_friction::Warning::of_point(f_star, r.h_star, Some(r.mu)));
+    crate::args::warn(&warnings);
     Ok(())
 }
 
@@ -187,7 +187,7 @@ fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
     let write_failed = |e: std::io::Error| Failure::output("stdout", &e);
     out.write_all(b"psi,theta,f_star,mu,dmu_df_star,h_star\n")
         .map_err(write_failed)?;
-    let mut paper = PaperRange::default();
+    let mut warnings = ke_friction::Warnings::new();
     let mut line = String::new();
     let mut text = String::new();
     let mut input = stdin;
@@ -240,7 +240,7 @@ fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
             Ok(r) => r,
             Err(e) => break Err(bad(e.to_string())),
         };
-        paper.note(f_star, r.h_star);
+        warnings.note(ke_friction::Warning::of_point(f_star, r.h_star, Some(r.mu)));
         text.clear();
         let _ = writeln!(
             text,
@@ -258,6 +258,6 @@ fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
     };
     // The rows before a bad one are complete lines; flush them either way.
     out.flush().map_err(write_failed)?;
-    paper.warn();
+    crate::args::warn(&warnings);
     result
 }

@@ -115,8 +115,7 @@ struct SurfacePlotArgs {
     read: crate::surface::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
-    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
-    f_star: Option<String>,
+    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]    f_star: Option<String>,
     /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
     #[arg(long, conflicts_with = "scan")]
     psd: bool,
@@ -189,9 +188,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
         What::Surface(a) if a.psd || a.scan => scale_plot(&a),
         What::Surface(a) => {
             let (out, scale) = output(&a.out)?;
-            let range = a.f_star.as_deref().map(f_star_range).transpose()?;
             let surface = a.read.surface("surface", &a.files)?;
             let materials = a.materials.materials(&[])?;
+            let axis = load_axis(&a, &surface, &materials)?;
             let mut fits = Vec::new();
             for family in [Family::Gaussian, Family::Pearson, Family::Empirical] {
                 let fit = crate::surface::params(
@@ -234,8 +233,26 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 })
                 .collect();
             let intervals = format!("at {}", crate::surface::intervals(surface.stats()));
-            let page = figures::surface_page(&names.join(" + "), &intervals, standardised.as_deref(), &fits, range)
-                .map_err(failure)?;
+            // The warnings `kefric surface` gives: the surface's, and the
+            // loads' at the ends of the range (the first fit's).
+            let mut warnings = ke_friction::Warnings::new();
+            warnings.extend(surface.stats().warnings.iter().cloned());
+            if let Some((_, model)) = fits.first() {
+                for end in [axis.range.0, axis.range.1] {
+                    if let Ok(c) = model.at_f_star(end / axis.per_f_star) {
+                        warnings.note_contact(&c);
+                    }
+                }
+            }
+            crate::args::warn(&warnings);
+            let page = figures::surface_page(
+                &names.join(" + "),
+                &intervals,
+                standardised.as_deref(),
+                &fits,
+                Some(&axis),
+            )
+            .map_err(failure)?;
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())
@@ -348,6 +365,49 @@ fn output(o: &Out) -> Result<(&Path, u32), Failure> {
     Format::from_path(&o.out).map_err(|e| Failure::input(format!("--out: {e}")))?;
     check_writable("--out", &o.out)?;
     Ok((&o.out, scale))
+}
+
+/// The μ panel's axis of `plot surface`: F* over `--f-star LO:HI`
+/// (default 1e-5:0.1), or the force in newtons (`--force
+/// START:STOP:COUNT --area`) or the pressure in pascals (`--pressure
+/// START:STOP:COUNT`) from START to STOP.
+fn load_axis(
+    a: &SurfacePlotArgs,
+    surface: &ke_friction::topography::Surface,
+    materials: &ke_friction::Materials,
+) -> Result<figures::LoadAxis, Failure> {
+    let flag = a.load.flag();
+    if !a.load.any() {
+        let range = a.f_star.as_deref().map(f_star_range).transpose()?;
+        return Ok(figures::LoadAxis::f_star(
+            range.unwrap_or(ke_friction::figures::DISTRIBUTIONS_F_STAR),
+        ));
+    }
+    if a.f_star.is_some() {
+        return Err(Failure::input(format!("--f-star: give it or {flag}, not both")));
+    }
+    let loads = a.load.loads()?.unwrap_or_default();
+    let value = |l: &ke_friction::Load| l.force().unwrap_or_else(|| l.pressure().unwrap_or(f64::NAN));
+    let (lo, hi) = match (loads.first(), loads.last()) {
+        (Some(first), Some(last)) => (value(first), value(last)),
+        _ => (f64::NAN, f64::NAN),
+    };
+    if lo.is_nan() || hi.is_nan() || lo >= hi {
+        return Err(Failure::input(format!(
+            "{flag}: the plot needs a range START:STOP:COUNT with START < STOP"
+        )));
+    }
+    // The axis' value at F* = 1: A_n·H newtons, or H pascals.
+    let hardness = surface.physical(materials).hardness;
+    let (title, per_f_star) = match a.load.area {
+        Some(area) if a.load.force.is_some() => ("F (N)", area * hardness),
+        _ => ("p (Pa)", hardness),
+    };
+    Ok(figures::LoadAxis {
+        title: title.into(),
+        per_f_star,
+        range: (lo, hi),
+    })
 }
 
 /// `--f-star LO:HI` of `plot curve`: finite, 0 < LO < HI.

@@ -83,13 +83,13 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
         match &row.surface {
             Ok(surface) => {
                 unreliable += usize::from(row.reliable == Some(false));
-                match evaluate(args, surface, materials.as_ref(), load.as_ref()) {
-                    Ok((params, friction)) => {
+                match evaluate(args, surface, materials.as_ref(), load.as_slice()) {
+                    Ok((params, friction, _)) => {
                         record["surface"] = serde_json::to_value(surface.stats()).expect("a record");
                         if let Some(p) = params {
                             record["model"] = serde_json::to_value(p).expect("a record");
                         }
-                        if let Some(f) = friction {
+                        if let Some(f) = friction.first() {
                             record["friction"] = serde_json::to_value(f).expect("a record");
                         }
                     }

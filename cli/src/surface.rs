@@ -8,7 +8,7 @@ use ke_friction::topography::{
     read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, Metadata, ReadError, ReadOptions,
     StatsOptions, Surface, SurfaceStats, Topography, MAX_POINTS,
 };
-use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
+use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest, Warnings};
 use std::path::{Path, PathBuf};
 
 /// Statistics of a measured surface and, with materials and a load, μ.
@@ -288,42 +288,100 @@ impl SurfaceArgs {
     }
 }
 
-/// The load's flags: a force on an area, or a pressure.
+/// The load's flags: a force on an area, or a pressure; each one value or
+/// a range of loads.
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "Load (--force with --area, or --pressure)")]
 pub struct LoadArgs {
-    /// Normal force F, N (> 0), on the nominal area --area.
-    #[arg(long, value_name = "N", value_parser = parse_f64, allow_hyphen_values = true, requires = "area", conflicts_with = "pressure")]
-    pub force: Option<f64>,
+    /// Normal force F, N (> 0), on the nominal area --area; or START:STOP:COUNT, COUNT forces spaced logarithmically.
+    #[arg(
+        long,
+        value_name = "N|START:STOP:COUNT",
+        allow_hyphen_values = true,
+        requires = "area",
+        conflicts_with = "pressure"
+    )]
+    pub force: Option<String>,
     /// Nominal contact area A_n, m² (> 0).
     #[arg(long, value_name = "M2", value_parser = parse_f64, allow_hyphen_values = true, requires = "force")]
     pub area: Option<f64>,
-    /// Nominal pressure F/A_n, Pa (> 0), in place of --force and --area.
-    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
-    pub pressure: Option<f64>,
+    /// Nominal pressure F/A_n, Pa (> 0), in place of --force and --area; or START:STOP:COUNT, spaced logarithmically.
+    #[arg(long, value_name = "PA|START:STOP:COUNT", allow_hyphen_values = true)]
+    pub pressure: Option<String>,
 }
 
 impl LoadArgs {
-    /// The load, if one is given, checked (a message names the flag).
-    pub fn load(&self) -> Result<Option<Load>, Failure> {
-        let Some(load) = Load::from_parts(self.force, self.area, self.pressure)
-            .map_err(|e| Failure::input(format!("--force: {e} (--pressure)")))?
-        else {
-            return Ok(None);
+    /// The flag the load was given by: `--force` or `--pressure`.
+    pub fn flag(&self) -> &'static str {
+        if self.pressure.is_some() {
+            "--pressure"
+        } else {
+            "--force"
+        }
+    }
+
+    /// Whether a load is given.
+    pub fn any(&self) -> bool {
+        self.force.is_some() || self.pressure.is_some()
+    }
+
+    /// Whether the load is a range (START:STOP:COUNT).
+    pub fn is_range(&self) -> bool {
+        self.force
+            .as_deref()
+            .or(self.pressure.as_deref())
+            .is_some_and(|t| t.contains(':'))
+    }
+
+    /// The loads, if given: one, or COUNT spaced logarithmically from
+    /// START to STOP; each checked (a message names the flag).
+    pub fn loads(&self) -> Result<Option<Vec<Load>>, Failure> {
+        let flag = self.flag();
+        let values = match self.force.as_deref().or(self.pressure.as_deref()) {
+            Some(text) => Some(crate::eval::points(flag, text, crate::eval::Spacing::Log)?),
+            None => None,
         };
-        load.pressure().map_err(|e| {
-            Failure::input(format!(
-                "{}: {e}",
-                crate::args::flag_of(e.name.split(' ').next().unwrap_or(e.name))
-            ))
-        })?;
-        Ok(Some(load))
+        let (force, pressure) = match (&self.force, &values) {
+            (Some(_), Some(v)) => (Some(v.as_slice()), None),
+            (None, Some(v)) => (None, Some(v.as_slice())),
+            _ => (None, None),
+        };
+        let n = values.as_ref().map_or(1, Vec::len);
+        let mut loads = Vec::with_capacity(n);
+        for k in 0..n {
+            let Some(load) = Load::from_parts(force.map(|v| v[k]), self.area, pressure.map(|v| v[k]))
+                .map_err(|e| Failure::input(format!("--force: {e} (--pressure)")))?
+            else {
+                return Ok(None);
+            };
+            load.pressure().map_err(|e| {
+                Failure::input(format!(
+                    "{}: {e}",
+                    crate::args::flag_of(e.name.split(' ').next().unwrap_or(e.name))
+                ))
+            })?;
+            loads.push(load);
+        }
+        Ok(Some(loads))
+    }
+
+    /// The load, if one is given, checked; a range is refused (where one
+    /// load is taken: `--scan`).
+    pub fn load(&self) -> Result<Option<Load>, Failure> {
+        if self.is_range() {
+            return Err(Failure::input(format!(
+                "{}: one load here, not a range START:STOP:COUNT",
+                self.flag()
+            )));
+        }
+        Ok(self.loads()?.and_then(|l| l.into_iter().next()))
     }
 }
 
-/// Six significant digits, shortest form.
+/// Six significant digits, shortest form: the one format of numbers in
+/// text ([`Shortest::sig`]).
 pub fn sig(x: f64) -> Shortest {
-    Shortest(format!("{x:.5e}").parse().unwrap_or(x))
+    Shortest::sig(x)
 }
 
 /// The sampling intervals, for beside β and ψ: `dx = 1e-6 m, dy = 1e-6 m`.
@@ -381,21 +439,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if args.scan {
         return crate::scale::run_scan(&args);
     }
-    let load = args.load.load()?;
+    let loads = args.load.loads()?;
     let surface = args.read.surface("surface", &args.files)?;
     let materials = if args.materials.any() {
         Some(args.materials.materials(&[])?)
     } else {
         if let Some(flag) = [
             (args.distribution.is_some(), "--distribution"),
-            (
-                load.is_some(),
-                if args.load.pressure.is_some() {
-                    "--pressure"
-                } else {
-                    "--force"
-                },
-            ),
+            (loads.is_some(), args.load.flag()),
         ]
         .iter()
         .find_map(|(given, flag)| given.then_some(*flag))
@@ -406,16 +457,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
         }
         None
     };
-    let (params, friction) = evaluate(&args, &surface, materials.as_ref(), load.as_ref())?;
-    for w in &surface.stats().warnings {
-        errln!("warning: {w}");
-    }
-    if let Some(f) = &friction {
-        let mut paper = crate::args::PaperRange::default();
-        paper.note(f.contact.f_star, f.contact.h_star);
-        paper.warn();
-    }
+    let loads = loads.unwrap_or_default();
+    let (params, friction, warnings) = evaluate(&args, &surface, materials.as_ref(), &loads)?;
+    crate::args::warn(&warnings);
     if args.json {
+        /// One friction record, or a list of them for a range of loads.
+        #[derive(serde::Serialize)]
+        #[serde(untagged)]
+        enum Frictions<'a> {
+            One(&'a Friction),
+            Many(&'a [Friction]),
+        }
         #[derive(serde::Serialize)]
         struct Record<'a> {
             files: Vec<String>,
@@ -429,7 +481,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
             #[serde(skip_serializing_if = "Option::is_none")]
             model: Option<&'a Params>,
             #[serde(skip_serializing_if = "Option::is_none")]
-            friction: Option<&'a Friction>,
+            friction: Option<Frictions<'a>>,
+            warnings: Vec<ke_friction::Summary<'a>>,
         }
         let options = surface.options();
         let record = Record {
@@ -440,7 +493,12 @@ pub fn run(args: Args) -> Result<(), Failure> {
             surface: surface.stats(),
             parts: (surface.parts().len() > 1).then(|| surface.parts().iter().map(|(_, s)| s).collect()),
             model: params.as_ref(),
-            friction: friction.as_ref(),
+            friction: match friction.as_slice() {
+                [] => None,
+                [one] if !args.load.is_range() => Some(Frictions::One(one)),
+                many => Some(Frictions::Many(many)),
+            },
+            warnings: warnings.summaries().collect(),
         };
         outln!(
             "{}",
@@ -448,45 +506,39 @@ pub fn run(args: Args) -> Result<(), Failure> {
         )?;
         return Ok(());
     }
-    print_text(&args, &surface, params.as_ref(), friction.as_ref())
+    print_text(&args, &surface, params.as_ref(), &friction)
 }
 
-/// The model's inputs of `surface` with `materials`, and with a load μ.
+/// The model's inputs of `surface` with `materials`, and with loads μ at
+/// each; the warnings of the surface and of each result.
 pub fn evaluate(
     args: &Args,
     surface: &Surface,
     materials: Option<&Materials>,
-    load: Option<&Load>,
-) -> Result<(Option<Params>, Option<Friction>), Failure> {
+    loads: &[Load],
+) -> Result<(Option<Params>, Vec<Friction>, Warnings), Failure> {
+    let mut warnings = Warnings::new();
+    warnings.extend(surface.stats().warnings.iter().cloned());
     let params = materials
         .map(|m| params(surface, m, args.distribution, args.fit, args.model))
         .transpose()?;
-    let friction = match (load, &params, materials) {
-        (Some(load), Some(p), Some(m)) => {
-            let model =
-                Model::new(p.clone()).map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
-            Some(load.friction(&model, &surface.physical(m)).map_err(|e| {
-                Failure::of(
-                    if args.load.pressure.is_some() {
-                        "--pressure"
-                    } else {
-                        "--force"
-                    },
-                    e,
-                )
-            })?)
+    let mut frictions = Vec::with_capacity(loads.len());
+    if let (false, Some(p), Some(m)) = (loads.is_empty(), &params, materials) {
+        let model =
+            Model::new(p.clone()).map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
+        let physical = surface.physical(m);
+        for load in loads {
+            let f = load
+                .friction(&model, &physical)
+                .map_err(|e| Failure::of(args.load.flag(), e))?;
+            warnings.note(f.warnings(&model, &physical));
+            frictions.push(f);
         }
-        _ => None,
-    };
-    Ok((params, friction))
+    }
+    Ok((params, frictions, warnings))
 }
 
-fn print_text(
-    args: &Args,
-    surface: &Surface,
-    params: Option<&Params>,
-    friction: Option<&Friction>,
-) -> Result<(), Failure> {
+fn print_text(args: &Args, surface: &Surface, params: Option<&Params>, friction: &[Friction]) -> Result<(), Failure> {
     let s = surface.stats();
     let shape = |s: &SurfaceStats| {
         if s.dy.is_some() {
@@ -552,7 +604,10 @@ fn print_text(
     } else {
         outln!("# give the materials (--e1 … --epsilon) for psi and theta, and --force --area for mu")?;
     }
-    if let Some(f) = friction {
+    if friction.len() > 1 || args.load.is_range() {
+        return print_loads(friction);
+    }
+    if let Some(f) = friction.first() {
         match (f.force, f.area) {
             (Some(force), Some(area)) => outln!(
                 "# load: F = {} N on A_n = {} m² ({} Pa)",
@@ -570,6 +625,42 @@ fn print_text(
         }
         row("h* (separation / sigma)", sig(f.contact.h_star).to_string(), "")?;
         row("separation h", sig(f.separation).to_string(), "m")?;
+    }
+    Ok(())
+}
+
+/// The friction of a range of loads: one row a load.
+fn print_loads(friction: &[Friction]) -> Result<(), Failure> {
+    let by_force = friction.first().is_some_and(|f| f.force.is_some());
+    if let Some(area) = friction.first().and_then(|f| f.area) {
+        outln!("# loads on A_n = {} m²", sig(area))?;
+    }
+    let (load, resistance) = if by_force {
+        ("F (N)", "Q = mu F (N)")
+    } else {
+        ("p (Pa)", "mu p (Pa)")
+    };
+    outln!(
+        "{load:>12} {:>12} {:>12} {resistance:>14} {:>12} {:>12}",
+        "F*",
+        "mu",
+        "h*",
+        "h (m)"
+    )?;
+    for f in friction {
+        let (l, q) = match (f.force, f.friction_force) {
+            (Some(force), Some(q)) => (force, q),
+            _ => (f.pressure, f.friction_stress),
+        };
+        outln!(
+            "{:>12} {:>12} {:>12} {:>14} {:>12} {:>12}",
+            sig(l).to_string(),
+            sig(f.contact.f_star).to_string(),
+            sig(f.mu).to_string(),
+            sig(q).to_string(),
+            sig(f.contact.h_star).to_string(),
+            sig(f.separation).to_string()
+        )?;
     }
     Ok(())
 }

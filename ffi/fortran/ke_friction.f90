@@ -27,7 +27,8 @@ module ke_friction
             kef_constants_set_heights, &
             kef_constants_distribution, kef_last_error, kef_error_message, kef_c_string, &
             kef_version, kef_version_string, kef_table_domain, kef_table_h_star, kef_table_h_star_batch, &
-            kef_params_from_physical
+            kef_params_from_physical, kef_warnings, kef_clear_warnings, kef_warning_message, &
+            kef_warning_text
   public :: c_int, c_double, c_size_t, c_ptr, c_associated
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -43,11 +44,38 @@ module ke_friction
   integer(c_int), parameter, public :: KEF_DIST_PEARSON = 1
   integer(c_int), parameter, public :: KEF_DIST_WEIBULL = 2
   integer(c_int), parameter, public :: KEF_DIST_EMPIRICAL = 3
+  ! Warning bits (kef_warnings, kef_warning_message): the core's kinds.
+  integer(c_int), parameter, public :: KEF_WARN_F_STAR_BELOW_RANGE = 1
+  integer(c_int), parameter, public :: KEF_WARN_F_STAR_ABOVE_RANGE = 2
+  integer(c_int), parameter, public :: KEF_WARN_NEGATIVE_SEPARATION = 4
+  integer(c_int), parameter, public :: KEF_WARN_ADHESION_DOMINATED = 8
+  integer(c_int), parameter, public :: KEF_WARN_FEW_ASPERITIES = 16
+  integer(c_int), parameter, public :: KEF_WARN_NON_PERIODIC = 32
+  integer(c_int), parameter, public :: KEF_WARN_LOW_BANDWIDTH = 64
+  integer(c_int), parameter, public :: KEF_WARN_ANISOTROPY = 128
+  integer(c_int), parameter, public :: KEF_WARN_INTERVAL_MISMATCH = 256
+  integer(c_int), parameter, public :: KEF_WARN_UNRELIABLE_SCALE = 512
 
   interface
     function kef_last_error() bind(c, name="kef_last_error")
       import :: c_ptr
       type(c_ptr) :: kef_last_error
+    end function
+
+    ! The warning bits of this thread's calls since kef_clear_warnings.
+    function kef_warnings() bind(c, name="kef_warnings")
+      import :: c_int
+      integer(c_int) :: kef_warnings
+    end function
+
+    subroutine kef_clear_warnings() bind(c, name="kef_clear_warnings")
+    end subroutine
+
+    ! The latest warning of one kind (a KEF_WARN_* bit); kef_warning_text(kind) as a Fortran string.
+    function kef_warning_message(kind) bind(c, name="kef_warning_message")
+      import :: c_ptr, c_int
+      integer(c_int), value :: kind
+      type(c_ptr) :: kef_warning_message
     end function
 
     ! A static C string (not to free); kef_version_string() as a Fortran string.
@@ -403,6 +431,13 @@ contains
   function kef_error_message() result(message)
     character(len=:), allocatable :: message
     message = f_string(kef_last_error())
+  end function
+
+  ! The latest warning of kind `kind` (a KEF_WARN_* bit) on this thread, as a Fortran string ("" if none).
+  function kef_warning_text(kind) result(message)
+    integer(c_int), intent(in) :: kind
+    character(len=:), allocatable :: message
+    message = f_string(kef_warning_message(kind))
   end function
 
   ! The library's version ("MAJOR.MINOR.PATCH"), as a Fortran string.

@@ -43,6 +43,10 @@ mod macros;
 // The return codes and kef_last_error.
 mod error;
 
+// The plausibility warnings: KEF_WARN_*, kef_warnings, kef_clear_warnings,
+// kef_warning_message.
+mod warning;
+
 // kef_version.
 mod version;
 
@@ -81,3 +85,4 @@ pub use model::*;
 pub use surface::*;
 pub use table::*;
 pub use version::*;
+pub use warning::*;

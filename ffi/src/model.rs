@@ -12,13 +12,19 @@ pub(crate) fn explicit(beta: f64, nu: f64, eps_star: f64) -> Constants {
 }
 
 /// μ by direct integration at F* = `f_star`.
+/// Sets the thread's warnings (`kef_warnings`) of the contact returned.
 fn model_mu(constants: &Constants, psi: f64, theta: f64, f_star: f64) -> Result<f64, Failure> {
-    Ok(Model::new(constants.at(psi, theta)?)?.at_f_star(f_star)?.mu_or_err()?)
+    let contact = Model::new(constants.at(psi, theta)?)?.at_f_star(f_star)?;
+    let mu = contact.mu_or_err()?;
+    crate::warning::note(&contact);
+    Ok(mu)
 }
 
 /// μ of the Kogut–Etsion model by direct integration (microseconds) at
 /// F* with β, ν, ε* given (the default fit and model):
-/// kef_model_mu_with with these constants.
+/// kef_model_mu_with with these constants. Both set the thread's
+/// warnings (kef_warnings) of the result: F* outside 1e-5..0.1, h* < 0,
+/// mu > 1.
 ///
 /// # Safety
 /// `mu` is NULL or writable.
@@ -37,7 +43,8 @@ pub unsafe extern "C" fn kef_model_mu(
 
 /// μ of the model with `constants` (NULL: the defaults) by direct
 /// integration (microseconds) at (ψ, θ, F*). KEF_ERR_DOMAIN for a
-/// parameter out of range or an F* the model cannot reach, KEF_ERR_ARGUMENT
+/// parameter out of range, F* > 1 (a pressure above the hardness) or an F*
+/// the model cannot reach, KEF_ERR_ARGUMENT
 /// for a NaN or ±inf or a NULL `mu`, KEF_ERR_NO_MU where the model has no
 /// μ (F* <= 0 at that separation), KEF_ERR_INTERNAL if the root search
 /// does not converge.

@@ -635,24 +635,57 @@ impl SurfaceCore {
         record(py, serde_json::to_string(&p))
     }
 
-    /// The friction of a load (a `force` on an `area`, or a `pressure`)
-    /// on `model`, made from `materials` on this surface: the core's
-    /// `Friction` record.
+    /// The friction of loads (`force` on `area`, or `pressure`: lists of
+    /// one length, broadcast by the caller) on `model`, made from
+    /// `materials` on this surface: `{"records": [the core's `Friction`
+    /// record of each load], "warnings": [one summary a kind (the core's
+    /// `Warnings`): the surface's and the loads']}`.
     #[pyo3(signature = (model, materials, force, area, pressure))]
     fn friction<'py>(
         &self,
         py: Python<'py>,
         model: &ModelCore,
         materials: (f64, f64, f64, f64, f64, f64, f64),
-        force: Option<f64>,
-        area: Option<f64>,
-        pressure: Option<f64>,
+        force: Option<Vec<f64>>,
+        area: Option<Vec<f64>>,
+        pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let load = Load::from_parts(force, area, pressure)
-            .map_err(raise)?
-            .ok_or_else(|| value_error("give force with area, or pressure alone"))?;
+        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
+        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
+        let mut loads = Vec::with_capacity(n);
+        for k in 0..n {
+            let load = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k))
+                .map_err(raise)?
+                .ok_or_else(|| value_error("give force with area, or pressure alone"))?;
+            loads.push(load);
+        }
+        if loads.is_empty() {
+            return Err(value_error("give force with area, or pressure alone"));
+        }
         let physical = self.surface.physical(&self::materials(materials));
-        let friction = py.detach(|| load.friction(&model.0, &physical)).map_err(raise)?;
-        record(py, serde_json::to_string(&friction))
+        let (records, warnings) = py
+            .detach(|| {
+                let mut warnings = ke_friction::Warnings::new();
+                warnings.extend(self.surface.stats().warnings.iter().cloned());
+                let mut records = Vec::with_capacity(loads.len());
+                for load in &loads {
+                    let f = load.friction(&model.0, &physical)?;
+                    warnings.note(f.warnings(&model.0, &physical));
+                    records.push(f);
+                }
+                Ok::<_, ke_friction::LoadError>((records, warnings))
+            })
+            .map_err(raise)?;
+        let summaries: Vec<ke_friction::Summary<'_>> = warnings.summaries().collect();
+        let out = serde_json::json!({ "records": records, "warnings": summaries });
+        record(py, serde_json::to_string(&out))
+    }
+
+    /// The surface's warnings, one summary a kind (as `friction`'s).
+    fn warnings<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let mut warnings = ke_friction::Warnings::new();
+        warnings.extend(self.surface.stats().warnings.iter().cloned());
+        let summaries: Vec<ke_friction::Summary<'_>> = warnings.summaries().collect();
+        record(py, serde_json::to_string(&summaries))
     }
 }

@@ -228,6 +228,11 @@ impl BuildOptions {
         range("psi", self.psi, |v| v > 0.0, "> 0")?;
         range("theta", self.theta, |v| v >= 0.0, ">= 0")?;
         range("f_star", self.f_star, |v| v > 0.0, "> 0")?;
+        // A table answers up to its F* range's end: no further than the
+        // model's F* <= 1 (its ghost nodes may lie beyond, up to F_STAR_LIMIT).
+        check("f_star", self.f_star.1, "<= 1 (a pressure at most the hardness)", |v| {
+            v <= crate::F_STAR_MAX
+        })?;
         let count = |name, n: usize, min: usize| {
             check(name, n as f64, "a whole number from 5 to 4096", |v| {
                 v >= min as f64 && v <= 4096.0

@@ -22,7 +22,7 @@ pub const DISTRIBUTION_SET: [(f64, f64); 6] = [
 /// [`DISTRIBUTIONS_F_STAR`].
 pub const DISTRIBUTIONS_LOADS: usize = 60;
 /// The F* range of the μ(F*) panel.
-pub const DISTRIBUTIONS_F_STAR: (f64, f64) = (1e-5, 0.1);
+pub const DISTRIBUTIONS_F_STAR: (f64, f64) = crate::F_STAR_RANGE;
 /// The x range of the density panel, in standard deviations.
 pub const DENSITY_X: (f64, f64) = (-5.0, 8.0);
 /// The g range of the density panel (logarithmic).

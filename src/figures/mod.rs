@@ -36,7 +36,7 @@ pub use distributions::{
 pub use paper::paper_sweep;
 #[cfg(feature = "topography")]
 pub use surface::psd_page;
-pub use surface::{scan_page, surface_page, ScanPoint, SURFACE_BINS};
+pub use surface::{scan_page, surface_page, LoadAxis, ScanPoint, SURFACE_BINS};
 
 use crate::build::BuildError;
 use crate::{EvalError, LookupError, ParamError};

@@ -7,6 +7,30 @@ use super::paper::SHAPES;
 use super::FigureError;
 use crate::Model;
 
+/// The load axis of [`surface_page`]'s μ panel: what is drawn along it
+/// and over which range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadAxis {
+    /// The axis title: `"F*"`, `"F (N)"`, `"p (Pa)"`.
+    pub title: String,
+    /// The axis' value at F* = 1 (1 for F*, A_n·H for a force in N, H
+    /// for a pressure in Pa): F* = value / `per_f_star`.
+    pub per_f_star: f64,
+    /// The range drawn (LO < HI, both > 0), in the axis' unit.
+    pub range: (f64, f64),
+}
+
+impl LoadAxis {
+    /// F* over `range`.
+    pub fn f_star(range: (f64, f64)) -> LoadAxis {
+        LoadAxis {
+            title: "F*".into(),
+            per_f_star: 1.0,
+            range,
+        }
+    }
+}
+
 /// Bins of the height histogram.
 pub const SURFACE_BINS: usize = 80;
 
@@ -20,14 +44,20 @@ pub const SURFACE_BINS: usize = 80;
 /// density g(x) in its μ curve's colour. `title` names the surface (the
 /// lower panel's title); `intervals` its sampling intervals, printed
 /// beside ψ and β (the upper panel's title), on which they depend.
+///
+/// `loads` is the μ panel's x axis: F* (the default, 1e-5 to 0.1), or a
+/// force in newtons or a pressure in pascals ([`LoadAxis`]); the axis
+/// spans exactly its range.
 pub fn surface_page(
     title: &str,
     intervals: &str,
     standardised: Option<&[f64]>,
     fits: &[(String, Model)],
-    f_star: Option<(f64, f64)>,
+    loads: Option<&LoadAxis>,
 ) -> Result<Page, FigureError> {
-    let (lo, hi) = f_star.unwrap_or(crate::SURFACE_F_STAR);
+    let default = LoadAxis::f_star(crate::SURFACE_F_STAR);
+    let loads = loads.unwrap_or(&default);
+    let (lo, hi) = loads.range;
     let mut mu_series = Vec::with_capacity(fits.len());
     let mut g_series = Vec::with_capacity(fits.len() + 1);
     // The x range: the heights' own, else ±5.
@@ -68,7 +98,7 @@ pub fn surface_page(
         let mut points = Vec::with_capacity(DISTRIBUTIONS_LOADS);
         for k in 0..DISTRIBUTIONS_LOADS {
             let f = lo * (hi / lo).powf(k as f64 / (DISTRIBUTIONS_LOADS - 1) as f64);
-            if let Some(mu) = model.at_f_star(f).ok().and_then(|c| c.mu) {
+            if let Some(mu) = model.at_f_star(f / loads.per_f_star).ok().and_then(|c| c.mu) {
                 if mu.is_finite() && mu > 0.0 {
                     points.push((f, mu));
                 }
@@ -101,7 +131,8 @@ pub fn surface_page(
     }
     let y = mu_axis(&mu_series);
     let mut x = f_axis(&mu_series);
-    x.range.0 = x.range.0.min(lo);
+    x.title.clone_from(&loads.title);
+    x.range = (lo, hi);
     let p = fits.first().map(|(_, m)| m.params());
     Ok(Page {
         top: Chart {
@@ -339,5 +370,28 @@ mod tests {
         assert!(page.top.series.iter().all(|s| s.style != LineStyle::Shade));
         let page = scan_page("t", &points(), None).unwrap();
         assert!(page.top.series.iter().all(|s| s.style == LineStyle::Solid));
+    }
+
+    /// A load axis in newtons spans exactly the range given, and each point
+    /// is the model's μ at F* = F/(A_n·H).
+    #[test]
+    fn the_load_axis_is_the_range_given_in_its_unit() {
+        let model = Model::new(crate::Params::new(1.0, 0.001)).unwrap();
+        // 1 cm² against 100 MPa: F* = F / 1e4 N.
+        let axis = LoadAxis {
+            title: "F (N)".into(),
+            per_f_star: 1e4,
+            range: (0.2, 300.0),
+        };
+        let fits = [("gaussian".to_string(), model.clone())];
+        let page = surface_page("t", "", None, &fits, Some(&axis)).unwrap();
+        assert_eq!(page.top.x.title, "F (N)");
+        assert_eq!(page.top.x.range, (0.2, 300.0));
+        let points = &page.top.series[0].points;
+        assert_eq!(points.len(), DISTRIBUTIONS_LOADS);
+        assert!((points[0].0 / 0.2 - 1.0).abs() < 1e-12 && (points[points.len() - 1].0 / 300.0 - 1.0).abs() < 1e-12);
+        for &(f, mu) in points {
+            assert_eq!(mu, model.at_f_star(f / 1e4).unwrap().mu.unwrap(), "F = {f} N");
+        }
     }
 }

@@ -56,6 +56,10 @@ pub enum EvalError {
     /// F* is NaN, infinite, zero or negative.
     #[error("f_star = {} is out of range: must be > 0 and finite", Shortest(*.0))]
     FStar(f64),
+    /// F* above [`F_STAR_MAX`](crate::F_STAR_MAX) = 1: a nominal pressure
+    /// above the hardness, where the model has no meaning.
+    #[error("f_star = {} is out of range: must be <= {} (a nominal pressure above the hardness: the model has no meaning there)", Shortest::sig(*.0), Shortest(crate::F_STAR_MAX))]
+    FStarAboveHardness(f64),
     /// No separation in the supported range gives this F*.
     #[error("f_star = {} is out of reach: the largest F* for h_star >= -{} is {}", Shortest(*.f_star), Shortest(H_LIMIT), Shortest(*.f_max))]
     FStarTooLarge {
@@ -150,6 +154,23 @@ impl Model {
         })
     }
 
+    /// The expected number of asperities in contact in `contact` on a
+    /// nominal area holding `summits` summits (η·A_n): `summits` times the
+    /// fraction of the summit heights above d*. Fewer than
+    /// [`FEW_ASPERITIES`](crate::FEW_ASPERITIES) is too few for this
+    /// statistical model ([`Warning::of_asperities`](crate::Warning::of_asperities)).
+    ///
+    /// ```
+    /// use ke_friction::{Model, Params};
+    /// let model = Model::new(Params::new(1.0, 0.001))?;
+    /// let c = model.at_h_star(model.y_s())?; // d* = 0: half the summits touch
+    /// assert!((model.asperities_in_contact(&c, 1e4) - 5e3).abs() < 1e-9);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn asperities_in_contact(&self, contact: &Contact, summits: f64) -> f64 {
+        summits * self.surface.contact_fraction(contact.d_star)
+    }
+
     /// F* and dF*/dh* at `h_star` (no friction integrals).
     pub fn force(&self, h_star: f64) -> (f64, f64) {
         let s = self.surface.evaluate(h_star - self.surface.ys, false);
@@ -159,7 +180,12 @@ impl Model {
     /// The contact where the external force is `f_star`: solves
     /// F*(h*) = f_star on the branch where F* > 0 and decreases
     /// (MODEL.md §5), to full double precision.
+    ///
+    /// F* > [`F_STAR_MAX`](crate::F_STAR_MAX) = 1 (a nominal pressure
+    /// above the hardness) is [`EvalError::FStarAboveHardness`]: the model
+    /// has no meaning there.
     pub fn at_f_star(&self, f_star: f64) -> Result<Contact, EvalError> {
+        check_f_star(f_star)?;
         let h = self.solve_h(f_star, 1.0)?;
         self.at_h_star(h)
     }
@@ -170,6 +196,7 @@ impl Model {
     /// about 0.1% (at most 1e-3·(1 + |h*|); error near 1e-10 relative), divided by the analytic
     /// dF*/dh*. An error where μ is undefined (F* ≤ 0) at or near `f_star`.
     pub fn mu_with_slope_at_f_star(&self, f_star: f64) -> Result<(f64, f64), EvalError> {
+        check_f_star(f_star)?;
         let h = self.solve_h(f_star, 1.0)?;
         let (force, d_force) = self.force(h);
         let mu_at = |h: f64| -> Result<f64, EvalError> { self.at_h_star(h)?.mu_or_err() };
@@ -184,11 +211,14 @@ impl Model {
     }
 
     /// Like [`at_f_star`](Self::at_f_star) but returns only h*, starting the
-    /// search at `guess` (a nearby solution makes it faster).
+    /// search at `guess` (a nearby solution makes it faster). Any F* the
+    /// model reaches is solved, also above 1: a table's ghost nodes lie
+    /// there (values for the interpolant, never answers).
     pub fn solve_h(&self, f_star: f64, guess: f64) -> Result<f64, EvalError> {
         if !(f_star.is_finite() && f_star > 0.0) {
             return Err(EvalError::FStar(f_star));
         }
+
         let target = f_star.ln();
         // Newton on g(h) = ln F*(h) − ln f, safeguarded by a bracket
         // [lo, hi] with g(lo) > 0 > g(hi); F* ≤ 0 lies beyond the root.
@@ -276,6 +306,16 @@ impl Model {
     }
 }
 
+/// Refuses F* above [`F_STAR_MAX`](crate::F_STAR_MAX) (a nominal pressure
+/// above the hardness), where the model has no meaning.
+fn check_f_star(f_star: f64) -> Result<(), EvalError> {
+    // +∞ is not a number to compare: EvalError::FStar, from the solver.
+    if f_star.is_finite() && f_star > crate::F_STAR_MAX {
+        return Err(EvalError::FStarAboveHardness(f_star));
+    }
+    Ok(())
+}
+
 impl crate::Classify for EvalError {
     /// `Argument`/`Domain` for a bad h* or F*, `NoMu`, or `Internal` for
     /// a root search that did not converge.
@@ -283,7 +323,7 @@ impl crate::Classify for EvalError {
         use EvalError::*;
         match self {
             HStar(v) | FStar(v) => crate::ErrorKind::of_value(*v),
-            FStarTooLarge { .. } => crate::ErrorKind::Domain,
+            FStarTooLarge { .. } | FStarAboveHardness(_) => crate::ErrorKind::Domain,
             NoMu { .. } => crate::ErrorKind::NoMu,
             NoConvergence { .. } => crate::ErrorKind::Internal,
         }

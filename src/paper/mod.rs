@@ -112,7 +112,7 @@ use crate::{EvalError, Model, ModelKind, ParamError, Params};
 /// The paper's range of separations, 0 ≤ h* ≤ 3 (MODEL.md §1).
 pub const PAPER_H_STAR_RANGE: (f64, f64) = (0.0, 3.0);
 /// The paper's largest load, F* ≤ 0.1 (MODEL.md §1).
-pub const PAPER_F_STAR_MAX: f64 = 0.1;
+pub const PAPER_F_STAR_MAX: f64 = crate::F_STAR_RANGE.1;
 /// The loads at which the CEB-type and Kogut–Etsion μ are compared.
 pub const CEB_LOADS: [f64; 7] = [1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 5e-2];
 

@@ -21,7 +21,7 @@ pub const NONGAUSSIAN_LOADS: [f64; 4] = [1e-4, 1e-3, 1e-2, 0.05];
 /// θ of the load scans (statements 2 and 3).
 pub const NONGAUSSIAN_THETA: f64 = 1e-3;
 /// The loads scanned by statements 2 and 3: the paper's figure range.
-pub const NONGAUSSIAN_F_STAR: (f64, f64) = (1e-5, 0.1);
+pub const NONGAUSSIAN_F_STAR: (f64, f64) = crate::F_STAR_RANGE;
 
 fn model(psi: f64, theta: f64, d: HeightDistribution) -> Result<Model, PaperError> {
     Ok(Model::new(Constants::default().distribution(d).at(psi, theta)?)?)

@@ -57,24 +57,41 @@ fn text_output_uses_the_flags_spellings_and_warns_outside_the_papers_range() {
         "no warning inside the paper's range: {}",
         stderr(&o)
     );
-    // F* = 5 (h* = -28.2): an answer, exit 0, and one warning line.
+    // F* = 5, a pressure five times the hardness: refused (exit 2).
     let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "5"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("f_star = 5 is out of range: must be <= 1"),
+        "{}",
+        stderr(&o)
+    );
+    // F* = 0.5 (h* < 0): an answer, exit 0, one warning line a kind.
+    let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.5"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
-    assert_eq!(err.lines().count(), 1, "{err}");
+    assert_eq!(err.lines().count(), 2, "{err}");
     assert!(
-        err.starts_with("warning: the point lies outside the range the paper covers"),
+        err.starts_with("warning: F* = 0.5 is above the range the paper covers"),
         "{err}"
     );
-    assert!(err.contains("F* up to 5, h* down to -28.2;"), "{err}");
-    // A sweep warns once, counting the points outside.
+    assert!(err.contains("\nwarning: h* = -"), "{err}");
+    // A sweep warns once a kind, counting the points and naming the worst.
     let o = kefric(&[
-        "eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.02:2:3", "--json",
+        "eval",
+        "--psi",
+        "1",
+        "--theta",
+        "0.001",
+        "--f-star",
+        "0.02:0.8:3",
+        "--json",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
-    assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.contains("2 of 3 points lie outside"), "{err}");
+    assert!(
+        err.contains("warning: 2 of 3 results; the worst: F* = 0.8 is above"),
+        "{err}"
+    );
     // lookup warns where h* < 0 or F* > 0.1 too; the default table stops at 0.1.
     let o = kefric(&["lookup", "--psi", "8", "--theta", "0", "--f-star", "0.1"]);
     assert!(o.status.success(), "{}", stderr(&o));

@@ -8,7 +8,7 @@ use ke_friction::{Load, Materials, Model};
 use serde_json::Value;
 
 /// Aluminium (softer) on a nickel coating, with adhesion: the pair.
-const MATERIALS: Materials = Materials {
+pub(crate) const MATERIALS: Materials = Materials {
     e1: 70e9,
     nu1: 0.33,
     e2: 200e9,

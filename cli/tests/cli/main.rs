@@ -18,6 +18,7 @@ mod cli_scale;
 mod cli_surface;
 mod cli_table;
 mod cli_tools;
+mod cli_warnings;
 mod corrupted_tables;
 mod figures;
 mod hardening_build;

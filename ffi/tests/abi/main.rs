@@ -6,6 +6,7 @@ mod batches;
 mod constants;
 mod fortran;
 mod queries;
+mod warnings;
 
 use kefriction::*;
 use std::ffi::{c_char, CStr, CString};

@@ -26,9 +26,13 @@ the table's or curve's range, or NaN, raise ValueError naming the argument,
 its value, its index and the range; ``out_of_domain="nan"`` gives NaN there
 instead (the library's own batch policy). Errors map to exceptions by the
 library's error kinds: ValueError for bad arguments, values out of range
-and an undefined mu; OSError for a file that cannot be read;
+(F* > 1, a pressure above the hardness, included) and an undefined mu; OSError for a file that cannot be read;
 :class:`TableError` (a ValueError) for a damaged table file; RuntimeError
-for a bug. Records use the library's names: :attr:`Table.info` is what
+for a bug. A result that is returned but implausible (a load outside
+the paper's range, h* < 0, mu > 1 where adhesion dominates, few
+asperities in contact, a surface the relations fit poorly) warns with
+:class:`ModelWarning` (a UserWarning), once per kind and call, and is
+in the records' ``warnings``. Records use the library's names: :attr:`Table.info` is what
 ``kefric info --json`` prints, :attr:`Model.params` and
 :func:`params_from_physical` what ``kefric params --json`` prints, and
 :data:`DEFAULTS` the model constants a :class:`Model` takes by default.
@@ -70,14 +74,14 @@ from ._args import (_F64, _MODES, ArrayLike, FloatArray, OutOfDomain, _arrays, _
                     _threads)
 from ._curve import CURVE_ACCURACY, Curve, _curve_of
 from ._distribution import HeightDistribution, _distribution_of, _heights_array, _heights_of, _resolve
-from ._errors import TableError, _located
+from ._errors import WARNING_KINDS, ModelWarning, TableError, _located, _warn
 from ._model import DEFAULTS, Contact, Model, params_from_physical
 from ._surface import (_DERIVATIVES, _DETRENDS, _FAMILIES, _LENGTH_UNITS, _MATERIALS, Surface, _choice, _interval,
                        _materials, _surface_of)
 from ._table import _TABLE_ARGS, Table, _table_of
 
-__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "TableError",
-           "params_from_physical", "CURVE_ACCURACY", "DEFAULTS"]
+__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "TableError", "ModelWarning",
+           "params_from_physical", "CURVE_ACCURACY", "DEFAULTS", "WARNING_KINDS"]
 
 #: The package's version: the library's (the Rust crate's).
 __version__: str = _core.__version__
@@ -108,5 +112,5 @@ def _rehome(*objects: Any) -> None:
                 value.__module__ = __name__
 
 
-_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, params_from_physical,
+_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, ModelWarning, params_from_physical,
         _table_of, _curve_of, _distribution_of, _surface_of)

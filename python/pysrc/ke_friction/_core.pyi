@@ -177,9 +177,18 @@ class SurfaceCore:
     def empirical_parts(self) -> List[Tuple[_F64, float]]: ...
     # The Params record of the materials with this distribution.
     def params(self, materials: Tuple[float, ...], distribution: DistributionCore) -> Dict[str, Any]: ...
-    # The Friction record of a load (force with area, or pressure) on model.
-    def friction(self, model: ModelCore, materials: Tuple[float, ...], force: Optional[float],
-                 area: Optional[float], pressure: Optional[float]) -> Dict[str, Any]: ...
+    # The Friction records of loads (force with area, or pressure: lists of one length) on model,
+    # and the warnings (one summary a kind): {"records": [...], "warnings": [...]}.
+    def friction(self, model: ModelCore, materials: Tuple[float, ...], force: Optional[List[float]],
+                 area: Optional[List[float]], pressure: Optional[List[float]]) -> Dict[str, Any]: ...
+    # The surface's warnings, one summary a kind.
+    def warnings(self) -> List[Dict[str, Any]]: ...
+
+# The warnings (one summary a kind) of contacts, 7 columns a row as ModelCore.contacts_into writes them.
+def contact_warnings(rows: _F64) -> List[Dict[str, Any]]: ...
+
+# The names of the warnings' kinds.
+WARNING_KINDS: List[str]
 
 # The library's Params record of SI inputs (as `kefric params --json` prints it).
 def params_from_physical(e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,

@@ -13,7 +13,7 @@ import numpy as np
 from . import _core
 from ._args import ArrayLike, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
 from ._distribution import HeightDistribution, _resolve
-from ._errors import _located
+from ._errors import _located, _warn
 
 #: The model constants a :class:`Model` takes unless told otherwise, from
 #: the library (read-only): ``beta``, ``nu``, ``eps_star``, ``fit``,
@@ -152,6 +152,7 @@ class Model:
             self._core.contacts_into(flat, at_f_star, out.reshape(-1), nan, workers)
         except Exception as e:
             raise _located(e, shape) from None
+        _warn(_core.contact_warnings(out.reshape(-1)), stacklevel=4)
         cols = [np.ascontiguousarray(out[:, k]).reshape(shape)[()] for k in range(7)]
         return Contact(*(float(c) for c in cols)) if scalar else Contact(*cols)
 
@@ -159,8 +160,11 @@ class Model:
                   threads: Optional[int] = 1) -> Contact:
         """The model at external force F* > 0 (solving F*(h*) = F*): a
         :class:`Contact` of floats for a number, of arrays for an array-like.
-        F* <= 0, NaN or beyond the model's reach raises ValueError (or gives
-        NaN with ``out_of_domain="nan"``); a solver that fails to converge
+        F* <= 0, NaN, F* > 1 (a pressure above the hardness, where the model
+        has no meaning) or beyond the model's reach raises ValueError (or
+        gives NaN with ``out_of_domain="nan"``). Implausible results warn
+        (:class:`ModelWarning`, one per kind: F* outside the paper's
+        1e-5..0.1, h* < 0, mu > 1 where adhesion dominates). A solver that fails to converge
         (a bug) raises RuntimeError either way. ``threads``: as :meth:`Table.mu`,
         from 8 points."""
         return self._at(f_star, True, "f_star", out_of_domain, threads)

@@ -6,14 +6,16 @@ from __future__ import annotations
 import math
 import numbers
 import os
+import warnings
 from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, _check_real
+from ._args import ArrayLike, _arrays, _check_real, _is_scalar
 from ._curve import Curve
 from ._distribution import HeightDistribution, _heights_array, _heights_of
+from ._errors import ModelWarning, _warn
 from ._model import Model
 
 # The core's name lists (defined once, in Rust).
@@ -88,7 +90,7 @@ def _materials(values: Dict[str, Any]) -> Tuple[float, ...]:
 
 
 def _load(force: Any, area: Any, pressure: Any) -> Tuple[Optional[float], Optional[float], Optional[float]]:
-    """The load of :meth:`Surface.friction`'s keywords, ``(force, area,
+    """The load of :meth:`Surface.scan`'s keywords, ``(force, area,
     pressure)`` as the native layer takes it: a force with an area, or a
     pressure alone (ValueError naming the keyword otherwise)."""
     if force is not None and area is not None and pressure is None:
@@ -100,6 +102,22 @@ def _load(force: Any, area: Any, pressure: Any) -> Tuple[Optional[float], Option
     name = "pressure" if pressure is not None else "area" if force is not None else "force"
     raise ValueError(f"{name}: give force with area, or pressure alone")
 
+
+def _loads(force: Any, area: Any, pressure: Any) -> Tuple[Tuple[int, ...], bool, Tuple[Any, ...]]:
+    """The loads of :meth:`Surface.friction`'s keywords, broadcast: their
+    shape, whether all were numbers, and ``(force, area, pressure)`` as
+    lists of floats (None where not given) for the native layer."""
+    if force is not None and area is not None and pressure is None:
+        names, values = ("force", "area"), (force, area)
+    elif force is None and area is None and pressure is not None:
+        names, values = ("pressure",), (pressure,)
+    else:
+        name = "pressure" if pressure is not None else "area" if force is not None else "force"
+        raise ValueError(f"{name}: give force with area, or pressure alone")
+    scalar = all(_is_scalar(v) for v in values)
+    shape, flats = _arrays(names, values)
+    lists = dict(zip(names, (f.tolist() for f in flats)))
+    return shape, scalar, (lists.get("force"), lists.get("area"), lists.get("pressure"))
 
 def _length(name: str, value: Any) -> Optional[float]:
     """An optional length keyword (metres) as a float; its range is the
@@ -489,6 +507,7 @@ class Surface:
                 raise TypeError(f"{name} must be a str, not {type(value).__name__}")
         dist = self.height_distribution(distribution)
         p = self._core.params(mats, dist._core)
+        _warn(self._core.warnings())
         try:
             return Model(p["psi"], p["theta"], p["beta"], p["nu"], p["eps_star"], fit, model, distribution=dist)
         except ValueError as e:
@@ -511,37 +530,63 @@ class Surface:
         lo, hi = _core.SURFACE_F_STAR
         return Curve.from_model(m, lo if f_star_min is None else f_star_min, hi if f_star_max is None else f_star_max)
 
-    def friction(self, *, force: Optional[float] = None, area: Optional[float] = None,
-                 pressure: Optional[float] = None, e1: float, nu1: float, e2: float, nu2: float, hardness: float,
-                 delta_gamma: float, epsilon: float, distribution: str = "pearson", fit: str = "consistent",
-                 model: str = "ke") -> Dict[str, Any]:
+    def friction(self, *, force: Optional[ArrayLike] = None, area: Optional[ArrayLike] = None,
+                 pressure: Optional[ArrayLike] = None, e1: float, nu1: float, e2: float, nu2: float,
+                 hardness: float, delta_gamma: float, epsilon: float, distribution: str = "pearson",
+                 fit: str = "consistent", model: str = "ke") -> Dict[str, Any]:
         """The static friction of a load on :meth:`model` (the same
         keywords): a ``force`` (N) on a nominal ``area`` (m^2), or a
-        nominal ``pressure`` (Pa). A dict by the library's record names
-        (``kefric surface --json``'s ``"friction"``), in SI units:
-        ``force`` and ``area`` (for a force), ``pressure``, ``mu``,
-        ``friction_force`` = mu F (for a force), ``friction_stress``,
-        ``separation`` h = h* sigma (m), and the dimensionless contact at
-        F* = pressure/hardness: ``h_star``, ``d_star``, ``p_star``,
-        ``fs_star``, ``q_star``, ``f_star``.
+        nominal ``pressure`` (Pa); numbers, or array-likes that broadcast
+        (then every value is an array of their shape). A dict by the
+        library's record names (``kefric surface --json``'s
+        ``"friction"``), in SI units: ``force`` and ``area`` (for a force),
+        ``pressure``, ``mu``, ``friction_force`` = mu F (for a force),
+        ``friction_stress``, ``separation`` h = h* sigma (m), and the
+        dimensionless contact at F* = pressure/hardness: ``h_star``,
+        ``d_star``, ``p_star``, ``fs_star``, ``q_star``, ``f_star``.
+        The warnings ``kefric surface --json`` records (``"warnings"``, one
+        a kind) are warned as :class:`ModelWarning` warnings, each with its record:
+        the surface's, and the loads' (F* outside the paper's 1e-5..0.1,
+        h* < 0, mu > 1 where adhesion dominates, fewer than 10 asperities
+        in contact on the area).
 
         ValueError naming the keyword for a load out of range (or given
-        otherwise than a force with an area, or a pressure alone), and
-        when the model has no mu at that F*."""
-        load = _load(force, area, pressure)
+        otherwise than a force with an area, or a pressure alone), for
+        F* > 1 (a pressure above the hardness), and when the model has no
+        mu at that F*."""
+        shape, scalar, lists = _loads(force, area, pressure)
         materials = dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
                          epsilon=epsilon)
-        return self._evaluate(materials, load, distribution, fit, model)[1]
+        mats = _materials(materials)
+        m = self._model(materials, distribution, fit, model)
+        result = self._core.friction(m._core, mats, *lists)
+        _warn(result["warnings"])
+        records = result["records"]
+        out: Dict[str, Any]
+        if scalar:
+            out = dict(records[0])
+        else:
+            out = {k: np.array([r[k] for r in records], dtype=np.float64).reshape(shape) for k in records[0]}
+        return out
+
+    def _model(self, materials: Dict[str, Any], distribution: str, fit: str, model: str) -> Model:
+        """:meth:`model` without warning the surface's warnings (the
+        caller warns them with its own)."""
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", ModelWarning)
+            return self.model(**materials, distribution=distribution, fit=fit, model=model)
 
     def _evaluate(self, materials: Dict[str, Any], load: Optional[Tuple[Optional[float], ...]], distribution: str,
                   fit: str, model: str) -> Tuple[Model, Optional[Dict[str, Any]]]:
         """The :meth:`model` of ``materials`` (the seven keywords) and, with
-        a ``load`` (:func:`_load`'s), its friction record: the one path of
-        :meth:`friction` and :meth:`scan` (as the CLI's single command and
-        its ``--scan``)."""
+        a ``load`` (:func:`_load`'s), its friction record (no warnings:
+        :meth:`scan`'s rows)."""
         mats = _materials(materials)
-        m = self.model(**materials, distribution=distribution, fit=fit, model=model)
-        return m, None if load is None else self._core.friction(m._core, mats, *load)
+        m = self._model(materials, distribution, fit, model)
+        if load is None:
+            return m, None
+        lists = tuple(None if v is None else [v] for v in load)
+        return m, self._core.friction(m._core, mats, *lists)["records"][0]
 
     def filtered(self, lambda_s: Union[float, str, None] = None, lambda_c: Optional[float] = None) -> "Surface":
         """A new surface of the same heights, detrending and derivative

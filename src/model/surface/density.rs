@@ -197,6 +197,15 @@ impl General {
         }
     }
 
+    /// The fraction of the summits above `z` (in z*): ∫ φ* over z* > z,
+    /// by the density's own quadrature (the step at `z` is integrated to
+    /// about a panel's share; enough for a count of contacts).
+    pub(super) fn fraction_above(&self, z: f64) -> f64 {
+        let t = z * self.inv_s;
+        let all = self.g.integrate(|_| 1.0);
+        self.g.integrate(|x| if x > t { 1.0 } else { 0.0 }) / all
+    }
+
     fn ln_phi(&self, z: f64) -> f64 {
         self.g.ln_pdf(z * self.inv_s) + self.ln_inv_s
     }

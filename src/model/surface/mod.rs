@@ -102,6 +102,16 @@ pub(crate) struct Sums {
 }
 
 impl Surface {
+    /// The fraction of the asperities in contact at separation `d` (d*):
+    /// ∫ φ* over z* > d* (MODEL.md §4's number of contacts over η·A_n);
+    /// for the Gaussian ½·erfc(d*/(s√2)).
+    pub fn contact_fraction(&self, d: f64) -> f64 {
+        match &self.heights {
+            Heights::Gauss(g) => 0.5 * libm::erfc(d / (g.s * core::f64::consts::SQRT_2)),
+            Heights::General(h) => h.fraction_above(d),
+        }
+    }
+
     /// Plans the integrals for valid parameters.
     pub fn new(p: &Params) -> Surface {
         let pi = core::f64::consts::PI;

@@ -13,7 +13,8 @@
 //! compensated summation, so that the results agree with a float64 NumPy
 //! reference (`tools/surface_reference.py`) to about 1e-13 relative.
 //!
-//! The submodules: `warning` and `error` (what is reported), `band` (the
+//! The submodules: `error` (what is reported; the warnings are the
+//! core's, `crate::Warning`), `band` (the
 //! filters before the statistics), `sums` (the fit sums, the detrending and
 //! the finite-difference sweeps), `spectral` (the spectral moments),
 //! `derived` (the Greenwood–Williamson quantities from m0, m2, m4),
@@ -27,11 +28,10 @@ mod error;
 mod limits;
 mod spectral;
 mod sums;
-mod warning;
 
+pub use crate::warning::Warning;
 pub use composite::combine;
 pub use error::StatsError;
-pub use warning::Warning;
 
 use super::Topography;
 use derived::Derived;
@@ -335,11 +335,18 @@ impl Topography {
         positive("kurtosis", kurtosis)?;
 
         let (m20, m40, m02, m04) = sums.derivatives(self)?;
-        SurfaceStats::from_moments(
+        let mut stats = SurfaceStats::from_moments(
             (points, missing, nx, ny, self.dx, self.dy),
             [m0, skewness, kurtosis],
             (m20, m02, m40, m04),
-        )
+        )?;
+        if options.derivative == Derivative::Spectral {
+            let mismatch = spectral::edge_mismatch(self, z0, &plane);
+            if mismatch > sigma {
+                stats.warnings.push(Warning::NonPeriodic { mismatch, sigma });
+            }
+        }
+        Ok(stats)
     }
 }
 

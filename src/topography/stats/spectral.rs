@@ -72,6 +72,33 @@ pub(super) fn spectral(t: &Topography, z0: f64, plane: &Plane) -> Sweep {
     out
 }
 
+/// The rms jump of the detrended heights across the edges (last point
+/// minus first, of every row and, for a map, every column): the
+/// discontinuity the spectral moments see in the periodic continuation.
+/// Larger than the rms height, and the moments are the jump's
+/// ([`crate::Warning::NonPeriodic`]).
+pub(super) fn edge_mismatch(t: &Topography, z0: f64, plane: &Plane) -> f64 {
+    let (nx, ny) = (t.nx, t.ny);
+    let u_of = centred(nx);
+    let v_of = centred(ny);
+    let residual =
+        |i: usize, j: usize| (t.heights[j * nx + i] - z0) - (plane.a + plane.c * v_of(j) + plane.b * u_of(i));
+    let (mut sum, mut n) = (Sum::default(), 0usize);
+    for j in 0..ny {
+        let d = residual(nx - 1, j) - residual(0, j);
+        sum.add(d * d);
+        n += 1;
+    }
+    if t.dy.is_some() {
+        for i in 0..nx {
+            let d = residual(i, ny - 1) - residual(i, 0);
+            sum.add(d * d);
+            n += 1;
+        }
+    }
+    (sum.value() / n as f64).sqrt()
+}
+
 /// Σ (2π·f_k)²·|X_k|²/N² and Σ (2π·f_k)⁴·|X_k|²/N² over the transform X
 /// of one real line of N points spaced h, the Nyquist term (k = N/2, N
 /// even) dropped; `half` is the half spectrum X_0..X_{N/2} of the line
