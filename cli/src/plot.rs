@@ -144,7 +144,7 @@ struct AllArgs {
 fn surface_f_star_help() -> String {
     let (lo, hi) = ke_friction::SURFACE_F_STAR;
     format!(
-        "Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: {}:{}, the library's SURFACE_F_STAR]",
+        "Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: {}:{}, the library's SURFACE_F_STAR]; or --force START:STOP:COUNT with --area (the axis in newtons) or --pressure START:STOP:COUNT (in pascals), drawn from START to STOP.",
         ke_friction::Shortest(lo),
         ke_friction::Shortest(hi)
     )
