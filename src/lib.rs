@@ -11,6 +11,8 @@
 //!   default table is compiled in.
 //! - [`Curve`]: μ(F*) for one surface pair (fixed ψ, θ) in a few
 //!   nanoseconds, from the model or from a table.
+//! - [`FrictionLaw`]: μ and dμ/dp of the contact pressure p in pascals,
+//!   for a simulator's contact nodes (a curve at F* = p/H).
 //! - `paper` (feature `paper`): the paper's statements, computed from the
 //!   model.
 //! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
@@ -49,6 +51,7 @@ pub mod figures;
 mod gw;
 #[cfg(feature = "builder")]
 mod io;
+mod law;
 mod load;
 mod model;
 mod named;
@@ -72,6 +75,7 @@ pub use distribution::{
 };
 pub use error::{Classify, ErrorKind};
 pub use gw::BETA_MIN;
+pub use law::{FrictionLaw, FrictionLawError, OutOfRange, PressureError, LAW_F_STAR_RANGE};
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};

@@ -1,0 +1,245 @@
+//! The friction law handle: μ and dμ/dp of a contact pressure in pascals,
+//! for a simulator's contact nodes (kef_law_*).
+
+use crate::constants::kef_constants;
+use crate::error::Failure;
+use crate::macros::{free, set, set2};
+use ke_friction::{FrictionLaw, OnError, OutOfRange, Physical, PressureError};
+use std::ffi::c_int;
+
+/// Out-of-range policy of a kef_law: a positive pressure outside
+/// [p_min, p_max] gets mu at the nearest end and dmu/dp = 0, and is
+/// counted (kef_law_clamped). No error path, no message.
+pub const KEF_LAW_CLAMP: c_int = 0;
+/// Out-of-range policy of a kef_law: a positive pressure outside
+/// [p_min, p_max] is KEF_ERR_DOMAIN.
+pub const KEF_LAW_ERROR: c_int = 1;
+
+/// A friction law mu(p), dmu/dp of one surface pair in SI units (opaque).
+/// Immutable but for its clamped count (atomic); may be shared across
+/// threads.
+pub struct kef_law(FrictionLaw);
+
+pointee!(*const kef_law => &'a FrictionLaw, |p| p.as_ref().map(|l| &l.0));
+
+/// The policy of a `KEF_LAW_*` code.
+fn policy(code: c_int) -> Result<OutOfRange, Failure> {
+    match code {
+        KEF_LAW_CLAMP => Ok(OutOfRange::Clamp),
+        KEF_LAW_ERROR => Ok(OutOfRange::Error),
+        other => Err(Failure::argument(format!(
+            "policy = {other} is unknown: must be KEF_LAW_CLAMP ({KEF_LAW_CLAMP}) or KEF_LAW_ERROR ({KEF_LAW_ERROR})"
+        ))),
+    }
+}
+
+/// The range of two C arguments: both 0 is the default.
+fn range(p_min: f64, p_max: f64) -> Option<(f64, f64)> {
+    (p_min != 0.0 || p_max != 0.0).then_some((p_min, p_max))
+}
+
+/// [`FrictionLaw::mu_and_derivative_batch`] as a C batch.
+fn pairs(
+    law: &FrictionLaw,
+    p: &[f64],
+    mu: &mut [f64],
+    dmu_dp: &mut [f64],
+    on_error: OnError,
+) -> Result<usize, PressureError> {
+    law.mu_and_derivative_batch(p, mu, dmu_dp, on_error)
+}
+
+/// A friction law of the model with `constants` (NULL: the defaults) at
+/// (ψ, θ) on a softer material of hardness `hardness` (Pa), over the
+/// contact pressures [p_min, p_max] (Pa; both 0: 1e-5·H to 0.1·H), with
+/// `policy` (KEF_LAW_CLAMP or KEF_LAW_ERROR) outside it: mu within 1e-6
+/// relative of the model, about 20 ms to build. To free with
+/// kef_law_free. NULL on failure: KEF_ERR_DOMAIN for an input out of
+/// range, KEF_ERR_ARGUMENT for a NaN, an invalid range or an unknown
+/// policy, KEF_ERR_NO_MU where the model has no positive mu in the range.
+///
+/// # Safety
+/// `constants` is NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_new(
+    constants: *const kef_constants,
+    psi: f64,
+    theta: f64,
+    hardness: f64,
+    p_min: f64,
+    p_max: f64,
+    policy: c_int,
+) -> *mut kef_law {
+    ffi!(constants => {
+        let params = constants.at(psi, theta)?;
+        Ok(Box::new(kef_law(FrictionLaw::new(params, hardness, range(p_min, p_max), self::policy(policy)?)?)))
+    })
+}
+
+/// A friction law from physical (SI) quantities, as kef_params_from_physical
+/// takes them (material 1 the softer: `e1`, `nu1`, `hardness`; material 2:
+/// `e2`, `nu2`; the roughness `sigma`, `radius`, `density`; the adhesion
+/// `delta_gamma`, `epsilon`), with the default fit, model and Gaussian
+/// heights; range and policy as kef_law_new. NULL on failure (the message
+/// names the input and its range).
+#[no_mangle]
+pub extern "C" fn kef_law_from_physical(
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    sigma: f64,
+    radius: f64,
+    density: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+    p_min: f64,
+    p_max: f64,
+    policy: c_int,
+) -> *mut kef_law {
+    ffi!(=> {
+        let physical = Physical { e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon };
+        Ok(Box::new(kef_law(FrictionLaw::from_physical(&physical, range(p_min, p_max), self::policy(policy)?)?)))
+    })
+}
+
+/// mu at the contact pressure `p` (Pa) into `*mu`. KEF_ERR_NO_MU for
+/// p <= 0 (an open contact: no friction coefficient), KEF_ERR_ARGUMENT for
+/// NaN or +-inf, KEF_ERR_DOMAIN outside the range under KEF_LAW_ERROR.
+/// A failure costs about what a lookup does (its message is formatted by
+/// kef_last_error).
+///
+/// # Safety
+/// `law` is NULL or a live law; `mu` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu(law: *const kef_law, p: f64, mu: *mut f64) -> c_int {
+    ffi!(law, mu => set(mu, law.mu(p)?))
+}
+
+/// mu and dmu/dp (1/Pa) at the contact pressure `p` (Pa), for an implicit
+/// solver's Jacobian; errors as kef_law_mu; the outputs must be distinct.
+///
+/// # Safety
+/// `law` is NULL or a live law; `mu`, `dmu_dp` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu_and_derivative(
+    law: *const kef_law,
+    p: f64,
+    mu: *mut f64,
+    dmu_dp: *mut f64,
+) -> c_int {
+    ffi!(law, mu, dmu_dp => set2(mu, dmu_dp, law.mu_and_derivative(p)?))
+}
+
+/// mu at `n` pressures `p[i]` into `mu[i]`; at the first pressure without
+/// mu, its code (the message names its index), `mu[0..i)` written and
+/// `mu[i..n)` untouched. No output may overlap another argument.
+///
+/// # Safety
+/// `law` is NULL or a live law; `p` NULL or valid for `n` reads; `mu` NULL
+/// or valid for `n` writes.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu_batch(law: *const kef_law, n: usize, p: *const f64, mu: *mut f64) -> c_int {
+    ffi!(law, p[n], mu[n] => Ok(law.mu_batch(p, mu, OnError::Stop).map(|_| ())?))
+}
+
+/// kef_law_mu_batch that does not stop: NaN at each pressure without mu
+/// (p <= 0, NaN, and outside the range under KEF_LAW_ERROR), the count in
+/// `*n_nan` (required), KEF_OK.
+///
+/// # Safety
+/// As kef_law_mu_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu_batch_nan(
+    law: *const kef_law,
+    n: usize,
+    p: *const f64,
+    mu: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(law, p[n], mu[n], n_nan => set(n_nan, law.mu_batch(p, mu, OnError::Nan)?))
+}
+
+/// mu and dmu/dp at `n` pressures into `mu[i]` and `dmu_dp[i]`; the
+/// contract of kef_law_mu_batch.
+///
+/// # Safety
+/// As kef_law_mu_batch; `dmu_dp` NULL or valid for `n` writes.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu_and_derivative_batch(
+    law: *const kef_law,
+    n: usize,
+    p: *const f64,
+    mu: *mut f64,
+    dmu_dp: *mut f64,
+) -> c_int {
+    ffi!(law, p[n], mu[n], dmu_dp[n] => Ok(pairs(law, p, mu, dmu_dp, OnError::Stop).map(|_| ())?))
+}
+
+/// kef_law_mu_and_derivative_batch that does not stop: NaN in both
+/// outputs at each pressure without mu, the count in `*n_nan`, KEF_OK.
+///
+/// # Safety
+/// As kef_law_mu_and_derivative_batch; `n_nan` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_mu_and_derivative_batch_nan(
+    law: *const kef_law,
+    n: usize,
+    p: *const f64,
+    mu: *mut f64,
+    dmu_dp: *mut f64,
+    n_nan: *mut usize,
+) -> c_int {
+    ffi!(law, p[n], mu[n], dmu_dp[n], n_nan => set(n_nan, pairs(law, p, mu, dmu_dp, OnError::Nan)?))
+}
+
+/// How many calls (batch elements one each) `law` answered by clamping
+/// since it was built or last reset, into `*count`; with `reset` nonzero
+/// the count is set to 0 at the same time (e.g. at each solver step).
+///
+/// # Safety
+/// `law` is NULL or a live law; `count` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_clamped(law: *const kef_law, reset: c_int, count: *mut u64) -> c_int {
+    ffi!(law, count => set(count, if reset != 0 { law.reset_clamped() } else { law.clamped() }))
+}
+
+/// The pressure range [*p_min, *p_max] (Pa) and the hardness `*hardness`
+/// (Pa) of `law`; the outputs must be distinct.
+///
+/// # Safety
+/// `law` is NULL or a live law; the outputs NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_range(
+    law: *const kef_law,
+    p_min: *mut f64,
+    p_max: *mut f64,
+    hardness: *mut f64,
+) -> c_int {
+    ffi!(law, p_min, p_max, hardness => {
+        (*p_min, *p_max) = law.range();
+        set(hardness, law.hardness())
+    })
+}
+
+/// The largest relative error of mu against direct integration, measured
+/// when `law` was built (at most 1e-6); NaN for a NULL law.
+///
+/// # Safety
+/// `law` is NULL or a live law.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_max_error(law: *const kef_law) -> f64 {
+    ffi!(law => Ok(law.max_error()))
+}
+
+/// Frees a law. NULL is ignored.
+///
+/// # Safety
+/// `law` is NULL or a law from a kef_law_* constructor, not yet freed and
+/// no longer in use by any thread.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_free(law: *mut kef_law) {
+    // SAFETY: the caller's contract.
+    unsafe { free(law, std::ptr::null()) }
+}
