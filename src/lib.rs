@@ -52,6 +52,7 @@ mod gw;
 #[cfg(feature = "builder")]
 mod io;
 mod law;
+mod law_table;
 mod load;
 mod model;
 mod named;
@@ -76,6 +77,10 @@ pub use distribution::{
 pub use error::{Classify, ErrorKind};
 pub use gw::BETA_MIN;
 pub use law::{FrictionLaw, FrictionLawError, OutOfRange, PressureError, LAW_F_STAR_RANGE};
+pub use law_table::{
+    LawRow, LawTable, LawTableError, INTERIOR_POINTS, LAW_TABLE_MAX_ROWS, LAW_TABLE_TOLERANCE,
+    LAW_TABLE_TOLERANCE_RANGE,
+};
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
