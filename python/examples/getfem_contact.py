@@ -51,8 +51,11 @@ import ke_friction as kf  # noqa: E402
 TOLERANCE = 0.02
 #: The fixed point pressure <-> mu stops when no node's mu changes by more.
 FIXED_POINT_TOL = 1e-9
-#: A node slips when |lambda_t| >= (1 - SLIP_TOL) mu |lambda_n|.
-SLIP_TOL = 1e-8
+#: The solver's resolution of the nodal forces, relative to the largest:
+#: a node is in contact when its normal force exceeds it (the solver leaves
+#: forces of ~1e-315 N at open nodes), and slips when |lambda_t| is within
+#: it of mu |lambda_n|.
+FORCE_TOL = 1e-9
 
 # The body (SI units): 10 mm x 5 mm steel, bottom y = x^2 / (2 R).
 WIDTH, HEIGHT, RADIUS = 10e-3, 5e-3, 20.0
@@ -159,9 +162,14 @@ class Contact:
                 return it
         raise RuntimeError(f"no fixed point pressure <-> mu at top displacement ({ux:g}, {uy:g}) m")
 
+    def normal_forces(self):
+        """The nodes' normal forces (N per metre; 0 where open)."""
+        f = np.maximum(-self.md.variable("lambda_n"), 0.0)
+        return np.where(f > FORCE_TOL * f.max(), f, 0.0)
+
     def pressure(self):
         """The nodes' contact pressures (Pa; 0 where open)."""
-        return np.maximum(-self.md.variable("lambda_n"), 0.0) / self.area
+        return self.normal_forces() / self.area
 
     def mu_of_nodes(self):
         """mu(p_i) at the nodes in contact; an open node (p = 0, where the law
@@ -179,9 +187,9 @@ class Contact:
 
     def slipping(self):
         """Which nodes in contact slip (|lambda_t| at mu |lambda_n|)."""
-        ln, lt, mu = (self.md.variable(v) for v in ("lambda_n", "lambda_t", "mu"))
-        closed = ln < 0
-        return closed & (np.abs(lt) >= (1 - SLIP_TOL) * mu * np.abs(ln)), closed
+        fn, lt, mu = self.normal_forces(), self.md.variable("lambda_t"), self.md.variable("mu")
+        closed = fn > 0
+        return closed & (np.abs(lt) >= mu * fn - FORCE_TOL * fn.max()), closed
 
 
 def run(args):
