@@ -13,6 +13,8 @@
 //!   nanoseconds, from the model or from a table.
 //! - [`FrictionLaw`]: μ and dμ/dp of the contact pressure p in pascals,
 //!   for a simulator's contact nodes (a curve at F* = p/H).
+//!   [`LawTable`]: its rows at log-spaced pressures for a simulator's
+//!   tabulated input, with the measured error of linear interpolation.
 //! - `paper` (feature `paper`): the paper's statements, computed from the
 //!   model.
 //! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
