@@ -29,7 +29,7 @@ module ke_friction
             kef_params_from_physical, kef_law_new, kef_law_from_physical, kef_law_mu, &
             kef_law_mu_and_derivative, kef_law_mu_batch, kef_law_mu_batch_nan, &
             kef_law_mu_and_derivative_batch, kef_law_mu_and_derivative_batch_nan, kef_law_clamped, &
-            kef_law_range, kef_law_max_error, kef_law_free
+            kef_law_range, kef_law_max_error, kef_law_free, kef_law_from_props
   public :: c_int, c_double, c_size_t, c_ptr, c_associated, c_int64_t
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -486,6 +486,15 @@ module ke_friction
       import :: c_ptr, c_double
       type(c_ptr), value :: law
       real(c_double) :: kef_law_max_error
+    end function
+
+    ! A law shared for the life of the process, built once per distinct
+    ! props (psi, theta, H[, p_min, p_max[, beta, nu, eps_star]]): not to free.
+    function kef_law_from_props(n_props, props) bind(c, name="kef_law_from_props")
+      import :: c_ptr, c_double, c_size_t
+      integer(c_size_t), value :: n_props
+      real(c_double), dimension(*), intent(in) :: props
+      type(c_ptr) :: kef_law_from_props
     end function
 
     subroutine kef_law_free(law) bind(c, name="kef_law_free")

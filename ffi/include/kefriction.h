@@ -578,11 +578,29 @@ int kef_law_range(const kef_law *law, double *p_min, double *p_max, double *hard
 // `law` is NULL or a live law.
 double kef_law_max_error(const kef_law *law);
 
-// Frees a law. NULL is ignored.
+// The law of a solver's property list, built on the first call with
+// these values and shared by every later call (from any thread) for the
+// life of the process: what a user subroutine called per block of nodes
+// with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
+// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
+// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+// optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
+// n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
+// number at every closed node; kef_law_clamped counts). NULL on failure
+// (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
+// failed list is not kept (the next call tries again).
 //
 // # Safety
-// `law` is NULL or a law from a kef_law_* constructor, not yet freed and
-// no longer in use by any thread.
+// `props` is NULL or valid for `n_props` reads.
+const kef_law *kef_law_from_props(size_t n_props, const double *props);
+
+// Frees a law. NULL and the shared laws of kef_law_from_props are
+// ignored.
+//
+// # Safety
+// `law` is NULL, a law from kef_law_from_props, or one from kef_law_new
+// or kef_law_from_physical not yet freed and no longer in use by any
+// thread.
 void kef_law_free(kef_law *law);
 
 // New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,

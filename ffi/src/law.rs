@@ -3,9 +3,11 @@
 
 use crate::constants::kef_constants;
 use crate::error::Failure;
+use crate::macros::Answer;
 use crate::macros::{free, set, set2};
-use ke_friction::{FrictionLaw, OnError, OutOfRange, Physical, PressureError};
+use ke_friction::{Constants, FrictionLaw, OnError, OutOfRange, Physical, PressureError};
 use std::ffi::c_int;
+use std::sync::{Mutex, PoisonError};
 
 /// Out-of-range policy of a kef_law: a positive pressure outside
 /// [p_min, p_max] gets mu at the nearest end and dmu/dp = 0, and is
@@ -233,13 +235,101 @@ pub unsafe extern "C" fn kef_law_max_error(law: *const kef_law) -> f64 {
     ffi!(law => Ok(law.max_error()))
 }
 
-/// Frees a law. NULL is ignored.
+/// The laws of [`kef_law_from_props`], by their property lists' bits:
+/// built once each, kept for the life of the process.
+static SHARED: Mutex<Vec<(Vec<u64>, &'static kef_law)>> = Mutex::new(Vec::new());
+
+impl Answer for &'static kef_law {
+    type C = *const kef_law;
+    fn ok(self) -> *const kef_law {
+        self
+    }
+    fn failed(_: c_int) -> *const kef_law {
+        std::ptr::null()
+    }
+}
+
+/// The law of a property list (the layout of [`kef_law_from_props`]).
+fn law_of_props(props: &[f64]) -> Result<FrictionLaw, Failure> {
+    let &[psi, theta, hardness, ref rest @ ..] = props else {
+        return Err(props_length(props.len()));
+    };
+    let (range, constants) = match *rest {
+        [] => (None, Constants::default()),
+        [p_min, p_max] => (range(p_min, p_max), Constants::default()),
+        [p_min, p_max, beta, nu, eps_star] => (
+            range(p_min, p_max),
+            Constants::default().beta(beta).nu(nu).eps_star(eps_star),
+        ),
+        _ => return Err(props_length(props.len())),
+    };
+    Ok(FrictionLaw::new(
+        constants.at(psi, theta)?,
+        hardness,
+        range,
+        OutOfRange::Clamp,
+    )?)
+}
+
+/// The failure for a property list of the wrong length.
+fn props_length(n: usize) -> Failure {
+    Failure::argument(format!(
+        "n_props = {n}: must be 3 (psi, theta, hardness), 5 (and p_min, p_max) or 8 (and beta, nu, eps_star)"
+    ))
+}
+
+/// The shared law of `props`: found, or built (outside the lock, so that
+/// other property lists are not held up) and kept.
+fn shared(props: &[f64]) -> Result<&'static kef_law, Failure> {
+    let key: Vec<u64> = props.iter().map(|p| p.to_bits()).collect();
+    let find = |laws: &[(Vec<u64>, &'static kef_law)]| laws.iter().find(|(k, _)| *k == key).map(|&(_, law)| law);
+    if let Some(law) = find(&SHARED.lock().unwrap_or_else(PoisonError::into_inner)) {
+        return Ok(law);
+    }
+    let built = law_of_props(props)?;
+    let mut laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+    // Another thread may have built it meanwhile: keep the first.
+    if let Some(law) = find(&laws) {
+        return Ok(law);
+    }
+    let law: &'static kef_law = Box::leak(Box::new(kef_law(built)));
+    laws.push((key, law));
+    Ok(law)
+}
+
+/// The law of a solver's property list, built on the first call with
+/// these values and shared by every later call (from any thread) for the
+/// life of the process: what a user subroutine called per block of nodes
+/// with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
+/// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
+/// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+/// optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
+/// n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
+/// number at every closed node; kef_law_clamped counts). NULL on failure
+/// (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
+/// failed list is not kept (the next call tries again).
 ///
 /// # Safety
-/// `law` is NULL or a law from a kef_law_* constructor, not yet freed and
-/// no longer in use by any thread.
+/// `props` is NULL or valid for `n_props` reads.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_from_props(n_props: usize, props: *const f64) -> *const kef_law {
+    ffi!(props[n_props] => shared(props))
+}
+
+/// Frees a law. NULL and the shared laws of kef_law_from_props are
+/// ignored.
+///
+/// # Safety
+/// `law` is NULL, a law from kef_law_from_props, or one from kef_law_new
+/// or kef_law_from_physical not yet freed and no longer in use by any
+/// thread.
 #[no_mangle]
 pub unsafe extern "C" fn kef_law_free(law: *mut kef_law) {
-    // SAFETY: the caller's contract.
+    let laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+    if laws.iter().any(|&(_, shared)| std::ptr::eq(shared, law)) {
+        return;
+    }
+    drop(laws);
+    // SAFETY: the caller's contract (a shared law was returned above).
     unsafe { free(law, std::ptr::null()) }
 }

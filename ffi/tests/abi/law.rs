@@ -256,3 +256,51 @@ fn one_law_serves_many_threads_and_counts_their_clamps() {
     assert!(clamped > 0);
     assert_eq!(count, clamped);
 }
+
+#[test]
+fn a_props_list_gives_one_shared_law_built_once() {
+    let props = [1.5, 0.002, 1.1e9, 1e5, 1e8, 0.05, 0.32, 0.005];
+    // SAFETY: arrays of the length given; the shared law is never freed
+    // (kef_law_free ignores it).
+    unsafe {
+        let a = kef_law_from_props(8, props.as_ptr());
+        assert!(!a.is_null(), "{}", last_error());
+        let threads: Vec<usize> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..4)
+                .map(|_| s.spawn(|| kef_law_from_props(8, props.as_ptr()) as usize))
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        assert!(threads.iter().all(|&t| t == a as usize), "one law per props list");
+        kef_law_free(a.cast_mut());
+        let constants = ke_friction::Constants::default().beta(0.05).nu(0.32).eps_star(0.005);
+        let rust = FrictionLaw::new(
+            constants.at(1.5, 0.002).unwrap(),
+            1.1e9,
+            Some((1e5, 1e8)),
+            OutOfRange::Clamp,
+        )
+        .unwrap();
+        let mut mu = 0.0;
+        assert_eq!(kef_law_mu(a, 1e9, &mut mu), KEF_OK, "clamped, not an error");
+        assert_eq!(mu, rust.mu(1e8).unwrap());
+        // Three values: the default range and constants.
+        let short = kef_law_from_props(3, props.as_ptr());
+        let (mut lo, mut hi, mut h) = (0.0, 0.0, 0.0);
+        assert_eq!(kef_law_range(short, &mut lo, &mut hi, &mut h), KEF_OK);
+        assert_eq!((lo, hi), (1e-5 * 1.1e9, 0.1 * 1.1e9));
+        for n in [0, 2, 4, 9] {
+            assert!(kef_law_from_props(n, props.as_ptr()).is_null());
+            assert!(
+                last_error().starts_with(&format!("n_props = {n}: must be 3")),
+                "{}",
+                last_error()
+            );
+        }
+        let bad = [1.0, 0.001, -5.0];
+        assert!(kef_law_from_props(3, bad.as_ptr()).is_null());
+        assert!(last_error().starts_with("hardness = -5"), "{}", last_error());
+        assert!(kef_law_from_props(3, null()).is_null());
+        assert_eq!(last_error(), "props is NULL");
+    }
+}
