@@ -5,8 +5,10 @@ use crate::constants::kef_constants;
 use crate::error::Failure;
 use crate::macros::Answer;
 use crate::macros::{free, set, set2};
+use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface};
+use ke_friction::Materials;
 use ke_friction::{Constants, FrictionLaw, OnError, OutOfRange, Physical, PressureError};
-use std::ffi::c_int;
+use std::ffi::{c_char, c_int, CStr};
 use std::sync::{Mutex, PoisonError};
 
 /// Out-of-range policy of a kef_law: a positive pressure outside
@@ -103,6 +105,53 @@ pub extern "C" fn kef_law_from_physical(
     ffi!(=> {
         let physical = Physical { e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon };
         Ok(Box::new(kef_law(FrictionLaw::from_physical(&physical, range(p_min, p_max), self::policy(policy)?)?)))
+    })
+}
+
+/// The law of a measured surface, as `kefric surface` computes it: the
+/// file read by the same readers (X3P, .npy, text; lengths in metres; a
+/// file that gives no sampling interval is refused, naming what is
+/// missing), the statistics with its defaults (plane detrending, finite
+/// differences, no filters), the heights' distribution `family`
+/// ("gaussian", "pearson", "weibull", "empirical"; NULL or "": the
+/// default of `kefric surface`, Pearson of the measured skewness and
+/// kurtosis), and the materials (SI: material 1 the softer, `e1`, `nu1`,
+/// `hardness`; material 2 `e2`, `nu2`; the adhesion `delta_gamma`,
+/// `epsilon`) for ψ, θ, β, ε*. Range and policy as kef_law_new. NULL on
+/// failure: KEF_ERR_IO for a file that cannot be read, KEF_ERR_ARGUMENT
+/// for a malformed one or an unknown family, KEF_ERR_DOMAIN for a surface
+/// or material out of the model's range (the message names it).
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string; `family` NULL or one.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_from_surface(
+    path: *const c_char,
+    family: *const c_char,
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+    p_min: f64,
+    p_max: f64,
+    policy: c_int,
+) -> *mut kef_law {
+    // SAFETY: NULL or a NUL-terminated string, by the contract.
+    let family = unsafe { (!family.is_null()).then(|| CStr::from_ptr(family)) };
+    ffi!(path => {
+        let path = std::path::Path::new(path.to_str().map_err(|_| Failure::argument("path is not UTF-8".into()))?);
+        let family = family
+            .map(|f| f.to_str().map_err(|_| Failure::argument("family is not UTF-8".into())))
+            .transpose()?
+            .filter(|f| !f.is_empty());
+        let materials = Materials { e1, nu1, e2, nu2, hardness, delta_gamma, epsilon };
+        let topography = read_file(path, &ReadOptions::default())?;
+        let surface = Surface::new(topography, StatsOptions::default())?;
+        let law = FrictionLaw::from_surface(&surface, &materials, family, range(p_min, p_max), self::policy(policy)?)?;
+        Ok(Box::new(kef_law(law)))
     })
 }
 

@@ -304,3 +304,99 @@ fn a_props_list_gives_one_shared_law_built_once() {
         assert_eq!(last_error(), "props is NULL");
     }
 }
+
+/// A measured surface (an X3P file of the library's writer) to the law
+/// through C: the law the library builds from the same file with
+/// `kefric surface`'s defaults; a missing file and an unknown family are
+/// refused, naming them.
+#[test]
+fn a_law_from_a_measured_surface_is_the_librarys() {
+    use ke_friction::topography::{read_file, write_x3p, ReadOptions, StatsOptions, Surface, Topography};
+    let n = 128;
+    let heights: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (x, y) = ((k % n) as f64, (k / n) as f64);
+            2e-7 * ((x * 0.7).sin() + (y * 0.9).cos() + (x * 0.31 + y * 0.27).sin() + (x * 0.13 - y * 0.41).cos())
+        })
+        .collect();
+    let dir = super::scratch("law-surface");
+    let path = dir.join("rough.x3p");
+    write_x3p(&Topography::map(heights, n, n, 1e-6, 1e-6).unwrap(), &path, 'D').unwrap();
+    let materials = ke_friction::Materials {
+        e1: 70e9,
+        nu1: 0.33,
+        e2: 200e9,
+        nu2: 0.31,
+        hardness: 1e9,
+        delta_gamma: 0.5,
+        epsilon: 0.4e-9,
+    };
+    let surface = Surface::new(
+        read_file(&path, &ReadOptions::default()).unwrap(),
+        StatsOptions::default(),
+    )
+    .unwrap();
+    let rust = FrictionLaw::from_surface(&surface, &materials, None, None, OutOfRange::Clamp).unwrap();
+    let ke_friction::Materials {
+        e1,
+        nu1,
+        e2,
+        nu2,
+        hardness,
+        delta_gamma,
+        epsilon,
+    } = materials;
+    let c_path = super::c_path(&path);
+    // SAFETY: NUL-terminated strings, a live law, local doubles.
+    unsafe {
+        let from = |family: *const std::ffi::c_char| {
+            kef_law_from_surface(
+                c_path.as_ptr(),
+                family,
+                e1,
+                nu1,
+                e2,
+                nu2,
+                hardness,
+                delta_gamma,
+                epsilon,
+                0.0,
+                0.0,
+                KEF_LAW_CLAMP,
+            )
+        };
+        let gaussian =
+            FrictionLaw::from_surface(&surface, &materials, Some("gaussian"), None, OutOfRange::Clamp).unwrap();
+        for (family, rust) in [
+            (null(), &rust),
+            (c"".as_ptr(), &rust),
+            (c"gaussian".as_ptr(), &gaussian),
+        ] {
+            let law = from(family);
+            assert!(!law.is_null(), "{}", last_error());
+            let (mut mu, mut d) = (0.0, 0.0);
+            assert_eq!(kef_law_mu_and_derivative(law, 1e6, &mut mu, &mut d), KEF_OK);
+            assert_eq!((mu, d), rust.mu_and_derivative(1e6).unwrap());
+            kef_law_free(law);
+        }
+        assert!(from(c"lognormal".as_ptr()).is_null());
+        assert!(last_error().contains("lognormal"), "{}", last_error());
+        let missing = super::c_path(&dir.join("missing.x3p"));
+        assert!(kef_law_from_surface(
+            missing.as_ptr(),
+            null(),
+            e1,
+            nu1,
+            e2,
+            nu2,
+            hardness,
+            delta_gamma,
+            epsilon,
+            0.0,
+            0.0,
+            KEF_LAW_CLAMP
+        )
+        .is_null());
+        assert!(last_error().contains("missing.x3p"), "{}", last_error());
+    }
+}
