@@ -96,5 +96,6 @@ pub use params::{
 };
 pub use spline::{Axis, Scale};
 pub use table::{
-    Accuracy, BuildRecord, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo, FAST_KERNEL_MAX_REL,
+    Accuracy, BuildRecord, ConstantsMismatch, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo,
+    FAST_KERNEL_MAX_REL,
 };

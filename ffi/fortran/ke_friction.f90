@@ -29,7 +29,8 @@ module ke_friction
             kef_params_from_physical, kef_law_new, kef_law_from_physical, kef_law_mu, &
             kef_law_mu_and_derivative, kef_law_mu_batch, kef_law_mu_batch_nan, &
             kef_law_mu_and_derivative_batch, kef_law_mu_and_derivative_batch_nan, kef_law_clamped, &
-            kef_law_range, kef_law_max_error, kef_law_free
+            kef_law_range, kef_law_max_error, kef_law_free, kef_law_from_props, kef_table_mu_with, &
+            kef_table_mu_batch_with, kef_law_from_surface
   public :: c_int, c_double, c_size_t, c_ptr, c_associated, c_int64_t
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -84,6 +85,25 @@ module ke_friction
       real(c_double), value :: psi, theta, f_star
       real(c_double), intent(out) :: mu
       integer(c_int) :: kef_table_mu
+    end function
+
+    ! kef_table_mu that refuses constants other than the table's.
+    function kef_table_mu_with(table, constants, psi, theta, f_star, mu) bind(c, name="kef_table_mu_with")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table, constants
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_table_mu_with
+    end function
+
+    function kef_table_mu_batch_with(table, constants, n, psi, theta, f_star, mu) &
+        bind(c, name="kef_table_mu_batch_with")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table, constants
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_int) :: kef_table_mu_batch_with
     end function
 
     function kef_table_mu_with_slope(table, psi, theta, f_star, mu, dmu_df_star) &
@@ -411,6 +431,17 @@ module ke_friction
       type(c_ptr) :: kef_law_from_physical
     end function
 
+    ! path, family: NUL-terminated, e.g. kef_c_string("surface.x3p"),
+    ! kef_c_string("pearson") (kef_c_string(""): the default family).
+    function kef_law_from_surface(path, family, e1, nu1, e2, nu2, hardness, delta_gamma, epsilon, &
+        p_min, p_max, policy) bind(c, name="kef_law_from_surface")
+      import :: c_ptr, c_double, c_int, c_char
+      character(kind=c_char), dimension(*), intent(in) :: path, family
+      real(c_double), value :: e1, nu1, e2, nu2, hardness, delta_gamma, epsilon, p_min, p_max
+      integer(c_int), value :: policy
+      type(c_ptr) :: kef_law_from_surface
+    end function
+
     function kef_law_mu(law, p, mu) bind(c, name="kef_law_mu")
       import :: c_ptr, c_double, c_int
       type(c_ptr), value :: law
@@ -486,6 +517,15 @@ module ke_friction
       import :: c_ptr, c_double
       type(c_ptr), value :: law
       real(c_double) :: kef_law_max_error
+    end function
+
+    ! A law shared for the life of the process, built once per distinct
+    ! props (psi, theta, H[, p_min, p_max[, beta, nu, eps_star]]): not to free.
+    function kef_law_from_props(n_props, props) bind(c, name="kef_law_from_props")
+      import :: c_ptr, c_double, c_size_t
+      integer(c_size_t), value :: n_props
+      real(c_double), dimension(*), intent(in) :: props
+      type(c_ptr) :: kef_law_from_props
     end function
 
     subroutine kef_law_free(law) bind(c, name="kef_law_free")

@@ -239,12 +239,46 @@ int kef_table_h_star_batch(const kef_table *table,
                            double *h_star);
 
 // μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),
-// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is outside the table's
-// range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL pointer.
+// θ = Δγ/(σH)), assuming the constants (β, ν, ε*, fit, model, heights'
+// distribution) are the table's: ψ and θ of a surface with other
+// constants give a wrong μ here, silently. kef_table_mu_with checks them
+// (the documented path). KEF_ERR_DOMAIN if an argument is outside the
+// table's range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL
+// pointer.
 //
 // # Safety
 // `table` is NULL or a live table; `mu` is NULL or writable.
 int kef_table_mu(const kef_table *table, double psi, double theta, double f_star, double *mu);
+
+// kef_table_mu for a surface pair whose model constants are `constants`
+// (NULL: the defaults): KEF_ERR_DOMAIN, naming the first constant that
+// differs and both values, unless they are the table's (β, ν, ε* within
+// 1e-9 relative; fit, model and distribution equal); then the lookup and
+// its errors as kef_table_mu.
+//
+// # Safety
+// `table` is NULL or a live table; `constants` NULL or a live
+// kef_constants; `mu` NULL or writable.
+int kef_table_mu_with(const kef_table *table,
+                      const kef_constants *constants,
+                      double psi,
+                      double theta,
+                      double f_star,
+                      double *mu);
+
+// kef_table_mu_batch for surface pairs whose model constants are
+// `constants` (NULL: the defaults), checked once as kef_table_mu_with
+// (nothing written on a mismatch).
+//
+// # Safety
+// As kef_table_mu_batch; `constants` NULL or a live kef_constants.
+int kef_table_mu_batch_with(const kef_table *table,
+                            const kef_constants *constants,
+                            size_t n,
+                            const double *psi,
+                            const double *theta,
+                            const double *f_star,
+                            double *mu);
 
 // μ and ∂μ/∂F* from `table` into `*mu` and `*dmu_df_star`; errors as
 // kef_table_mu, and KEF_ERR_ARGUMENT if the two outputs alias (they must
@@ -499,6 +533,35 @@ kef_law *kef_law_from_physical(double e1,
                                double p_max,
                                int policy);
 
+// The law of a measured surface, as `kefric surface` computes it: the
+// file read by the same readers (X3P, .npy, text; lengths in metres; a
+// file that gives no sampling interval is refused, naming what is
+// missing), the statistics with its defaults (plane detrending, finite
+// differences, no filters), the heights' distribution `family`
+// ("gaussian", "pearson", "weibull", "empirical"; NULL or "": the
+// default of `kefric surface`, Pearson of the measured skewness and
+// kurtosis), and the materials (SI: material 1 the softer, `e1`, `nu1`,
+// `hardness`; material 2 `e2`, `nu2`; the adhesion `delta_gamma`,
+// `epsilon`) for ψ, θ, β, ε*. Range and policy as kef_law_new. NULL on
+// failure: KEF_ERR_IO for a file that cannot be read, KEF_ERR_ARGUMENT
+// for a malformed one or an unknown family, KEF_ERR_DOMAIN for a surface
+// or material out of the model's range (the message names it).
+//
+// # Safety
+// `path` is NULL or a NUL-terminated string; `family` NULL or one.
+kef_law *kef_law_from_surface(const char *path,
+                              const char *family,
+                              double e1,
+                              double nu1,
+                              double e2,
+                              double nu2,
+                              double hardness,
+                              double delta_gamma,
+                              double epsilon,
+                              double p_min,
+                              double p_max,
+                              int policy);
+
 // mu at the contact pressure `p` (Pa) into `*mu`. KEF_ERR_NO_MU for
 // p <= 0 (an open contact: no friction coefficient), KEF_ERR_ARGUMENT for
 // NaN or +-inf, KEF_ERR_DOMAIN outside the range under KEF_LAW_ERROR.
@@ -578,11 +641,29 @@ int kef_law_range(const kef_law *law, double *p_min, double *p_max, double *hard
 // `law` is NULL or a live law.
 double kef_law_max_error(const kef_law *law);
 
-// Frees a law. NULL is ignored.
+// The law of a solver's property list, built on the first call with
+// these values and shared by every later call (from any thread) for the
+// life of the process: what a user subroutine called per block of nodes
+// with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
+// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
+// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+// optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
+// n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
+// number at every closed node; kef_law_clamped counts). NULL on failure
+// (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
+// failed list is not kept (the next call tries again).
 //
 // # Safety
-// `law` is NULL or a law from a kef_law_* constructor, not yet freed and
-// no longer in use by any thread.
+// `props` is NULL or valid for `n_props` reads.
+const kef_law *kef_law_from_props(size_t n_props, const double *props);
+
+// Frees a law. NULL and the shared laws of kef_law_from_props are
+// ignored.
+//
+// # Safety
+// `law` is NULL, a law from kef_law_from_props, or one from kef_law_new
+// or kef_law_from_physical not yet freed and no longer in use by any
+// thread.
 void kef_law_free(kef_law *law);
 
 // New model constants with the defaults (β = 0.04, ν = 0.3, ε* = 0.004,

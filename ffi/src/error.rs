@@ -101,6 +101,9 @@ formatted!(
     ke_friction::EvalError,
     ke_friction::DistributionError,
     ke_friction::FrictionLawError,
+    ke_friction::ConstantsMismatch,
+    ke_friction::topography::ReadError,
+    ke_friction::topography::StatsError,
 );
 
 /// A failure: its code and message.

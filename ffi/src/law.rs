@@ -3,9 +3,13 @@
 
 use crate::constants::kef_constants;
 use crate::error::Failure;
+use crate::macros::Answer;
 use crate::macros::{free, set, set2};
-use ke_friction::{FrictionLaw, OnError, OutOfRange, Physical, PressureError};
-use std::ffi::c_int;
+use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface};
+use ke_friction::Materials;
+use ke_friction::{Constants, FrictionLaw, OnError, OutOfRange, Physical, PressureError};
+use std::ffi::{c_char, c_int, CStr};
+use std::sync::{Mutex, PoisonError};
 
 /// Out-of-range policy of a kef_law: a positive pressure outside
 /// [p_min, p_max] gets mu at the nearest end and dmu/dp = 0, and is
@@ -101,6 +105,53 @@ pub extern "C" fn kef_law_from_physical(
     ffi!(=> {
         let physical = Physical { e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon };
         Ok(Box::new(kef_law(FrictionLaw::from_physical(&physical, range(p_min, p_max), self::policy(policy)?)?)))
+    })
+}
+
+/// The law of a measured surface, as `kefric surface` computes it: the
+/// file read by the same readers (X3P, .npy, text; lengths in metres; a
+/// file that gives no sampling interval is refused, naming what is
+/// missing), the statistics with its defaults (plane detrending, finite
+/// differences, no filters), the heights' distribution `family`
+/// ("gaussian", "pearson", "weibull", "empirical"; NULL or "": the
+/// default of `kefric surface`, Pearson of the measured skewness and
+/// kurtosis), and the materials (SI: material 1 the softer, `e1`, `nu1`,
+/// `hardness`; material 2 `e2`, `nu2`; the adhesion `delta_gamma`,
+/// `epsilon`) for ψ, θ, β, ε*. Range and policy as kef_law_new. NULL on
+/// failure: KEF_ERR_IO for a file that cannot be read, KEF_ERR_ARGUMENT
+/// for a malformed one or an unknown family, KEF_ERR_DOMAIN for a surface
+/// or material out of the model's range (the message names it).
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string; `family` NULL or one.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_from_surface(
+    path: *const c_char,
+    family: *const c_char,
+    e1: f64,
+    nu1: f64,
+    e2: f64,
+    nu2: f64,
+    hardness: f64,
+    delta_gamma: f64,
+    epsilon: f64,
+    p_min: f64,
+    p_max: f64,
+    policy: c_int,
+) -> *mut kef_law {
+    // SAFETY: NULL or a NUL-terminated string, by the contract.
+    let family = unsafe { (!family.is_null()).then(|| CStr::from_ptr(family)) };
+    ffi!(path => {
+        let path = std::path::Path::new(path.to_str().map_err(|_| Failure::argument("path is not UTF-8".into()))?);
+        let family = family
+            .map(|f| f.to_str().map_err(|_| Failure::argument("family is not UTF-8".into())))
+            .transpose()?
+            .filter(|f| !f.is_empty());
+        let materials = Materials { e1, nu1, e2, nu2, hardness, delta_gamma, epsilon };
+        let topography = read_file(path, &ReadOptions::default())?;
+        let surface = Surface::new(topography, StatsOptions::default())?;
+        let law = FrictionLaw::from_surface(&surface, &materials, family, range(p_min, p_max), self::policy(policy)?)?;
+        Ok(Box::new(kef_law(law)))
     })
 }
 
@@ -233,13 +284,101 @@ pub unsafe extern "C" fn kef_law_max_error(law: *const kef_law) -> f64 {
     ffi!(law => Ok(law.max_error()))
 }
 
-/// Frees a law. NULL is ignored.
+/// The laws of [`kef_law_from_props`], by their property lists' bits:
+/// built once each, kept for the life of the process.
+static SHARED: Mutex<Vec<(Vec<u64>, &'static kef_law)>> = Mutex::new(Vec::new());
+
+impl Answer for &'static kef_law {
+    type C = *const kef_law;
+    fn ok(self) -> *const kef_law {
+        self
+    }
+    fn failed(_: c_int) -> *const kef_law {
+        std::ptr::null()
+    }
+}
+
+/// The law of a property list (the layout of [`kef_law_from_props`]).
+fn law_of_props(props: &[f64]) -> Result<FrictionLaw, Failure> {
+    let &[psi, theta, hardness, ref rest @ ..] = props else {
+        return Err(props_length(props.len()));
+    };
+    let (range, constants) = match *rest {
+        [] => (None, Constants::default()),
+        [p_min, p_max] => (range(p_min, p_max), Constants::default()),
+        [p_min, p_max, beta, nu, eps_star] => (
+            range(p_min, p_max),
+            Constants::default().beta(beta).nu(nu).eps_star(eps_star),
+        ),
+        _ => return Err(props_length(props.len())),
+    };
+    Ok(FrictionLaw::new(
+        constants.at(psi, theta)?,
+        hardness,
+        range,
+        OutOfRange::Clamp,
+    )?)
+}
+
+/// The failure for a property list of the wrong length.
+fn props_length(n: usize) -> Failure {
+    Failure::argument(format!(
+        "n_props = {n}: must be 3 (psi, theta, hardness), 5 (and p_min, p_max) or 8 (and beta, nu, eps_star)"
+    ))
+}
+
+/// The shared law of `props`: found, or built (outside the lock, so that
+/// other property lists are not held up) and kept.
+fn shared(props: &[f64]) -> Result<&'static kef_law, Failure> {
+    let key: Vec<u64> = props.iter().map(|p| p.to_bits()).collect();
+    let find = |laws: &[(Vec<u64>, &'static kef_law)]| laws.iter().find(|(k, _)| *k == key).map(|&(_, law)| law);
+    if let Some(law) = find(&SHARED.lock().unwrap_or_else(PoisonError::into_inner)) {
+        return Ok(law);
+    }
+    let built = law_of_props(props)?;
+    let mut laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+    // Another thread may have built it meanwhile: keep the first.
+    if let Some(law) = find(&laws) {
+        return Ok(law);
+    }
+    let law: &'static kef_law = Box::leak(Box::new(kef_law(built)));
+    laws.push((key, law));
+    Ok(law)
+}
+
+/// The law of a solver's property list, built on the first call with
+/// these values and shared by every later call (from any thread) for the
+/// life of the process: what a user subroutine called per block of nodes
+/// with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
+/// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
+/// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+/// optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
+/// n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
+/// number at every closed node; kef_law_clamped counts). NULL on failure
+/// (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
+/// failed list is not kept (the next call tries again).
 ///
 /// # Safety
-/// `law` is NULL or a law from a kef_law_* constructor, not yet freed and
-/// no longer in use by any thread.
+/// `props` is NULL or valid for `n_props` reads.
+#[no_mangle]
+pub unsafe extern "C" fn kef_law_from_props(n_props: usize, props: *const f64) -> *const kef_law {
+    ffi!(props[n_props] => shared(props))
+}
+
+/// Frees a law. NULL and the shared laws of kef_law_from_props are
+/// ignored.
+///
+/// # Safety
+/// `law` is NULL, a law from kef_law_from_props, or one from kef_law_new
+/// or kef_law_from_physical not yet freed and no longer in use by any
+/// thread.
 #[no_mangle]
 pub unsafe extern "C" fn kef_law_free(law: *mut kef_law) {
-    // SAFETY: the caller's contract.
+    let laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+    if laws.iter().any(|&(_, shared)| std::ptr::eq(shared, law)) {
+        return;
+    }
+    drop(laws);
+    // SAFETY: the caller's contract (a shared law was returned above).
     unsafe { free(law, std::ptr::null()) }
 }

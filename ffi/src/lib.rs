@@ -53,7 +53,8 @@ mod table;
 // kef_params_from_physical.
 mod surface;
 
-// The table's lookups: kef_table_h_star, kef_table_mu and their batches.
+// The table's lookups: kef_table_h_star, kef_table_mu (and _with, which
+// checks the constants) and their batches.
 mod lookup;
 
 // The curve handle: kef_curve_*.

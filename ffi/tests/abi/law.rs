@@ -256,3 +256,147 @@ fn one_law_serves_many_threads_and_counts_their_clamps() {
     assert!(clamped > 0);
     assert_eq!(count, clamped);
 }
+
+#[test]
+fn a_props_list_gives_one_shared_law_built_once() {
+    let props = [1.5, 0.002, 1.1e9, 1e5, 1e8, 0.05, 0.32, 0.005];
+    // SAFETY: arrays of the length given; the shared law is never freed
+    // (kef_law_free ignores it).
+    unsafe {
+        let a = kef_law_from_props(8, props.as_ptr());
+        assert!(!a.is_null(), "{}", last_error());
+        let threads: Vec<usize> = std::thread::scope(|s| {
+            let handles: Vec<_> = (0..4)
+                .map(|_| s.spawn(|| kef_law_from_props(8, props.as_ptr()) as usize))
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        assert!(threads.iter().all(|&t| t == a as usize), "one law per props list");
+        kef_law_free(a.cast_mut());
+        let constants = ke_friction::Constants::default().beta(0.05).nu(0.32).eps_star(0.005);
+        let rust = FrictionLaw::new(
+            constants.at(1.5, 0.002).unwrap(),
+            1.1e9,
+            Some((1e5, 1e8)),
+            OutOfRange::Clamp,
+        )
+        .unwrap();
+        let mut mu = 0.0;
+        assert_eq!(kef_law_mu(a, 1e9, &mut mu), KEF_OK, "clamped, not an error");
+        assert_eq!(mu, rust.mu(1e8).unwrap());
+        // Three values: the default range and constants.
+        let short = kef_law_from_props(3, props.as_ptr());
+        let (mut lo, mut hi, mut h) = (0.0, 0.0, 0.0);
+        assert_eq!(kef_law_range(short, &mut lo, &mut hi, &mut h), KEF_OK);
+        assert_eq!((lo, hi), (1e-5 * 1.1e9, 0.1 * 1.1e9));
+        for n in [0, 2, 4, 9] {
+            assert!(kef_law_from_props(n, props.as_ptr()).is_null());
+            assert!(
+                last_error().starts_with(&format!("n_props = {n}: must be 3")),
+                "{}",
+                last_error()
+            );
+        }
+        let bad = [1.0, 0.001, -5.0];
+        assert!(kef_law_from_props(3, bad.as_ptr()).is_null());
+        assert!(last_error().starts_with("hardness = -5"), "{}", last_error());
+        assert!(kef_law_from_props(3, null()).is_null());
+        assert_eq!(last_error(), "props is NULL");
+    }
+}
+
+/// A measured surface (an X3P file of the library's writer) to the law
+/// through C: the law the library builds from the same file with
+/// `kefric surface`'s defaults; a missing file and an unknown family are
+/// refused, naming them.
+#[test]
+fn a_law_from_a_measured_surface_is_the_librarys() {
+    use ke_friction::topography::{read_file, write_x3p, ReadOptions, StatsOptions, Surface, Topography};
+    let n = 128;
+    let heights: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (x, y) = ((k % n) as f64, (k / n) as f64);
+            2e-7 * ((x * 0.7).sin() + (y * 0.9).cos() + (x * 0.31 + y * 0.27).sin() + (x * 0.13 - y * 0.41).cos())
+        })
+        .collect();
+    let dir = super::scratch("law-surface");
+    let path = dir.join("rough.x3p");
+    write_x3p(&Topography::map(heights, n, n, 1e-6, 1e-6).unwrap(), &path, 'D').unwrap();
+    let materials = ke_friction::Materials {
+        e1: 70e9,
+        nu1: 0.33,
+        e2: 200e9,
+        nu2: 0.31,
+        hardness: 1e9,
+        delta_gamma: 0.5,
+        epsilon: 0.4e-9,
+    };
+    let surface = Surface::new(
+        read_file(&path, &ReadOptions::default()).unwrap(),
+        StatsOptions::default(),
+    )
+    .unwrap();
+    let rust = FrictionLaw::from_surface(&surface, &materials, None, None, OutOfRange::Clamp).unwrap();
+    let ke_friction::Materials {
+        e1,
+        nu1,
+        e2,
+        nu2,
+        hardness,
+        delta_gamma,
+        epsilon,
+    } = materials;
+    let c_path = super::c_path(&path);
+    // SAFETY: NUL-terminated strings, a live law, local doubles.
+    unsafe {
+        let from = |family: *const std::ffi::c_char| {
+            kef_law_from_surface(
+                c_path.as_ptr(),
+                family,
+                e1,
+                nu1,
+                e2,
+                nu2,
+                hardness,
+                delta_gamma,
+                epsilon,
+                0.0,
+                0.0,
+                KEF_LAW_CLAMP,
+            )
+        };
+        let gaussian =
+            FrictionLaw::from_surface(&surface, &materials, Some("gaussian"), None, OutOfRange::Clamp).unwrap();
+        for (family, rust) in [
+            (null(), &rust),
+            (c"".as_ptr(), &rust),
+            (c"gaussian".as_ptr(), &gaussian),
+        ] {
+            let law = from(family);
+            assert!(!law.is_null(), "{}", last_error());
+            let (mut mu, mut d) = (0.0, 0.0);
+            assert_eq!(kef_law_mu_and_derivative(law, 1e6, &mut mu, &mut d), KEF_OK);
+            assert_eq!((mu, d), rust.mu_and_derivative(1e6).unwrap());
+            kef_law_free(law);
+        }
+        assert!(from(c"lognormal".as_ptr()).is_null());
+        assert!(last_error().contains("lognormal"), "{}", last_error());
+        let missing = super::c_path(&dir.join("missing.x3p"));
+        assert!(kef_law_from_surface(
+            missing.as_ptr(),
+            null(),
+            e1,
+            nu1,
+            e2,
+            nu2,
+            hardness,
+            delta_gamma,
+            epsilon,
+            0.0,
+            0.0,
+            KEF_LAW_CLAMP
+        )
+        .is_null());
+        assert!(last_error().contains("missing.x3p"), "{}", last_error());
+    }
+}
