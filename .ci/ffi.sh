@@ -45,6 +45,23 @@ done
 "$out/contacts_f"
 "$out/vfric_style_f"
 
+# Abaqus: ffi/abaqus/fric_coef.f (fixed form, the stand-in ABA_PARAM.INC)
+# called as Abaqus/Standard calls it, blocks of nodes from 4 threads:
+# values against the library (1e-12), dmu/dp against a central difference
+# (1e-5); props of a wrong length stop it through XIT (exit 3).
+gfortran -O2 -fopenmp -Wall -Werror -Wno-unused-dummy-argument -I ffi/abaqus/driver \
+  -c ffi/abaqus/fric_coef.f -o "$out/fric_coef.o"
+gfortran -O2 -fopenmp -Wall -Werror -J "$out" ffi/fortran/ke_friction.f90 ffi/abaqus/driver/driver.f90 \
+  "$out/fric_coef.o" -L "$lib" -lkefriction -Wl,-rpath,"$PWD/$lib" -o "$out/fric_coef_driver"
+OMP_NUM_THREADS=4 "$out/fric_coef_driver"
+set +e
+"$out/fric_coef_driver" bad > "$out/fric_coef_bad.txt" 2>&1
+status=$?
+set -e
+[ "$status" = 3 ] && grep -q 'kef_law_from_props: n_props = 4: must be 3' "$out/fric_coef_bad.txt" \
+  || { cat "$out/fric_coef_bad.txt"; echo "ffi: FRIC_COEF did not stop (XIT) on bad props: status $status"; exit 1; }
+echo "ffi: FRIC_COEF stops through XIT on bad props"
+
 # The C example's mu (a curve from the default table) against direct integration,
 # within the table's recorded tolerance.
 tolerance=$("$lib/kefric" info --json | python3 -c 'import json,sys; print(json.load(sys.stdin)["tolerance"])')

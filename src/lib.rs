@@ -11,6 +11,10 @@
 //!   default table is compiled in.
 //! - [`Curve`]: μ(F*) for one surface pair (fixed ψ, θ) in a few
 //!   nanoseconds, from the model or from a table.
+//! - [`FrictionLaw`]: μ and dμ/dp of the contact pressure p in pascals,
+//!   for a simulator's contact nodes (a curve at F* = p/H).
+//!   [`LawTable`]: its rows at log-spaced pressures for a simulator's
+//!   tabulated input, with the measured error of linear interpolation.
 //! - `paper` (feature `paper`): the paper's statements, computed from the
 //!   model.
 //! - `build`, `export` (feature `builder`) and `figures` (feature `plot`):
@@ -49,6 +53,8 @@ pub mod figures;
 mod gw;
 #[cfg(feature = "builder")]
 mod io;
+mod law;
+mod law_table;
 mod load;
 mod model;
 mod named;
@@ -73,6 +79,11 @@ pub use distribution::{
 };
 pub use error::{Classify, ErrorKind};
 pub use gw::BETA_MIN;
+pub use law::{FrictionLaw, FrictionLawError, OutOfRange, PressureError, LAW_F_STAR_RANGE};
+pub use law_table::{
+    LawRow, LawTable, LawTableError, INTERIOR_POINTS, LAW_TABLE_MAX_ROWS, LAW_TABLE_TOLERANCE,
+    LAW_TABLE_TOLERANCE_RANGE,
+};
 pub use load::{Friction, Load, LoadError};
 pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
@@ -86,6 +97,7 @@ pub use params::{
 };
 pub use spline::{Axis, Scale};
 pub use table::{
-    Accuracy, BuildRecord, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo, FAST_KERNEL_MAX_REL,
+    Accuracy, BuildRecord, ConstantsMismatch, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo,
+    FAST_KERNEL_MAX_REL,
 };
 pub use warning::{Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_MAX, F_STAR_RANGE, MU_ADHESION};

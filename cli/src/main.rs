@@ -28,6 +28,7 @@ mod eval;
 mod export;
 mod heights;
 mod info;
+mod law;
 mod lookup;
 mod params;
 mod plot;
@@ -72,6 +73,8 @@ enum Command {
     Info(info::Args),
     /// Convert SI inputs to the model's ψ, θ, β, ν, ε*.
     Params(params::Args),
+    /// A friction law's table for a simulator: pressure, μ, dμ/dp as CSV.
+    Law(law::Args),
     Surface(surface::Args),
 }
 
@@ -97,6 +100,7 @@ fn run() -> i32 {
         Command::Export(args) => export::run(args),
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
+        Command::Law(args) => law::run(args),
         Command::Surface(args) => surface::run(args),
     };
     // Whatever the command left in stdout's buffer must be written too.

@@ -11,7 +11,7 @@
 ! Model constants: a handle from kef_constants_new (c_null_ptr where a
 ! function takes one: the defaults); names via kef_c_string("as-printed").
 module ke_friction
-  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_char, c_null_char, c_associated, c_f_pointer
+  use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_double, c_size_t, c_ptr, c_char, c_null_char, c_associated, c_f_pointer
   implicit none
   private
   public :: kef_table_default, kef_table_load, kef_table_free, kef_table_mu, kef_table_mu_with_slope, &
@@ -28,8 +28,13 @@ module ke_friction
             kef_constants_distribution, kef_last_error, kef_error_message, kef_c_string, &
             kef_version, kef_version_string, kef_table_domain, kef_table_h_star, kef_table_h_star_batch, &
             kef_params_from_physical, kef_warnings, kef_clear_warnings, kef_warning_message, &
-            kef_warning_text
-  public :: c_int, c_double, c_size_t, c_ptr, c_associated
+            kef_warning_text, &
+            kef_law_new, kef_law_from_physical, kef_law_mu, &
+            kef_law_mu_and_derivative, kef_law_mu_batch, kef_law_mu_batch_nan, &
+            kef_law_mu_and_derivative_batch, kef_law_mu_and_derivative_batch_nan, kef_law_clamped, &
+            kef_law_range, kef_law_max_error, kef_law_free, kef_law_from_props, kef_table_mu_with, &
+            kef_table_mu_batch_with, kef_law_from_surface
+  public :: c_int, c_double, c_size_t, c_ptr, c_associated, c_int64_t
 
   integer(c_int), parameter, public :: KEF_OK = 0
   integer(c_int), parameter, public :: KEF_ERR_DOMAIN = 1
@@ -55,6 +60,9 @@ module ke_friction
   integer(c_int), parameter, public :: KEF_WARN_ANISOTROPY = 128
   integer(c_int), parameter, public :: KEF_WARN_INTERVAL_MISMATCH = 256
   integer(c_int), parameter, public :: KEF_WARN_UNRELIABLE_SCALE = 512
+  ! A friction law's policy outside its pressure range (kef_law_new).
+  integer(c_int), parameter, public :: KEF_LAW_CLAMP = 0
+  integer(c_int), parameter, public :: KEF_LAW_ERROR = 1
 
   interface
     function kef_last_error() bind(c, name="kef_last_error")
@@ -107,6 +115,25 @@ module ke_friction
       real(c_double), value :: psi, theta, f_star
       real(c_double), intent(out) :: mu
       integer(c_int) :: kef_table_mu
+    end function
+
+    ! kef_table_mu that refuses constants other than the table's.
+    function kef_table_mu_with(table, constants, psi, theta, f_star, mu) bind(c, name="kef_table_mu_with")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: table, constants
+      real(c_double), value :: psi, theta, f_star
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_table_mu_with
+    end function
+
+    function kef_table_mu_batch_with(table, constants, n, psi, theta, f_star, mu) &
+        bind(c, name="kef_table_mu_batch_with")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: table, constants
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: psi, theta, f_star
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_int) :: kef_table_mu_batch_with
     end function
 
     function kef_table_mu_with_slope(table, psi, theta, f_star, mu, dmu_df_star) &
@@ -423,6 +450,128 @@ module ke_friction
       type(c_ptr), value :: s
       integer(c_size_t) :: c_strlen
     end function
+
+    ! A friction law mu(p), dmu/dp of the contact pressure p in Pa:
+    ! p_min = p_max = 0 for the default range 1e-5*H to 0.1*H; policy
+    ! KEF_LAW_CLAMP or KEF_LAW_ERROR.
+    function kef_law_new(constants, psi, theta, hardness, p_min, p_max, policy) bind(c, name="kef_law_new")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: constants
+      real(c_double), value :: psi, theta, hardness, p_min, p_max
+      integer(c_int), value :: policy
+      type(c_ptr) :: kef_law_new
+    end function
+
+    function kef_law_from_physical(e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon, &
+        p_min, p_max, policy) bind(c, name="kef_law_from_physical")
+      import :: c_ptr, c_double, c_int
+      real(c_double), value :: e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon
+      real(c_double), value :: p_min, p_max
+      integer(c_int), value :: policy
+      type(c_ptr) :: kef_law_from_physical
+    end function
+
+    ! path, family: NUL-terminated, e.g. kef_c_string("surface.x3p"),
+    ! kef_c_string("pearson") (kef_c_string(""): the default family).
+    function kef_law_from_surface(path, family, e1, nu1, e2, nu2, hardness, delta_gamma, epsilon, &
+        p_min, p_max, policy) bind(c, name="kef_law_from_surface")
+      import :: c_ptr, c_double, c_int, c_char
+      character(kind=c_char), dimension(*), intent(in) :: path, family
+      real(c_double), value :: e1, nu1, e2, nu2, hardness, delta_gamma, epsilon, p_min, p_max
+      integer(c_int), value :: policy
+      type(c_ptr) :: kef_law_from_surface
+    end function
+
+    function kef_law_mu(law, p, mu) bind(c, name="kef_law_mu")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: law
+      real(c_double), value :: p
+      real(c_double), intent(out) :: mu
+      integer(c_int) :: kef_law_mu
+    end function
+
+    function kef_law_mu_and_derivative(law, p, mu, dmu_dp) bind(c, name="kef_law_mu_and_derivative")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: law
+      real(c_double), value :: p
+      real(c_double), intent(out) :: mu, dmu_dp
+      integer(c_int) :: kef_law_mu_and_derivative
+    end function
+
+    function kef_law_mu_batch(law, n, p, mu) bind(c, name="kef_law_mu_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: p
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_int) :: kef_law_mu_batch
+    end function
+
+    function kef_law_mu_batch_nan(law, n, p, mu, n_nan) bind(c, name="kef_law_mu_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: p
+      real(c_double), dimension(*), intent(inout) :: mu
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_law_mu_batch_nan
+    end function
+
+    function kef_law_mu_and_derivative_batch(law, n, p, mu, dmu_dp) bind(c, name="kef_law_mu_and_derivative_batch")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: p
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_dp
+      integer(c_int) :: kef_law_mu_and_derivative_batch
+    end function
+
+    function kef_law_mu_and_derivative_batch_nan(law, n, p, mu, dmu_dp, n_nan) &
+        bind(c, name="kef_law_mu_and_derivative_batch_nan")
+      import :: c_ptr, c_double, c_int, c_size_t
+      type(c_ptr), value :: law
+      integer(c_size_t), value :: n
+      real(c_double), dimension(*), intent(in) :: p
+      real(c_double), dimension(*), intent(inout) :: mu, dmu_dp
+      integer(c_size_t), intent(out) :: n_nan
+      integer(c_int) :: kef_law_mu_and_derivative_batch_nan
+    end function
+
+    ! reset /= 0 sets the count to 0 as it reads it.
+    function kef_law_clamped(law, reset, count) bind(c, name="kef_law_clamped")
+      import :: c_ptr, c_int, c_int64_t
+      type(c_ptr), value :: law
+      integer(c_int), value :: reset
+      integer(c_int64_t), intent(out) :: count
+      integer(c_int) :: kef_law_clamped
+    end function
+
+    function kef_law_range(law, p_min, p_max, hardness) bind(c, name="kef_law_range")
+      import :: c_ptr, c_double, c_int
+      type(c_ptr), value :: law
+      real(c_double), intent(out) :: p_min, p_max, hardness
+      integer(c_int) :: kef_law_range
+    end function
+
+    function kef_law_max_error(law) bind(c, name="kef_law_max_error")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: law
+      real(c_double) :: kef_law_max_error
+    end function
+
+    ! A law shared for the life of the process, built once per distinct
+    ! props (psi, theta, H[, p_min, p_max[, beta, nu, eps_star]]): not to free.
+    function kef_law_from_props(n_props, props) bind(c, name="kef_law_from_props")
+      import :: c_ptr, c_double, c_size_t
+      integer(c_size_t), value :: n_props
+      real(c_double), dimension(*), intent(in) :: props
+      type(c_ptr) :: kef_law_from_props
+    end function
+
+    subroutine kef_law_free(law) bind(c, name="kef_law_free")
+      import :: c_ptr
+      type(c_ptr), value :: law
+    end subroutine
   end interface
 
 contains

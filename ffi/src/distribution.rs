@@ -2,7 +2,7 @@
 //! `KEF_DIST_*` families, setting one (or measured heights), reading it.
 
 use crate::constants::{kef_constants, named, update};
-use crate::error::{Failure, KEF_ERR_INTERNAL};
+use crate::error::{Failure, Message, KEF_ERR_INTERNAL};
 use ke_friction::{Family, HeightDistribution};
 use std::ffi::{c_char, c_int};
 
@@ -58,7 +58,10 @@ fn describe(d: &HeightDistribution, family: &mut c_int, skewness: &mut f64, kurt
     if code < 0 {
         return Err(Failure {
             code: KEF_ERR_INTERNAL,
-            message: format!("the distribution family \"{}\" has no KEF_DIST_* code", d.family()),
+            message: Message::Text(format!(
+                "the distribution family \"{}\" has no KEF_DIST_* code",
+                d.family()
+            )),
         });
     }
     (*family, *skewness, *kurtosis) = (code, d.skewness(), d.kurtosis());

@@ -1,7 +1,7 @@
 //! The return codes, the one mapping of the core's errors to them, and
 //! this thread's last message (kef_last_error).
 
-use ke_friction::{Classify, ErrorKind};
+use ke_friction::{Classify, ErrorKind, LookupError, PressureError};
 use std::cell::Cell;
 use std::ffi::{c_char, c_int};
 
@@ -40,10 +40,76 @@ fn code(kind: ErrorKind) -> c_int {
     }
 }
 
+/// A failure's message: text, or an error of a lookup kept as it is and
+/// formatted only if [`kef_last_error`] asks for it (formatting three
+/// numbers costs forty lookups; a loop where some nodes are open must not
+/// pay it per node).
+pub(crate) enum Message {
+    /// Formatted already.
+    Text(String),
+    /// Formatted on demand.
+    Lazy(Lazy),
+}
+
+/// The errors whose messages are formatted on demand: the lookups' (small
+/// `Copy` values, stored as they are).
+#[derive(Clone, Copy)]
+pub(crate) enum Lazy {
+    /// A table's or curve's lookup.
+    Lookup(LookupError),
+    /// A friction law's pressure.
+    Pressure(PressureError),
+}
+
+impl std::fmt::Display for Lazy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Lazy::Lookup(e) => e.fmt(f),
+            Lazy::Pressure(e) => e.fmt(f),
+        }
+    }
+}
+
+impl From<LookupError> for Message {
+    fn from(e: LookupError) -> Message {
+        Message::Lazy(Lazy::Lookup(e))
+    }
+}
+
+impl From<PressureError> for Message {
+    fn from(e: PressureError) -> Message {
+        Message::Lazy(Lazy::Pressure(e))
+    }
+}
+
+/// The core's errors whose messages are formatted at once (construction
+/// and I/O: rare, and slow anyway).
+macro_rules! formatted {
+    ($($error:ty),+ $(,)?) => {
+        $(impl From<$error> for Message {
+            fn from(e: $error) -> Message {
+                Message::Text(e.to_string())
+            }
+        })+
+    };
+}
+
+formatted!(
+    ke_friction::ParamError,
+    ke_friction::CurveError,
+    ke_friction::TableError,
+    ke_friction::EvalError,
+    ke_friction::DistributionError,
+    ke_friction::FrictionLawError,
+    ke_friction::ConstantsMismatch,
+    ke_friction::topography::ReadError,
+    ke_friction::topography::StatsError,
+);
+
 /// A failure: its code and message.
 pub(crate) struct Failure {
     pub(crate) code: c_int,
-    pub(crate) message: String,
+    pub(crate) message: Message,
 }
 
 impl Failure {
@@ -51,16 +117,16 @@ impl Failure {
     pub(crate) fn argument(message: String) -> Failure {
         Failure {
             code: KEF_ERR_ARGUMENT,
-            message,
+            message: Message::Text(message),
         }
     }
 }
 
-impl<E: Classify> From<E> for Failure {
+impl<E: Classify + Into<Message>> From<E> for Failure {
     fn from(e: E) -> Failure {
         Failure {
             code: code(e.kind()),
-            message: e.to_string(),
+            message: e.into(),
         }
     }
 }
@@ -72,30 +138,70 @@ thread_local! {
     /// This thread's last message, NUL-terminated: one buffer for the
     /// thread's life, overwritten in place, never freed or moved.
     static LAST_ERROR: [Cell<u8>; MESSAGE_CAPACITY] = const { [const { Cell::new(0) }; MESSAGE_CAPACITY] };
+    /// This thread's last failure if its message is not formatted yet.
+    static PENDING: Cell<Option<Lazy>> = const { Cell::new(None) };
 }
 
-/// Stores `message` as this thread's last (cut at a character boundary to
-/// fit; a NUL in it becomes a space).
-pub(crate) fn remember(message: &str) {
-    let mut end = message.len().min(MESSAGE_CAPACITY - 1);
-    while !message.is_char_boundary(end) {
-        end -= 1;
-    }
-    LAST_ERROR.with(|buffer| {
-        for (cell, &b) in buffer.iter().zip(&message.as_bytes()[..end]) {
+/// Writes into the thread's buffer from its start, cutting at a character
+/// boundary to leave room for the NUL (a NUL in the text becomes a space).
+struct Buffer<'a> {
+    cells: &'a [Cell<u8>; MESSAGE_CAPACITY],
+    len: usize,
+}
+
+impl std::fmt::Write for Buffer<'_> {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let room = MESSAGE_CAPACITY - 1 - self.len;
+        let mut end = s.len().min(room);
+        while !s.is_char_boundary(end) {
+            end -= 1;
+        }
+        for (cell, &b) in self.cells[self.len..].iter().zip(&s.as_bytes()[..end]) {
             cell.set(if b == 0 { b' ' } else { b });
         }
-        buffer[end].set(0);
+        self.len += end;
+        self.cells[self.len].set(0);
+        // A cut message is still a message: the rest is dropped.
+        Ok(())
+    }
+}
+
+/// Writes `message` (formatted) into this thread's buffer.
+fn write(message: &dyn std::fmt::Display) {
+    use std::fmt::Write as _;
+    LAST_ERROR.with(|cells| {
+        let mut buffer = Buffer { cells, len: 0 };
+        cells[0].set(0);
+        // Buffer::write_str never fails; a Display that does leaves what it wrote.
+        let _ = write!(buffer, "{message}");
     });
 }
 
-/// The message of this thread's last failure ("" if none). Never NULL; do
-/// not free it. The pointer stays valid until the thread exits: it points
-/// to one buffer per thread that each later failure on the thread
-/// overwrites in place (never freed or moved), so reading it after a call
-/// that failed, even one made after the pointer was taken, is safe and
-/// gives that call's message. A message longer than 1023 bytes is cut.
+/// Stores `message` as this thread's last: text at once, a lookup's error
+/// as it is (formatted by [`kef_last_error`]).
+pub(crate) fn remember(message: Message) {
+    match message {
+        Message::Text(text) => {
+            PENDING.with(|p| p.set(None));
+            write(&text);
+        }
+        Message::Lazy(e) => PENDING.with(|p| p.set(Some(e))),
+    }
+}
+
+/// The message of this thread's last failure ("" if none), formatted by
+/// this call: call it after the call that failed (a lookup's message is
+/// formatted only when asked for, so that a failing lookup costs about
+/// what a lookup does). Never NULL; do not free it. The pointer stays
+/// valid until the thread exits: it points to one buffer per thread,
+/// overwritten in place (never freed or moved) by this function and by
+/// failures of calls that build or load; a pointer kept from an earlier
+/// call is safe to read, and holds the last message formatted. A message
+/// longer than 1023 bytes is cut.
 #[no_mangle]
 pub extern "C" fn kef_last_error() -> *const c_char {
+    if let Some(e) = PENDING.with(Cell::take) {
+        write(&e);
+    }
     LAST_ERROR.with(|buffer| buffer.as_ptr().cast())
 }

@@ -4,8 +4,9 @@
 //!
 //! Conventions of every function:
 //! - a return code: [`KEF_OK`] (0) or one of the `KEF_ERR_*` codes (or a
-//!   NULL handle); on failure [`kef_last_error`] holds the message (the
-//!   Rust error's one line: argument, value, valid range) and the outputs
+//!   NULL handle); on failure [`kef_last_error`] gives the message (the
+//!   Rust error's one line: argument, value, valid range; a lookup's is
+//!   formatted only then, so that a failing lookup stays cheap) and the outputs
 //!   are untouched, except that a batch writes the elements before the
 //!   first bad one and nothing from it on (its `_nan` form writes NaN
 //!   there instead and goes on);
@@ -17,7 +18,7 @@
 //! - outputs must not alias each other or the inputs: a call whose output
 //!   overlaps another pointer argument is [`KEF_ERR_ARGUMENT`] (the
 //!   message names both), nothing written;
-//! - tables and curves are immutable: any number of threads may use one
+//! - tables, curves and laws are immutable (a law's clamped count is atomic): any number of threads may use one
 //!   at once; only freeing it must wait until they are done.
 //!
 //! Every export is one line: the `ffi!` macro checks its pointer
@@ -56,7 +57,8 @@ mod table;
 // kef_params_from_physical.
 mod surface;
 
-// The table's lookups: kef_table_h_star, kef_table_mu and their batches.
+// The table's lookups: kef_table_h_star, kef_table_mu (and _with, which
+// checks the constants) and their batches.
 mod lookup;
 
 // The curve handle: kef_curve_*.
@@ -64,6 +66,9 @@ mod curve;
 
 // Direct integration: kef_model_mu, kef_model_mu_with.
 mod model;
+
+// The friction law handle: KEF_LAW_*, kef_law_*.
+mod law;
 
 // The model constants handle: kef_constants_new, _free, the setters and
 // getters of β, ν, ε*, the fit and the model.
@@ -80,6 +85,7 @@ pub use constants::*;
 pub use curve::*;
 pub use distribution::*;
 pub use error::*;
+pub use law::*;
 pub use lookup::*;
 pub use model::*;
 pub use surface::*;

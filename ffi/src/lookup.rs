@@ -2,6 +2,7 @@
 //! time or in batches.
 
 use crate::batch::stop;
+use crate::constants::kef_constants;
 use crate::macros::{set, set2};
 use crate::table::kef_table;
 use ke_friction::{LookupError, OnError, Table};
@@ -66,8 +67,12 @@ pub unsafe extern "C" fn kef_table_h_star_batch(
 }
 
 /// μ(ψ, θ, F*) from `table` into `*mu` (dimensionless: F* = F/(A_n·H),
-/// θ = Δγ/(σH)). KEF_ERR_DOMAIN if an argument is outside the table's
-/// range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL pointer.
+/// θ = Δγ/(σH)), assuming the constants (β, ν, ε*, fit, model, heights'
+/// distribution) are the table's: ψ and θ of a surface with other
+/// constants give a wrong μ here, silently. kef_table_mu_with checks them
+/// (the documented path). KEF_ERR_DOMAIN if an argument is outside the
+/// table's range, KEF_ERR_ARGUMENT if it is NaN or ±inf, or for a NULL
+/// pointer.
 ///
 /// # Safety
 /// `table` is NULL or a live table; `mu` is NULL or writable.
@@ -80,6 +85,52 @@ pub unsafe extern "C" fn kef_table_mu(
     mu: *mut f64,
 ) -> c_int {
     ffi!(table, mu => set(mu, table.mu(psi, theta, f_star)?))
+}
+
+/// kef_table_mu for a surface pair whose model constants are `constants`
+/// (NULL: the defaults): KEF_ERR_DOMAIN, naming the first constant that
+/// differs and both values, unless they are the table's (β, ν, ε* within
+/// 1e-9 relative; fit, model and distribution equal); then the lookup and
+/// its errors as kef_table_mu.
+///
+/// # Safety
+/// `table` is NULL or a live table; `constants` NULL or a live
+/// kef_constants; `mu` NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_mu_with(
+    table: *const kef_table,
+    constants: *const kef_constants,
+    psi: f64,
+    theta: f64,
+    f_star: f64,
+    mu: *mut f64,
+) -> c_int {
+    ffi!(table, constants, mu => {
+        table.check_constants(constants)?;
+        set(mu, table.mu(psi, theta, f_star)?)
+    })
+}
+
+/// kef_table_mu_batch for surface pairs whose model constants are
+/// `constants` (NULL: the defaults), checked once as kef_table_mu_with
+/// (nothing written on a mismatch).
+///
+/// # Safety
+/// As kef_table_mu_batch; `constants` NULL or a live kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_table_mu_batch_with(
+    table: *const kef_table,
+    constants: *const kef_constants,
+    n: usize,
+    psi: *const f64,
+    theta: *const f64,
+    f_star: *const f64,
+    mu: *mut f64,
+) -> c_int {
+    ffi!(table, constants, psi[n], theta[n], f_star[n], mu[n] => {
+        table.check_constants(constants)?;
+        stop(table.mu_batch_with(psi, theta, f_star, mu, OnError::Stop))
+    })
 }
 
 /// μ and ∂μ/∂F* from `table` into `*mu` and `*dmu_df_star`; errors as

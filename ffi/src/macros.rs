@@ -3,7 +3,7 @@
 //! checks (NULL, aliasing) and the helpers that write outputs and free
 //! handles.
 
-use crate::error::{remember, Failure, KEF_ERR_INTERNAL, KEF_OK};
+use crate::error::{remember, Failure, Message, KEF_ERR_INTERNAL, KEF_OK};
 use std::ffi::{c_char, c_int, CStr};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -65,10 +65,10 @@ pub(crate) fn guard<A: Answer>(body: impl FnOnce() -> Result<A, Failure>) -> A::
         Ok(Err(failure)) => failure,
         Err(_) => Failure {
             code: KEF_ERR_INTERNAL,
-            message: "internal error: a panic in ke-friction (please report it)".into(),
+            message: Message::Text("internal error: a panic in ke-friction (please report it)".into()),
         },
     };
-    remember(&failure.message);
+    remember(failure.message);
     A::failed(failure.code)
 }
 
@@ -117,6 +117,7 @@ macro_rules! pointee {
 
 pointee!(*mut f64 => &'a mut f64, |p| p.as_mut());
 pointee!(*mut usize => &'a mut usize, |p| p.as_mut());
+pointee!(*mut u64 => &'a mut u64, |p| p.as_mut());
 pointee!(*mut c_int => &'a mut c_int, |p| p.as_mut());
 pointee!(*const c_char => &'a CStr, |p| (!p.is_null()).then(|| CStr::from_ptr(p)));
 

@@ -3,7 +3,8 @@
  * kef_curve_mu_batch_nan gives NaN there, kef_table_mu's values
  * elsewhere, n_nan == 1 and KEF_OK; the Stop form leaves the tail
  * untouched; a pointer from kef_last_error taken before a failing call
- * shows that call's message. Exit status 0 when all hold. */
+ * shows that call's message once kef_last_error is called after it (a
+ * lookup's message is formatted then). Exit status 0 when all hold. */
 #include <kefriction.h>
 #include <math.h>
 #include <stdio.h>
@@ -51,12 +52,13 @@ int main(void) {
     expect(stop[0] > 0 && stop[1] > 0 && stop[2] == -1 && stop[3] == -1 && stop[4] == -1, "stop: tail untouched");
     expect(strncmp(kef_last_error(), "batch element 2: f_star = NaN", 29) == 0, "stop: the message names element 2");
 
-    /* The pointer stays valid across failures and shows the latest message. */
+    /* The pointer stays valid across failures and shows the latest message
+     * once kef_last_error has formatted it. */
     const char *message = kef_last_error();
     int code = kef_table_mu(t, 9.0, 0.001, 0.01, &single);
+    expect(kef_last_error() == message, "kef_last_error: the same pointer");
     printf("batch_nan: %d %s\n", code, message);
     expect(code == KEF_ERR_DOMAIN && strncmp(message, "psi = 9", 7) == 0, "kef_last_error: the latest message");
-    expect(kef_last_error() == message, "kef_last_error: the same pointer");
 
     kef_curve_free(c);
     if (failures == 0) printf("batch_nan: ok\n");

@@ -1,9 +1,10 @@
 /* The kef_last_error guarantee under AddressSanitizer (CI: .ci/ffi.sh,
  * built with -fsanitize=address against libkefriction.a). The message
- * pointer is read in the same expression as the failing call (its
- * arguments in either order: a pointer taken before the call shows that
- * call's message), after it, across other failures and after freeing
- * handles: ASan reports any read of freed or out-of-bounds memory. Prints
+ * pointer is read in the same expression as a failing constructor (its
+ * arguments in either order: a constructor's message is formatted when it
+ * fails), after a failing lookup (whose message kef_last_error formats),
+ * across other failures and after freeing handles: ASan reports any read
+ * of freed or out-of-bounds memory. Prints
  * the lines CI checks; exit status 0 when all hold. */
 #include <kefriction.h>
 #include <math.h>
@@ -16,9 +17,10 @@ int main(void) {
     /* The guarantee in one line: C leaves the order of the two calls open. */
     printf("%d %s\n", kef_model_mu(NAN, 0.001, 0.04, 0.3, 0.004, 0.01, &mu), kef_last_error());
 
-    /* Taken first, read after: the later call's message. */
+    /* Taken first, read after kef_last_error formats the later call's message. */
     const char *early = kef_last_error();
     int code = kef_table_mu(kef_table_default(), 9.0, 0.001, 0.01, &mu);
+    failures += kef_last_error() != early;
     printf("%d %s\n", code, early);
     failures += code != KEF_ERR_DOMAIN || strstr(early, "psi = 9") == NULL;
 

@@ -4,7 +4,7 @@
 //! argument checks and the documented Python API on top.
 //!
 //! One module per class (`table.rs`, `curve.rs`, `model.rs`,
-//! `distribution.rs`, `surface.rs`); the core's
+//! `distribution.rs`, `surface.rs`, `law.rs`); the core's
 //! errors become Python exceptions in `error.rs` alone; the batch and
 //! thread machinery is `parallel.rs`; `convert.rs` turns arguments and the
 //! core's records between the two languages.
@@ -13,6 +13,7 @@ mod convert;
 mod curve;
 mod distribution;
 mod error;
+mod law;
 mod model;
 mod parallel;
 mod surface;
@@ -28,6 +29,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<model::ModelCore>()?;
     m.add_class::<distribution::DistributionCore>()?;
     m.add_class::<surface::SurfaceCore>()?;
+    m.add_class::<law::FrictionLawCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
     m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;    m.add_function(wrap_pyfunction!(model::contact_warnings, m)?)?;
     m.add("WARNING_KINDS", <ke_friction::WarningKind as Named>::names())?;
@@ -48,6 +50,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
         .chain(ke_friction::LengthUnit::SYMBOLS.iter().map(|(s, _)| *s))
         .collect();
     m.add("LENGTH_UNITS", units)?;
+    m.add("OUT_OF_RANGE", <ke_friction::OutOfRange as Named>::names())?;
+    m.add("LAW_F_STAR_RANGE", ke_friction::LAW_F_STAR_RANGE)?;
+    m.add("LAW_TABLE_TOLERANCE", ke_friction::LAW_TABLE_TOLERANCE)?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;
     Ok(())

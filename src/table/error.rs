@@ -95,6 +95,26 @@ impl LookupError {
     }
 }
 
+/// Constants other than a table's ([`Table::check_constants`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{name} = {given}, but the table holds {name} = {table}: it answers for its own constants only (build a table for these, or use a curve or the model)")]
+pub struct ConstantsMismatch {
+    /// The constant's record name (`beta`, `nu`, `eps_star`, `fit`,
+    /// `model`, `distribution`).
+    pub name: &'static str,
+    /// The value given.
+    pub given: String,
+    /// The table's.
+    pub table: String,
+}
+
+impl crate::Classify for ConstantsMismatch {
+    /// [`crate::ErrorKind::Domain`]: valid constants the table does not cover.
+    fn kind(&self) -> crate::ErrorKind {
+        crate::ErrorKind::Domain
+    }
+}
+
 /// What a batch does at an element it cannot answer (NaN, or outside the
 /// table's domain or the curve's range). Every batch function of [`Table`]
 /// and [`Curve`](crate::Curve) follows it, and the C and Python bindings

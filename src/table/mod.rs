@@ -57,7 +57,7 @@ use crate::num::Shortest;
 use crate::params::{Constants, Params};
 use crate::spline::Axis;
 pub(crate) use error::scatter_pairs;
-pub use error::{LookupError, OnError};
+pub use error::{ConstantsMismatch, LookupError, OnError};
 use format::{Coefs, Payload};
 pub use format::{TableError, FILE_MAX};
 
@@ -365,6 +365,52 @@ impl Table {
     /// The ranges of ψ, θ, F* this table covers, and its model constants.
     pub fn domain(&self) -> &Domain {
         &self.info.domain
+    }
+
+    /// Refuses `constants` other than the table's (β, ν, ε* within 1e-9
+    /// relative; the fit, the model and the heights' distribution equal):
+    /// a table answers for its own constants only, and μ at other
+    /// constants is a different number, not a nearby one. The error names
+    /// the first constant that differs, with both values.
+    ///
+    /// ```
+    /// use ke_friction::{Constants, HeightDistribution, Table};
+    /// let table = Table::embedded();
+    /// assert!(table.check_constants(&Constants::default()).is_ok());
+    /// let measured = Constants::default().beta(0.117).distribution(HeightDistribution::pearson(0.3, 3.5)?);
+    /// let e = table.check_constants(&measured).unwrap_err();
+    /// assert_eq!(e.to_string(), "beta = 0.117, but the table holds beta = 0.04: it answers for its own \
+    ///     constants only (build a table for these, or use a curve or the model)");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn check_constants(&self, constants: &Constants) -> Result<(), ConstantsMismatch> {
+        let held = &self.info.domain.constants;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * b.abs();
+        let differs = |name: &'static str, given: String, table: String| Err(ConstantsMismatch { name, given, table });
+        let number = |x: f64| Shortest(x).to_string();
+        for (name, given, table) in [
+            ("beta", constants.beta, held.beta),
+            ("nu", constants.nu, held.nu),
+            ("eps_star", constants.eps_star, held.eps_star),
+        ] {
+            if !close(given, table) {
+                return differs(name, number(given), number(table));
+            }
+        }
+        if constants.fit != held.fit {
+            return differs("fit", constants.fit.to_string(), held.fit.to_string());
+        }
+        if constants.kind != held.kind {
+            return differs("model", constants.kind.to_string(), held.kind.to_string());
+        }
+        if constants.distribution != held.distribution {
+            return differs(
+                "distribution",
+                constants.distribution.to_string(),
+                held.distribution.to_string(),
+            );
+        }
+        Ok(())
     }
 
     /// What the table's file records: domain, model, tolerance, measured

@@ -530,3 +530,40 @@ fn the_readme_lists_every_format_extension_of_the_registry() {
         }
     }
 }
+
+#[test]
+fn law_with_a_surface_is_the_model_of_eval_with_that_surface() {
+    let dir = TempDir::new("surface-law");
+    let n = 64;
+    let npy = write_npy(&dir, "map.npy", &heights(n, 0.7), n);
+    let o = kefric(&as_strs(&run(
+        &["law", "--surface", &npy, "--dx", "2e-6", "--pressure", "1e5:1e7:3"],
+        MATERIAL_FLAGS,
+    )));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains(&format!("# sigma, R, eta of {npy} at dx = 2e-6 m")),
+        "{text}"
+    );
+    assert!(text.contains("# hardness H = 1e9 Pa"), "{text}");
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("pressure"))
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 3);
+    for row in &rows {
+        // F* = p/H with H = 1e9 Pa, the material flags' hardness.
+        let f = (row[0] / 1e9).to_string();
+        let e = json(&as_strs(&run(
+            &["eval", "--surface", &npy, "--dx", "2e-6", "--f-star", &f, "--json"],
+            MATERIAL_FLAGS,
+        )));
+        let mu = e["mu"].as_f64().unwrap();
+        assert!(
+            (row[1] / mu - 1.0).abs() <= ke_friction::CURVE_ACCURACY,
+            "{row:?}: {mu}"
+        );
+    }
+}

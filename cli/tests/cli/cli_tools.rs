@@ -393,6 +393,7 @@ const NOT_KEFRIC: &[&str] = &[
     "--cfg",
     "--cflags",
     "--libs",
+    "--system-site-packages",
 ];
 
 #[test]
@@ -406,6 +407,7 @@ fn every_flag_in_the_readme_is_in_some_help() {
         &["lookup"],
         &["info"],
         &["params"],
+        &["law"],
         &["surface"],
         &["export"],
         &["validate"],

@@ -14,6 +14,7 @@ mod npy;
 
 mod cli_eval;
 mod cli_export;
+mod cli_law;
 mod cli_scale;
 mod cli_surface;
 mod cli_table;

@@ -258,7 +258,7 @@ fn stop_mode_leaves_the_tail_untouched() {
 }
 
 #[test]
-fn the_last_error_pointer_stays_valid_and_shows_the_latest_message() {
+fn the_last_error_pointer_stays_valid_and_shows_the_message_formatted_last() {
     let t = kef_table_default();
     let p = kef_last_error();
     let mut mu = 0.0;
@@ -269,6 +269,10 @@ fn the_last_error_pointer_stays_valid_and_shows_the_latest_message() {
         let first = std::ffi::CStr::from_ptr(p).to_str().unwrap().to_string();
         assert!(first.starts_with("psi = 9"), "{first}");
         assert_eq!(kef_table_mu(t, 1.0, 0.001, 0.5, &mut mu), KEF_ERR_DOMAIN);
+        // A lookup's message is formatted when kef_last_error asks for it;
+        // until then the buffer holds the one before.
+        assert!(std::ffi::CStr::from_ptr(p).to_str().unwrap().starts_with("psi = 9"));
+        assert_eq!(kef_last_error(), p);
         assert!(std::ffi::CStr::from_ptr(p)
             .to_str()
             .unwrap()

@@ -421,3 +421,54 @@ fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
         kef_constants_free(by_code);
     }
 }
+
+/// The issue-38 case: ψ, θ of a measured surface whose β is 0.117 and
+/// whose heights are Pearson, looked up in the default table. The plain
+/// lookup cannot know; kef_table_mu_with refuses, naming β and both values,
+/// and answers kef_table_mu's value for the table's own constants.
+#[test]
+fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
+    let t = kef_table_default();
+    // SAFETY: live handles, local doubles and arrays of the length given.
+    unsafe {
+        let c = kef_constants_new();
+        let (mut plain, mut checked) = (0.0, 0.0);
+        assert_eq!(kef_table_mu(t, 1.0, 0.001, 2e-4, &mut plain), KEF_OK);
+        assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut checked), KEF_OK);
+        assert_eq!(kef_table_mu_with(t, null(), 1.0, 0.001, 2e-4, &mut checked), KEF_OK);
+        assert_eq!(plain, checked);
+        assert_eq!(kef_constants_set_beta(c, 0.117), KEF_OK);
+        assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.3, 3.5), KEF_OK);
+        let mut out = 42.0;
+        assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
+        assert_eq!(out, 42.0);
+        assert!(
+            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(kef_constants_set_beta(c, 0.04), KEF_OK);
+        assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
+        assert!(
+            last_error().starts_with(
+                "distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian"
+            ),
+            "{}",
+            last_error()
+        );
+        let (psi, theta, f) = ([1.0, 2.0], [0.001, 0.002], [1e-3, 1e-2]);
+        let mut mu = [7.0; 2];
+        assert_eq!(
+            kef_table_mu_batch_with(t, c, 2, psi.as_ptr(), theta.as_ptr(), f.as_ptr(), mu.as_mut_ptr()),
+            KEF_ERR_DOMAIN
+        );
+        assert_eq!(mu, [7.0; 2]);
+        assert_eq!(
+            kef_table_mu_batch_with(t, null(), 2, psi.as_ptr(), theta.as_ptr(), f.as_ptr(), mu.as_mut_ptr()),
+            KEF_OK
+        );
+        assert_eq!(kef_table_mu(t, 2.0, 0.002, 1e-2, &mut plain), KEF_OK);
+        assert_eq!(mu[1], plain);
+        kef_constants_free(c);
+    }
+}

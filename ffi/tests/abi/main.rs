@@ -5,6 +5,7 @@ mod aliasing;
 mod batches;
 mod constants;
 mod fortran;
+mod law;
 mod queries;
 mod warnings;
 
@@ -86,6 +87,13 @@ fn the_header_declares_the_api() {
         "int kef_constants_set_distribution(kef_constants *constants,",
         "int kef_constants_set_heights(kef_constants *constants, const double *heights, size_t n);",
         "int kef_constants_distribution(const kef_constants *constants,",
+        "typedef struct kef_law kef_law;",
+        "#define KEF_LAW_CLAMP 0",
+        "#define KEF_LAW_ERROR 1",
+        "kef_law *kef_law_new(const kef_constants *constants,",
+        "int kef_law_mu_and_derivative(const kef_law *law, double p, double *mu, double *dmu_dp);",
+        "int kef_law_clamped(const kef_law *law, int reset, uint64_t *count);",
+        "#include <stdint.h>",
     ] {
         assert!(text.contains(name), "the header lacks {name}");
     }

@@ -18,6 +18,9 @@ theta = dgamma/(sigma H) and the roughness (beta, nu, eps_star):
   against the scale (:meth:`Surface.scan`), its power spectral density
   (:meth:`Surface.psd`), scale-dependent slope and curvature and a
   scanning probe's reliability cut-off;
+* :class:`FrictionLaw` -- mu(p) and dmu/dp of the contact pressure p in
+  pascals (F* = p/H), for a simulator's contact nodes, with a stated
+  policy outside its pressure range, and solver-ready tables;
 * :func:`params_from_physical` -- psi, theta, beta, nu, eps_star from SI inputs.
 
 Lookups take Python floats (and return a float) or array-likes, which
@@ -75,13 +78,14 @@ from ._args import (_F64, _MODES, ArrayLike, FloatArray, OutOfDomain, _arrays, _
 from ._curve import CURVE_ACCURACY, Curve, _curve_of
 from ._distribution import HeightDistribution, _distribution_of, _heights_array, _heights_of, _resolve
 from ._errors import WARNING_KINDS, ModelWarning, TableError, _located, _warn
+from ._law import LAW_F_STAR_RANGE, FrictionLaw, _law_of
 from ._model import DEFAULTS, Contact, Model, params_from_physical
 from ._surface import (_DERIVATIVES, _DETRENDS, _FAMILIES, _LENGTH_UNITS, _MATERIALS, Surface, _choice, _interval,
                        _materials, _surface_of)
 from ._table import _TABLE_ARGS, Table, _table_of
 
-__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "TableError", "ModelWarning",
-           "params_from_physical", "CURVE_ACCURACY", "DEFAULTS", "WARNING_KINDS"]
+__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "FrictionLaw", "TableError",
+           "ModelWarning", "params_from_physical", "CURVE_ACCURACY", "DEFAULTS", "WARNING_KINDS", "LAW_F_STAR_RANGE"]
 
 #: The package's version: the library's (the Rust crate's).
 __version__: str = _core.__version__
@@ -112,5 +116,5 @@ def _rehome(*objects: Any) -> None:
                 value.__module__ = __name__
 
 
-_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, ModelWarning, params_from_physical,
-        _table_of, _curve_of, _distribution_of, _surface_of)
+_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, FrictionLaw, ModelWarning, params_from_physical,
+        _table_of, _curve_of, _distribution_of, _surface_of, _law_of)

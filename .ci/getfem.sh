@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# CI stage getfem: the friction law inside a real finite-element solver.
+# GetFEM comes from Debian (python3-getfem, for the system python3; with
+# python3-matplotlib, installed here when missing); ke_friction goes into a
+# venv made with --system-site-packages beside it (the abi3 wheel
+# .ci/python.sh built, or `pip install ./python` without one; --no-deps:
+# Debian's NumPy 1.24, which getfem is built against, must stay). Runs
+# python/examples/getfem_contact.py (~10 s of CPU) and checks its JSON and
+# PNG: at gross sliding the tangential reaction equals sum mu(p_i) p_i A_i
+# within the stated tolerance, >= 100 nodes in contact, mu not uniform and
+# higher where the pressure is lower.
+# Runs from anywhere in a checkout; exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+target=${CARGO_TARGET_DIR:-target}
+case $target in /*) ;; *) target=$root/$target ;; esac
+out=$target/ci-getfem
+rm -rf "$out" && mkdir -p "$out"
+export PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore MPLBACKEND=Agg
+
+sys=/usr/bin/python3
+if ! "$sys" -c 'import getfem, matplotlib' 2> /dev/null; then
+  echo "getfem: installing python3-getfem python3-matplotlib"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get install -y -q python3-getfem python3-matplotlib > "$out/apt.log" 2>&1 \
+    || { apt-get update -q >> "$out/apt.log" 2>&1 \
+      && apt-get install -y -q python3-getfem python3-matplotlib >> "$out/apt.log" 2>&1; } \
+    || { tail -20 "$out/apt.log"; exit 1; }
+fi
+
+venv=$out/venv
+"$sys" -m venv --system-site-packages "$venv"
+wheel=$(ls "$target"/ci-python/wheels/ke_friction-*-abi3-*.whl 2> /dev/null | head -1 || true)
+if [ -n "$wheel" ]; then
+  "$venv/bin/python" -m pip install --quiet --no-deps "$wheel"
+else
+  "$venv/bin/python" -m pip install --quiet --no-deps ./python
+fi
+
+(cd "$out" && "$venv/bin/python" "$root/python/examples/getfem_contact.py" --out "$out")
+"$venv/bin/python" - "$out" <<'EOF'
+import json, os, sys
+import numpy as np
+from matplotlib.image import imread
+out = sys.argv[1]
+r = json.load(open(os.path.join(out, "getfem_contact.json")))
+for key in ("psi", "theta", "beta", "nu", "eps_star", "distribution", "skewness", "kurtosis", "hardness"):
+    assert key in r["law"], key
+assert "per metre of thickness" in r["per_unit_thickness"]
+nodes = r["nodes"]
+assert len(nodes) >= 100, len(nodes)
+p = np.array([n["pressure"] for n in nodes]); mu = np.array([n["mu"] for n in nodes])
+area = np.array([n["area"] for n in nodes])
+assert np.all(p > 0) and np.all(area > 0)
+expected = float(np.sum(mu * p * area))
+assert abs(expected / r["sum_mu_pressure_area"] - 1) < 1e-12
+assert r["tolerance"] <= 0.02
+assert abs(r["tangential_reaction"] - expected) <= r["tolerance"] * expected, (r["tangential_reaction"], expected)
+assert (mu.max() - mu.min()) / mu.mean() > 0.01, "mu is uniform"
+order = np.argsort(p)
+assert np.all(np.diff(mu[order]) <= 1e-12), "mu is not higher where the pressure is lower"
+assert all(r["checks"].values()), r["checks"]
+image = imread(os.path.join(out, "getfem_contact.png"))
+assert image.ndim == 3 and image[..., :3].std() > 0.05, "a blank image"
+print(f"getfem: {len(nodes)} nodes in contact, reaction {r['tangential_reaction']:.6g} N/m against "
+      f"sum mu p A {expected:.6g} N/m (relative {r['relative_difference']:.1e}), mu {mu.min():.4f} to {mu.max():.4f}")
+EOF
