@@ -5,8 +5,8 @@
 
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
-    read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
-    SurfaceStats, Topography, MAX_POINTS,
+    read_dy_defaulting_to_dx, read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions,
+    StatsOptions, Surface, SurfaceRecord, SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -204,13 +204,7 @@ impl SurfaceArgs {
             max_points: self.max_points.unwrap_or(MAX_POINTS),
             ..ReadOptions::default()
         };
-        // --dy defaults to --dx for a file that gives no dy; a file's own dy
-        // is kept (a file whose dy differs from --dx is read again without
-        // it: only a --dy given contradicts the file's).
-        let read = match read_file(path, &options(dy.or(dx))) {
-            Err(ReadError::Conflict { name: "dy", .. }) if dy.is_none() => read_file(path, &options(None)),
-            read => read,
-        };
+        let read = read_dy_defaulting_to_dx(&options(dy), |options| read_file(path, options));
         read.map_err(|e| match e {
             ReadError::NeedInterval { path, name } => Failure::input(format!(
                 "{flag}: {}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit",
@@ -388,29 +382,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         paper.warn();
     }
     if args.json {
-        #[derive(serde::Serialize)]
-        struct Record<'a> {
-            files: Vec<String>,
-            detrend: Detrend,
-            derivative: Derivative,
-            surface: &'a SurfaceStats,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            parts: Option<Vec<&'a SurfaceStats>>,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            model: Option<&'a Params>,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            friction: Option<&'a Friction>,
-        }
-        let options = surface.options();
-        let record = Record {
-            files: args.files.iter().map(|p| p.display().to_string()).collect(),
-            detrend: options.detrend,
-            derivative: options.derivative,
-            surface: surface.stats(),
-            parts: (surface.parts().len() > 1).then(|| surface.parts().iter().map(|(_, s)| s).collect()),
-            model: params.as_ref(),
-            friction: friction.as_ref(),
-        };
+        let files = args.files.iter().map(|p| p.display().to_string()).collect();
+        let record = SurfaceRecord::new(files, &surface, params.as_ref(), friction.as_ref());
         outln!(
             "{}",
             serde_json::to_string(&record).expect("a surface record serialises")
