@@ -335,7 +335,15 @@ impl Analysis {
         })?;
         let params = surface
             .params(materials, distribution)
-            .map_err(|e| format!("the surface with these materials: {e}"))?
+            .map_err(|e| {
+                // The flag the CLI names (its `physical_failure`).
+                let at = match e.name {
+                    n if n.starts_with("beta") => "--density".to_string(),
+                    "psi" | "theta" | "nu" | "eps_star" => "the surface with these materials".to_string(),
+                    n => flag(n),
+                };
+                format!("{at}: {e}")
+            })?
             .fit(self.fit)
             .kind(self.model_kind);
         let Some(load) = load else {
