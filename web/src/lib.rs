@@ -617,4 +617,67 @@ mod tests {
             "kefric surface 'my file.x3p' --dx 1e-6 --lambda-s 2e-6 --pressure 1e6 --json"
         );
     }
+
+    /// A 40 × 30 text map (heights in µm, a few incommensurate waves).
+    fn text_map() -> Vec<u8> {
+        let mut text = String::new();
+        for j in 0..30 {
+            let row: Vec<String> = (0..40)
+                .map(|i| {
+                    format!(
+                        "{:.6}",
+                        (0.37 * i as f64).sin() + (0.23 * j as f64 + 0.11 * i as f64).cos()
+                    )
+                })
+                .collect();
+            text.push_str(&row.join(" "));
+            text.push('\n');
+        }
+        text.into_bytes()
+    }
+
+    #[test]
+    fn a_text_map_with_dx_alone_has_dy_equal_to_dx_in_the_record() {
+        let options = Options::parse(r#"{"dx": "0.5", "xy_unit": "um", "z_unit": "um"}"#).unwrap();
+        let a = Analysis::analyse(&text_map(), "h.txt", options).unwrap();
+        let record: Value = serde_json::from_str(&a.record).unwrap();
+        assert_eq!(record["files"], json!(["h.txt"]));
+        assert_eq!(
+            (record["surface"]["nx"].as_u64(), record["surface"]["ny"].as_u64()),
+            (Some(40), Some(30))
+        );
+        assert_eq!(record["surface"]["dx"].as_f64(), Some(0.5e-6));
+        assert_eq!(record["surface"]["dy"].as_f64(), Some(0.5e-6));
+        assert!(
+            record.get("model").is_none() && record.get("friction").is_none(),
+            "{record}"
+        );
+    }
+
+    #[test]
+    fn a_map_without_intervals_asks_for_dx_as_kefric_does() {
+        let e = Analysis::analyse(&text_map(), "h.txt", Options::default())
+            .err()
+            .unwrap();
+        assert_eq!(
+            e,
+            "surface: h.txt: the file gives no sampling interval dx: give --dx (and --dy for a map, if it differs), in --xy-unit"
+        );
+    }
+
+    #[test]
+    fn materials_go_together_and_a_load_needs_them() {
+        let run = |json: &str| {
+            Analysis::analyse(&text_map(), "h.txt", Options::parse(json).unwrap())
+                .err()
+                .unwrap()
+        };
+        let e = run(r#"{"dx": "1e-6", "e1": "70e9"}"#);
+        assert!(
+            e.starts_with("--nu1: missing: the SI inputs go together (--e1, --nu1,"),
+            "{e}"
+        );
+        let e = run(r#"{"dx": "1e-6", "pressure": "1e6"}"#);
+        assert!(e.starts_with("--pressure: needs the materials"), "{e}");
+    }
 }

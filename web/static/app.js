@@ -190,7 +190,7 @@ function showResult(m) {
   link('download-json', `${file.name}.json`, m.record + '\n', 'application/json');
   link('download-load', `${file.name}.mu-load.csv`,
     csv([`load_${m.load.unit === 'Pa' ? 'pa' : 'n'}`, 'mu'], [m.load.load, m.load.mu]), 'text/csv');
-  for (const id of ['download-scan', 'download-psd']) $(id).removeAttribute('href');
+  for (const id of ['download-scan', 'download-psd', 'download-histogram']) $(id).removeAttribute('href');
 }
 
 // CSV with a provenance header: the library's version, the file and every
@@ -311,6 +311,9 @@ function drawHistogram(h) {
     }
   }
   plot('histogram', { scales: { x: { time: false } }, axes: [{ label: 'height (µm)' }, { label: 'density (1/µm)' }], series }, data);
+  const fits = ['gaussian', 'pearson'].filter((n) => Array.isArray(h[n]));
+  link('download-histogram', `${file.name}.histogram.csv`,
+    csv(['z_m', 'density_per_m', ...fits.map((n) => `${n}_per_m`)], [h.z, h.density, ...fits.map((n) => h[n])]), 'text/csv');
 }
 
 function drawPsd(psd) {
