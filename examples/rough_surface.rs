@@ -7,6 +7,9 @@
 //!
 //! `cargo run --release --features topography --example rough_surface -- /tmp/rough.x3p`
 //!
+//! (`... -- OUT.x3p N`: N × N points, the same waves; the web page's
+//! timing test reads a 1024 × 1024 one.)
+//!
 //! then, for an aluminium pin on a nickel-coated disk, 10 N on 10 mm²:
 //!
 //! `kefric surface /tmp/rough.x3p --e1 70e9 --nu1 0.33 --e2 200e9 --nu2 0.31 --hardness 1e9 --delta-gamma 0.5 --epsilon 0.4e-9 --force 10 --area 1e-5`
@@ -14,7 +17,7 @@
 use ke_friction::topography::{write_x3p, Topography};
 use std::f64::consts::PI;
 
-/// Points along x and y.
+/// Points along x and y, unless given.
 const N: usize = 256;
 /// Sampling interval, m.
 const DX: f64 = 1e-6;
@@ -33,7 +36,14 @@ fn uniform(k: u64) -> f64 {
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let Some(path) = std::env::args_os().nth(1) else {
-        return Err("usage: rough_surface OUT.x3p".into());
+        return Err("usage: rough_surface OUT.x3p [N]".into());
+    };
+    let n = match std::env::args().nth(2) {
+        None => N,
+        Some(n) => match n.parse::<usize>() {
+            Ok(n) if (2..=8192).contains(&n) => n,
+            _ => return Err(format!("N = {n} is out of range: must be a whole number from 2 to 8192").into()),
+        },
     };
     // Wavenumbers from 2π/256 µm to 2π/8 µm, uniform in log k, random
     // directions and phases; the amplitude of a self-affine surface,
@@ -48,9 +58,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             (k * angle.cos(), k * angle.sin(), phase, k.powf(-hurst))
         })
         .collect();
-    let mut z: Vec<f64> = (0..N * N)
+    let mut z: Vec<f64> = (0..n * n)
         .map(|p| {
-            let (x, y) = ((p % N) as f64 * DX, (p / N) as f64 * DX);
+            let (x, y) = ((p % n) as f64 * DX, (p / n) as f64 * DX);
             waves
                 .iter()
                 .map(|&(kx, ky, phase, a)| a * (kx * x + ky * y + phase).cos())
@@ -61,7 +71,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mean = z.iter().sum::<f64>() / z.len() as f64;
     let sd = (z.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / z.len() as f64).sqrt();
     z.iter_mut().for_each(|v| *v = (*v - mean) / sd * 0.5e-6);
-    write_x3p(&Topography::map(z, N, N, DX, DX)?, path.as_ref(), 'D')?;
+    write_x3p(&Topography::map(z, n, n, DX, DX)?, path.as_ref(), 'D')?;
     println!("wrote {}", path.to_string_lossy());
     Ok(())
 }

@@ -5,8 +5,8 @@
 
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
-    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, Metadata, ReadError, ReadOptions,
-    StatsOptions, Surface, SurfaceStats, Topography, MAX_POINTS,
+    read_dy_defaulting_to_dx, read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, ReadError,
+    ReadOptions, StatsOptions, Surface, SurfaceRecord, SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest, Warnings};
 use std::path::{Path, PathBuf};
@@ -229,13 +229,7 @@ impl SurfaceArgs {
             channel: self.channel.clone(),
             ..ReadOptions::default()
         };
-        // --dy defaults to --dx for a file that gives no dy; a file's own dy
-        // is kept (a file whose dy differs from --dx is read again without
-        // it: only a --dy given contradicts the file's).
-        let read = match read_file(path, &options(dy.or(dx))) {
-            Err(ReadError::Conflict { name: "dy", .. }) if dy.is_none() => read_file(path, &options(None)),
-            read => read,
-        };
+        let read = read_dy_defaulting_to_dx(&options(dy), |options| read_file(path, options));
         read.map_err(|e| match e {
             ReadError::NeedInterval { path, name } => Failure::input(format!(
                 "{flag}: {}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit",
@@ -461,45 +455,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let (params, friction, warnings) = evaluate(&args, &surface, materials.as_ref(), &loads)?;
     crate::args::warn(&warnings);
     if args.json {
-        /// One friction record, or a list of them for a range of loads.
-        #[derive(serde::Serialize)]
-        #[serde(untagged)]
-        enum Frictions<'a> {
-            One(&'a Friction),
-            Many(&'a [Friction]),
-        }
-        #[derive(serde::Serialize)]
-        struct Record<'a> {
-            files: Vec<String>,
-            #[serde(skip_serializing_if = "Vec::is_empty")]
-            metadata: Vec<&'a Metadata>,
-            detrend: Detrend,
-            derivative: Derivative,
-            surface: &'a SurfaceStats,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            parts: Option<Vec<&'a SurfaceStats>>,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            model: Option<&'a Params>,
-            #[serde(skip_serializing_if = "Option::is_none")]
-            friction: Option<Frictions<'a>>,
-            warnings: Vec<ke_friction::Summary<'a>>,
-        }
-        let options = surface.options();
-        let record = Record {
-            files: args.files.iter().map(|p| p.display().to_string()).collect(),
-            metadata: surface.parts().iter().map(|(t, _)| t.metadata()).collect(),
-            detrend: options.detrend,
-            derivative: options.derivative,
-            surface: surface.stats(),
-            parts: (surface.parts().len() > 1).then(|| surface.parts().iter().map(|(_, s)| s).collect()),
-            model: params.as_ref(),
-            friction: match friction.as_slice() {
-                [] => None,
-                [one] if !args.load.is_range() => Some(Frictions::One(one)),
-                many => Some(Frictions::Many(many)),
-            },
-            warnings: warnings.summaries().collect(),
-        };
+        let files = args.files.iter().map(|p| p.display().to_string()).collect();
+        let record = SurfaceRecord::new(files, &surface, params.as_ref(), None)
+            .with_frictions(&friction, args.load.is_range())
+            .with_warnings(&warnings);
         outln!(
             "{}",
             serde_json::to_string(&record).expect("a surface record serialises")

@@ -11,6 +11,7 @@ mod filter;
 mod metadata;
 mod psd;
 mod read;
+mod record;
 mod scale;
 mod scan;
 mod stats;
@@ -20,7 +21,10 @@ mod write;
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use metadata::Metadata;
 pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
-pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
+pub use read::{
+    read_bytes, read_dy_defaulting_to_dx, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS,
+};
+pub use record::{Frictions, SurfaceRecord};
 pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE,

@@ -581,6 +581,28 @@ pub fn read_bytes(bytes: &[u8], name: &str, options: &ReadOptions) -> Result<Top
     read_from(&cx, &mut Cursor::new(bytes), len, options)
 }
 
+/// Reads with `read` ([`read_file`] or [`read_bytes`] on one file) and
+/// the front ends' rule for an interval given alone: `dy` defaults to `dx`
+/// for a map whose file gives no dy, and a file's own dy is kept (the file
+/// is read again without it: only a `dy` given explicitly contradicts the
+/// file's, [`ReadError::Conflict`]).
+pub fn read_dy_defaulting_to_dx(
+    options: &ReadOptions,
+    read: impl Fn(&ReadOptions) -> Result<Topography, ReadError>,
+) -> Result<Topography, ReadError> {
+    if options.dy.is_some() || options.dx.is_none() {
+        return read(options);
+    }
+    let square = ReadOptions {
+        dy: options.dx,
+        ..options.clone()
+    };
+    match read(&square) {
+        Err(ReadError::Conflict { name: "dy", .. }) => read(options),
+        read => read,
+    }
+}
+
 /// The units in the options are finite and positive.
 fn check_options(cx: &Ctx, options: &ReadOptions) -> Result<(), ReadError> {
     for (name, value) in [("z_unit", options.z_unit), ("xy_unit", options.xy_unit)] {

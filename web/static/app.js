@@ -1,0 +1,396 @@
+// The page: options in the form and the URL, a file in, the worker's
+// results out (tables, plots, downloads). The analysis itself is the
+// library's (worker.js → pkg/, WebAssembly); nothing here computes.
+
+const $ = (id) => document.getElementById(id);
+const form = $('options');
+const PRESETS = {
+  // docs/REFERENCE.md's worked example.
+  steel: { e1: '200e9', nu1: '0.3', e2: '200e9', nu2: '0.3', hardness: '2e9', delta_gamma: '0.3', epsilon: '0.4e-9' },
+  // The README's aluminium pin on a nickel-coated disk.
+  'al-ni': { e1: '70e9', nu1: '0.33', e2: '200e9', nu2: '0.31', hardness: '1e9', delta_gamma: '0.5', epsilon: '0.4e-9' },
+};
+
+let worker = null;
+let busy = false;
+let names = null;
+let version = '';
+let file = null; // { name, bytes: ArrayBuffer }
+let run = 0; // the current analysis; older results are dropped
+let started = 0;
+let result = null;
+let extra = {}; // URL keys the form has no field for: the library refuses them by name
+const plots = {};
+
+function startWorker() {
+  worker = new Worker('worker.js', { type: 'module' });
+  worker.onmessage = ({ data }) => handle(data);
+  worker.onerror = (e) => showError(`the page's worker failed: ${e.message}`);
+}
+
+function status(text, progress) {
+  $('status-text').textContent = text;
+  const p = $('progress');
+  if (progress === undefined) {
+    p.hidden = true;
+  } else {
+    p.hidden = false;
+    if (progress === null) p.removeAttribute('value');
+    else { p.max = progress[1]; p.value = progress[0]; }
+  }
+}
+
+function showError(message) {
+  const e = $('error');
+  e.textContent = message ? `error: ${message}` : '';
+  e.hidden = !message;
+  if (message) status('');
+}
+
+// The options: the form's non-empty fields and the URL's unknown keys.
+function options() {
+  const o = { ...extra };
+  for (const el of form.elements) {
+    if (el.name && el.value.trim() !== '') o[el.name] = el.value.trim();
+  }
+  return o;
+}
+
+function writeUrl() {
+  const q = new URLSearchParams(options()).toString();
+  history.replaceState(null, '', q ? `?${q}` : location.pathname);
+}
+
+function readUrl() {
+  extra = {};
+  for (const [key, value] of new URLSearchParams(location.search)) {
+    const el = form.elements.namedItem(key);
+    if (!el) { extra[key] = value; continue; }
+    if (el.tagName === 'SELECT' && ![...el.options].some((o) => o.value === value)) {
+      el.add(new Option(value, value)); // the library names the valid ones
+    }
+    el.value = value;
+  }
+}
+
+function fillSelects() {
+  for (const el of form.querySelectorAll('select[data-names]')) {
+    el.replaceChildren(new Option('(default)', ''));
+    for (const n of names[el.dataset.names]) el.add(new Option(n, n));
+  }
+  const ext = names.formats.map((f) => `${f.description} (${f.extensions.map((e) => '.' + e).join(', ')})`);
+  $('formats').textContent = `Formats: ${ext.join('; ')}.`;
+}
+
+function analyse() {
+  writeUrl();
+  if (!file || !names) return;
+  if (busy) { worker.terminate(); startWorker(); } // drop a scan still running
+  busy = true;
+  run += 1;
+  started = performance.now();
+  showError('');
+  status(`analysing ${file.name}…`, null);
+  worker.postMessage({ id: run, bytes: file.bytes.slice(0), name: file.name, options: options() });
+}
+
+async function openFile(f) {
+  started = performance.now();
+  file = { name: f.name, bytes: await f.arrayBuffer() };
+  analyse();
+}
+
+function handle(m) {
+  if (m.type === 'ready') {
+    names = m.names;
+    version = m.version;
+    $('version').textContent = version;
+    fillSelects();
+    readUrl();
+    status('open a surface file');
+    if (file) analyse();
+    return;
+  }
+  if (m.id !== run) return;
+  switch (m.type) {
+    case 'error':
+      busy = false;
+      showError(m.message);
+      if (/gives no sampling interval/.test(m.message)) form.elements.namedItem('dx').focus();
+      $('results').hidden = true;
+      $('record').textContent = '';
+      break;
+    case 'result':
+      result = m;
+      showResult(m);
+      requestAnimationFrame(() => {
+        $('timing').textContent = `(read, analysed and μ(F) drawn in ${Math.round(performance.now() - started)} ms)`;
+        document.body.dataset.drawn = String(run);
+      });
+      status('spectra and histogram…', null);
+      break;
+    case 'curves':
+      result.histogram = m.histogram;
+      result.psd = m.psd;
+      drawHistogram(m.histogram);
+      drawPsd(m.psd);
+      status('scan over λs…', null);
+      break;
+    case 'progress':
+      status(`scan over λs: ${m.done} of ${m.total}`, [m.done, m.total]);
+      break;
+    case 'scan':
+      busy = false;
+      result.scan = m.scan;
+      drawScan(m.scan);
+      status(`done: ${file.name}`);
+      document.body.dataset.done = String(run);
+      break;
+  }
+}
+
+const fmt = (v) => (v === null || v === undefined ? '–' : typeof v === 'number' ? Number(v.toPrecision(6)).toString() : String(v));
+
+function showResult(m) {
+  const r = JSON.parse(m.record);
+  $('results').hidden = false;
+  $('record').textContent = m.record;
+  $('command').textContent = m.command;
+  const w = $('warnings');
+  w.replaceChildren(...m.warnings.map((t) => Object.assign(document.createElement('li'), { textContent: t })));
+  const s = r.surface;
+  const rows = [
+    ['σ (Sq)', s.sigma, 'm'], ['Sk (Ssk)', s.skewness, ''], ['K (Sku)', s.kurtosis, ''],
+    ['m2', s.m2, ''], ['m4', s.m4, '1/m²'], ['α (bandwidth)', s.alpha, ''],
+    ['η (summit density)', s.eta, '1/m²'], ['R (summit radius)', s.radius, 'm'], ['β = ηRσ', s.beta, ''],
+    ['Δx', s.dx, 'm'], ['Δy', s.dy, 'm'], ['scan size x', s.size_x, 'm'], ['scan size y', s.size_y, 'm'],
+    ['λs', s.lambda_s, 'm'], ['λc', s.lambda_c, 'm'],
+  ];
+  if (r.model) {
+    const p = r.model;
+    rows.push(['ψ', p.psi, ''], ['θ', p.theta, ''], ['β (model)', p.beta, ''], ['ε*', p.eps_star, ''],
+      ['heights', `${p.distribution}`, '']);
+  }
+  if (r.friction) {
+    const f = r.friction;
+    rows.push(['F* = F/(Aₙ H)', f.f_star, ''], ['μ', f.mu, ''],
+      f.friction_force !== undefined && f.friction_force !== null ? ['Q = μF', f.friction_force, 'N'] : ['μF/Aₙ', f.friction_stress, 'Pa'],
+      ['h* (separation/σ)', f.h_star, '']);
+  }
+  $('stats').replaceChildren(...rows.map(([k, v, u]) => {
+    const tr = document.createElement('tr');
+    tr.innerHTML = '<td></td><td class="v"></td><td></td>';
+    tr.children[0].textContent = k;
+    tr.children[1].textContent = fmt(v);
+    tr.children[2].textContent = u;
+    return tr;
+  }));
+  drawMap(m.map, s);
+  drawLoad(m.load, r.friction);
+  link('download-json', `${file.name}.json`, m.record + '\n', 'application/json');
+  link('download-load', `${file.name}.mu-load.csv`,
+    csv([`load_${m.load.unit === 'Pa' ? 'pa' : 'n'}`, 'mu'], [m.load.load, m.load.mu]), 'text/csv');
+  for (const id of ['download-scan', 'download-psd', 'download-histogram']) $(id).removeAttribute('href');
+}
+
+// CSV with a provenance header: the library's version, the file and every
+// option (the equivalent command line).
+function csv(header, columns) {
+  const lines = [
+    `# ke-friction ${version} (web page, WebAssembly)`,
+    `# file: ${file.name}`,
+    `# options: ${JSON.stringify(options())}`,
+    `# command: ${result.command}`,
+    header.join(','),
+  ];
+  const n = columns.length ? columns[0].length : 0;
+  for (let i = 0; i < n; i++) lines.push(columns.map((c) => (c[i] === null || c[i] === undefined ? '' : String(c[i]))).join(','));
+  return lines.join('\n') + '\n';
+}
+
+function link(id, name, text, type) {
+  const a = $(id);
+  if (a.href.startsWith('blob:')) URL.revokeObjectURL(a.href);
+  a.href = URL.createObjectURL(new Blob([text], { type }));
+  a.download = name;
+}
+
+// A perceptual colour map (viridis' ends and three stops between).
+const STOPS = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+function colour(t) {
+  const x = Math.min(Math.max(t, 0), 1) * (STOPS.length - 1);
+  const k = Math.min(Math.floor(x), STOPS.length - 2);
+  const f = x - k;
+  return STOPS[k].map((c, i) => Math.round(c + f * (STOPS[k + 1][i] - c)));
+}
+
+function drawMap(map, s) {
+  const canvas = $('map');
+  const w = Math.ceil(map.nx / map.step);
+  const h = Math.ceil(map.ny / map.step);
+  let lo = Infinity, hi = -Infinity;
+  for (const z of map.z) if (!Number.isNaN(z)) { lo = Math.min(lo, z); hi = Math.max(hi, z); }
+  const span = hi > lo ? hi - lo : 1;
+  canvas.width = w;
+  canvas.height = h;
+  const ctx = canvas.getContext('2d');
+  const img = ctx.createImageData(w, h);
+  for (let k = 0; k < map.z.length; k++) {
+    const z = map.z[k];
+    const [r, g, b] = Number.isNaN(z) ? [255, 255, 255] : colour((z - lo) / span);
+    img.data.set([r, g, b, 255], 4 * k);
+  }
+  ctx.putImageData(img, 0, 0);
+  canvas.style.height = map.ny === 1 ? '40px' : `${Math.round(400 * Math.min(1, (s.size_y ?? 0) / s.size_x || 1))}px`;
+  const bar = $('colorbar');
+  const bctx = bar.getContext('2d');
+  for (let y = 0; y < bar.height; y++) {
+    const [r, g, b] = colour(1 - y / (bar.height - 1));
+    bctx.fillStyle = `rgb(${r},${g},${b})`;
+    bctx.fillRect(0, y, bar.width, 1);
+  }
+  const um = (v) => `${fmt(v * 1e6)} µm`;
+  $('colorbar-labels').replaceChildren(...[hi, (hi + lo) / 2, lo].map((v) => Object.assign(document.createElement('span'), { textContent: um(v) })));
+  $('map-size').textContent = `${map.nx} × ${map.ny} points, ${um(s.size_x)}${s.size_y ? ' × ' + um(s.size_y) : ''}` +
+    (map.step > 1 ? ` (every ${map.step}th point shown)` : '');
+}
+
+// Tick labels: plain for moderate numbers, 1e-6 style for the rest; on a
+// log axis only the decades (uPlot passes the minor ticks too).
+const tick = (v) => (v === 0 ? '0' : Math.abs(Math.log10(Math.abs(v))) >= 3
+  ? v.toExponential(0) : String(Number(v.toPrecision(3))));
+const ticks = (u, vs, axis) => {
+  const log = u.scales[u.axes[axis].scale].distr === 3;
+  return vs.map((v) => (v === null ? null : log && Math.abs(Math.log10(v) - Math.round(Math.log10(v))) > 1e-9 ? '' : tick(v)));
+};
+
+function plot(id, opts, data) {
+  for (const axis of opts.axes ?? []) axis.values ??= ticks;
+  if (plots[id]) plots[id].destroy();
+  const el = $(id);
+  el.replaceChildren();
+  plots[id] = new uPlot({ width: 520, height: 300, ...opts }, data, el);
+}
+
+function message(id, text) {
+  if (plots[id]) { plots[id].destroy(); delete plots[id]; }
+  $(id).replaceChildren(Object.assign(document.createElement('p'), { className: 'note', textContent: text }));
+}
+
+function drawLoad(load, friction) {
+  if (!load.load.length) {
+    message('mu-load', 'give the materials and a load (force and area, or pressure) for μ');
+    return;
+  }
+  const unit = load.unit === 'Pa' ? 'pressure (Pa)' : 'normal force F (N)';
+  const given = load.unit === 'Pa' ? friction.pressure : friction.force;
+  plot('mu-load', {
+    scales: { x: { time: false, distr: 3 } },
+    axes: [{ label: unit }, { label: 'μ' }],
+    series: [{ label: unit }, { label: 'μ', stroke: '#1565c0', width: 2 }],
+    hooks: {
+      draw: [(u) => {
+        const x = u.valToPos(given, 'x', true), y = u.valToPos(friction.mu, 'y', true);
+        u.ctx.fillStyle = '#c62828';
+        u.ctx.beginPath(); u.ctx.arc(x, y, 5 * devicePixelRatio, 0, 2 * Math.PI); u.ctx.fill();
+      }],
+    },
+  }, [load.load, load.mu]);
+}
+
+function drawHistogram(h) {
+  if (h.error) { message('histogram', h.error); return; }
+  const micro = h.z.map((z) => z * 1e6);
+  const series = [{ label: 'height (µm)' },
+    { label: 'measured', stroke: '#555', fill: 'rgba(120,120,120,0.3)', paths: uPlot.paths.bars({ size: [1, Infinity] }) }];
+  const data = [micro, h.density.map((d) => d * 1e-6)];
+  for (const [name, colourName] of [['gaussian', '#2e7d32'], ['pearson', '#c62828']]) {
+    if (Array.isArray(h[name])) {
+      series.push({ label: name, stroke: colourName, width: 2 });
+      data.push(h[name].map((d) => d * 1e-6));
+    }
+  }
+  plot('histogram', { scales: { x: { time: false } }, axes: [{ label: 'height (µm)' }, { label: 'density (1/µm)' }], series }, data);
+  const fits = ['gaussian', 'pearson'].filter((n) => Array.isArray(h[n]));
+  link('download-histogram', `${file.name}.histogram.csv`,
+    csv(['z_m', 'density_per_m', ...fits.map((n) => `${n}_per_m`)], [h.z, h.density, ...fits.map((n) => h[n])]), 'text/csv');
+}
+
+function drawPsd(psd) {
+  if (psd.error) { message('psd', psd.error); $('download-psd').removeAttribute('href'); return; }
+  const names = Object.keys(psd);
+  // uPlot's log axes span ±16 decades: C (~1e-30 m³) is drawn in a unit
+  // 10^e that puts its largest value between 1 and 10.
+  const top = Math.max(...names.flatMap((n) => psd[n].c.filter((c) => c > 0)));
+  const e = Number.isFinite(top) ? Math.floor(Math.log10(top)) : 0;
+  // q = 0 (the mean) has no place on a log axis.
+  const tables = names.map((n) => {
+    const k = psd[n].q.map((q, i) => i).filter((i) => psd[n].q[i] > 0);
+    return [k.map((i) => psd[n].q[i]), k.map((i) => (psd[n].c[i] > 0 ? psd[n].c[i] / 10 ** e : null))];
+  });
+  const data = uPlot.join(tables);
+  const colours = ['#1565c0', '#2e7d32', '#c62828'];
+  plot('psd', {
+    scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },
+    axes: [{ label: 'q (rad/m)' }, { label: `C (10^${e} m³; m⁴ for the area)`, size: 60 }],
+    series: [{ label: 'q' }, ...names.map((n, i) => ({ label: n, stroke: colours[i % 3], width: 2, spanGaps: true }))],
+  }, data);
+  const rows = names.flatMap((n) => psd[n].q.map((q, i) => [n, q, psd[n].c[i]]));
+  link('download-psd', `${file.name}.psd.csv`, csv(['direction', 'q', 'c'], [0, 1, 2].map((k) => rows.map((r) => r[k]))), 'text/csv');
+}
+
+function drawScan(scan) {
+  if (scan.error) { message('scan', scan.error); return; }
+  const rows = scan.rows;
+  const col = (k) => rows.map((r) => (typeof r[k] === 'number' ? r[k] : null));
+  const lambda = col('lambda_s');
+  const cutoff = scan.cutoff;
+  const series = [{ label: 'λs (m)' }, { label: 'β', stroke: '#2e7d32', width: 2, scale: 'r' }];
+  const data = [lambda, col('beta')];
+  if (rows.some((r) => typeof r.psi === 'number')) { series.push({ label: 'ψ', stroke: '#6a1b9a', width: 2, scale: 'r' }); data.push(col('psi')); }
+  if (rows.some((r) => typeof r.mu === 'number')) { series.push({ label: 'μ', stroke: '#1565c0', width: 2, scale: 'mu' }); data.push(col('mu')); }
+  plot('scan', {
+    scales: { x: { time: false, distr: 3 }, r: { distr: 3 }, mu: {} },
+    axes: [{ label: 'λs (m)' }, { scale: 'mu', label: 'μ' }, { scale: 'r', side: 1, label: 'β, ψ', grid: { show: false } }],
+    series,
+    hooks: {
+      drawClear: [(u) => {
+        if (cutoff === null || cutoff === undefined) return;
+        const x0 = Math.max(u.valToPos(cutoff, 'x', true), u.bbox.left);
+        u.ctx.fillStyle = 'rgba(46,125,50,0.10)';
+        u.ctx.fillRect(x0, u.bbox.top, u.bbox.left + u.bbox.width - x0, u.bbox.height);
+      }],
+    },
+  }, data);
+  const names = series.slice(1).map((s) => ({ 'β': 'beta', 'ψ': 'psi', 'μ': 'mu' })[s.label]);
+  link('download-scan', `${file.name}.scan.csv`,
+    csv(['lambda_s', 'reliable', ...names, 'error'],
+      [lambda, rows.map((r) => r.reliable), ...names.map(col), rows.map((r) => (r.error ? JSON.stringify(r.error) : ''))]), 'text/csv');
+}
+
+// Events.
+$('file').addEventListener('change', (e) => { if (e.target.files[0]) openFile(e.target.files[0]); });
+$('example').addEventListener('click', async () => {
+  started = performance.now();
+  const response = await fetch('example.x3p');
+  file = { name: 'example.x3p', bytes: await response.arrayBuffer() };
+  analyse();
+});
+const drop = $('drop');
+drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('over'); });
+drop.addEventListener('dragleave', () => drop.classList.remove('over'));
+drop.addEventListener('drop', (e) => {
+  e.preventDefault();
+  drop.classList.remove('over');
+  if (e.dataTransfer.files[0]) openFile(e.dataTransfer.files[0]);
+});
+form.addEventListener('submit', (e) => { e.preventDefault(); analyse(); });
+form.addEventListener('change', (e) => { if (e.target.name) analyse(); });
+$('preset').addEventListener('change', (e) => {
+  const p = PRESETS[e.target.value];
+  if (!p) return;
+  for (const [k, v] of Object.entries(p)) form.elements.namedItem(k).value = v;
+  analyse();
+});
+
+startWorker();

@@ -1,0 +1,45 @@
+// The analysis runs here, off the page's thread: the WebAssembly library
+// reads the file, takes the statistics and μ, then the curves; the scan
+// over λs (the slowest part) reports its progress.
+import init, { Analysis, names, version } from './pkg/ke_friction_web.js';
+
+const ready = init().then(() => {
+  postMessage({ type: 'ready', names: JSON.parse(names()), version: version() });
+});
+
+// At most this many points a side of the height map sent to the page.
+const MAP_SIDE = 512;
+
+onmessage = async ({ data }) => {
+  await ready;
+  const { id, bytes, name, options } = data;
+  let analysis;
+  try {
+    analysis = new Analysis(new Uint8Array(bytes), name, JSON.stringify(options));
+  } catch (e) {
+    postMessage({ type: 'error', id, message: String(e.message ?? e) });
+    return;
+  }
+  try {
+    const step = Math.max(1, Math.ceil(Math.max(analysis.nx(), analysis.ny()) / MAP_SIDE));
+    postMessage({
+      type: 'result', id,
+      record: analysis.record(),
+      warnings: JSON.parse(analysis.warnings()),
+      command: analysis.command(),
+      load: JSON.parse(analysis.mu_against_load()),
+      map: { nx: analysis.nx(), ny: analysis.ny(), step, z: analysis.heights(step) },
+    });
+    let histogram = null, psd = null;
+    try { histogram = JSON.parse(analysis.histogram(60)); } catch (e) { histogram = { error: String(e.message ?? e) }; }
+    try { psd = JSON.parse(analysis.psd()); } catch (e) { psd = { error: String(e.message ?? e) }; }
+    postMessage({ type: 'curves', id, histogram, psd });
+    let scan;
+    try {
+      scan = JSON.parse(analysis.scan((done, total) => postMessage({ type: 'progress', id, done, total })));
+    } catch (e) { scan = { error: String(e.message ?? e) }; }
+    postMessage({ type: 'scan', id, scan });
+  } finally {
+    analysis.free();
+  }
+};
