@@ -209,18 +209,6 @@ crate::named!(
 );
 
 impl LengthUnit {
-    /// The unit an instrument's file writes as `symbol` (surrounding
-    /// spaces ignored): `km`, `m`, `mm`, `µm` (the micro sign or the Greek
-    /// mu), `um`, `~m` and `æm` (old code pages' micro sign), `nm`, `Å`,
-    /// `A`, `pm`, or one of the names of [`LengthUnit::ALL`].
-    pub fn from_symbol(symbol: &str) -> Option<LengthUnit> {
-        match symbol.trim() {
-            "\u{b5}m" | "\u{3bc}m" | "~m" | "\u{e6}m" => Some(LengthUnit::Um),
-            "\u{c5}" | "A" => Some(LengthUnit::Angstrom),
-            other => LengthUnit::from_name(other),
-        }
-    }
-
     /// Metres per unit.
     pub const fn metres(self) -> f64 {
         match self {
@@ -236,17 +224,20 @@ impl LengthUnit {
     }
 
     /// The other spellings of the units a file or a SurfaceTopography
-    /// object may give (µ as the micro sign or the Greek letter, Å or A),
-    /// beside the names.
-    pub const SYMBOLS: [(&'static str, LengthUnit); 4] = [
+    /// object may give (µ as the micro sign or the Greek letter, or as old
+    /// code pages' `~m` and `æm`; Å or A), beside the names.
+    pub const SYMBOLS: [(&'static str, LengthUnit); 6] = [
         ("\u{b5}m", LengthUnit::Um),
         ("\u{3bc}m", LengthUnit::Um),
+        ("~m", LengthUnit::Um),
+        ("\u{e6}m", LengthUnit::Um),
         ("\u{c5}", LengthUnit::Angstrom),
         ("A", LengthUnit::Angstrom),
     ];
 
-    /// The unit called `text`: one of the names (`um`) or of the
-    /// [`SYMBOLS`](Self::SYMBOLS) (`µm`), or an error listing the names.
+    /// The unit called `text` (surrounding spaces ignored): one of the
+    /// names (`um`) or of the [`SYMBOLS`](Self::SYMBOLS) (`µm`), or an
+    /// error listing the names.
     ///
     /// ```
     /// use ke_friction::LengthUnit;
@@ -256,6 +247,7 @@ impl LengthUnit {
     /// # Ok::<(), ke_friction::NameError>(())
     /// ```
     pub fn from_symbol(text: &str) -> Result<LengthUnit, crate::NameError> {
+        let text = text.trim();
         match Self::SYMBOLS.iter().find(|(s, _)| *s == text) {
             Some(&(_, unit)) => Ok(unit),
             None => <LengthUnit as crate::Named>::parse(text),

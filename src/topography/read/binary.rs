@@ -172,5 +172,5 @@ pub(super) fn text(bytes: &[u8]) -> String {
 /// `"µm"` with either micro sign, `"um"`, `"nm"`, `"Å"`, ...), by
 /// [`LengthUnit::from_symbol`].
 pub(super) fn metres_per(unit: &str) -> Option<f64> {
-    LengthUnit::from_symbol(unit).map(LengthUnit::metres)
+    LengthUnit::from_symbol(unit).ok().map(LengthUnit::metres)
 }
