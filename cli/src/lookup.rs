@@ -108,17 +108,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
     Ok(())
 }
 
-/// Refuses a distribution other than the table's (as the SI inputs'
-/// β, ν, ε* are refused when they are not the table's).
+/// Refuses a distribution other than the table's (the core's
+/// [`Table::check_constants`], as for the SI inputs' β, ν, ε*).
 fn check_distribution(flags: &DistributionArgs, table: &Table) -> Result<(), Failure> {
     if !flags.any() {
         return Ok(());
     }
     let asked = flags.distribution()?;
-    let held = &table.domain().constants.distribution;
-    if &asked == held {
-        return Ok(());
-    }
     let flag = if flags.heights.is_some() {
         "--heights"
     } else if flags.kurtosis.is_some() {
@@ -128,9 +124,10 @@ fn check_distribution(flags: &DistributionArgs, table: &Table) -> Result<(), Fai
     } else {
         "--distribution"
     };
-    Err(Failure::input(format!(
-        "{flag}: the table holds {held} heights, not {asked} (build a table for them with kefric build, or use kefric eval)"
-    )))
+    let constants = table.domain().constants.clone().distribution(asked);
+    table
+        .check_constants(&constants)
+        .map_err(|e| Failure::input(format!("{flag}: {e}")))
 }
 
 /// ψ and θ from the flags, or from the SI inputs (whose β, ν and ε* must
@@ -151,20 +148,22 @@ fn point(args: &Args, table: &Table) -> Result<(f64, f64), Failure> {
         )));
     }
     let p = args.si.params()?;
-    let d = table.domain();
-    for (name, flag, ours, table_value) in [
-        ("beta", "--density", p.constants.beta, d.constants.beta),
-        ("nu", "--nu1", p.constants.nu, d.constants.nu),
-        ("eps_star", "--epsilon", p.constants.eps_star, d.constants.eps_star),
-    ] {
-        if (ours - table_value).abs() > 1e-9 * table_value.abs() {
-            return Err(Failure::input(format!(
-                "{flag}: the SI inputs give {name} = {}, the table holds {name} = {} (use kefric eval, or a table built for it)",
-                Shortest(ours),
-                Shortest(table_value)
-            )));
-        }
-    }
+    // The SI inputs give β, ν, ε*; the rest is the table's (the
+    // distribution flags are checked by check_distribution).
+    let held = &table.domain().constants;
+    let constants = held
+        .clone()
+        .beta(p.constants.beta)
+        .nu(p.constants.nu)
+        .eps_star(p.constants.eps_star);
+    table.check_constants(&constants).map_err(|e| {
+        let flag = match e.name {
+            "beta" => "--density",
+            "nu" => "--nu1",
+            _ => "--epsilon",
+        };
+        Failure::input(format!("{flag}: the SI inputs give {e}"))
+    })?;
     Ok((p.psi, p.theta))
 }
 

@@ -27,14 +27,31 @@ C compiles alone with the compiler Abaqus uses.
       SUBROUTINE FRIC_COEF(fCoef, fCoefDeriv, nBlock, nProps, nTemp,
      *   nFields, iData, rData, surfInt, surfSec, surfMain, props,
      *   slipData, pressure, tempAvg, fieldAvg)
-      USE, INTRINSIC :: ISO_C_BINDING
-      USE, INTRINSIC :: IEEE_ARITHMETIC, ONLY: IEEE_IS_NAN
       INCLUDE 'ABA_PARAM.INC'
       DIMENSION fCoef(nBlock,2), fCoefDeriv(nBlock,20,2),
      *   props(nProps), slipData(nBlock,6), pressure(nBlock),
      *   tempAvg(nBlock), fieldAvg(nBlock,nFields)
       DIMENSION iData(*), rData(*)
       CHARACTER*80 surfInt, surfSec, surfMain
+C     The include must come first, so the C calls (which need USE
+C     statements, and those must precede the include's IMPLICIT) live in
+C     KEF_FRIC_COEF, with every argument's type explicit.
+      CALL KEF_FRIC_COEF(fCoef, fCoefDeriv, nBlock, nProps, props,
+     *   pressure)
+      RETURN
+      END
+C
+C The work of FRIC_COEF: mu into fCoef(:,1), dmu/dp into
+C fCoefDeriv(:,2,1), the other derivatives 0.
+      SUBROUTINE KEF_FRIC_COEF(fCoef, fCoefDeriv, nBlock, nProps, props,
+     *   pressure)
+      USE, INTRINSIC :: ISO_C_BINDING
+      USE, INTRINSIC :: IEEE_ARITHMETIC, ONLY: IEEE_IS_NAN
+      IMPLICIT NONE
+      INTEGER nBlock, nProps
+      REAL(C_DOUBLE) fCoef(nBlock,2), fCoefDeriv(nBlock,20,2),
+     *   props(nProps), pressure(nBlock)
+      INTEGER i_fDer_SlipRateMag, i_fDer_Pressure, i_fDer_Temperature
       PARAMETER (i_fDer_SlipRateMag = 1, i_fDer_Pressure = 2,
      *   i_fDer_Temperature = 3)
       INTERFACE
@@ -74,6 +91,7 @@ C compiles alone with the compiler Abaqus uses.
       TYPE(C_PTR) law
       INTEGER(C_INT) code
       INTEGER(C_SIZE_T) nNan
+      INTEGER k
       REAL(C_DOUBLE) pMin, pMax, hard, muMin
 C
       law = kef_law_from_props(INT(nProps, C_SIZE_T), props)
@@ -108,6 +126,7 @@ C Writes the library's message for the failed call WHAT and stops the
 C analysis with Abaqus' XIT.
       SUBROUTINE KEF_ABAQUS_STOP(what)
       USE, INTRINSIC :: ISO_C_BINDING
+      IMPLICIT NONE
       CHARACTER*(*) what
       INTERFACE
         FUNCTION kef_last_error() BIND(C, NAME='kef_last_error')

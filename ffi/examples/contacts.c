@@ -1,11 +1,13 @@
 /* Many contacts of one surface pair: a curve built once, looked up in the
  * inner loop. Prints a few mu values (machine-readable "mu" lines) and the
- * measured time per lookup.
+ * measured time per lookup; then a friction law of the contact pressure
+ * ("law" lines).
  *
  *   cc -O2 -I ffi/include ffi/examples/contacts.c target/release/libkefriction.a \
  *      -lpthread -ldl -lm -o contacts && ./contacts
  */
 #include <kefriction.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -107,5 +109,22 @@ int main(void) {
     free(mu);
     kef_curve_free(curve);
     kef_table_free((kef_table *)table); /* the default table: a no-op */
+
+    /* A simulator's nodes: the friction law of the contact pressure in Pa
+     * (H = 1 GPa, the default range 1e4..1e8 Pa, clamped outside it). An
+     * open node (p <= 0) has no mu: NaN in the batch's NaN form. */
+    kef_law *law = kef_law_new(NULL, 1.0, 0.001, 1e9, 0.0, 0.0, KEF_LAW_CLAMP);
+    if (law == NULL) {
+        fprintf(stderr, "kef_law_new: %s\n", kef_last_error());
+        return 1;
+    }
+    double p[4] = {1e5, 1e7, 0.0, 1e9}, law_mu[4], dmu_dp[4];
+    size_t open_nodes = 0;
+    uint64_t clamped = 0;
+    check(kef_law_mu_and_derivative_batch_nan(law, 4, p, law_mu, dmu_dp, &open_nodes), "kef_law batch");
+    check(kef_law_clamped(law, 0, &clamped), "kef_law_clamped");
+    for (int i = 0; i < 4; i++) printf("law p=%g mu=%.9g dmu_dp=%.6g\n", p[i], law_mu[i], dmu_dp[i]);
+    printf("law: %zu open node(s), %llu clamped\n", open_nodes, (unsigned long long)clamped);
+    kef_law_free(law);
     return 0;
 }

@@ -72,6 +72,41 @@
 // outweighs the contact load), or no positive μ.
 #define KEF_ERR_NO_MU 6
 
+// Warning bit: F* below the range the paper covers (1e-5 <= F* <= 0.1):
+// extrapolated; so light a load touches only the highest summits.
+#define KEF_WARN_F_STAR_BELOW_RANGE (1 << 0)
+
+// Warning bit: F* above the paper's range (0.1 < F* <= 1; F* > 1 is
+// KEF_ERR_DOMAIN): extrapolated.
+#define KEF_WARN_F_STAR_ABOVE_RANGE (1 << 1)
+
+// Warning bit: h* < 0 (the mean planes overlap): extrapolated.
+#define KEF_WARN_NEGATIVE_SEPARATION (1 << 2)
+
+// Warning bit: mu > 1: adhesion, not the load, dominates.
+#define KEF_WARN_ADHESION_DOMINATED (1 << 3)
+
+// Warning bit: fewer than 10 asperities in contact (not set by the C
+// API, which knows no area; reserved with the core's list).
+#define KEF_WARN_FEW_ASPERITIES (1 << 4)
+
+// Warning bit: spectral derivatives of a non-periodic surface (the
+// surface statistics; reserved with the core's list).
+#define KEF_WARN_NON_PERIODIC (1 << 5)
+
+// Warning bit: bandwidth alpha < 1.5 (surface statistics; reserved).
+#define KEF_WARN_LOW_BANDWIDTH (1 << 6)
+
+// Warning bit: an anisotropic surface (surface statistics; reserved).
+#define KEF_WARN_ANISOTROPY (1 << 7)
+
+// Warning bit: two surfaces sampled at different intervals (reserved).
+#define KEF_WARN_INTERVAL_MISMATCH (1 << 8)
+
+// Warning bit: scales below the instrument's reliability cut-off
+// (reserved).
+#define KEF_WARN_UNRELIABLE_SCALE (1 << 9)
+
 // Out-of-range policy of a kef_law: a positive pressure outside
 // [p_min, p_max] gets mu at the nearest end and dmu/dp = 0, and is
 // counted (kef_law_clamped). No error path, no message.
@@ -133,6 +168,24 @@ extern "C" {
 // call is safe to read, and holds the last message formatted. A message
 // longer than 1023 bytes is cut.
 const char *kef_last_error(void);
+
+// The warnings of this thread's calls since the last
+// kef_clear_warnings (or the thread's start): a mask of KEF_WARN_* bits,
+// 0 if none. The direct integrations (kef_model_mu, kef_model_mu_with)
+// set them for a result they return (F* outside 1e-5..0.1, h* < 0,
+// mu > 1); a call that fails sets none.
+int kef_warnings(void);
+
+// Clears this thread's warnings (kef_warnings() is 0 after it).
+void kef_clear_warnings(void);
+
+// The message of this thread's latest warning of kind `kind` (one
+// KEF_WARN_* bit), e.g. "F* = 1e-7 is below the range the paper covers
+// ...": formatted by this call. "" when none was recorded since
+// kef_clear_warnings, or `kind` is not one bit the calls set. Never NULL;
+// do not free it; valid until the next kef_warning_message call on the
+// thread.
+const char *kef_warning_message(int kind);
 
 // The library's version ("MAJOR.MINOR.PATCH", the crate's version), a
 // static string: never NULL, not to free.
@@ -467,7 +520,9 @@ void kef_curve_free(kef_curve *curve);
 
 // μ of the Kogut–Etsion model by direct integration (microseconds) at
 // F* with β, ν, ε* given (the default fit and model):
-// kef_model_mu_with with these constants.
+// kef_model_mu_with with these constants. Both set the thread's
+// warnings (kef_warnings) of the result: F* outside 1e-5..0.1, h* < 0,
+// mu > 1.
 //
 // # Safety
 // `mu` is NULL or writable.
@@ -481,7 +536,8 @@ int kef_model_mu(double psi,
 
 // μ of the model with `constants` (NULL: the defaults) by direct
 // integration (microseconds) at (ψ, θ, F*). KEF_ERR_DOMAIN for a
-// parameter out of range or an F* the model cannot reach, KEF_ERR_ARGUMENT
+// parameter out of range, F* > 1 (a pressure above the hardness) or an F*
+// the model cannot reach, KEF_ERR_ARGUMENT
 // for a NaN or ±inf or a NULL `mu`, KEF_ERR_NO_MU where the model has no
 // μ (F* <= 0 at that separation), KEF_ERR_INTERNAL if the root search
 // does not converge.
@@ -766,6 +822,19 @@ int kef_constants_set_distribution(kef_constants *constants,
                                    int family,
                                    double skewness,
                                    double kurtosis);
+
+// kef_constants_set_distribution with the family by its name, the
+// library's record name `distribution`: "gaussian", "pearson" or
+// "weibull" ("empirical" is set by kef_constants_set_heights).
+// KEF_ERR_ARGUMENT for NULL or an unknown name (the message lists the
+// names); otherwise as kef_constants_set_distribution.
+//
+// # Safety
+// As kef_constants_set_beta; `family` NULL or a NUL-terminated string.
+int kef_constants_set_distribution_named(kef_constants *constants,
+                                         const char *family,
+                                         double skewness,
+                                         double kurtosis);
 
 // Sets the asperity heights' distribution to the empirical (kernel)
 // density of `n` measured heights (any unit; NaN entries are skipped as

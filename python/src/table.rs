@@ -163,6 +163,12 @@ impl TableCore {
         .map_err(|failure| failure.into_pyerr(py))
     }
 
+    /// Refuses a model whose constants are not the table's (a
+    /// `ValueError` naming the first that differs, with both values).
+    fn check_constants(&self, model: PyRef<'_, crate::model::ModelCore>) -> PyResult<()> {
+        self.table.check_constants(&model.0.params().constants).map_err(raise)
+    }
+
     fn curve(&self, psi: f64, theta: f64) -> PyResult<CurveCore> {
         self.table.curve(psi, theta).map(CurveCore).map_err(raise)
     }

@@ -191,3 +191,18 @@ def test_a_table_interpolates_within_its_stated_error(law, model):
         law.table(rows=-3)
     with pytest.raises(ValueError, match="tolerance"):
         law.table(tolerance=0.0)
+
+
+def test_from_surface_is_the_surfaces_model_at_p_over_h():
+    # A smooth synthetic map (the CLI's surface tests' shape), dx = 2 um.
+    n = 64
+    y, x = np.mgrid[0:n, 0:n].astype(float)
+    w = np.sin(0.31 * x + 0.7) + np.cos(0.23 * y) + 0.7 * np.sin(0.17 * x - 0.29 * y + 0.7) \
+        + 0.5 * np.cos(0.41 * x + 0.37 * y)
+    s = kf.Surface.from_heights(0.2e-6 * (w + 0.15 * w * w), 2e-6)
+    materials = dict(e1=70e9, nu1=0.33, e2=200e9, nu2=0.31, hardness=1e9, delta_gamma=0.5, epsilon=0.4e-9)
+    law = kf.FrictionLaw.from_surface(s, **materials, pressure_range=(1e5, 1e7))
+    model = s.model(**materials)
+    assert law.params == model.params and law.hardness == 1e9
+    p = np.array([1e5, 1e6, 1e7])
+    assert np.max(np.abs(law.mu(p) / model.at_f_star(p / 1e9).mu - 1)) < LAW_REL

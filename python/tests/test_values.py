@@ -179,3 +179,23 @@ def test_params_from_physical_is_kefric_params():
         assert p[key] == pytest.approx(row[key], rel=SAME_REL), key
     assert (p["fit"], p["model"]) == (row["fit"], row["model"]) == (kf.DEFAULTS["fit"], kf.DEFAULTS["model"])
     assert kf.Model(**p).at_f_star(0.01).mu > 0
+
+
+def test_a_lookup_for_a_model_refuses_constants_the_table_was_not_built_for():
+    # Issue 38: psi, theta of a surface whose beta is 0.117 and whose
+    # heights are Pearson are answered by Table.mu with the table's
+    # constants (a wrong mu, silently); Table.mu_for checks them.
+    t = kf.Table.default()
+    assert t.mu_for(kf.Model(1.0, 0.001), 2e-4) == t.mu(1.0, 0.001, 2e-4)
+    f = np.array([1e-4, 1e-3, 1e-2])
+    assert np.array_equal(t.mu_for(kf.Model(2.0, 0.003), f), t.mu(2.0, 0.003, f))
+    measured = kf.Model(1.0, 0.001, beta=0.117, distribution="pearson", skewness=0.3, kurtosis=3.5)
+    with pytest.raises(ValueError, match=r"^beta = 0\.117, but the table holds beta = 0\.04"):
+        t.mu_for(measured, 2e-4)
+    with pytest.raises(ValueError, match=r"^distribution = pearson \(skewness 0\.3, kurtosis 3\.5\), but the table "
+                                         r"holds distribution = gaussian"):
+        t.mu_for(kf.Model(1.0, 0.001, distribution="pearson", skewness=0.3, kurtosis=3.5), 2e-4)
+    with pytest.raises(ValueError, match=r"^fit = as-printed, but the table holds fit = consistent"):
+        t.mu_for(kf.Model(1.0, 0.001, fit="as-printed"), 2e-4)
+    with pytest.raises(TypeError, match="model must be a ke_friction.Model"):
+        t.mu_for((1.0, 0.001), 2e-4)

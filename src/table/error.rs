@@ -95,7 +95,7 @@ impl LookupError {
     }
 }
 
-/// Constants other than a table's ([`Table::check_constants`]).
+/// Constants other than a table's ([`Table::check_constants`](super::Table::check_constants)).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("{name} = {given}, but the table holds {name} = {table}: it answers for its own constants only (build a table for these, or use a curve or the model)")]
 pub struct ConstantsMismatch {
@@ -116,7 +116,7 @@ impl crate::Classify for ConstantsMismatch {
 }
 
 /// What a batch does at an element it cannot answer (NaN, or outside the
-/// table's domain or the curve's range). Every batch function of [`Table`]
+/// table's domain or the curve's range). Every batch function of [`Table`](super::Table)
 /// and [`Curve`](crate::Curve) follows it, and the C and Python bindings
 /// hand it on rather than re-implement it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -232,7 +232,10 @@ fn the_format_is_chosen_by_extension_and_content() {
     assert_eq!(Format::detect("a.csv".as_ref(), b"1,2"), Format::TEXT);
     // The registry: names and extensions, each format once.
     let names: Vec<&str> = Format::all().map(Format::name).collect();
-    assert_eq!(names, ["x3p", "npy", "text", "matrix"]);
+    assert_eq!(
+        names,
+        ["x3p", "npy", "text", "matrix", "sur", "plu", "opd", "al3d", "metropro", "nanoscope", "nid"]
+    );
     for f in Format::all() {
         assert_eq!(Format::from_name(&f.name().to_uppercase()), Some(f));
         assert!(!f.description().is_empty());

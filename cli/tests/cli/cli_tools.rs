@@ -286,6 +286,25 @@ fn params_and_the_si_flags_give_the_librarys_numbers() {
     other[15] = "5e10";
     let o = kefric(&[&["lookup", "--f-star", "0.01"][..], &other].concat());
     assert_bad_input(&o, "--density");
+    // The core's refusal (Table::check_constants), naming both values.
+    assert_bad_input(&o, "but the table holds beta = 0.04");
+    let o = kefric(&[
+        "lookup",
+        "--psi",
+        "1",
+        "--theta",
+        "0.001",
+        "--f-star",
+        "0.01",
+        "--skewness",
+        "0.3",
+        "--kurtosis",
+        "3.5",
+    ]);
+    assert_bad_input(
+        &o,
+        "--kurtosis: distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds",
+    );
 }
 
 #[test]

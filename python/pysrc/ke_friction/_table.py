@@ -12,6 +12,7 @@ from . import _core
 from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
 from ._curve import Curve
 from ._errors import _located
+from ._model import Model
 
 _TABLE_ARGS = ("psi", "theta", "f_star")
 
@@ -87,7 +88,12 @@ class Table:
 
     def mu(self, psi: ArrayLike, theta: ArrayLike, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
            threads: Optional[int] = 1) -> Any:
-        """The static friction coefficient mu(psi, theta, F*), interpolated.
+        """The static friction coefficient mu(psi, theta, F*), interpolated,
+        with the table's constants (``info``: beta, nu, eps_star, fit,
+        model, distribution): psi and theta of a surface pair with other
+        constants give a wrong mu here, silently; :meth:`mu_for` takes the
+        pair's :class:`Model` and checks them (the path for a measured
+        surface).
 
         Parameters
         ----------
@@ -165,6 +171,29 @@ class Table:
         except Exception as e:
             raise _located(e, shape) from None
         return out.reshape(shape)[()]
+
+    def mu_for(self, model: Model, f_star: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
+               threads: Optional[int] = 1) -> Any:
+        """mu of ``model``'s surface pair (its psi and theta) at ``f_star``
+        from this table, after checking that the model's constants (beta,
+        nu, eps_star, fit, model, the heights' distribution) are the
+        table's: the documented path for a measured surface
+        (``Surface.model(...)``), whose constants are seldom the default
+        table's. :meth:`mu` with psi and theta alone assumes them.
+
+        Raises ValueError naming the first constant that differs and both
+        values, e.g. ``beta = 0.117, but the table holds beta = 0.04: ...``;
+        then as :meth:`mu` (``f_star`` broadcasts, ``out_of_domain`` and
+        ``threads`` as there).
+
+        >>> t = Table.default()
+        >>> t.mu_for(Model(1.0, 0.001), 0.01) == t.mu(1.0, 0.001, 0.01)
+        True
+        """
+        if not isinstance(model, Model):
+            raise TypeError(f"model must be a ke_friction.Model, not {type(model).__name__}")
+        self._core.check_constants(model._core)
+        return self.mu(model.psi, model.theta, f_star, out_of_domain=out_of_domain, threads=threads)
 
     @overload
     def mu_with_slope(self, psi: float, theta: float, f_star: float, *,
