@@ -166,6 +166,14 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let table = a.table.as_ref().map(|path| load_table(path.as_deref())).transpose()?;
             let range = a.f_star.as_deref().map(f_star_range).transpose()?;
             let page = figures::curve_page(&model, table.as_deref(), range).map_err(failure)?;
+            // The warnings `eval` gives at the ends of the range drawn.
+            if let Some((lo, hi)) = range {
+                let mut warnings = ke_friction::Warnings::new();
+                for c in [lo, hi].into_iter().filter_map(|f| model.at_f_star(f).ok()) {
+                    warnings.note_contact(&c);
+                }
+                crate::args::warn(&warnings);
+            }
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())

@@ -211,6 +211,16 @@ fn plot_curve_takes_an_f_star_range() {
     assert!(o.status.success(), "{}", stderr(&o));
     let svg = std::fs::read_to_string(&out).unwrap();
     assert!(svg.contains("<svg"));
+    // The range reaches beyond the paper's: warned, as eval warns.
+    assert!(
+        stderr(&o).contains("the worst: F* = 0.5 is above the range the paper covers"),
+        "{}",
+        stderr(&o)
+    );
+    let o = kefric(&[
+        "plot", "curve", "--psi", "1", "--theta", "0.003", "--f-star", "1e-4:2", "--out", &out,
+    ]);
+    crate::support::assert_bad_input(&o, "must be <= 1");
     let o = kefric(&[
         "plot", "curve", "--psi", "1", "--theta", "0.003", "--f-star", "0.5:0.1", "--out", &out,
     ]);

@@ -436,9 +436,13 @@ class Surface:
         ``sigma_s``, ``y_s``, the anisotropy ratios, the scan size
         ``size_x``, ``size_y`` (None for a profile), the filters' nesting
         indices ``lambda_s``, ``lambda_c`` (None where not applied), and
-        ``warnings`` (a list of ``{"kind", "message", ...}``; kind
-        ``"unreliable_scale"`` when a reliability cut-off is known and the
-        shortest scale analysed, lambda_s or 2 max(dx, dy), is below it)."""
+        ``warnings`` (a list of ``{"kind", "message", ...}``, kinds of
+        :data:`WARNING_KINDS`: ``"low_bandwidth"``, ``"anisotropy"``,
+        ``"non_periodic"`` for spectral derivatives of a surface whose
+        edges jump by more than its rms height, ``"unreliable_scale"`` when
+        a reliability cut-off is known and the shortest scale analysed,
+        lambda_s or 2 max(dx, dy), is below it; :meth:`model` and
+        :meth:`friction` warn them as :class:`ModelWarning`)."""
         return _Record(self._core.stats())
 
     @property
@@ -499,7 +503,9 @@ class Surface:
         material (Pa); delta_gamma: energy of adhesion (J/m^2); epsilon:
         intermolecular distance (m). ``fit`` and ``model`` as in
         :class:`Model`. A value out of range raises ValueError naming the
-        keyword (or, for psi, theta, ..., the parameter it gives)."""
+        keyword (or, for psi, theta, ..., the parameter it gives). The
+        surface's warnings (:attr:`stats`' ``warnings``) are warned as
+        :class:`ModelWarning`."""
         mats = _materials(dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, delta_gamma=delta_gamma,
                                epsilon=epsilon))
         for name, value in (("fit", fit), ("model", model)):

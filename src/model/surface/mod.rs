@@ -188,6 +188,31 @@ mod tests {
     use crate::params::Constants;
     use serde_json::Value;
 
+    /// The fraction of summits above d* (the count of contacts' factor):
+    /// for a general density, against a plain trapezoid of its pdf over
+    /// the standardised heights above d*/s (200,000 steps): within 1e-3,
+    /// ample for a warning at "fewer than 10".
+    #[test]
+    fn the_fraction_of_summits_in_contact_matches_the_density() {
+        let p = Params::new(1.0, 0.001).distribution(crate::HeightDistribution::pearson(0.6, 4.0).unwrap());
+        let surface = Surface::new(&p);
+        let density = p.constants.distribution.density().unwrap();
+        let s = sigma_s_ratio(p.constants.beta);
+        let (_, hi) = density.support();
+        for d in [-1.0, 0.0, 0.8, 2.0, 3.5] {
+            let (a, b) = (d / s, hi.min(40.0));
+            let n = 200_000;
+            let h = (b - a) / n as f64;
+            let mut sum = 0.5 * (density.pdf(a) + density.pdf(b));
+            for k in 1..n {
+                sum += density.pdf(a + k as f64 * h);
+            }
+            let want = sum * h;
+            let got = surface.contact_fraction(d);
+            assert!((got / want - 1.0).abs() < 1e-3, "d* = {d}: {got} vs {want}");
+        }
+    }
+
     impl Surface {
         /// `I^b[xa, xc]` (MODEL.md §4) with the same panels and rules as the
         /// model's own integrals.
