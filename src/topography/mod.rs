@@ -23,7 +23,9 @@ pub use read::{
     read_bytes, read_dy_defaulting_to_dx, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS,
 };
 pub use record::SurfaceRecord;
-pub use scale::{scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow};
+pub use scale::{
+    scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow, TIP_SAFETY_FACTOR,
+};
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,

@@ -152,6 +152,11 @@ pub fn scale_dependent_curvature(t: &Topography, distances: &[f64]) -> Result<Ve
     scale_dependent(t, distances, Order::Curvature)
 }
 
+/// The safety factor of [`tip_reliability_cutoff`] in the paper (Sanner
+/// et al. 2022) and SurfaceTopography's default: what `--tip-radius` and
+/// the web page use.
+pub const TIP_SAFETY_FACTOR: f64 = 0.5;
+
 /// The length below which the tip of a scanning probe of radius
 /// `tip_radius` (metres) distorts the data, or `None` if it does not at
 /// the smallest scale (SurfaceTopography's

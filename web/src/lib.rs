@@ -12,6 +12,7 @@
 use ke_friction::topography::{
     psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Derivative, Detrend, Format,
     ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
+    TIP_SAFETY_FACTOR,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
@@ -52,10 +53,6 @@ pub const KEYS: &[&str] = &[
 
 /// The seven material keys, in the order of [`Materials`]' fields.
 const MATERIALS: [&str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
-
-/// The safety factor of the tip-radius reliability cut-off (as
-/// `kefric surface --tip-radius` and SurfaceTopography's default).
-const TIP_SAFETY: f64 = 0.5;
 
 /// The loads of the μ-against-load curve: the given load times
 /// 10^(k/10) for k in this range (three decades below, one above).
@@ -208,7 +205,7 @@ impl Analysis {
                     Shortest(radius)
                 )),
                 (None, Some(radius)) => {
-                    tip_reliability_cutoff(&topography, radius, TIP_SAFETY).map_err(|e| e.to_string())
+                    tip_reliability_cutoff(&topography, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
                 }
                 (None, None) => Err("give --tip-radius or --resolution for the reliability cut-off".into()),
             }
