@@ -2,7 +2,7 @@
 //! --json` prints and the web page shows (`web/`), one definition with its
 //! field names (serde) for every front end.
 
-use super::{Derivative, Detrend, Surface, SurfaceStats};
+use super::{Derivative, Detrend, Metadata, Surface, SurfaceStats};
 use crate::{Friction, Params};
 
 /// One surface (or pair) analysed: the files, the options, the statistics
@@ -13,6 +13,9 @@ use crate::{Friction, Params};
 pub struct SurfaceRecord<'a> {
     /// The files as the user named them (a web page: the file names).
     pub files: Vec<String>,
+    /// What each file said about its measurement (instrument, date, ...).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub metadata: Vec<&'a Metadata>,
     /// The detrending of the statistics.
     pub detrend: Detrend,
     /// The derivative of the slope and curvature moments.
@@ -42,6 +45,7 @@ impl<'a> SurfaceRecord<'a> {
         let options = surface.options();
         SurfaceRecord {
             files,
+            metadata: surface.parts().iter().map(|(t, _)| t.metadata()).collect(),
             detrend: options.detrend,
             derivative: options.derivative,
             surface: surface.stats(),

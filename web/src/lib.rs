@@ -10,7 +10,7 @@
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Derivative, Detrend, Format,
+    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Channel, Derivative, Detrend, Format,
     ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
     TIP_SAFETY_FACTOR,
 };
@@ -30,6 +30,7 @@ pub const KEYS: &[&str] = &[
     "xy_unit",
     "z_unit",
     "max_points",
+    "channel",
     "detrend",
     "derivative",
     "lambda_s",
@@ -184,6 +185,9 @@ impl Analysis {
             z_unit: options.named("z_unit", LengthUnit::M)?.metres(),
             xy_unit,
             max_points,
+            channel: options
+                .get("channel")
+                .map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {})),
             ..ReadOptions::default()
         };
         let topography =
