@@ -6,7 +6,7 @@
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
     read_dy_defaulting_to_dx, read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, ReadError,
-    ReadOptions, StatsOptions, Surface, SurfaceRecord, SurfaceStats, Topography, MAX_POINTS,
+    ReadOptions, StatsOptions, Surface, SurfaceRecord, SurfaceStats, Topography, MAX_POINTS, TIP_SAFETY_FACTOR,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest, Warnings};
 use std::path::{Path, PathBuf};
@@ -133,7 +133,7 @@ pub struct SurfaceArgs {
 }
 
 /// The reliability cut-off of a scanning probe of tip radius `radius` (m)
-/// on `t` (safety factor ½, as SurfaceTopography's default).
+/// on `t` (safety factor [`TIP_SAFETY_FACTOR`], ½).
 fn tip_cutoff(t: &Topography, radius: f64) -> Result<Option<f64>, String> {
     if !(radius.is_finite() && radius > 0.0) {
         return Err(format!(
@@ -141,7 +141,7 @@ fn tip_cutoff(t: &Topography, radius: f64) -> Result<Option<f64>, String> {
             Shortest(radius)
         ));
     }
-    tip_reliability_cutoff(t, radius, 0.5).map_err(|e| e.to_string())
+    tip_reliability_cutoff(t, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
 }
 
 /// `--lambda-s`: a length or `auto`.

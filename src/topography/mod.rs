@@ -27,7 +27,7 @@ pub use read::{
 pub use record::{Frictions, SurfaceRecord};
 pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
-    DISTANCES_PER_DECADE,
+    DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{

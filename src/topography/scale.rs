@@ -152,6 +152,11 @@ pub fn scale_dependent_curvature(t: &Topography, distances: &[f64]) -> Result<Ve
     scale_dependent(t, distances, Order::Curvature)
 }
 
+/// The safety factor of [`tip_reliability_cutoff`] in the paper (Sanner
+/// et al. 2022) and SurfaceTopography's default: what `--tip-radius` and
+/// the web page use.
+pub const TIP_SAFETY_FACTOR: f64 = 0.5;
+
 /// Stencil lengths a decade of [`default_distances`].
 pub const DISTANCES_PER_DECADE: u32 = 5;
 

@@ -10,8 +10,9 @@
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Derivative, Detrend, Format,
+    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Channel, Derivative, Detrend, Format,
     ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
+    TIP_SAFETY_FACTOR,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
@@ -29,6 +30,7 @@ pub const KEYS: &[&str] = &[
     "xy_unit",
     "z_unit",
     "max_points",
+    "channel",
     "detrend",
     "derivative",
     "lambda_s",
@@ -52,10 +54,6 @@ pub const KEYS: &[&str] = &[
 
 /// The seven material keys, in the order of [`Materials`]' fields.
 const MATERIALS: [&str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
-
-/// The safety factor of the tip-radius reliability cut-off (as
-/// `kefric surface --tip-radius` and SurfaceTopography's default).
-const TIP_SAFETY: f64 = 0.5;
 
 /// The loads of the μ-against-load curve: the given load times
 /// 10^(k/10) for k in this range (three decades below, one above).
@@ -187,6 +185,9 @@ impl Analysis {
             z_unit: options.named("z_unit", LengthUnit::M)?.metres(),
             xy_unit,
             max_points,
+            channel: options
+                .get("channel")
+                .map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {})),
             ..ReadOptions::default()
         };
         let topography =
@@ -208,7 +209,7 @@ impl Analysis {
                     Shortest(radius)
                 )),
                 (None, Some(radius)) => {
-                    tip_reliability_cutoff(&topography, radius, TIP_SAFETY).map_err(|e| e.to_string())
+                    tip_reliability_cutoff(&topography, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
                 }
                 (None, None) => Err("give --tip-radius or --resolution for the reliability cut-off".into()),
             }

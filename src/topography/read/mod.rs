@@ -847,3 +847,40 @@ fn clip(text: &str, max: usize) -> String {
         None => text.to_string(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A 4 × 3 text map in metres.
+    const MAP: &[u8] = b"1 2 3 4\n5 6 7 8\n9 1 2 3\n";
+
+    fn options(dx: Option<f64>, dy: Option<f64>) -> ReadOptions {
+        ReadOptions {
+            dx,
+            dy,
+            ..ReadOptions::default()
+        }
+    }
+
+    #[test]
+    fn dy_defaults_to_dx_only_where_the_file_gives_none() {
+        let read = |o: &ReadOptions| read_dy_defaulting_to_dx(o, |o| read_bytes(MAP, "map.txt", o));
+        // A text matrix gives no intervals: dy = dx.
+        let t = read(&options(Some(2e-6), None)).unwrap();
+        assert_eq!((t.dx(), t.dy()), (2e-6, Some(2e-6)));
+        // A dy given is kept.
+        let t = read(&options(Some(2e-6), Some(3e-6))).unwrap();
+        assert_eq!((t.dx(), t.dy()), (2e-6, Some(3e-6)));
+        // Nothing given: the reader's own error naming dx.
+        assert!(matches!(
+            read(&options(None, None)),
+            Err(ReadError::NeedInterval { name: "dx", .. })
+        ));
+        // An xyz file gives its own dy (2 m), which dx alone does not contradict.
+        let xyz = b"0 0 1\n1 0 2\n0 2 3\n1 2 4\n";
+        let t = read_dy_defaulting_to_dx(&options(Some(1.0), None), |o| read_bytes(xyz, "map.xyz", o));
+        let t = t.unwrap();
+        assert_eq!((t.dx(), t.dy()), (1.0, Some(2.0)));
+    }
+}
