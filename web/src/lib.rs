@@ -16,6 +16,7 @@ use ke_friction::topography::{
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
+    Warnings,
 };
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -308,12 +309,20 @@ impl Analysis {
             record: String::new(),
         };
         let (params, friction) = analysis.evaluate(&analysis.surface, analysis.load)?;
+        // The warnings as the CLI records them: the statistics' and the load's.
+        let mut warnings = Warnings::new();
+        warnings.extend(analysis.surface.stats().warnings.iter().cloned());
+        if let (Some(f), Some(p), Some(m)) = (&friction, &params, &analysis.materials) {
+            let model = Model::new(p.clone()).map_err(|e| format!("the surface with these materials: {e}"))?;
+            warnings.note(f.warnings(&model, &analysis.surface.physical(m)));
+        }
         let record = SurfaceRecord::new(
             vec![name.to_string()],
             &analysis.surface,
             params.as_ref(),
             friction.as_ref(),
-        );
+        )
+        .with_warnings(&warnings);
         analysis.record = serde_json::to_string(&record).map_err(|e| format!("the record: {e}"))?;
         analysis.params = params;
         analysis.friction = friction;
