@@ -261,7 +261,8 @@ class Surface:
 
     @staticmethod
     def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
-             z_unit: Union[float, str] = 1.0, xy_unit: Union[float, str] = 1.0, detrend: str = "plane", derivative: str = "fd",
+             z_unit: Union[float, str] = 1.0, xy_unit: Union[float, str] = 1.0, detrend: str = "plane",
+             derivative: str = "fd",
              max_points: Optional[int] = None, lambda_s: Union[float, str, None] = None,
              lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
              resolution: Optional[float] = None, channel: Union[str, int, None] = None) -> "Surface":
