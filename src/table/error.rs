@@ -96,7 +96,7 @@ impl LookupError {
 }
 
 /// What a batch does at an element it cannot answer (NaN, or outside the
-/// table's domain or the curve's range). Every batch function of [`Table`]
+/// table's domain or the curve's range). Every batch function of [`Table`](crate::Table)
 /// and [`Curve`](crate::Curve) follows it, and the C and Python bindings
 /// hand it on rather than re-implement it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
