@@ -734,9 +734,12 @@ pub fn help_headings(mut command: clap::Command) -> clap::Command {
         let heading = "Materials (all seven together)".to_string();
         (heading, MATERIALS.iter().map(|id| id.to_string()).collect())
     };
-    for id in ids {
-        let heading = heading.clone();
-        command = command.mut_arg(id, |a| a.help_heading(heading));
-    }
-    command
+    // In place (`mut_arg` would move each to the end of the help).
+    command.mut_args(|a| {
+        if ids.iter().any(|id| a.get_id() == id.as_str()) {
+            a.help_heading(heading.clone())
+        } else {
+            a
+        }
+    })
 }

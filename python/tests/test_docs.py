@@ -40,3 +40,13 @@ def test_stubs_and_py_typed_ship_with_the_package():
     for name in ["class TableCore", "class CurveCore", "class ModelCore", "class DistributionCore",
                  "class FrictionLawCore", "def params_from_physical"]:
         assert name in stub, name
+
+
+def test_the_dask_example_states_its_requirements():
+    """The Dask example's extra packages are written down where a user
+    looks: its module docstring and the README."""
+    root = pathlib.Path(__file__).resolve().parents[2]
+    example = (root / "python" / "examples" / "dask_friction_map.py").read_text()
+    docstring = example.split('"""')[1]
+    assert 'pip install "dask[array,distributed]"' in docstring
+    assert 'pip install "dask[array,distributed]"' in (root / "README.md").read_text()

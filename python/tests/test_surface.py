@@ -194,6 +194,11 @@ def test_units_by_name_as_the_cli_takes_them(tmp_path, files):
         kf.Surface.read(path, dx=DX, dy=DY, z_unit="inch")
     with pytest.raises(TypeError, match="xy_unit"):
         kf.Surface.read(path, dx=DX, dy=DY, xy_unit=[1e-6])
+    # from_topography's unit is a name only: its message offers no number.
+    from ke_friction._surface import _unit
+    assert _unit("unit", "\u00c5", number=False) == 1e-10
+    with pytest.raises(ValueError, match=r"^unit: length unit 'furlong' is unknown: must be one of [^(]*$"):
+        _unit("unit", "furlong", number=False)
 
 
 def test_stats_is_both_an_attribute_and_a_call(files):

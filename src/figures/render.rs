@@ -324,9 +324,11 @@ fn frame<'a, DB: DrawingBackend>(
 ) -> Result<Plot<'a, DB>, String> {
     let font: TextStyle = (FAMILY, CAPTION_PX * s).into_font().into();
     // The caption is centred between the margins, and must not reach over
-    // the vertical axis's labels on the left (its top tick label rises
-    // above the plotting area): as much room on the right.
-    let room = area.dim_in_pixel().0 as i32 - 2 * y_area as i32 - ((MARGIN_PX + MARGIN_RIGHT_PX) * s) as i32;
+    // the vertical axis's tick labels on the left (the top one rises above
+    // the plotting area; the axis title, further left, sits lower): as
+    // much room on the right.
+    let ticks = y_area.saturating_sub(DESC_PX * s) as i32;
+    let room = area.dim_in_pixel().0 as i32 - 2 * ticks - ((MARGIN_PX + MARGIN_RIGHT_PX) * s) as i32;
     let lines = match title {
         Some(t) => wrap(t, room, |text| {
             area.estimate_text_size(text, &font).map_or(i32::MAX, |(w, _)| w as i32)
@@ -400,8 +402,18 @@ fn wrap(text: &str, room: i32, width: impl Fn(&str) -> i32) -> Vec<String> {
             push(chunk, &mut lines, &mut line);
             continue;
         }
-        for word in chunk.split_inclusive(' ') {
-            let mut word = word.to_string();
+        // Words, with "=" kept between its two sides (`ψ = 1` is one).
+        let mut words: Vec<String> = Vec::new();
+        for token in chunk.split_inclusive(' ') {
+            match words.last_mut() {
+                Some(last) if token.trim() == "=" || last.trim_end().ends_with(" =") || last.trim() == "=" => {
+                    last.push_str(token)
+                }
+                _ => words.push(token.to_string()),
+            }
+        }
+        for word in words {
+            let mut word = word;
             if width(word.trim_end()) > room {
                 let mut kept: String = word.trim_end().to_string();
                 while !kept.is_empty() && width(&format!("{kept}…")) > room {
@@ -1099,6 +1111,11 @@ mod tests {
             ["psi = 5.06, theta = 0.001,", "beta = 0.1 at dx = 1e-6 m"]
         );
         assert_eq!(wrap("aaaa bbbb cccc", 90, width), ["aaaa bbbb", "cccc"]);
+        // "=" keeps its sides together.
+        assert_eq!(
+            wrap("mu against F* for heights: psi = 1, theta = 0.001", 300, width),
+            ["mu against F* for heights:", "psi = 1, theta = 0.001"]
+        );
         let cut = wrap("averyveryverylongword x", 100, width);
         assert!(cut.iter().all(|l| width(l) <= 100) && cut[0].ends_with('…'), "{cut:?}");
     }

@@ -55,16 +55,17 @@ def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
     return value
 
 
-def _unit(name: str, value: Any) -> float:
+def _unit(name: str, value: Any, number: bool = True) -> float:
     """Metres per unit of argument ``name``: a unit's name or symbol (one
     of :data:`_LENGTH_UNITS`: ``"um"``, ``"nm"``, ``"µm"``, ... as
-    ``kefric surface --z-unit`` takes them; the core's list) or a number,
-    finite and > 0."""
+    ``kefric surface --z-unit`` takes them; the core's list) or, if
+    ``number``, a number, finite and > 0."""
     if isinstance(value, str):
         try:
             return _core.length_unit(value)
         except ValueError as e:
-            raise ValueError(f"{name}: {e} (or a number of metres per unit)") from None
+            also = " (or a number of metres per unit)" if number else ""
+            raise ValueError(f"{name}: {e}{also}") from None
     _check_real(**{name: value})
     v = float(value)
     if not (math.isfinite(v) and v > 0):
@@ -278,7 +279,8 @@ class Surface:
 
     @staticmethod
     def read(path: Union[str, "os.PathLike[str]"], *, dx: Optional[float] = None, dy: Optional[float] = None,
-             z_unit: Union[float, str] = 1.0, xy_unit: Union[float, str] = 1.0, detrend: str = "plane", derivative: str = "fd",
+             z_unit: Union[float, str] = 1.0, xy_unit: Union[float, str] = 1.0, detrend: str = "plane",
+             derivative: str = "fd",
              max_points: Optional[int] = None, lambda_s: Union[float, str, None] = None,
              lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
              resolution: Optional[float] = None, channel: Union[str, int, None] = None) -> "Surface":
@@ -374,7 +376,7 @@ class Surface:
             raise ValueError("unit: the topography has none: give its unit (unit=\"um\", ...)")
         if not isinstance(name, str):
             raise TypeError(f"unit must be a str, not {type(name).__name__}")
-        metres = _unit("unit", name)
+        metres = _unit("unit", name, number=False)
         h = _heights_of("the topography's heights", topography.heights())
         pixel = [float(p) * metres for p in np.atleast_1d(topography.pixel_size)]
         # SurfaceTopography indexes heights [x, y]; a map here has rows = y.
