@@ -78,12 +78,15 @@ pub struct Args {
 fn formats_help() -> String {
     let mut help = String::from("Formats (by the file's extension, else by its content):\n");
     // A format chosen by neither (text read as a matrix) is left out.
-    for f in Format::all().filter(|f| !f.extensions().is_empty()) {
-        let extensions: Vec<String> = f.extensions().iter().map(|e| format!(".{e}")).collect();
+    let formats: Vec<Format> = Format::all().filter(|f| !f.extensions().is_empty()).collect();
+    let extensions = |f: &Format| f.extensions().iter().map(|e| format!(".{e}")).collect::<Vec<_>>().join(" ");
+    let name_width = formats.iter().map(|f| f.name().len()).max().unwrap_or(0);
+    let ext_width = formats.iter().map(|f| extensions(f).len()).max().unwrap_or(0);
+    for f in &formats {
         help.push_str(&format!(
-            "  {:<7} {:<24} {}\n",
+            "  {:<name_width$} {:<ext_width$} {}\n",
             f.name(),
-            extensions.join(" "),
+            extensions(f),
             f.description()
         ));
     }
