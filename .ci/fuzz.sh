@@ -4,8 +4,9 @@
 # found before (fuzz/regressions/TARGET/, replayed first):
 # - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 30);
 # - surface_x3p, surface_npy, surface_text (the measured-surface readers,
-#   read_bytes): READER_SECONDS each (default 40).
-# About 3 minutes of fuzzing plus the build: the stage stays under ~4.5
+#   read_bytes), surface_instruments_a (.sur, .plu, .opd, .al3d):
+#   READER_SECONDS each (default 40).
+# About 3.7 minutes of fuzzing plus the build: the stage stays under ~5
 # minutes on 2 cores. A crash, a panic, a broken invariant or an
 # out-of-bounds access fails the stage; libFuzzer writes the input to
 # fuzz/artifacts/TARGET/.
@@ -19,7 +20,7 @@ if ! command -v cargo-fuzz > /dev/null; then
   cargo install --quiet --locked cargo-fuzz
 fi
 cargo +nightly fuzz build -O 2>&1 | tail -3
-for target in table_bytes table_spec surface_x3p surface_npy surface_text; do
+for target in table_bytes table_spec surface_x3p surface_npy surface_text surface_instruments_a; do
   case $target in
     table_*) secs=$table_secs ;;
     *) secs=$reader_secs ;;

@@ -93,6 +93,7 @@ impl OptionsSpec {
                 format,
                 max_points: 1 << (max_points_log2 % 21),
                 max_bytes: 1 << (max_bytes_log2 % 25),
+                channel: None,
             },
         }
     }
