@@ -232,7 +232,14 @@ fn the_format_is_chosen_by_extension_and_content() {
     assert_eq!(Format::detect("a.csv".as_ref(), b"1,2"), Format::TEXT);
     // The registry: names and extensions, each format once.
     let names: Vec<&str> = Format::all().map(Format::name).collect();
-    assert_eq!(names, ["x3p", "npy", "text", "matrix"]);
+    assert_eq!(names[..4], ["x3p", "npy", "text", "matrix"]);
+    for instrument in ["sur", "plu", "opd", "al3d"] {
+        assert_eq!(names.iter().filter(|&&n| n == instrument).count(), 1, "{instrument}");
+    }
+    let mut unique = names.clone();
+    unique.sort_unstable();
+    unique.dedup();
+    assert_eq!(unique.len(), names.len(), "{names:?}");
     for f in Format::all() {
         assert_eq!(Format::from_name(&f.name().to_uppercase()), Some(f));
         assert!(!f.description().is_empty());
