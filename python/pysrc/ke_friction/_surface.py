@@ -243,8 +243,9 @@ class Surface:
         give none (``.npy``, a text matrix or column); ``dy`` defaults to
         ``dx``; an interval that contradicts the file's own is an error.
         ``z_unit``: metres per unit of the heights of ``.npy`` and text
-        files (1e-6 for micrometres; X3P stores metres). ``xy_unit``:
-        metres per unit of the x, y columns of ``x z`` and ``x y z`` text.
+        files (1e-6 for micrometres; X3P and the instruments' files give
+        their own). ``xy_unit``: metres per unit of the x, y columns of
+        ``x z`` and ``x y z`` text.
         Both finite and > 0 (ValueError naming the argument otherwise).
         ``detrend``, ``derivative``, the filters ``lambda_s``, ``lambda_c``
         and the instrument's ``tip_radius`` or ``resolution`` as in
