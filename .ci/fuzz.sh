@@ -4,9 +4,10 @@
 # found before (fuzz/regressions/TARGET/, replayed first):
 # - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 30);
 # - surface_x3p, surface_npy, surface_text (the measured-surface readers,
-#   read_bytes), surface_instrument_b (MetroPro, Nanoscope, .nid):
-#   READER_SECONDS each (default 40).
-# About 3.7 minutes of fuzzing plus the build: the stage stays under ~5
+#   read_bytes), surface_instruments_a (.sur, .plu, .opd, .al3d) and
+#   surface_instrument_b (MetroPro, Nanoscope, .nid): READER_SECONDS each
+#   (default 30).
+# About 3.5 minutes of fuzzing plus the build: the stage stays under ~5
 # minutes on 2 cores. A crash, a panic, a broken invariant or an
 # out-of-bounds access fails the stage; libFuzzer writes the input to
 # fuzz/artifacts/TARGET/.
@@ -14,13 +15,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/../fuzz"
 table_secs=${FUZZ_SECONDS:-30}
-reader_secs=${READER_SECONDS:-40}
+reader_secs=${READER_SECONDS:-30}
 if ! command -v cargo-fuzz > /dev/null; then
   echo "installing cargo-fuzz"
   cargo install --quiet --locked cargo-fuzz
 fi
 cargo +nightly fuzz build -O 2>&1 | tail -3
-for target in table_bytes table_spec surface_x3p surface_npy surface_text surface_instrument_b; do
+for target in table_bytes table_spec surface_x3p surface_npy surface_text surface_instruments_a surface_instrument_b; do
   case $target in
     table_*) secs=$table_secs ;;
     *) secs=$reader_secs ;;

@@ -97,13 +97,13 @@ fn formats_help() -> String {
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "Reading a surface")]
 pub struct SurfaceArgs {
-    /// Sampling interval along x, in --xy-unit (for .npy and text matrices, which have none; X3P and xyz files give their own).
+    /// Sampling interval along x, in --xy-unit (for .npy and text matrices, which have none; X3P, xyz and the instruments' files give their own).
     #[arg(long, value_name = "DX", value_parser = parse_f64, allow_hyphen_values = true)]
     pub dx: Option<f64>,
     /// Sampling interval along y, in --xy-unit [default: --dx].
     #[arg(long, value_name = "DY", value_parser = parse_f64, allow_hyphen_values = true)]
     pub dy: Option<f64>,
-    /// Unit of the heights in .npy and text files (X3P stores metres).
+    /// Unit of the heights in .npy and text files (X3P and the instruments' files give their own).
     #[arg(long, value_parser = named::<LengthUnit>(), default_value_t = LengthUnit::M)]
     pub z_unit: LengthUnit,
     /// Unit of --dx, --dy and of the x, y columns of xyz text files.

@@ -567,3 +567,40 @@ fn law_with_a_surface_is_the_model_of_eval_with_that_surface() {
         );
     }
 }
+
+/// The instruments' example files (`$KEF_TOPOGRAPHIES`, else
+/// `../shared/topographies` beside the repository), if present.
+fn instrument_file(name: &str) -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
+    let path = dir.join(name);
+    if path.exists() {
+        Some(path)
+    } else {
+        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
+        None
+    }
+}
+
+#[test]
+fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_lists_them() {
+    for (name, format, nx) in [
+        ("sur-2.sur", "sur", 563),
+        ("plu-1.plu", "plu", 768),
+        ("opd-1.opd", "opd", 640),
+        ("al3d-1.al3d", "al3d", 200),
+    ] {
+        let Some(path) = instrument_file(name) else { continue };
+        let path = path.to_str().unwrap();
+        let o = kefric(&["surface", path, "--json"]);
+        assert!(o.status.success(), "{name}: {}", stderr(&o));
+        let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(v["surface"]["nx"], nx, "{name}");
+        assert_eq!(v["metadata"][0]["format"], format, "{name}");
+        assert!(v["surface"]["sigma"].as_f64().unwrap() > 0.0, "{name}");
+        if format == "opd" {
+            assert_bad_input(&kefric(&["surface", path, "--channel", "Intensity"]), "0 Raw");
+        }
+    }
+}

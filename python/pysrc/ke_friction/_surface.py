@@ -297,7 +297,7 @@ class Surface:
         give none (``.npy``, a text matrix or column); ``dy`` defaults to
         ``dx``; an interval that contradicts the file's own is an error.
         ``z_unit``: the unit of the heights of ``.npy`` and text files
-        (X3P stores metres), ``xy_unit``: of the x, y columns of ``x z``
+        (X3P and the instruments' files give their own), ``xy_unit``: of the x, y columns of ``x z``
         and ``x y z`` text (``dx`` and ``dy`` are in metres, unlike
         ``kefric surface --dx``, which is in ``--xy-unit``). Each a
         unit's name as ``kefric surface --z-unit`` takes it (``"km"``,

@@ -228,7 +228,8 @@ pub struct ReadOptions {
     /// Sampling interval along y (metres), for maps from files that give none.
     pub dy: Option<f64>,
     /// Metres per unit of the heights in `.npy` and text files (1 = metres,
-    /// 1e-6 = micrometres). Not applied to X3P, which stores metres.
+    /// 1e-6 = micrometres). Not applied to X3P, which stores metres, nor
+    /// to the instruments' formats, which give their own units.
     pub z_unit: f64,
     /// Metres per unit of the x and y columns of `x z` and `x y z` text.
     pub xy_unit: f64,
