@@ -5,17 +5,17 @@
 
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
-    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Metadata, ReadError, ReadOptions, StatsOptions,
-    Surface, SurfaceStats, Topography, MAX_POINTS,
+    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Format, Metadata, ReadError, ReadOptions,
+    StatsOptions, Surface, SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Statistics of a measured surface and, with materials and a load, μ.
 ///
-/// Reads a height map or profile (ISO 25178-72 X3P, .npy, or text: one
+/// Reads a height map or profile (ISO 25178-72 X3P, .npy, text: one
 /// column = a profile, a matrix = a map, `x y z` triples on a regular
-/// grid), detrends it, and prints σ (Sq), Sk (Ssk), K (Sku), the spectral
+/// grid; or an instrument's own file, listed below), detrends it, and prints σ (Sq), Sk (Ssk), K (Sku), the spectral
 /// moments m0, m2, m4 and the summit density η, radius R and β of
 /// MODEL.md §10. Two files are two rough surfaces pressed together: their
 /// equivalent surface (heights added) against a flat. With the seven
@@ -24,6 +24,7 @@ use std::path::{Path, PathBuf};
 /// Q = μF and the separation. β and ψ depend on the sampling intervals,
 /// which are printed beside them.
 #[derive(Debug, clap::Args)]
+#[command(after_help = formats_help())]
 pub struct Args {
     /// The surface file, and optionally a second rough surface pressed against it.
     #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
@@ -67,6 +68,27 @@ pub struct Args {
     /// A Hann window for --psd.
     #[arg(long, requires = "psd")]
     pub hann: bool,
+}
+
+/// The formats read, one line each, from the readers' registry: the
+/// format's name and description, and its extensions. The README lists
+/// the same lines (a test checks).
+pub fn formats_help() -> String {
+    let mut out = String::from("Formats (chosen by the file's extension and content):\n");
+    for f in Format::all() {
+        out += &format!("  {}\n", format_line(f));
+    }
+    out
+}
+
+/// `name: description (.ext, .ext)`.
+pub fn format_line(f: Format) -> String {
+    let extensions: Vec<String> = f.extensions().iter().map(|e| format!(".{e}")).collect();
+    if extensions.is_empty() {
+        format!("{}: {}", f.name(), f.description())
+    } else {
+        format!("{}: {} ({})", f.name(), f.description(), extensions.join(", "))
+    }
 }
 
 /// How a surface file is read and its statistics taken.

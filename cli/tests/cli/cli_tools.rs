@@ -487,6 +487,33 @@ fn the_architecture_map_lists_every_folder_and_source_file() {
     );
 }
 
+/// The formats `kefric surface --help` lists (from the readers'
+/// registry, one line each) are the README's, line for line.
+#[test]
+fn the_readme_lists_the_formats_the_help_lists() {
+    let help = kefric(&["surface", "--help"]);
+    assert!(help.status.success());
+    let help = String::from_utf8(help.stdout).unwrap();
+    let lines: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Formats"))
+        .skip(1)
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
+    for name in ["x3p:", "npy:", "metropro:", "nanoscope:", "nid:", "text:"] {
+        assert!(
+            lines.iter().any(|l| l.starts_with(name)),
+            "--help lists no {name}: {lines:?}"
+        );
+    }
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();
+    let listed: Vec<&str> = readme.lines().filter_map(|l| l.strip_prefix("- ")).collect();
+    for line in &lines {
+        assert!(listed.contains(line), "the README does not list the format \"{line}\"");
+    }
+}
+
 #[test]
 fn the_readme_stays_a_short_manual() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../README.md")).unwrap();

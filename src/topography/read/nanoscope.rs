@@ -29,7 +29,7 @@ const DESCRIPTION: &str = "Bruker Nanoscope";
 /// The registry's entry.
 pub(super) const ENTRY: Entry = Entry {
     name: "nanoscope",
-    description: "Bruker/Veeco Nanoscope AFM (.di, .spm, .001, ...; multi-channel)",
+    description: "Bruker/Veeco Nanoscope AFM (several channels: the first height channel by default)",
     extensions: &["di", "spm", "001", "002", "003", "004", "005"],
     sniff: Some(sniff),
     read,

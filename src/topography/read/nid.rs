@@ -24,7 +24,7 @@ const DESCRIPTION: &str = "Nanosurf .nid";
 /// The registry's entry.
 pub(super) const ENTRY: Entry = Entry {
     name: "nid",
-    description: "Nanosurf .nid/.ezd AFM (multi-channel)",
+    description: "Nanosurf AFM (several channels: the first height channel by default)",
     extensions: &["nid", "ezd"],
     sniff: Some(sniff),
     read,
