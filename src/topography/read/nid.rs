@@ -62,7 +62,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let data_start = loop {
         if at >= bytes.len() {
             return Err(bad(format!(
-                "no \"#!\" (the start of the data) in the first {} bytes",
+                "no \"#!\" (the start of the data) in the first {} bytes (truncated?)",
                 bytes.len()
             )));
         }
