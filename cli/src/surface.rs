@@ -93,6 +93,27 @@ fn formats_help() -> String {
     help
 }
 
+/// The formats read, one line each, from the readers' registry: the
+/// format's name and description, and its extensions. The README lists
+/// the same lines (a test checks).
+pub fn formats_help() -> String {
+    let mut out = String::from("Formats (chosen by the file's extension and content):\n");
+    for f in Format::all() {
+        out += &format!("  {}\n", format_line(f));
+    }
+    out
+}
+
+/// `name: description (.ext, .ext)`.
+pub fn format_line(f: Format) -> String {
+    let extensions: Vec<String> = f.extensions().iter().map(|e| format!(".{e}")).collect();
+    if extensions.is_empty() {
+        format!("{}: {}", f.name(), f.description())
+    } else {
+        format!("{}: {} ({})", f.name(), f.description(), extensions.join(", "))
+    }
+}
+
 /// How a surface file is read and its statistics taken.
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "Reading a surface")]

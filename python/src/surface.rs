@@ -296,7 +296,8 @@ impl SurfaceCore {
         SurfaceCore::build(py, topographies, options, None)
     }
 
-    /// The surface in the file `path` (X3P, `.npy` or text), by the core's
+    /// The surface in the file `path` (X3P, `.npy`, text or an instrument's
+    /// own format), by the core's
     /// reader: `dx`, `dy` in metres for files that give none, `z_unit`
     /// metres per unit of `.npy` and text heights, `xy_unit` of the x, y
     /// columns of text (both finite and > 0), `max_points` the most points

@@ -286,12 +286,15 @@ class Surface:
              resolution: Optional[float] = None, channel: Union[str, int, None] = None) -> "Surface":
         """The surface in the file ``path``, by the library's reader (as
         ``kefric surface`` reads it): ISO 25178-72 X3P (``.x3p``), NumPy
-        ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
-        other extension, text (one column a profile, ``x z`` pairs,
-        ``x y z`` triples on a regular grid, or a matrix of heights).
-        Instruments' own files: Digital Surf ``.sur``, Sensofar ``.plu``
-        (``.apx``), Bruker/Veeco ``.opd``, Alicona ``.al3d`` (heights in
-        metres from the file's units, its intervals, missing points NaN).
+        ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8), an
+        instrument's own file (Digital Surf ``.sur``, Sensofar ``.plu``
+        (``.apx``), Bruker/Veeco ``.opd``, Alicona ``.al3d``, Zygo MetroPro
+        ``.dat``, Bruker Nanoscope ``.di``/``.spm``/``.001``, Nanosurf
+        ``.nid``: heights in metres by the file's scale factors and units,
+        its intervals, invalid points missing; the list: ``kefric surface
+        --help``) or, any other extension, text (one column a profile,
+        ``x z`` pairs, ``x y z`` triples on a regular grid, or a matrix of
+        heights).
 
         ``dx``, ``dy``: the sampling intervals in metres, for files that
         give none (``.npy``, a text matrix or column); ``dy`` defaults to

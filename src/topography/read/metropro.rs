@@ -20,7 +20,7 @@ const DESCRIPTION: &str = "Zygo MetroPro .dat";
 /// The registry's entry.
 pub(super) const ENTRY: Entry = Entry {
     name: "metropro",
-    description: DESCRIPTION,
+    description: "Zygo MetroPro (white-light interferometer; invalid points missing)",
     extensions: &["dat"],
     sniff: Some(sniff),
     read,

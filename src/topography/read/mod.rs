@@ -176,8 +176,8 @@ impl Format {
     /// The format of a file called `path` whose first bytes are `head`:
     /// by an extension of a format with a signature (its reader says what
     /// is wrong if the content is not one), unless the extension is one
-    /// other programs use too (`SHARED_EXTENSIONS`) and the signature is
-    /// not there; else by the content's signature (a zip of an X3P called
+    /// other programs use too (`.dat`, `.di`, `.spm`, `.001` … `.005`) and
+    /// the signature is not there; else by the content's signature (a zip of an X3P called
     /// `.dat`, a `.npy` without its extension); else by a text extension;
     /// else text.
     pub fn detect(path: &Path, head: &[u8]) -> Format {

@@ -29,7 +29,7 @@ const DESCRIPTION: &str = "Bruker Nanoscope";
 /// The registry's entry.
 pub(super) const ENTRY: Entry = Entry {
     name: "nanoscope",
-    description: "Bruker/Veeco Nanoscope AFM (.di, .spm, .001, ...; multi-channel)",
+    description: "Bruker/Veeco Nanoscope AFM (several channels: the first height channel by default)",
     extensions: &["di", "spm", "001", "002", "003", "004", "005"],
     sniff: Some(sniff),
     read,
@@ -427,9 +427,10 @@ fn height(p: &HashMap<String, String>, bpp: u64, soft: &Soft) -> Result<(f64, St
     let (soft_scale, soft_unit) = number_unit(rest)
         .filter(|_| kind == 'V')
         .ok_or_else(|| format!("a malformed soft scale \"{}\"", clip(value, 60)))?;
-    let (unit, per) = soft_unit
-        .split_once('/')
-        .ok_or_else(|| format!("its unit is \"{}\", not a length per volt", clip(soft_unit, 20)))?;
+    let (unit, per) = soft_unit.split_once('/').ok_or_else(|| match soft_unit {
+        "" => "its soft scale has no unit (not a length per volt)".to_string(),
+        unit => format!("its unit is \"{}\", not a length per volt", clip(unit, 20)),
+    })?;
     let hard_to_soft = convert(hard_unit, per).ok_or_else(|| {
         format!(
             "its hard scale is in \"{}\", its soft scale per \"{}\"",

@@ -24,7 +24,7 @@ const DESCRIPTION: &str = "Nanosurf .nid";
 /// The registry's entry.
 pub(super) const ENTRY: Entry = Entry {
     name: "nid",
-    description: "Nanosurf .nid/.ezd AFM (multi-channel)",
+    description: "Nanosurf AFM (several channels: the first height channel by default)",
     extensions: &["nid", "ezd"],
     sniff: Some(sniff),
     read,
@@ -62,7 +62,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let data_start = loop {
         if at >= bytes.len() {
             return Err(bad(format!(
-                "no \"#!\" (the start of the data) in the first {} bytes",
+                "no \"#!\" (the start of the data) in the first {} bytes (truncated?)",
                 bytes.len()
             )));
         }
@@ -104,44 +104,54 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let mut channels = Vec::new();
     let mut offset = 0u64;
     let groups = number(dataset, "GroupCount", "[DataSet]")?;
-    for g in 0..groups.min(1 << 16) {
-        let count = number(dataset, &format!("Gr{g}-Count"), "[DataSet]")?;
-        for c in 0..count.min(1 << 16) {
-            let Some(name) = dataset.get(&format!("Gr{g}-Ch{c}")) else {
-                continue;
-            };
-            let Some(s) = sections.get(name) else { continue };
-            let what = format!("[{}]", clip(name, 40));
-            if s.get("SaveMode").map(String::as_str) != Some("Binary") {
-                return Err(cx.unsupported(format!("{what}: SaveMode other than Binary")));
-            }
-            let nx = number(s, "Points", &what)?;
-            let ny = number(s, "Lines", &what)?;
-            let bits = number(s, "SaveBits", &what)?;
-            if !matches!(bits, 8 | 16 | 32 | 64) {
-                return Err(cx.unsupported(format!("{what}: SaveBits = {bits} (8, 16, 32 or 64 are read)")));
-            }
-            let int = Int {
-                size: (bits / 8) as usize,
-                signed: s.get("SaveSign").map(String::as_str) == Some("Signed"),
-                big: s.get("SaveOrder").map(String::as_str) != Some("Intel"),
-            };
-            let text = |key: &str| s.get(key).map_or("", String::as_str);
-            let too_big = || bad(format!("{what}: {nx} x {ny} points of {bits} bits"));
-            let bytes = nx
-                .checked_mul(ny)
-                .and_then(|n| n.checked_mul(bits / 8))
-                .ok_or_else(too_big)?;
-            channels.push(Channel {
-                name: format!("{} ({})", text("Frame"), text("Dim2Name")),
-                nx: usize::try_from(nx).map_err(|_| too_big())?,
-                ny: usize::try_from(ny).map_err(|_| too_big())?,
-                int,
-                offset,
-                section: name.clone(),
-            });
-            offset = offset.checked_add(bytes).ok_or_else(too_big)?;
+    // The `Gr{g}-Ch{c}` entries of groups g < GroupCount and channels c <
+    // Gr{g}-Count, in (g, c) order: found among the keys there are (not by
+    // counting up to declared numbers, which a file can make huge).
+    let mut listed: Vec<(u64, u64, &String)> = Vec::new();
+    for (key, name) in dataset {
+        let Some((g, c)) = key.strip_prefix("Gr").and_then(|k| k.split_once("-Ch")) else {
+            continue;
+        };
+        let (Ok(g), Ok(c)) = (g.parse::<u64>(), c.parse::<u64>()) else {
+            continue;
+        };
+        if g < groups && c < number(dataset, &format!("Gr{g}-Count"), "[DataSet]")? {
+            listed.push((g, c, name));
         }
+    }
+    listed.sort_unstable();
+    for (_, _, name) in listed {
+        let Some(s) = sections.get(name) else { continue };
+        let what = format!("[{}]", clip(name, 40));
+        if s.get("SaveMode").map(String::as_str) != Some("Binary") {
+            return Err(cx.unsupported(format!("{what}: SaveMode other than Binary")));
+        }
+        let nx = number(s, "Points", &what)?;
+        let ny = number(s, "Lines", &what)?;
+        let bits = number(s, "SaveBits", &what)?;
+        if !matches!(bits, 8 | 16 | 32 | 64) {
+            return Err(cx.unsupported(format!("{what}: SaveBits = {bits} (8, 16, 32 or 64 are read)")));
+        }
+        let int = Int {
+            size: (bits / 8) as usize,
+            signed: s.get("SaveSign").map(String::as_str) == Some("Signed"),
+            big: s.get("SaveOrder").map(String::as_str) != Some("Intel"),
+        };
+        let text = |key: &str| s.get(key).map_or("", String::as_str);
+        let too_big = || bad(format!("{what}: {nx} x {ny} points of {bits} bits"));
+        let bytes = nx
+            .checked_mul(ny)
+            .and_then(|n| n.checked_mul(bits / 8))
+            .ok_or_else(too_big)?;
+        channels.push(Channel {
+            name: format!("{} ({})", text("Frame"), text("Dim2Name")),
+            nx: usize::try_from(nx).map_err(|_| too_big())?,
+            ny: usize::try_from(ny).map_err(|_| too_big())?,
+            int,
+            offset,
+            section: name.clone(),
+        });
+        offset = offset.checked_add(bytes).ok_or_else(too_big)?;
     }
     // A length unit (`A` is the ampere of a current here, not ångström).
     let length = |s: &HashMap<String, String>| s.get("Dim2Unit").and_then(|u| instrument::length_unit(u, false));
