@@ -1,9 +1,12 @@
-//! `kefric surface --scan` and `--psd`: μ against the S-filter's nesting
-//! index λs, and the power spectral density (MODEL.md §11).
+//! `kefric surface --scan`, `--psd` and `--scale-dependent`: μ against the
+//! S-filter's nesting index λs, the power spectral density, and the
+//! scale-dependent slope and curvature (MODEL.md §11).
 
 use crate::args::Failure;
 use crate::surface::{evaluate, sig, Args};
-use ke_friction::topography::{psd_all, scan, ScanRange, Window};
+use ke_friction::topography::{
+    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
+};
 use ke_friction::Shortest;
 use std::path::Path;
 
@@ -228,6 +231,104 @@ pub fn run_psd(args: &Args) -> Result<(), Failure> {
         for (q, c) in p.q.iter().zip(&p.c) {
             outln!("{name},{},{}", Shortest(*q), Shortest(*c))?;
         }
+    }
+    Ok(())
+}
+
+/// `surface --scale-dependent`: the rms slope and curvature of the heights
+/// as read against the stencil length, at the core's default distances
+/// (the slope's from 1·max(dx, dy), the curvature's from 2·max(dx, dy):
+/// one table on the union, NaN where an order has no value).
+pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
+    let path = single_file(args, "--scale-dependent")?;
+    let read = &args.read;
+    let t = read.read("surface", path)?;
+    let failed =
+        |e: ke_friction::topography::ScaleError| Failure::of(format!("--scale-dependent: {}", path.display()), e);
+    let cutoff = match (read.resolution, read.tip_radius) {
+        (None, None) => None,
+        _ => read
+            .reliability(&t)
+            .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
+    };
+    let distances = default_distances(&t, 1);
+    let slope = scale_dependent_slope(&t, &distances).map_err(failed)?;
+    let curvature = scale_dependent_curvature(&t, &distances).map_err(failed)?;
+    let map = t.dy().is_some();
+    // The curvature's stencil needs two intervals: NaN below 2·max(dx, dy).
+    let shortest_curvature = default_distances(&t, 2)[0] * (1.0 - 1e-12);
+    let curvature: Vec<ScaleRow> = curvature
+        .into_iter()
+        .map(|r| {
+            if r.distance < shortest_curvature {
+                ScaleRow {
+                    x: f64::NAN,
+                    y: r.y.map(|_| f64::NAN),
+                    ..r
+                }
+            } else {
+                r
+            }
+        })
+        .collect();
+    let columns: &[&str] = if map {
+        &["distance", "slope_x", "slope_y", "curvature_x", "curvature_y"]
+    } else {
+        &["distance", "slope_x", "curvature_x"]
+    };
+    let row = |s: &ScaleRow, c: &ScaleRow| -> Vec<f64> {
+        let mut v = vec![s.distance, s.x];
+        if map {
+            v.push(s.y.unwrap_or(f64::NAN));
+        }
+        v.push(c.x);
+        if map {
+            v.push(c.y.unwrap_or(f64::NAN));
+        }
+        v
+    };
+    let rows: Vec<Vec<f64>> = slope.iter().zip(&curvature).map(|(s, c)| row(s, c)).collect();
+    if args.json {
+        let mut doc = serde_json::Map::new();
+        doc.insert("files".into(), serde_json::json!([path.display().to_string()]));
+        doc.insert("cutoff".into(), serde_json::json!(cutoff));
+        for (k, name) in columns.iter().enumerate() {
+            // NaN (no value at that length) is null in JSON.
+            let values: Vec<Option<f64>> = rows.iter().map(|r| r[k].is_finite().then_some(r[k])).collect();
+            doc.insert(name.to_string(), serde_json::json!(values));
+        }
+        outln!("{}", serde_json::Value::Object(doc))?;
+        return Ok(());
+    }
+    if !args.csv {
+        outln!(
+            "# {}: scale-dependent rms slope (1) and rms curvature (1/m) of the heights as read, against the stencil length (m)",
+            path.display()
+        )?;
+        match cutoff {
+            Some(c) => outln!(
+                "# reliability cut-off: {} m (the rows below it are distorted by the instrument)",
+                sig(c)
+            )?,
+            None if read.resolution.is_some() || read.tip_radius.is_some() => {
+                outln!("# reliability cut-off: none (the tip distorts no scale)")?
+            }
+            None => {}
+        }
+    }
+    outln!("{}", columns.join(","))?;
+    for r in &rows {
+        let cells: Vec<String> = r
+            .iter()
+            .map(|v| {
+                if v.is_finite() {
+                    Shortest(*v).to_string()
+                } else {
+                    "nan".into()
+                }
+            })
+            .collect();
+        outln!("{}", cells.join(","))?;
     }
     Ok(())
 }

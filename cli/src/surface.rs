@@ -5,8 +5,8 @@
 
 use crate::args::{named, parse_f64, physical_failure, Failure, MaterialsArgs};
 use ke_friction::topography::{
-    read_file, tip_reliability_cutoff, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
-    SurfaceStats, Topography, MAX_POINTS,
+    read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, Metadata, ReadError, ReadOptions, StatsOptions,
+    Surface, SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, Friction, LengthUnit, Load, Materials, Model, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -46,7 +46,7 @@ pub struct Args {
     /// Print one JSON object (SI units; the library's record names).
     #[arg(long)]
     pub json: bool,
-    /// Print CSV (with --scan or --psd): a header line, then one row a scale or wavevector.
+    /// Print CSV (with --scan, --psd or --scale-dependent): a header line, then one row a scale or wavevector.
     #[arg(long, conflicts_with = "json")]
     pub csv: bool,
     /// μ against the scale: the statistics (with materials: ψ, θ; with a load: μ) at S-filter nesting indices λs log-spaced from --from to --to, one row each, equal to the single command at that --lambda-s.
@@ -67,6 +67,9 @@ pub struct Args {
     /// A Hann window for --psd.
     #[arg(long, requires = "psd")]
     pub hann: bool,
+    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights as read (unfiltered, undetrended) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
+    #[arg(long, conflicts_with_all = ["psd", "scan"])]
+    pub scale_dependent: bool,
 }
 
 /// How a surface file is read and its statistics taken.
@@ -94,6 +97,9 @@ pub struct SurfaceArgs {
     /// The most points (heights) a surface file may have: one that declares more is refused before anything is read or allocated (reading needs about 8 bytes a point) [default: 268435456 = 2^28, 2 GiB of heights].
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
     pub max_points: Option<u64>,
+    /// The channel to read from a file with several (AFM: height, amplitude, phase, ...): its name or its index from 0 [default: the height channel]; a wrong or ambiguous choice lists the file's channels.
+    #[arg(long, value_name = "NAME|N")]
+    pub channel: Option<Channel>,
     /// S-filter nesting index λs in metres (ISO 16610-61 Gaussian, 50 % transmission at λs): wavelengths shorter than λs are removed before the statistics; `auto` = the reliability cut-off of --tip-radius or --resolution. At least 2·max(dx, dy).
     #[arg(long, value_name = "M|auto", value_parser = parse_lambda)]
     pub lambda_s: Option<Lambda>,
@@ -202,6 +208,7 @@ impl SurfaceArgs {
             z_unit: self.z_unit.metres(),
             xy_unit: metres,
             max_points: self.max_points.unwrap_or(MAX_POINTS),
+            channel: self.channel.clone(),
             ..ReadOptions::default()
         };
         // --dy defaults to --dx for a file that gives no dy; a file's own dy
@@ -342,10 +349,13 @@ pub fn params(
 
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    if args.csv && !(args.scan || args.psd) {
+    if args.csv && !(args.scan || args.psd || args.scale_dependent) {
         return Err(Failure::input(
-            "--csv: with --scan or --psd (the single record is --json)",
+            "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
         ));
+    }
+    if args.scale_dependent {
+        return crate::scale::run_scale_dependent(&args);
     }
     if args.psd {
         return crate::scale::run_psd(&args);
@@ -391,6 +401,8 @@ pub fn run(args: Args) -> Result<(), Failure> {
         #[derive(serde::Serialize)]
         struct Record<'a> {
             files: Vec<String>,
+            #[serde(skip_serializing_if = "Vec::is_empty")]
+            metadata: Vec<&'a Metadata>,
             detrend: Detrend,
             derivative: Derivative,
             surface: &'a SurfaceStats,
@@ -404,6 +416,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         let options = surface.options();
         let record = Record {
             files: args.files.iter().map(|p| p.display().to_string()).collect(),
+            metadata: surface.parts().iter().map(|(t, _)| t.metadata()).collect(),
             detrend: options.detrend,
             derivative: options.derivative,
             surface: surface.stats(),

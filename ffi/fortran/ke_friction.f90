@@ -23,7 +23,8 @@ module ke_friction
             kef_constants_new, kef_constants_free, kef_constants_set_beta, kef_constants_set_nu, &
             kef_constants_set_eps_star, kef_constants_set_fit, kef_constants_set_model, &
             kef_constants_beta, kef_constants_nu, kef_constants_eps_star, kef_constants_fit, &
-            kef_constants_model, kef_constants_set_distribution, kef_constants_set_heights, &
+            kef_constants_model, kef_constants_set_distribution, kef_constants_set_distribution_named, &
+            kef_constants_set_heights, &
             kef_constants_distribution, kef_last_error, kef_error_message, kef_c_string, &
             kef_version, kef_version_string, kef_table_domain, kef_table_h_star, kef_table_h_star_batch, &
             kef_params_from_physical, kef_law_new, kef_law_from_physical, kef_law_mu, &
@@ -384,6 +385,16 @@ module ke_friction
       integer(c_int), value :: family
       real(c_double), value :: skewness, kurtosis
       integer(c_int) :: kef_constants_set_distribution
+    end function
+
+    ! The family by name, e.g. kef_c_string("pearson"): "gaussian", "pearson", "weibull".
+    function kef_constants_set_distribution_named(constants, family, skewness, kurtosis) &
+        bind(c, name="kef_constants_set_distribution_named")
+      import :: c_ptr, c_char, c_double, c_int
+      type(c_ptr), value :: constants
+      character(kind=c_char), dimension(*), intent(in) :: family
+      real(c_double), value :: skewness, kurtosis
+      integer(c_int) :: kef_constants_set_distribution_named
     end function
 
     ! An empirical density of n measured heights (copied; NaN skipped; >= 100 finite).

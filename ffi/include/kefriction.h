@@ -767,6 +767,19 @@ int kef_constants_set_distribution(kef_constants *constants,
                                    double skewness,
                                    double kurtosis);
 
+// kef_constants_set_distribution with the family by its name, the
+// library's record name `distribution`: "gaussian", "pearson" or
+// "weibull" ("empirical" is set by kef_constants_set_heights).
+// KEF_ERR_ARGUMENT for NULL or an unknown name (the message lists the
+// names); otherwise as kef_constants_set_distribution.
+//
+// # Safety
+// As kef_constants_set_beta; `family` NULL or a NUL-terminated string.
+int kef_constants_set_distribution_named(kef_constants *constants,
+                                         const char *family,
+                                         double skewness,
+                                         double kurtosis);
+
 // Sets the asperity heights' distribution to the empirical (kernel)
 // density of `n` measured heights (any unit; NaN entries are skipped as
 // missing points): at least 100 finite values, not all equal, no ±inf.

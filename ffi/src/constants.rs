@@ -3,7 +3,7 @@
 
 use crate::error::Failure;
 use crate::macros::{free, Arg};
-use ke_friction::{Constants, Fit, ModelKind};
+use ke_friction::{Constants, Fit, ModelKind, Named};
 use std::ffi::{c_char, c_int, CStr, CString};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
@@ -40,29 +40,20 @@ pub(crate) fn update(
     Ok(())
 }
 
-/// The value named `name` among `all` (`what`: the setting, for the message).
-fn named<T: Copy>(
-    what: &str,
-    name: &CStr,
-    from_name: fn(&str) -> Option<T>,
-    all: &[T],
-    name_of: fn(T) -> &'static str,
-) -> Result<T, Failure> {
-    let text = name.to_string_lossy();
-    from_name(&text).ok_or_else(|| {
-        let known: Vec<String> = all.iter().map(|&v| format!("\"{}\"", name_of(v))).collect();
-        Failure::argument(format!("{what} \"{text}\" is unknown: must be {}", known.join(" or ")))
-    })
+/// The value named `name` of a core name list (the core's message, listing
+/// the names, for an unknown one).
+pub(crate) fn named<T: Named>(name: &CStr) -> Result<T, Failure> {
+    T::parse(&name.to_string_lossy()).map_err(|e| Failure::argument(e.to_string()))
 }
 
 /// The fit named `name`.
 fn fit_named(name: &CStr) -> Result<Fit, Failure> {
-    named("fit", name, Fit::from_name, &Fit::ALL, Fit::name)
+    named(name)
 }
 
 /// The model named `name`.
 fn kind_named(name: &CStr) -> Result<ModelKind, Failure> {
-    named("model", name, ModelKind::from_name, &ModelKind::ALL, ModelKind::name)
+    named(name)
 }
 
 /// `name` as a C string for the life of the program (one allocation per

@@ -1,7 +1,7 @@
 //! The curve handle μ(F*) of one surface pair: from a table or by direct
 //! integration, its lookups and batches, its range, freeing.
 
-use crate::batch::{scatter, stop};
+use crate::batch::stop;
 use crate::constants::kef_constants;
 use crate::error::Failure;
 use crate::macros::{free, set, set2};
@@ -24,9 +24,7 @@ fn curve_slopes(
     slope: &mut [f64],
     on_error: OnError,
 ) -> Result<usize, LookupError> {
-    scatter(mu, slope, |r, out| {
-        curve.mu_with_slope_batch_with(&f_star[r], out, on_error)
-    })
+    curve.mu_with_slope_into(f_star, mu, slope, on_error)
 }
 
 /// A curve by direct integration over [`lo`, `hi`].

@@ -1,10 +1,10 @@
 //! The asperity heights' distribution of a kef_constants: the
 //! `KEF_DIST_*` families, setting one (or measured heights), reading it.
 
-use crate::constants::{kef_constants, update};
+use crate::constants::{kef_constants, named, update};
 use crate::error::{Failure, Message, KEF_ERR_INTERNAL};
-use ke_friction::HeightDistribution;
-use std::ffi::c_int;
+use ke_friction::{Family, HeightDistribution};
+use std::ffi::{c_char, c_int};
 
 /// Height distribution family (kef_constants_set_distribution,
 /// kef_constants_distribution): the paper's Gaussian, the default
@@ -90,6 +90,37 @@ pub unsafe extern "C" fn kef_constants_set_distribution(
     kurtosis: f64,
 ) -> c_int {
     ffi!(constants => update(constants, |c| Ok(c.distribution(distribution(family, skewness, kurtosis)?))))
+}
+
+/// kef_constants_set_distribution with the family by its name, the
+/// library's record name `distribution`: "gaussian", "pearson" or
+/// "weibull" ("empirical" is set by kef_constants_set_heights).
+/// KEF_ERR_ARGUMENT for NULL or an unknown name (the message lists the
+/// names); otherwise as kef_constants_set_distribution.
+///
+/// # Safety
+/// As kef_constants_set_beta; `family` NULL or a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn kef_constants_set_distribution_named(
+    constants: *mut kef_constants,
+    family: *const c_char,
+    skewness: f64,
+    kurtosis: f64,
+) -> c_int {
+    ffi!(constants, family => update(constants, |c| {
+        let code = family_code_of(named::<Family>(family)?);
+        Ok(c.distribution(distribution(code, skewness, kurtosis)?))
+    }))
+}
+
+/// The `KEF_DIST_*` code of a family.
+fn family_code_of(family: Family) -> c_int {
+    match family {
+        Family::Gaussian => KEF_DIST_GAUSSIAN,
+        Family::Pearson => KEF_DIST_PEARSON,
+        Family::Weibull => KEF_DIST_WEIBULL,
+        Family::Empirical => KEF_DIST_EMPIRICAL,
+    }
 }
 
 /// Sets the asperity heights' distribution to the empirical (kernel)

@@ -1,7 +1,7 @@
 //! Lookups in a table: μ, its slope and the separation h*, one point at a
 //! time or in batches.
 
-use crate::batch::{scatter, stop};
+use crate::batch::stop;
 use crate::constants::kef_constants;
 use crate::macros::{set, set2};
 use crate::table::kef_table;
@@ -16,10 +16,7 @@ fn table_slopes(
     slope: &mut [f64],
     on_error: OnError,
 ) -> Result<usize, LookupError> {
-    table.prepare_batch(mu.len());
-    scatter(mu, slope, |r, out| {
-        table.mu_with_slope_batch_with(&psi[r.clone()], &theta[r.clone()], &f_star[r], out, on_error)
-    })
+    table.mu_with_slope_into(psi, theta, f_star, mu, slope, on_error)
 }
 
 /// [`Table::h_star`] at each point into `out`, stopping at the first

@@ -3,7 +3,7 @@
 use crate::convert::{on_error, same_len, slice, slice_mut};
 use crate::error::{raise, Failure};
 use crate::model::ModelCore;
-use crate::parallel::{cut, cut_pairs, into_pairs, CURVE_WORK};
+use crate::parallel::{cut, cut_pairs, CURVE_WORK};
 use ke_friction::Curve;
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
@@ -91,12 +91,10 @@ impl CurveCore {
                 |chunks| cut_pairs(mu, slope, chunks),
                 |_| (),
                 |chunk, (mu, slope)| {
-                    into_pairs(chunk, mu, slope, |r, o| {
-                        let start = r.start;
-                        curve
-                            .mu_with_slope_batch_with(&f[r], o, on_error)
-                            .map_err(|e| Failure::of_batch(e, start))
-                    })
+                    let start = chunk.start;
+                    curve
+                        .mu_with_slope_into(&f[chunk], mu, slope, on_error)
+                        .map_err(|e| Failure::of_batch(e, start))
                 },
             )
         })

@@ -1,7 +1,7 @@
 //! The batch and thread machinery of array work: the work cut into chunks
 //! that threads take in turn ([`Sharing::run`]), inputs that are one value
-//! for all ([`Inputs`]), and slope pairs scattered into two arrays
-//! ([`into_pairs`]). What a bad element does is the core's
+//! for all ([`Inputs`]); slope pairs go into two arrays by the core's
+//! `mu_with_slope_into`. What a bad element does is the core's
 //! [`OnError`](ke_friction::OnError) contract, handed on unchanged.
 
 use crate::error::{value_error, Failure};
@@ -15,7 +15,7 @@ use std::sync::{Mutex, OnceLock, PoisonError};
 pub type Outcome = Result<usize, Failure>;
 
 /// The elements a batch takes at a time where an input is one value for
-/// all, or where slope pairs go through a stack buffer.
+/// all.
 pub const CHUNK: usize = 256;
 
 /// How a kind of array work is shared out among threads.
@@ -152,28 +152,6 @@ pub fn in_pieces(r: Range<usize>, piece: usize, mut work: impl FnMut(Range<usize
         a = b;
     }
     Ok(nan)
-}
-
-/// (μ, slope) pairs for the elements `r` into `mu` and `slope` (their
-/// parts for `r`): `batch` writes each piece of at most [`CHUNK`] elements
-/// (its range, and a buffer of that many pairs), scattered from there.
-pub fn into_pairs(
-    r: Range<usize>,
-    mu: &mut [f64],
-    slope: &mut [f64],
-    batch: impl Fn(Range<usize>, &mut [(f64, f64)]) -> Outcome,
-) -> Outcome {
-    let mut pairs = [(0.0, 0.0); CHUNK];
-    let start = r.start;
-    in_pieces(r, CHUNK, |piece| {
-        let pairs = &mut pairs[..piece.len()];
-        let nan = batch(piece.clone(), pairs)?;
-        let k = piece.start - start;
-        for ((m, s), &(pm, ps)) in mu[k..].iter_mut().zip(&mut slope[k..]).zip(pairs.iter()) {
-            (*m, *s) = (pm, ps);
-        }
-        Ok(nan)
-    })
 }
 
 /// `K` inputs of a batch of `n` elements, each `n` values or one value for

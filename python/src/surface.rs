@@ -7,9 +7,9 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan, tip_reliability_cutoff, Derivative,
-    Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError, StatsOptions, Surface, Topography, Window,
-    MAX_POINTS,
+    default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
+    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError,
+    StatsOptions, Surface, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -290,14 +290,15 @@ impl SurfaceCore {
     /// reader: `dx`, `dy` in metres for files that give none, `z_unit`
     /// metres per unit of `.npy` and text heights, `xy_unit` of the x, y
     /// columns of text (both finite and > 0), `max_points` the most points
-    /// the surface may have (None: the core's `MAX_POINTS`); the filters
-    /// and the cut-off as in `new`. A file that
+    /// the surface may have (None: the core's `MAX_POINTS`); `channel` the
+    /// channel of a file with several (a name, or an index from 0, as
+    /// text); the filters and the cut-off as in `new`. A file that
     /// cannot be read is an `OSError`, a bad one or one over `max_points`
     /// a `ValueError`, heights that cannot be allocated a `MemoryError`;
     /// all name the file.
     #[staticmethod]
     #[pyo3(signature = (path, dx, dy, z_unit, xy_unit, detrend, derivative, max_points=None, lambda_s=None,
-                        lambda_c=None, auto=false, tip_radius=None, resolution=None))]
+                        lambda_c=None, auto=false, tip_radius=None, resolution=None, channel=None))]
     #[allow(clippy::too_many_arguments)]
     fn read(
         py: Python<'_>,
@@ -314,9 +315,12 @@ impl SurfaceCore {
         auto: bool,
         tip_radius: Option<f64>,
         resolution: Option<f64>,
+        channel: Option<String>,
     ) -> PyResult<SurfaceCore> {
         let base = options(detrend, derivative)?;
+        let channel = channel.map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {}));
         let read = ReadOptions {
+            channel,
             dx,
             dy,
             z_unit,
@@ -497,6 +501,13 @@ impl SurfaceCore {
         ))
     }
 
+    /// The core's default stencil lengths (m) of `order` (1 slope, 2
+    /// curvature): `default_distances`.
+    fn default_distances<'py>(&self, py: Python<'py>, order: u32) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let t = self.single("scale_dependent")?;
+        Ok(PyArray1::from_vec(py, default_distances(t, order)))
+    }
+
     /// The scale-dependent rms slope (`order` 1) or curvature (2) at each
     /// distance (m) of the unfiltered heights: `(x, y)`, `y` None for a
     /// profile.
@@ -538,6 +549,13 @@ impl SurfaceCore {
     /// surface --json` prints as "surface").
     fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         record(py, serde_json::to_string(self.surface.stats()))
+    }
+
+    /// What each part's file said about its measurement (the core's
+    /// `Metadata`; what `kefric surface --json` prints as "metadata").
+    fn metadata<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let metadata: Vec<_> = self.surface.parts().iter().map(|(t, _)| t.metadata()).collect();
+        record(py, serde_json::to_string(&metadata))
     }
 
     /// The parts' own statistics records (one, or two for a pair).

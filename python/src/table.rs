@@ -3,7 +3,7 @@
 use crate::convert::{on_error, record, same_len, slice, slice_mut};
 use crate::curve::CurveCore;
 use crate::error::{raise, Failure};
-use crate::parallel::{cut, cut_pairs, in_pieces, into_pairs, Inputs, TABLE_WORK};
+use crate::parallel::{cut, cut_pairs, in_pieces, Inputs, TABLE_WORK};
 use ke_friction::Table;
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
@@ -149,10 +149,12 @@ impl TableCore {
                 |chunks| cut_pairs(mu, slope, chunks),
                 |m| read_through(table, inputs.repeats, m),
                 |chunk, (mu, slope)| {
-                    into_pairs(chunk, mu, slope, |r, o| {
+                    let start = chunk.start;
+                    in_pieces(chunk, inputs.piece(), |r| {
+                        let k = r.start - start..r.end - start;
                         let [p, t, f] = inputs.slices(r.clone());
                         table
-                            .mu_with_slope_batch_with(p, t, f, o, on_error)
+                            .mu_with_slope_into(p, t, f, &mut mu[k.clone()], &mut slope[k], on_error)
                             .map_err(|e| Failure::of_batch(e, r.start))
                     })
                 },

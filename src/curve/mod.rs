@@ -557,6 +557,25 @@ impl Curve {
         Ok(nan)
     }
 
+    /// [`mu_with_slope_batch_with`](Self::mu_with_slope_batch_with) into
+    /// two arrays, `mu` and `slope` (as C and NumPy hold them), through a
+    /// stack buffer: no allocation. The three slices have one length
+    /// ([`LookupError::CurveLengthMismatch`] otherwise, `out` the first of
+    /// `mu` and `slope` that differs); errors and NaNs as the pairs batch.
+    pub fn mu_with_slope_into(
+        &self,
+        f_star: &[f64],
+        mu: &mut [f64],
+        slope: &mut [f64],
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
+        self.check_lengths(f_star.len(), mu.len())?;
+        self.check_lengths(f_star.len(), slope.len())?;
+        crate::table::scatter_pairs(mu, slope, |r, out| {
+            self.mu_with_slope_batch_with(&f_star[r], out, on_error)
+        })
+    }
+
     /// The error for slices of different lengths.
     fn check_lengths(&self, f_star: usize, out: usize) -> Result<(), LookupError> {
         if f_star == out {

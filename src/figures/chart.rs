@@ -28,6 +28,10 @@ pub enum LineStyle {
     Dashed,
     /// Short dashes, close together.
     Dotted,
+    /// No line: the points are a polygon filled with a light tint of the
+    /// colour (a range marked on the chart; drawn under the lines that
+    /// follow it). Its legend sample is a tinted box.
+    Shade,
 }
 
 /// The shape of the markers along a line (filled, in the line's colour).

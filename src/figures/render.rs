@@ -171,6 +171,8 @@ const RING_PX: u32 = 12;
 /// Dash and gap of a dashed line; of a dotted one.
 const DASH_PX: (u32, u32) = (14, 9);
 const DOT_PX: (u32, u32) = (3, 6);
+/// The opacity of a shaded range ([`LineStyle::Shade`]) over the white page.
+const SHADE_ALPHA: f64 = 0.08;
 
 /// A tick label: a decade as 10ᵏ, a small or large number as m×10ᵏ,
 /// others in plain decimals suited to the step.
@@ -484,6 +486,10 @@ fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_ar
                 DOT_PX.1 as i32 * si,
                 style,
             )),
+            LineStyle::Shade => chart.draw_series(std::iter::once(Polygon::new(
+                pts.clone(),
+                colour.mix(SHADE_ALPHA).filled(),
+            ))),
         }
         .map_err(err)?;
         if let Some(m) = line.markers {
@@ -544,6 +550,10 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
                 DOT_PX.0 as i32 * si,
                 DOT_PX.1 as i32 * si,
                 style,
+            )),
+            LineStyle::Shade => area.draw(&Rectangle::new(
+                [(x0, cy - 8 * si), (x1, cy + 8 * si)],
+                colour.mix(SHADE_ALPHA).filled(),
             )),
         }
         .map_err(err)?;

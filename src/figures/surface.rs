@@ -251,12 +251,26 @@ pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Resu
     let y_top = log_axis(if has_mu { "μ" } else { "ψ" }, &top, false)?;
     let y_bottom = log_axis("ψ, β", &bottom, false)?;
     if let Some(cutoff) = cutoff {
-        top.push(marker(
-            "reliability cut-off (unreliable left of it)",
-            cutoff,
-            y_top.range,
-            super::BLACK_INDEX,
-        ));
+        // The reliable range, λs at or above the cut-off, shaded under
+        // the lines (first in the series), and the cut-off itself dotted.
+        let shade = |label: Option<String>, (x1, y): ((f64, f64), (f64, f64))| Series {
+            style: LineStyle::Shade,
+            ..Series::line(
+                label,
+                vec![
+                    (cutoff.max(x1.0), y.0),
+                    (x1.1, y.0),
+                    (x1.1, y.1),
+                    (cutoff.max(x1.0), y.1),
+                ],
+                super::BLACK_INDEX,
+            )
+        };
+        if cutoff < x.range.1 {
+            top.insert(0, shade(Some("reliable: λs ≥ cut-off".into()), (x.range, y_top.range)));
+            bottom.insert(0, shade(None, (x.range, y_bottom.range)));
+        }
+        top.push(marker("reliability cut-off", cutoff, y_top.range, super::BLACK_INDEX));
         bottom.push(Series {
             label: None,
             ..marker("", cutoff, y_bottom.range, super::BLACK_INDEX)
@@ -278,4 +292,52 @@ pub fn scan_page(title: &str, points: &[ScanPoint], cutoff: Option<f64>) -> Resu
             legend: Corner::UpperRight,
         }),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn points() -> Vec<ScanPoint> {
+        (0..8)
+            .map(|k| {
+                let lambda_s = 1e-6 * 2f64.powi(k);
+                ScanPoint {
+                    lambda_s,
+                    mu: Some(1.0 + 0.1 * k as f64),
+                    psi: Some(0.5 + 0.05 * k as f64),
+                    beta: 0.05 + 0.01 * k as f64,
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_reliable_range_is_shaded_from_the_cutoff_to_the_right_end() {
+        let page = scan_page("t", &points(), Some(8e-6)).unwrap();
+        for chart in [&page.top, page.bottom.as_ref().unwrap()] {
+            let shade = &chart.series[0];
+            assert_eq!(shade.style, LineStyle::Shade);
+            let xs: Vec<f64> = shade.points.iter().map(|p| p.0).collect();
+            assert_eq!(xs.iter().cloned().fold(f64::INFINITY, f64::min), 8e-6);
+            assert_eq!(xs.iter().cloned().fold(0.0, f64::max), chart.x.range.1);
+            let ys: Vec<f64> = shade.points.iter().map(|p| p.1).collect();
+            assert!(ys.contains(&chart.y.range.0) && ys.contains(&chart.y.range.1));
+        }
+        assert_eq!(page.top.series[0].label.as_deref(), Some("reliable: λs ≥ cut-off"));
+        // Drawn as a filled polygon (SVG keeps the element).
+        let path = std::env::temp_dir().join(format!("kef-scan-shade-{}.svg", std::process::id()));
+        page.save(&path).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let _ = std::fs::remove_file(&path);
+        assert!(svg.contains("<polygon"), "no polygon in the SVG");
+    }
+
+    #[test]
+    fn a_cutoff_beyond_the_scan_shades_nothing_and_none_marks_nothing() {
+        let page = scan_page("t", &points(), Some(1.0)).unwrap();
+        assert!(page.top.series.iter().all(|s| s.style != LineStyle::Shade));
+        let page = scan_page("t", &points(), None).unwrap();
+        assert!(page.top.series.iter().all(|s| s.style == LineStyle::Solid));
+    }
 }

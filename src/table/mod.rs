@@ -22,6 +22,7 @@
 // kernel then runs everywhere, as on other targets).
 #[cfg(all(target_arch = "x86_64", not(ke_friction_portable)))]
 mod avx2;
+mod error;
 mod fastmath;
 pub(crate) mod format;
 mod layout;
@@ -49,24 +50,14 @@ trait FastKernel: Sized + Clone {
     fn batch(&self, psi: &[f64], theta: &[f64], f_star: &[f64], out: BatchOutput) -> Option<usize>;
 }
 
-impl crate::Classify for LookupError {
-    /// [`crate::ErrorKind::Argument`] for NaN or a length mismatch, else
-    /// [`crate::ErrorKind::Domain`].
-    fn kind(&self) -> crate::ErrorKind {
-        use LookupError::*;
-        match self {
-            OutOfDomain { value, .. } | BatchElement { value, .. } => crate::ErrorKind::of_value(*value),
-            LengthMismatch { .. } | CurveLengthMismatch { .. } => crate::ErrorKind::Argument,
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests;
 
 use crate::num::Shortest;
 use crate::params::{Constants, Params};
 use crate::spline::Axis;
+pub(crate) use error::scatter_pairs;
+pub use error::{LookupError, OnError};
 use format::{Coefs, Payload};
 pub use format::{TableError, FILE_MAX};
 
@@ -76,97 +67,6 @@ pub use format::{TableError, FILE_MAX};
 /// --exact` runs the exact one). Far below a table's own tolerance.
 pub const FAST_KERNEL_MAX_REL: f64 = 3e-6;
 use layout::Layout;
-
-/// A lookup argument outside a table's domain or a curve's range, or not
-/// a number.
-#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum LookupError {
-    /// The argument is NaN or outside `[lo, hi]`.
-    #[error("{name} = {} is outside the range [{}, {}]", Shortest(*.value), Shortest(*.lo), Shortest(*.hi))]
-    OutOfDomain {
-        /// `"psi"`, `"theta"` or `"f_star"`.
-        name: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// Lower end of the table's range.
-        lo: f64,
-        /// Upper end.
-        hi: f64,
-    },
-    /// Batch slices of different lengths.
-    #[error("batch slices differ in length: psi {psi}, theta {theta}, f_star {f_star}, out {out}")]
-    LengthMismatch {
-        /// Length of `psi`.
-        psi: usize,
-        /// Length of `theta`.
-        theta: usize,
-        /// Length of `f_star`.
-        f_star: usize,
-        /// Length of `out`.
-        out: usize,
-    },
-    /// A curve's batch slices of different lengths.
-    #[error("batch slices differ in length: f_star {f_star}, out {out}")]
-    CurveLengthMismatch {
-        /// Length of `f_star`.
-        f_star: usize,
-        /// Length of `out`.
-        out: usize,
-    },
-    /// A batch element was NaN or out of the domain; `index` says which.
-    #[error("batch element {index}: {name} = {} is outside the range [{}, {}]", Shortest(*.value), Shortest(*.lo), Shortest(*.hi))]
-    BatchElement {
-        /// Position in the slices.
-        index: usize,
-        /// `"psi"`, `"theta"` or `"f_star"`.
-        name: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// Lower end of the table's range.
-        lo: f64,
-        /// Upper end.
-        hi: f64,
-    },
-}
-
-impl LookupError {
-    /// This error as the error of batch element `index` (an element's own
-    /// [`OutOfDomain`](LookupError::OutOfDomain) becomes
-    /// [`BatchElement`](LookupError::BatchElement) with the same fields).
-    pub fn at(self, index: usize) -> LookupError {
-        match self {
-            LookupError::OutOfDomain { name, value, lo, hi }
-            | LookupError::BatchElement {
-                name, value, lo, hi, ..
-            } => LookupError::BatchElement {
-                index,
-                name,
-                value,
-                lo,
-                hi,
-            },
-            other => other,
-        }
-    }
-
-    /// For a caller that split a batch into pieces: a batch element's
-    /// index moved by `offset` (the piece's start); other errors as they are.
-    pub fn shifted(self, offset: usize) -> LookupError {
-        match self {
-            LookupError::BatchElement { index, .. } => self.at(index + offset),
-            other => other,
-        }
-    }
-
-    /// The element's index, for a batch element's error.
-    pub fn index(&self) -> Option<usize> {
-        match self {
-            LookupError::BatchElement { index, .. } => Some(*index),
-            _ => None,
-        }
-    }
-}
 
 /// Constants other than a table's ([`Table::check_constants`]).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -185,34 +85,6 @@ impl crate::Classify for ConstantsMismatch {
     /// [`crate::ErrorKind::Domain`]: valid constants the table does not cover.
     fn kind(&self) -> crate::ErrorKind {
         crate::ErrorKind::Domain
-    }
-}
-
-/// What a batch does at an element it cannot answer (NaN, or outside the
-/// table's domain or the curve's range). Every batch function of [`Table`]
-/// and [`Curve`](crate::Curve) follows it, and the C and Python bindings
-/// hand it on rather than re-implement it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum OnError {
-    /// Stop at the first bad element `i`: `out[..i]` holds the results,
-    /// `out[i..]` is untouched, and the error is
-    /// [`LookupError::BatchElement`] with index `i` and the element's own
-    /// error (see [`LookupError::shifted`] for split batches).
-    #[default]
-    Stop,
-    /// Write NaN at each bad element (a NaN pair for slopes) and finish the
-    /// batch; the call returns how many elements are NaN.
-    Nan,
-}
-
-impl OnError {
-    /// At bad element `index` with error `e`: go on (`Nan`), or the batch
-    /// error (`Stop`).
-    pub(crate) fn bad(self, index: usize, e: LookupError) -> Result<(), LookupError> {
-        match self {
-            OnError::Stop => Err(e.at(index)),
-            OnError::Nan => Ok(()),
-        }
     }
 }
 
@@ -769,6 +641,36 @@ impl Table {
     ) -> Result<(), LookupError> {
         self.batch(psi, theta, f_star, BatchOutput::WithSlope(out), OnError::Stop)
             .map(|_| ())
+    }
+
+    /// [`mu_with_slope_batch_with`](Self::mu_with_slope_batch_with) into
+    /// two arrays, `mu` and `slope` (as C and NumPy hold them), through a
+    /// stack buffer: no allocation. All five slices have one length
+    /// ([`LookupError::LengthMismatch`] otherwise, `out` the first of `mu`
+    /// and `slope` that differs); errors and NaNs as the pairs batch.
+    pub fn mu_with_slope_into(
+        &self,
+        psi: &[f64],
+        theta: &[f64],
+        f_star: &[f64],
+        mu: &mut [f64],
+        slope: &mut [f64],
+        on_error: OnError,
+    ) -> Result<usize, LookupError> {
+        let n = f_star.len();
+        let out = if mu.len() != n { mu.len() } else { slope.len() };
+        if psi.len() != n || theta.len() != n || out != n {
+            return Err(LookupError::LengthMismatch {
+                psi: psi.len(),
+                theta: theta.len(),
+                f_star: n,
+                out,
+            });
+        }
+        self.prepare_batch(n);
+        error::scatter_pairs(mu, slope, |r, out| {
+            self.mu_with_slope_batch_with(&psi[r.clone()], &theta[r.clone()], &f_star[r], out, on_error)
+        })
     }
 
     /// Readies the table for `n` lookups made in smaller batches: what a

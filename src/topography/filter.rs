@@ -163,6 +163,7 @@ fn like(t: &Topography, heights: Vec<f64>) -> Topography {
         ny: t.ny(),
         dx: t.dx(),
         dy: t.dy(),
+        metadata: t.metadata().clone(),
     }
 }
 

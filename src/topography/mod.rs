@@ -8,6 +8,7 @@
 //! light runtime does not).
 
 mod filter;
+mod metadata;
 mod psd;
 mod read;
 mod scale;
@@ -17,9 +18,13 @@ mod surface;
 mod write;
 
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
+pub use metadata::Metadata;
 pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
-pub use read::{read_bytes, read_file, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
-pub use scale::{scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow};
+pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
+pub use scale::{
+    default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
+    DISTANCES_PER_DECADE,
+};
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
@@ -33,13 +38,17 @@ pub use write::write_x3p;
 /// along x (rows = y, as in NumPy and X3P). A profile has `ny == 1` and no
 /// `dy`. Missing points (NaN in the file, or masked invalid by the
 /// instrument) are NaN here: kept as missing, never filled.
-#[derive(Debug, Clone, PartialEq)]
+///
+/// Two topographies are equal when their grids and heights are (the
+/// [`Metadata`] describes, it is not compared).
+#[derive(Debug, Clone)]
 pub struct Topography {
     heights: Vec<f64>,
     nx: usize,
     ny: usize,
     dx: f64,
     dy: Option<f64>,
+    metadata: Metadata,
 }
 
 /// Why a [`Topography`] cannot be made from the given heights.
@@ -84,6 +93,13 @@ impl crate::Classify for TopographyError {
     }
 }
 
+impl PartialEq for Topography {
+    fn eq(&self, other: &Topography) -> bool {
+        (self.nx, self.ny, self.dx, self.dy) == (other.nx, other.ny, other.dx, other.dy)
+            && self.heights == other.heights
+    }
+}
+
 impl Topography {
     /// A map of `ny` rows of `nx` heights (metres, row-major, NaN =
     /// missing) with sampling intervals `dx`, `dy` (metres).
@@ -121,7 +137,20 @@ impl Topography {
             ny,
             dx,
             dy,
+            metadata: Metadata::default(),
         })
+    }
+
+    /// What the file said about the measurement (empty for a topography
+    /// made from heights).
+    pub fn metadata(&self) -> &Metadata {
+        &self.metadata
+    }
+
+    /// The topography with `metadata` in place of its own.
+    pub fn with_metadata(mut self, metadata: Metadata) -> Topography {
+        self.metadata = metadata;
+        self
     }
 
     /// The heights, row-major (metres, NaN = missing).

@@ -152,6 +152,34 @@ pub fn scale_dependent_curvature(t: &Topography, distances: &[f64]) -> Result<Ve
     scale_dependent(t, distances, Order::Curvature)
 }
 
+/// Stencil lengths a decade of [`default_distances`].
+pub const DISTANCES_PER_DECADE: u32 = 5;
+
+/// The stencil lengths (metres) scale-dependent statistics of `t` are
+/// taken at when none are given: log-spaced, [`DISTANCES_PER_DECADE`] a
+/// decade, from `order`·max(dx, dy) (the shortest stencil of a slope, 1,
+/// or a curvature, 2) to half the scan size (the shorter side of a map),
+/// both ends included; the one shortest length when the scan is shorter
+/// than twice it. What `kefric surface --scale-dependent` and Python's
+/// `Surface.scale_dependent()` use.
+pub fn default_distances(t: &Topography, order: u32) -> Vec<f64> {
+    let dy = t.dy().unwrap_or(0.0);
+    let lo = f64::from(order.max(1)) * t.dx().max(dy);
+    let size = match t.dy() {
+        None => t.nx() as f64 * t.dx(),
+        Some(dy) => (t.nx() as f64 * t.dx()).min(t.ny() as f64 * dy),
+    };
+    let hi = size / 2.0;
+    if hi <= lo {
+        return vec![lo];
+    }
+    let per = f64::from(DISTANCES_PER_DECADE);
+    let n = ((per * (hi / lo).log10()).ceil() as usize).max(1);
+    let mut d: Vec<f64> = (0..n).map(|k| lo * 10f64.powf(k as f64 / per)).collect();
+    d.push(hi);
+    d
+}
+
 /// The length below which the tip of a scanning probe of radius
 /// `tip_radius` (metres) distorts the data, or `None` if it does not at
 /// the smallest scale (SurfaceTopography's

@@ -141,3 +141,72 @@ fn a_split_batch_reports_the_index_in_the_whole() {
     assert_eq!(e.index(), Some(73));
     assert_eq!(e.kind(), ke_friction::ErrorKind::Argument);
 }
+
+#[test]
+fn pairs_into_two_arrays_are_the_pairs_batch_across_buffer_boundaries() {
+    let mut rng = ChaCha8Rng::seed_from_u64(35);
+    for (name, t) in tables() {
+        // 700 elements: three stack buffers of 256, bad ones in each.
+        let ([p, th, f], bad) = queries(&t, 700, 9, &mut rng);
+        let mut pairs = vec![(0.0, 0.0); 700];
+        let want = t
+            .mu_with_slope_batch_with(&p, &th, &f, &mut pairs, OnError::Nan)
+            .unwrap();
+        let (mut mu, mut slope) = (vec![7.0; 700], vec![7.0; 700]);
+        let got = t
+            .mu_with_slope_into(&p, &th, &f, &mut mu, &mut slope, OnError::Nan)
+            .unwrap();
+        assert_eq!(got, want, "{name}");
+        for i in 0..700 {
+            assert_eq!(mu[i].to_bits(), pairs[i].0.to_bits(), "{name} mu[{i}]");
+            assert_eq!(slope[i].to_bits(), pairs[i].1.to_bits(), "{name} slope[{i}]");
+        }
+        // Stop: written before the first bad element, untouched from it.
+        let (mut mu, mut slope) = (vec![7.0; 700], vec![7.0; 700]);
+        let e = t
+            .mu_with_slope_into(&p, &th, &f, &mut mu, &mut slope, OnError::Stop)
+            .unwrap_err();
+        assert_eq!(e.index(), Some(bad[0]), "{name}");
+        assert!(mu[bad[0]..].iter().chain(&slope[bad[0]..]).all(|&v| v == 7.0), "{name}");
+        assert_eq!(mu[..bad[0]], pairs.iter().map(|p| p.0).collect::<Vec<_>>()[..bad[0]]);
+        // A slope array of another length is refused, nothing written.
+        let (mut mu, mut slope) = (vec![7.0; 700], vec![7.0; 699]);
+        let e = t
+            .mu_with_slope_into(&p, &th, &f, &mut mu, &mut slope, OnError::Nan)
+            .unwrap_err();
+        assert!(matches!(e, LookupError::LengthMismatch { out: 699, .. }), "{e}");
+        assert!(mu.iter().all(|&v| v == 7.0));
+    }
+    // A curve: the same.
+    let t = Table::embedded();
+    let c = t.curve(1.0, 0.001).unwrap();
+    let (lo, hi) = c.range();
+    let f: Vec<f64> = (0..600)
+        .map(|i| {
+            if i == 300 {
+                hi * 2.0
+            } else {
+                lo + (hi - lo) * i as f64 / 600.0
+            }
+        })
+        .collect();
+    let mut pairs = vec![(0.0, 0.0); 600];
+    c.mu_with_slope_batch_with(&f, &mut pairs, OnError::Nan).unwrap();
+    let (mut mu, mut slope) = (vec![0.0; 600], vec![0.0; 600]);
+    assert_eq!(c.mu_with_slope_into(&f, &mut mu, &mut slope, OnError::Nan).unwrap(), 1);
+    assert!(mu[300].is_nan() && slope[300].is_nan());
+    for i in (0..600).filter(|&i| i != 300) {
+        assert_eq!(
+            (mu[i].to_bits(), slope[i].to_bits()),
+            (pairs[i].0.to_bits(), pairs[i].1.to_bits())
+        );
+    }
+    let e = c
+        .mu_with_slope_into(&f, &mut mu, &mut slope, OnError::Stop)
+        .unwrap_err();
+    assert_eq!(e.index(), Some(300));
+    let e = c
+        .mu_with_slope_into(&f, &mut mu, &mut slope[..5], OnError::Nan)
+        .unwrap_err();
+    assert!(matches!(e, LookupError::CurveLengthMismatch { out: 5, .. }), "{e}");
+}

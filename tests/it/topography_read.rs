@@ -960,3 +960,33 @@ fn x3p_data_list_in_main_xml() {
         assert!(e.contains(needle) && e.contains(&format!("bad{k}.x3p")), "{e}");
     }
 }
+
+#[test]
+fn every_reading_names_its_format_in_the_metadata() {
+    let options = ReadOptions {
+        dx: Some(1e-6),
+        dy: Some(1e-6),
+        ..opts()
+    };
+    let t = ke_friction::topography::read_bytes(b"1 2 3 4\n5 6 7 8\n", "h.txt", &options).unwrap();
+    assert_eq!(t.metadata().format, Some("text"));
+    assert_eq!(t.metadata().channels, Vec::<String>::new());
+    // Heights made in memory carry none.
+    assert!(sample_map(3, 2, 1e-6, 1e-6).metadata().is_empty());
+}
+
+#[test]
+fn a_channel_chosen_for_a_single_channel_file_is_refused() {
+    use ke_friction::topography::Channel;
+    assert_eq!("2".parse::<Channel>(), Ok(Channel::Index(2)));
+    assert_eq!(" Height ".parse::<Channel>(), Ok(Channel::Name("Height".into())));
+    let options = ReadOptions {
+        dx: Some(1e-6),
+        dy: Some(1e-6),
+        channel: Some(Channel::Index(0)),
+        ..opts()
+    };
+    let e = ke_friction::topography::read_bytes(b"1 2 3 4\n5 6 7 8\n", "h.txt", &options).unwrap_err();
+    assert!(matches!(e, ReadError::Channel { .. }), "{e}");
+    assert!(e.to_string().contains("only one"), "{e}");
+}

@@ -189,3 +189,22 @@ fn missing_points_and_bad_arguments_are_refused() {
     }
     assert!(scale_dependent_slope(&t, &[]).unwrap().is_empty());
 }
+
+#[test]
+fn default_distances_run_five_a_decade_from_the_shortest_stencil_to_half_the_scan() {
+    use ke_friction::topography::{default_distances, Topography};
+    // 200 x 100 points, dx = 1 µm, dy = 2 µm: shorter side 200 µm.
+    let t = Topography::map(vec![0.0; 200 * 100], 200, 100, 1e-6, 2e-6).unwrap();
+    for order in [1u32, 2] {
+        let d = default_distances(&t, order);
+        assert_eq!(d[0], f64::from(order) * 2e-6);
+        assert!((*d.last().unwrap() / 100e-6 - 1.0).abs() < 1e-15);
+        for w in d.windows(2).take(d.len() - 2) {
+            assert!((w[1] / w[0] - 10f64.powf(0.2)).abs() < 1e-12);
+        }
+        assert!(d.windows(2).all(|w| w[1] > w[0]));
+    }
+    // A scan shorter than twice the stencil: the one shortest length.
+    let t = Topography::profile(vec![0.0; 3], 1e-6).unwrap();
+    assert_eq!(default_distances(&t, 2), vec![2e-6]);
+}

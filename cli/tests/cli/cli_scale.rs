@@ -233,7 +233,7 @@ fn bad_scales_are_refused_naming_the_numbers() {
         (&["--lambda-s", "1e-6"][..], "at least 2·max(dx, dy) = 3e-6 m"),
         (&["--lambda-c", "1e-3"][..], "at most the scan size"),
         (&["--lambda-s", "auto"][..], "give --tip-radius or --resolution"),
-        (&["--csv"][..], "--csv: with --scan or --psd"),
+        (&["--csv"][..], "--csv: with --scan, --psd or --scale-dependent"),
         (&["--scan", "--from", "1e-5", "--to", "1e-6"][..], "need 0 < from <= to"),
     ] {
         let o = kefric(&[&["surface", &file][..], args].concat());
@@ -270,4 +270,42 @@ fn plot_surface_draws_the_psd_and_the_scan() {
     let out = dir.arg("two.png");
     let o = kefric(&["plot", "surface", &file, &file, "--psd", "--out", &out]);
     assert_bad_input(&o, "take one surface file");
+}
+
+#[test]
+fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances() {
+    use ke_friction::topography::{default_distances, scale_dependent_curvature, scale_dependent_slope};
+    let dir = TempDir::new("scale-dependent");
+    let (file, t) = map(&dir);
+    let doc = json(&["surface", &file, "--scale-dependent", "--json"]);
+    let d = default_distances(&t, 1);
+    let got = |name: &str| -> Vec<Option<f64>> { doc[name].as_array().unwrap().iter().map(Value::as_f64).collect() };
+    let distance: Vec<f64> = got("distance").into_iter().map(Option::unwrap).collect();
+    assert_eq!(distance, d);
+    let slope = scale_dependent_slope(&t, &d).unwrap();
+    let curvature = scale_dependent_curvature(&t, &d).unwrap();
+    let shortest_curvature = default_distances(&t, 2)[0];
+    for (k, (s, c)) in slope.iter().zip(&curvature).enumerate() {
+        assert_eq!(got("slope_x")[k], Some(s.x));
+        assert_eq!(got("slope_y")[k], s.y);
+        if d[k] < shortest_curvature * (1.0 - 1e-12) {
+            assert_eq!(got("curvature_x")[k], None, "no curvature below 2·max(dx, dy)");
+        } else {
+            assert_eq!(got("curvature_x")[k], Some(c.x));
+            assert_eq!(got("curvature_y")[k], c.y);
+        }
+    }
+    // The slope falls with the scale on this self-affine map.
+    assert!(slope.first().unwrap().x > 2.0 * slope.last().unwrap().x);
+    // CSV: a header and one row a distance; the text adds the cut-off.
+    let o = kefric(&["surface", &file, "--scale-dependent", "--csv"]);
+    let csv = String::from_utf8(o.stdout).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("distance,slope_x,slope_y,curvature_x,curvature_y"));
+    assert_eq!(lines.count(), d.len());
+    let o = kefric(&["surface", &file, "--scale-dependent", "--tip-radius", "1e-9"]);
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.contains("# reliability cut-off: "), "{text}");
+    let o = kefric(&["surface", &file, "--scale-dependent", "--scan"]);
+    assert_eq!(o.status.code(), Some(2));
 }

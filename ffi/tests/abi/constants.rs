@@ -115,14 +115,11 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
         assert_eq!(kef_constants_set_fit(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
         assert_eq!(
             last_error(),
-            "fit \"AsPrinted\" is unknown: must be \"consistent\" or \"as-printed\""
+            "fit 'AsPrinted' is unknown: must be one of consistent, as-printed"
         );
         assert_eq!(name(kef_constants_fit(c)), "consistent");
         assert_eq!(kef_constants_set_model(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
-        assert_eq!(
-            last_error(),
-            "model \"AsPrinted\" is unknown: must be \"ke\" or \"ceb\""
-        );
+        assert_eq!(last_error(), "model 'AsPrinted' is unknown: must be one of ke, ceb");
         assert_eq!(kef_constants_set_model(c, null()), KEF_ERR_ARGUMENT);
         assert_eq!(last_error(), "name is NULL");
         assert_eq!(kef_constants_set_beta(null_mut(), 0.05), KEF_ERR_ARGUMENT);
@@ -424,5 +421,54 @@ fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
         assert_eq!(kef_table_mu(t, 2.0, 0.002, 1e-2, &mut plain), KEF_OK);
         assert_eq!(mu[1], plain);
         kef_constants_free(c);
+    }
+}
+
+#[test]
+fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
+    let (by_name, by_code) = (kef_constants_new(), kef_constants_new());
+    // SAFETY (every call): live handles or NULL, NUL-terminated strings.
+    unsafe {
+        for (name, code) in [
+            ("pearson", KEF_DIST_PEARSON),
+            ("weibull", KEF_DIST_WEIBULL),
+            ("gaussian", KEF_DIST_GAUSSIAN),
+        ] {
+            let name = CString::new(name).unwrap();
+            assert_eq!(
+                kef_constants_set_distribution_named(by_name, name.as_ptr(), 0.2, 4.0),
+                KEF_OK,
+                "{}",
+                last_error()
+            );
+            assert_eq!(kef_constants_set_distribution(by_code, code, 0.2, 4.0), KEF_OK);
+            let (mut a, mut b) = (0.0, 0.0);
+            assert_eq!(kef_model_mu_with(by_name, 1.0, 0.001, 1e-4, &mut a), KEF_OK);
+            assert_eq!(kef_model_mu_with(by_code, 1.0, 0.001, 1e-4, &mut b), KEF_OK);
+            assert_eq!(a.to_bits(), b.to_bits(), "{name:?}");
+        }
+        // An unknown name: the core's message with every name; NULL refused.
+        let bad = CString::new("lognormal").unwrap();
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, bad.as_ptr(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert_eq!(
+            last_error(),
+            "distribution 'lognormal' is unknown: must be one of gaussian, pearson, weibull, empirical"
+        );
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, null(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        // "empirical" is by kef_constants_set_heights.
+        let empirical = CString::new("empirical").unwrap();
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, empirical.as_ptr(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert!(last_error().contains("kef_constants_set_heights"), "{}", last_error());
+        kef_constants_free(by_name);
+        kef_constants_free(by_code);
     }
 }

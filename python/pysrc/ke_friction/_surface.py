@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 import numbers
 import os
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 
@@ -229,7 +229,7 @@ class Surface:
              z_unit: float = 1.0, xy_unit: float = 1.0, detrend: str = "plane", derivative: str = "fd",
              max_points: Optional[int] = None, lambda_s: Union[float, str, None] = None,
              lambda_c: Optional[float] = None, tip_radius: Optional[float] = None,
-             resolution: Optional[float] = None) -> "Surface":
+             resolution: Optional[float] = None, channel: Union[str, int, None] = None) -> "Surface":
         """The surface in the file ``path``, by the library's reader (as
         ``kefric surface`` reads it): ISO 25178-72 X3P (``.x3p``), NumPy
         ``.npy`` (1-D a profile, 2-D a map, rows = y; f4 or f8) or, any
@@ -251,6 +251,10 @@ class Surface:
         an integer >= 1; None (the default) is the library's limit,
         ``MAX_POINTS`` = 2**28. A file whose declared size is over it is
         refused before its heights are allocated.
+        ``channel``: for a file with several channels (AFM: height,
+        amplitude, phase, ...), the one to read, by name (any case) or
+        index from 0; None (the default) is the height channel. A wrong or
+        ambiguous choice is a ValueError listing the file's channels.
 
         OSError if the file cannot be read; ValueError, naming the file,
         for one that is not a readable surface (damaged, unsupported, no
@@ -275,8 +279,14 @@ class Surface:
             if not 1 <= max_points < 2**64:
                 raise ValueError(f"max_points = {max_points} is out of range: must be an integer in [1, 2**64 - 1] "
                                  "(points), or None for the library's limit")
+        if channel is not None:
+            if isinstance(channel, bool) or not isinstance(channel, (str, numbers.Integral)):
+                raise TypeError(f"channel must be a str, an int or None, not {type(channel).__name__}")
+            if isinstance(channel, numbers.Integral) and channel < 0:
+                raise ValueError(f"channel = {channel} is out of range: must be an index >= 0 or a name")
+            channel = str(channel)
         return Surface(_core.SurfaceCore.read(os.fspath(path), dx, dy, z_unit, xy_unit, *options, max_points,
-                                              **filters))
+                                              channel=channel, **filters))
 
     @staticmethod
     def from_topography(topography: Any, *, unit: Optional[str] = None, detrend: str = "plane",
@@ -346,6 +356,16 @@ class Surface:
                 raise ValueError(f"derivative: the surfaces have {va!r} and {vb!r}: give derivative=")
             derivative = va
         return Surface(_core.SurfaceCore.pair(a._core, b._core, *Surface._options(detrend, derivative)))
+
+    @property
+    def metadata(self) -> List[Dict[str, Any]]:
+        """What each part's file said about its measurement, one dict per
+        part (one, or two for a pair), by the library's record names (what
+        ``kefric surface --json`` prints as ``"metadata"``): ``format``,
+        and where the file gives them ``instrument``, ``date``,
+        ``channel``, ``channels``, ``height_unit``; empty for heights not
+        read from a file."""
+        return self._core.metadata()
 
     @property
     def stats(self) -> Dict[str, Any]:
@@ -522,8 +542,10 @@ class Surface:
     def scale_dependent(self, distances: Optional[ArrayLike] = None, order: int = 1) -> Dict[str, np.ndarray]:
         """The scale-dependent rms slope (``order=1``) or curvature
         (``order=2``, 1/m) of the unfiltered heights at each stencil length
-        in ``distances`` (metres; by default log-spaced, 5 a decade, from
-        ``order`` dx to half the scan size) (Sanner et al. 2022; the
+        in ``distances`` (metres; by default the library's
+        ``default_distances``: log-spaced, 5 a decade, from ``order`` x
+        max(dx, dy) to half the scan size, as ``kefric surface
+        --scale-dependent``) (Sanner et al. 2022; the
         library's ``scale_dependent_slope``, ``scale_dependent_curvature``):
         ``{"distance", "x"}``, and ``"y"`` for a map; NaN where fewer than 4
         points have their stencil in the data. Of a single surface without
@@ -531,11 +553,7 @@ class Surface:
         if isinstance(order, bool) or order not in (1, 2):
             raise ValueError(f"order = {order!r}: must be 1 (slope) or 2 (curvature)")
         if distances is None:
-            s = self.stats
-            size = s["size_x"] if s["size_y"] is None else min(s["size_x"], s["size_y"])
-            lo, hi = order * max(s["dx"], s["dy"] or 0.0), size / 2
-            n = max(int(np.ceil(5 * np.log10(hi / lo))), 1)
-            d = np.append(lo * 10.0 ** (np.arange(n) / 5), hi)
+            d = self._core.default_distances(int(order))
         else:
             d = np.ascontiguousarray(np.atleast_1d(np.asarray(distances, dtype=np.float64)))
             if d.ndim != 1:

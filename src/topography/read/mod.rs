@@ -40,6 +40,9 @@ pub const MAX_POINTS: u64 = 1 << 28;
 /// contradicts the file's own.
 const CONFLICT_REL: f64 = 1e-6;
 
+/// How many of a file's first bytes a format's signature check sees.
+const SNIFF_BYTES: usize = 64;
+
 /// A file format the readers know: a handle to its entry in the
 /// registry ([`Format::all`]). Compare by [`Format::name`].
 #[derive(Clone, Copy)]
@@ -178,6 +181,49 @@ pub struct ReadOptions {
     /// default): checked against the size a file declares before anything
     /// is allocated, so that memory stays bounded by the result.
     pub max_points: u64,
+    /// The channel to read from a file with several (AFM: height,
+    /// amplitude, phase, ...); `None` = the height channel.
+    pub channel: Option<Channel>,
+}
+
+/// A channel of a file with several, by name (any case) or by its index in
+/// the file (from 0, in the order the error lists them).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Channel {
+    /// The channel's name as the file gives it (any case).
+    Name(String),
+    /// The channel's index in the file, from 0.
+    Index(usize),
+}
+
+impl std::str::FromStr for Channel {
+    type Err = std::convert::Infallible;
+
+    /// A whole number is an index; anything else a name.
+    fn from_str(text: &str) -> Result<Channel, Self::Err> {
+        Ok(match text.trim().parse::<usize>() {
+            Ok(index) => Channel::Index(index),
+            Err(_) => Channel::Name(text.trim().to_string()),
+        })
+    }
+}
+
+impl std::fmt::Display for Channel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Channel::Name(name) => f.write_str(name),
+            Channel::Index(index) => write!(f, "{index}"),
+        }
+    }
+}
+
+/// `0 Height, 1 Phase, ...` for an error message.
+fn list_channels(names: &[String]) -> String {
+    if names.is_empty() {
+        return "none".into();
+    }
+    let listed: Vec<String> = names.iter().enumerate().map(|(i, n)| format!("{i} {n}")).collect();
+    listed.join(", ")
 }
 
 impl Default for ReadOptions {
@@ -190,6 +236,7 @@ impl Default for ReadOptions {
             format: None,
             max_bytes: MAX_BYTES,
             max_points: MAX_POINTS,
+            channel: None,
         }
     }
 }
@@ -346,6 +393,29 @@ pub enum ReadError {
         /// Its value.
         value: f64,
     },
+    /// A malformed file of an instrument's own format (`.sur`, `.plu`,
+    /// `.opd`, MetroPro `.dat`, Nanoscope `.di`, `.nid`, `.al3d`): a bad
+    /// header, an offset or size outside the file.
+    #[error("{}: not a readable {format} file: {detail}", path.display())]
+    Format {
+        /// The file.
+        path: PathBuf,
+        /// The format's description.
+        format: &'static str,
+        /// What is wrong.
+        detail: String,
+    },
+    /// The channel asked for ([`ReadOptions::channel`]) is not in the file,
+    /// or the file has several height channels and none was asked for.
+    #[error("{}: {detail}; the file's channels: {}", path.display(), list_channels(available))]
+    Channel {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        detail: String,
+        /// The file's channels, in its order.
+        available: Vec<String>,
+    },
     /// The data read do not make a topography (an infinite height, an
     /// interval out of range).
     #[error("{}: {source}", path.display())]
@@ -376,6 +446,8 @@ impl ReadError {
             | ReadError::NeedInterval { path, .. }
             | ReadError::Conflict { path, .. }
             | ReadError::Options { path, .. }
+            | ReadError::Format { path, .. }
+            | ReadError::Channel { path, .. }
             | ReadError::Topography { path, .. } => path,
         }
     }
@@ -478,7 +550,7 @@ fn read_from(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions)
     let format = match options.format {
         Some(format) => format,
         None => {
-            let mut head = [0u8; 16];
+            let mut head = [0u8; SNIFF_BYTES];
             let mut got = 0;
             while got < head.len() {
                 match source.read(&mut head[got..]) {
@@ -492,7 +564,18 @@ fn read_from(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions)
             Format::detect(cx.path, &head[..got])
         }
     };
-    (format.0.read)(cx, source, len, options)
+    let topography = (format.0.read)(cx, source, len, options)?;
+    if options.channel.is_some() && topography.metadata().channels.is_empty() {
+        return Err(ReadError::Channel {
+            path: cx.path(),
+            detail: format!("a channel is chosen, but a {} file has only one", format.name()),
+            available: Vec::new(),
+        });
+    }
+    // Every reading says its format; a reader fills in the rest.
+    let mut metadata = topography.metadata().clone();
+    metadata.format.get_or_insert(format.name());
+    Ok(topography.with_metadata(metadata))
 }
 
 /// The file being read, for the readers' errors.
@@ -541,6 +624,55 @@ impl Ctx<'_> {
         ReadError::Unsupported {
             path: self.path(),
             detail: detail.into(),
+        }
+    }
+
+    /// A malformed file of `format` (its description).
+    #[allow(dead_code)] // until the instrument readers use it
+    fn format(&self, format: &'static str, detail: impl Into<String>) -> ReadError {
+        ReadError::Format {
+            path: self.path(),
+            format,
+            detail: detail.into(),
+        }
+    }
+
+    /// The index of the channel to read among `names` (the file's
+    /// channels, in order): the one the options ask for, else `default`
+    /// (the file's height channel, if the reader can tell), else the only
+    /// one; an error listing them when the choice is wrong or ambiguous.
+    #[allow(dead_code)] // until the instrument readers use it
+    fn channel(&self, names: &[String], default: Option<usize>, options: &ReadOptions) -> Result<usize, ReadError> {
+        let error = |detail: String| ReadError::Channel {
+            path: self.path(),
+            detail,
+            available: names.to_vec(),
+        };
+        match &options.channel {
+            Some(Channel::Index(i)) if *i < names.len() => Ok(*i),
+            Some(Channel::Index(i)) => Err(error(format!(
+                "channel {i} is out of range: must be 0 to {}",
+                names.len().saturating_sub(1)
+            ))),
+            Some(Channel::Name(name)) => {
+                let found: Vec<usize> = (0..names.len())
+                    .filter(|&i| names[i].eq_ignore_ascii_case(name))
+                    .collect();
+                match found[..] {
+                    [i] => Ok(i),
+                    [] => Err(error(format!("no channel is called \"{name}\""))),
+                    _ => Err(error(format!("several channels are called \"{name}\": give its index"))),
+                }
+            }
+            None => match (default, names.len()) {
+                (Some(i), _) if i < names.len() => Ok(i),
+                (_, 1) => Ok(0),
+                (_, 0) => Err(error("the file has no channel of heights".into())),
+                _ => Err(error(
+                    "the file has several channels and none is a height channel: choose one with channel / --channel"
+                        .into(),
+                )),
+            },
         }
     }
 
