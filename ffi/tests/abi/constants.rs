@@ -373,55 +373,6 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
     }
 }
 
-#[test]
-fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
-    let (by_name, by_code) = (kef_constants_new(), kef_constants_new());
-    // SAFETY (every call): live handles or NULL, NUL-terminated strings.
-    unsafe {
-        for (name, code) in [
-            ("pearson", KEF_DIST_PEARSON),
-            ("weibull", KEF_DIST_WEIBULL),
-            ("gaussian", KEF_DIST_GAUSSIAN),
-        ] {
-            let name = CString::new(name).unwrap();
-            assert_eq!(
-                kef_constants_set_distribution_named(by_name, name.as_ptr(), 0.2, 4.0),
-                KEF_OK,
-                "{}",
-                last_error()
-            );
-            assert_eq!(kef_constants_set_distribution(by_code, code, 0.2, 4.0), KEF_OK);
-            let (mut a, mut b) = (0.0, 0.0);
-            assert_eq!(kef_model_mu_with(by_name, 1.0, 0.001, 1e-4, &mut a), KEF_OK);
-            assert_eq!(kef_model_mu_with(by_code, 1.0, 0.001, 1e-4, &mut b), KEF_OK);
-            assert_eq!(a.to_bits(), b.to_bits(), "{name:?}");
-        }
-        // An unknown name: the core's message with every name; NULL refused.
-        let bad = CString::new("lognormal").unwrap();
-        assert_eq!(
-            kef_constants_set_distribution_named(by_name, bad.as_ptr(), 0.0, 3.0),
-            KEF_ERR_ARGUMENT
-        );
-        assert_eq!(
-            last_error(),
-            "distribution 'lognormal' is unknown: must be one of gaussian, pearson, weibull, empirical"
-        );
-        assert_eq!(
-            kef_constants_set_distribution_named(by_name, null(), 0.0, 3.0),
-            KEF_ERR_ARGUMENT
-        );
-        // "empirical" is by kef_constants_set_heights.
-        let empirical = CString::new("empirical").unwrap();
-        assert_eq!(
-            kef_constants_set_distribution_named(by_name, empirical.as_ptr(), 0.0, 3.0),
-            KEF_ERR_ARGUMENT
-        );
-        assert!(last_error().contains("kef_constants_set_heights"), "{}", last_error());
-        kef_constants_free(by_name);
-        kef_constants_free(by_code);
-    }
-}
-
 /// The issue-38 case: ψ, θ of a measured surface whose β is 0.117 and
 /// whose heights are Pearson, looked up in the default table. The plain
 /// lookup cannot know; kef_table_mu_with refuses, naming β and both values,
@@ -470,5 +421,54 @@ fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
         assert_eq!(kef_table_mu(t, 2.0, 0.002, 1e-2, &mut plain), KEF_OK);
         assert_eq!(mu[1], plain);
         kef_constants_free(c);
+    }
+}
+
+#[test]
+fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
+    let (by_name, by_code) = (kef_constants_new(), kef_constants_new());
+    // SAFETY (every call): live handles or NULL, NUL-terminated strings.
+    unsafe {
+        for (name, code) in [
+            ("pearson", KEF_DIST_PEARSON),
+            ("weibull", KEF_DIST_WEIBULL),
+            ("gaussian", KEF_DIST_GAUSSIAN),
+        ] {
+            let name = CString::new(name).unwrap();
+            assert_eq!(
+                kef_constants_set_distribution_named(by_name, name.as_ptr(), 0.2, 4.0),
+                KEF_OK,
+                "{}",
+                last_error()
+            );
+            assert_eq!(kef_constants_set_distribution(by_code, code, 0.2, 4.0), KEF_OK);
+            let (mut a, mut b) = (0.0, 0.0);
+            assert_eq!(kef_model_mu_with(by_name, 1.0, 0.001, 1e-4, &mut a), KEF_OK);
+            assert_eq!(kef_model_mu_with(by_code, 1.0, 0.001, 1e-4, &mut b), KEF_OK);
+            assert_eq!(a.to_bits(), b.to_bits(), "{name:?}");
+        }
+        // An unknown name: the core's message with every name; NULL refused.
+        let bad = CString::new("lognormal").unwrap();
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, bad.as_ptr(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert_eq!(
+            last_error(),
+            "distribution 'lognormal' is unknown: must be one of gaussian, pearson, weibull, empirical"
+        );
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, null(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        // "empirical" is by kef_constants_set_heights.
+        let empirical = CString::new("empirical").unwrap();
+        assert_eq!(
+            kef_constants_set_distribution_named(by_name, empirical.as_ptr(), 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert!(last_error().contains("kef_constants_set_heights"), "{}", last_error());
+        kef_constants_free(by_name);
+        kef_constants_free(by_code);
     }
 }
