@@ -68,29 +68,6 @@ pub use format::{TableError, FILE_MAX};
 pub const FAST_KERNEL_MAX_REL: f64 = 3e-6;
 use layout::Layout;
 
-<<<<<<< HEAD
-=======
-/// Constants other than a table's ([`Table::check_constants`]).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{name} = {given}, but the table holds {name} = {table}: it answers for its own constants only (build a table for these, or use a curve or the model)")]
-pub struct ConstantsMismatch {
-    /// The constant's record name (`beta`, `nu`, `eps_star`, `fit`,
-    /// `model`, `distribution`).
-    pub name: &'static str,
-    /// The value given.
-    pub given: String,
-    /// The table's.
-    pub table: String,
-}
-
-impl crate::Classify for ConstantsMismatch {
-    /// [`crate::ErrorKind::Domain`]: valid constants the table does not cover.
-    fn kind(&self) -> crate::ErrorKind {
-        crate::ErrorKind::Domain
-    }
-}
-
->>>>>>> wt-p38a
 /// What a table covers: the ranges of its three arguments and the model
 /// constants it was built with (the same at every point).
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
