@@ -115,7 +115,8 @@ struct SurfacePlotArgs {
     read: crate::surface::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
-    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]    f_star: Option<String>,
+    #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
+    f_star: Option<String>,
     /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
     #[arg(long, conflicts_with = "scan")]
     psd: bool,

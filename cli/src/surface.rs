@@ -79,7 +79,13 @@ fn formats_help() -> String {
     let mut help = String::from("Formats (by the file's extension, else by its content):\n");
     // A format chosen by neither (text read as a matrix) is left out.
     let formats: Vec<Format> = Format::all().filter(|f| !f.extensions().is_empty()).collect();
-    let extensions = |f: &Format| f.extensions().iter().map(|e| format!(".{e}")).collect::<Vec<_>>().join(" ");
+    let extensions = |f: &Format| {
+        f.extensions()
+            .iter()
+            .map(|e| format!(".{e}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
     let name_width = formats.iter().map(|f| f.name().len()).max().unwrap_or(0);
     let ext_width = formats.iter().map(|f| extensions(f).len()).max().unwrap_or(0);
     for f in &formats {
@@ -91,27 +97,6 @@ fn formats_help() -> String {
         ));
     }
     help
-}
-
-/// The formats read, one line each, from the readers' registry: the
-/// format's name and description, and its extensions. The README lists
-/// the same lines (a test checks).
-pub fn formats_help() -> String {
-    let mut out = String::from("Formats (chosen by the file's extension and content):\n");
-    for f in Format::all() {
-        out += &format!("  {}\n", format_line(f));
-    }
-    out
-}
-
-/// `name: description (.ext, .ext)`.
-pub fn format_line(f: Format) -> String {
-    let extensions: Vec<String> = f.extensions().iter().map(|e| format!(".{e}")).collect();
-    if extensions.is_empty() {
-        format!("{}: {}", f.name(), f.description())
-    } else {
-        format!("{}: {} ({})", f.name(), f.description(), extensions.join(", "))
-    }
 }
 
 /// How a surface file is read and its statistics taken.

@@ -31,7 +31,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<surface::SurfaceCore>()?;
     m.add_class::<law::FrictionLawCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
-    m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;    m.add_function(wrap_pyfunction!(model::contact_warnings, m)?)?;
+    m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;
+    m.add_function(wrap_pyfunction!(model::contact_warnings, m)?)?;
     m.add("WARNING_KINDS", <ke_friction::WarningKind as Named>::names())?;
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -234,7 +234,19 @@ fn the_format_is_chosen_by_extension_and_content() {
     let names: Vec<&str> = Format::all().map(Format::name).collect();
     assert_eq!(
         names,
-        ["x3p", "npy", "text", "matrix", "sur", "plu", "opd", "al3d", "metropro", "nanoscope", "nid"]
+        [
+            "x3p",
+            "npy",
+            "text",
+            "matrix",
+            "sur",
+            "plu",
+            "opd",
+            "al3d",
+            "metropro",
+            "nanoscope",
+            "nid"
+        ]
     );
     for f in Format::all() {
         assert_eq!(Format::from_name(&f.name().to_uppercase()), Some(f));
