@@ -1,6 +1,7 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use crate::args::{describe, number, warn, Failure, ModelArgs};
+use crate::args::{describe, number, warn, Failure};
+use crate::model_args::ModelArgs;
 use crate::surface::{sig, LoadArgs};
 use ke_friction::{Contact, Friction, Warnings};
 
@@ -114,7 +115,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             #[serde(flatten)]
             contact: &'a Contact,
             #[serde(flatten, skip_serializing_if = "Option::is_none")]
-            source: Option<&'a crate::args::SurfaceSource>,
+            source: Option<&'a crate::model_args::SurfaceSource>,
         }
         for c in &contacts {
             let row = Row {
@@ -164,7 +165,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 fn run_loads(
     args: &Args,
     model: &ke_friction::Model,
-    source: Option<&crate::args::SurfaceSource>,
+    source: Option<&crate::model_args::SurfaceSource>,
 ) -> Result<(), Failure> {
     let flag = args.load.flag();
     let Some(physical) = args.model.physical(source)? else {
@@ -189,7 +190,7 @@ fn run_loads(
             #[serde(flatten)]
             friction: &'a Friction,
             #[serde(flatten, skip_serializing_if = "Option::is_none")]
-            source: Option<&'a crate::args::SurfaceSource>,
+            source: Option<&'a crate::model_args::SurfaceSource>,
         }
         for f in &rows {
             let row = Row {

@@ -30,6 +30,7 @@ mod heights;
 mod info;
 mod law;
 mod lookup;
+mod model_args;
 mod params;
 mod plot;
 mod scale;

@@ -1,9 +1,8 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map, μ(F*) for non-Gaussian heights. PNG or SVG by the output file's extension.
 
-use crate::args::{
-    check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure, ModelArgs,
-};
+use crate::args::{check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure};
+use crate::model_args::ModelArgs;
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::topography::{psd_all, scan, Psd, ScanRange, Window};
 use ke_friction::{Family, Fit, LookupError, ModelKind, Shortest};
