@@ -1,4 +1,4 @@
-//! The model's flags shared by `eval`, `lookup`, `law` and `plot`: ψ and θ
+//! The model's flags shared by `eval`, `law` and `plot`: ψ and θ
 //! (with the constants), the SI inputs, or a measured surface with the
 //! materials. Apart from `args.rs` so that the shared flags (`args`) and
 //! the measured surface's (`surface`) depend on nothing of each other.
