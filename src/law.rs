@@ -32,6 +32,10 @@ use crate::{
     CURVE_ACCURACY,
 };
 
+/// Pressures a batch converts to F* at a time (a stack buffer: no
+/// allocation).
+const BATCH: usize = 256;
+
 /// What a [`FrictionLaw`] does at a pressure outside its range
 /// `[p_min, p_max]` (a positive, finite pressure; p ≤ 0 and NaN are
 /// always errors).
@@ -378,17 +382,37 @@ impl FrictionLaw {
     pub fn mu_batch(&self, p: &[f64], mu: &mut [f64], on_error: OnError) -> Result<usize, PressureError> {
         lengths(p.len(), "mu", mu.len())?;
         let mut nan = 0;
-        for (i, (&p, out)) in p.iter().zip(mu.iter_mut()).enumerate() {
-            match self.mu(p) {
-                Ok(v) => *out = v,
-                Err(e) => {
-                    bad(on_error, i, e)?;
-                    *out = f64::NAN;
-                    nan += 1;
+        let (mut f, mut got) = ([0.0; BATCH], [0.0; BATCH]);
+        for (k, (p, out)) in p.chunks(BATCH).zip(mu.chunks_mut(BATCH)).enumerate() {
+            let (f, got) = (&mut f[..p.len()], &mut got[..p.len()]);
+            self.loads(p, f);
+            // The curve's batch (its AVX2 kernel where the CPU has one):
+            // NaN exactly where p/H is outside its range or NaN.
+            let _ = self.curve.mu_batch_with(f, got, OnError::Nan);
+            for (i, (&v, o)) in got.iter().zip(out.iter_mut()).enumerate() {
+                if !v.is_nan() {
+                    *o = v;
+                    continue;
+                }
+                match self.outside(p[i]) {
+                    Ok((m, _)) => *o = m,
+                    Err(e) => {
+                        bad(on_error, k * BATCH + i, e)?;
+                        *o = f64::NAN;
+                        nan += 1;
+                    }
                 }
             }
         }
         Ok(nan)
+    }
+
+    /// F* = p/H of each pressure.
+    #[inline]
+    fn loads(&self, p: &[f64], f: &mut [f64]) {
+        for (f, &p) in f.iter_mut().zip(p) {
+            *f = p / self.hardness;
+        }
     }
 
     /// μ and dμ/dp (1/Pa) at many pressures, into `mu` and `dmu_dp`; the
@@ -404,13 +428,29 @@ impl FrictionLaw {
         lengths(p.len(), "mu", mu.len())?;
         lengths(p.len(), "dmu_dp", dmu_dp.len())?;
         let mut nan = 0;
-        for (i, ((&p, m), d)) in p.iter().zip(mu.iter_mut()).zip(dmu_dp.iter_mut()).enumerate() {
-            match self.mu_and_derivative(p) {
-                Ok(v) => (*m, *d) = v,
-                Err(e) => {
-                    bad(on_error, i, e)?;
-                    (*m, *d) = (f64::NAN, f64::NAN);
-                    nan += 1;
+        let (mut f, mut got) = ([0.0; BATCH], [(0.0, 0.0); BATCH]);
+        for (k, ((p, m), d)) in p
+            .chunks(BATCH)
+            .zip(mu.chunks_mut(BATCH))
+            .zip(dmu_dp.chunks_mut(BATCH))
+            .enumerate()
+        {
+            let (f, got) = (&mut f[..p.len()], &mut got[..p.len()]);
+            self.loads(p, f);
+            // The curve's pairs batch; NaN pairs outside its range.
+            let _ = self.curve.mu_with_slope_batch_with(f, got, OnError::Nan);
+            for (i, ((&(v, slope), m), d)) in got.iter().zip(m.iter_mut()).zip(d.iter_mut()).enumerate() {
+                if !v.is_nan() {
+                    (*m, *d) = (v, slope / self.hardness);
+                    continue;
+                }
+                match self.outside(p[i]) {
+                    Ok(v) => (*m, *d) = v,
+                    Err(e) => {
+                        bad(on_error, k * BATCH + i, e)?;
+                        (*m, *d) = (f64::NAN, f64::NAN);
+                        nan += 1;
+                    }
                 }
             }
         }
@@ -569,6 +609,56 @@ mod tests {
         assert_eq!(e.kind(), ErrorKind::NoMu);
         assert_eq!(law.mu(f64::NAN).unwrap_err().kind(), ErrorKind::Argument);
         assert_eq!(law.clamped(), 0);
+    }
+
+    #[test]
+    fn long_batches_are_the_scalar_calls_bit_for_bit_across_buffers() {
+        // 1000 pressures over three stack buffers: in range, beyond each
+        // end, open (p <= 0), NaN and infinite, at scattered places.
+        let p: Vec<f64> = (0..1000)
+            .map(|i| match i % 97 {
+                3 => 10.0,
+                17 => 5e8,
+                41 => -1.0,
+                59 => f64::NAN,
+                83 => f64::INFINITY,
+                _ => 1e4 * 1e4f64.powf(i as f64 / 999.0),
+            })
+            .collect();
+        for policy in [OutOfRange::Clamp, OutOfRange::Error] {
+            let law = law(policy);
+            let (mut mu, mut m2, mut d2) = (vec![0.0; 1000], vec![0.0; 1000], vec![0.0; 1000]);
+            let nan = law.mu_batch(&p, &mut mu, OnError::Nan).unwrap();
+            let clamped = law.reset_clamped();
+            assert_eq!(
+                nan,
+                law.mu_and_derivative_batch(&p, &mut m2, &mut d2, OnError::Nan).unwrap()
+            );
+            assert_eq!(law.reset_clamped(), clamped);
+            let mut want_nan = 0;
+            for i in 0..1000 {
+                match law.mu_and_derivative(p[i]) {
+                    Ok((m, d)) => {
+                        assert_eq!(mu[i].to_bits(), m.to_bits(), "{policy:?} p[{i}] = {}", p[i]);
+                        assert_eq!((m2[i].to_bits(), d2[i].to_bits()), (m.to_bits(), d.to_bits()), "p[{i}]");
+                    }
+                    Err(_) => {
+                        want_nan += 1;
+                        assert!(mu[i].is_nan() && m2[i].is_nan() && d2[i].is_nan(), "p[{i}]");
+                    }
+                }
+            }
+            assert_eq!(nan, want_nan, "{policy:?}");
+            assert_eq!(
+                law.reset_clamped(),
+                clamped,
+                "{policy:?}: the scalar calls clamp as the batches"
+            );
+            // Stop: the first bad element in the third buffer is named.
+            let e = law.mu_batch(&p[600..], &mut mu[600..], OnError::Stop).unwrap_err();
+            let first = (600..1000).find(|&i| law.mu(p[i]).is_err()).unwrap();
+            assert_eq!(e.index(), Some(first - 600), "{policy:?}");
+        }
     }
 
     #[test]
