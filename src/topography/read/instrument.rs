@@ -173,11 +173,12 @@ pub(super) fn ratio(a: f64, b: f64) -> f64 {
     }
 }
 
-/// `seconds` since 1970-01-01 00:00 UTC as ISO 8601 (`2011-07-23T16:49:36Z`).
-/// Days to a civil date by H. Hinnant's algorithm (public domain): the
-/// library has no date crate, and a dependency for one line of metadata is
-/// not worth it.
-pub(super) fn iso_date(seconds: i64) -> String {
+/// `seconds` since 1970-01-01 00:00 UTC as ISO 8601 (`2011-07-23T16:49:36Z`),
+/// with `zone` (`"Z"` or `"+00:00"`) after the time. Days to a civil date
+/// by H. Hinnant's algorithm (public domain): the library has no date
+/// crate, and a dependency for one line of metadata is not worth it. The
+/// X3P writer's date is this too.
+pub(in crate::topography) fn iso_date_in(seconds: i64, zone: &str) -> String {
     let (days, secs) = (seconds.div_euclid(86_400), seconds.rem_euclid(86_400));
     let z = days + 719_468;
     let era = z.div_euclid(146_097);
@@ -189,11 +190,16 @@ pub(super) fn iso_date(seconds: i64) -> String {
     let month = if mp < 10 { mp + 3 } else { mp - 9 };
     let year = yoe + era * 400 + i64::from(month <= 2);
     format!(
-        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z",
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}{zone}",
         secs / 3600,
         secs / 60 % 60,
         secs % 60
     )
+}
+
+/// [`iso_date_in`] with `Z` for UTC.
+pub(super) fn iso_date(seconds: i64) -> String {
+    iso_date_in(seconds, "Z")
 }
 
 /// Latin-1 bytes as text (every byte is a character: never fails).

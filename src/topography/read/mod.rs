@@ -26,6 +26,7 @@
 mod al3d;
 mod binary;
 mod instrument;
+pub(super) use instrument::iso_date_in;
 mod metropro;
 mod nanoscope;
 mod nid;
