@@ -23,14 +23,14 @@ while IFS=$'\t' read -r file field query expected name; do
   read -r psi theta f_star <<< "$query"
   t="$out/files/$file"
   set +e
-  "${vg[@]}" "$kefric" lookup --table "$t" --psi "$psi" --theta "$theta" --f-star "$f_star" > "$out/stdout" 2> "$out/stderr"
+  "${vg[@]}" "$kefric" lookup --table "$t" --psi "$psi" --theta "$theta" --f-star "$f_star" --json > "$out/stdout" 2> "$out/stderr"
   rc=$?
   set -e
   if [ "$field" = ok ]; then
     [ $rc -eq 0 ] || { echo "$name ($file): kefric lookup exit $rc"; cat "$out/stderr"; exit 1; }
     python3 - "$out/stdout" "$expected" "$name" <<'PY'
-import math, sys
-mu = float(next(l for l in open(sys.argv[1]) if l.startswith("mu = ")).split("=")[1])
+import json, math, sys
+mu = json.load(open(sys.argv[1]))["mu"]
 expected = float(sys.argv[2])
 assert mu > 0 and abs(mu / expected - 1) <= 2e-6 * (1 + abs(math.log(expected))), (sys.argv[3], mu, expected)
 PY

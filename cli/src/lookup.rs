@@ -95,12 +95,13 @@ pub fn run(args: Args) -> Result<(), Failure> {
         });
         outln!("{row}")?;
     } else {
+        // Text: 6 significant digits (every digit: --json, --csv).
         if args.si.any() {
-            outln!("psi = {}, theta = {}", Shortest(psi), Shortest(theta))?;
+            outln!("psi = {}, theta = {}", Shortest::sig(psi), Shortest::sig(theta))?;
         }
-        outln!("mu = {}", Shortest(r.mu))?;
-        outln!("dmu/dF* = {}", Shortest(r.slope))?;
-        outln!("h* = {}", Shortest(r.h_star))?;
+        outln!("mu = {}", Shortest::sig(r.mu))?;
+        outln!("dmu/dF* = {}", Shortest::sig(r.slope))?;
+        outln!("h* = {}", Shortest::sig(r.h_star))?;
     }
     let mut warnings = ke_friction::Warnings::new();
     warnings.note(ke_friction::Warning::of_point(f_star, r.h_star, Some(r.mu)));

@@ -44,7 +44,7 @@ fn crafted_tables_are_refused_naming_the_field_or_answer() {
         std::fs::write(&path, spec.encode()).unwrap();
         let p = path.to_str().unwrap();
         let o = kefric(&[
-            "lookup", "--table", p, "--psi", "2", "--theta", "0.001", "--f-star", "0.001",
+            "lookup", "--table", p, "--psi", "2", "--theta", "0.001", "--f-star", "0.001", "--json",
         ]);
         match refused {
             Some(field) => {
@@ -53,13 +53,8 @@ fn crafted_tables_are_refused_naming_the_field_or_answer() {
             }
             None => {
                 assert!(o.status.success(), "{name}: {}", stderr(&o));
-                let out = String::from_utf8(o.stdout).unwrap();
-                let mu: f64 = out
-                    .lines()
-                    .find_map(|l| l.strip_prefix("mu = "))
-                    .unwrap()
-                    .parse()
-                    .unwrap();
+                let out: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+                let mu = out["mu"].as_f64().unwrap();
                 let want = spec.stored(spec.ln_mu[0]).exp();
                 assert!(
                     (mu / want - 1.0).abs() <= 2e-6 * (1.0 + want.ln().abs()),
