@@ -54,7 +54,9 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
         }
     };
     match parts.as_slice() {
-        [one] => Ok(vec![positive(num(one)?)?]),
+        // One value: the core checks its range (its message, as every
+        // front end gives it); a range's ends must be > 0 to be spaced.
+        [one] => Ok(vec![num(one)?]),
         [a, b, n] => {
             let (a, b) = (positive(num(a)?)?, positive(num(b)?)?);
             let n: usize = n
