@@ -155,6 +155,8 @@ pub struct Analysis {
     load: Option<Load>,
     params: Option<Params>,
     friction: Option<Friction>,
+    /// The statistics' and the load's warnings, as the CLI gives them.
+    warnings: Warnings,
     record: String,
 }
 
@@ -306,6 +308,7 @@ impl Analysis {
             load,
             params: None,
             friction: None,
+            warnings: Warnings::new(),
             record: String::new(),
         };
         let (params, friction) = analysis.evaluate(&analysis.surface, analysis.load)?;
@@ -326,6 +329,7 @@ impl Analysis {
         analysis.record = serde_json::to_string(&record).map_err(|e| format!("the record: {e}"))?;
         analysis.params = params;
         analysis.friction = friction;
+        analysis.warnings = warnings;
         Ok(analysis)
     }
 
@@ -495,15 +499,10 @@ impl Analysis {
         self.record.clone()
     }
 
-    /// The statistics' warnings, as the CLI prints them (JSON list).
+    /// The warnings (the statistics' and the load's), once a kind, as
+    /// the CLI prints them on stderr (JSON list).
     pub fn warnings(&self) -> String {
-        let w: Vec<String> = self
-            .surface
-            .stats()
-            .warnings
-            .iter()
-            .map(|w| format!("warning: {w}"))
-            .collect();
+        let w: Vec<String> = self.warnings.summaries().map(|s| format!("warning: {s}")).collect();
         json!(w).to_string()
     }
 
@@ -662,6 +661,31 @@ mod tests {
             record.get("model").is_none() && record.get("friction").is_none(),
             "{record}"
         );
+    }
+
+    #[test]
+    fn the_loads_warnings_are_shown_and_recorded_as_the_cli_gives_them() {
+        // 1 Pa on a hardness of 1 GPa: F* = 1e-9, below the paper's range.
+        let options = Options::parse(
+            r#"{"dx": "0.5", "xy_unit": "um", "z_unit": "um", "e1": "70e9", "nu1": "0.33", "e2": "200e9",
+                "nu2": "0.31", "hardness": "1e9", "delta_gamma": "0.5", "epsilon": "0.4e-9", "pressure": "1"}"#,
+        )
+        .unwrap();
+        let a = Analysis::analyse(&text_map(), "h.txt", options).unwrap();
+        let shown: Vec<String> = serde_json::from_str(&a.warnings()).unwrap();
+        assert!(
+            shown.iter().any(|w| w.contains("is below the range the paper covers")),
+            "{shown:?}"
+        );
+        let record: Value = serde_json::from_str(&a.record).unwrap();
+        let kinds: Vec<&str> = record["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|w| w["kind"].as_str())
+            .collect();
+        assert!(kinds.contains(&"f_star_below_range"), "{kinds:?}");
+        assert_eq!(shown.len(), kinds.len());
     }
 
     #[test]
