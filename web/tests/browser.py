@@ -21,6 +21,7 @@ import json
 import math
 import os
 import shlex
+import pathlib
 import subprocess
 import sys
 import threading
@@ -151,7 +152,7 @@ class Page:
         file given to mu(F) drawn."""
         before = self.d.execute_script("return document.body.dataset.drawn || ''")
         t0 = time.perf_counter()
-        self.d.find_element(By.ID, "file").send_keys(str(path))
+        self.d.find_element(By.ID, "file").send_keys(str(pathlib.Path(path).resolve()))
         self.wait(lambda d: d.execute_script(
             "return (document.body.dataset.drawn || '') !== arguments[0] || !document.getElementById('error').hidden", before),
             f"{path.name} to be analysed")
