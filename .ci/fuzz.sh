@@ -2,20 +2,20 @@
 # CI stage fuzz (fuzz/), under AddressSanitizer, each target from its
 # committed seed corpus (fuzz/seeds/TARGET/) plus the inputs of crashes
 # found before (fuzz/regressions/TARGET/, replayed first):
-# - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 30);
+# - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 20);
 # - surface_x3p, surface_npy, surface_text (the measured-surface readers,
 #   read_bytes), surface_instruments_a (.sur, .plu, .opd, .al3d) and
 #   surface_instrument_b (MetroPro, Nanoscope, .nid): READER_SECONDS each
-#   (default 30).
-# About 3.5 minutes of fuzzing plus the build: the stage stays under ~5
+#   (default 20).
+# About 2.5 minutes of fuzzing plus the build: the stage stays under ~5
 # minutes on 2 cores. A crash, a panic, a broken invariant or an
 # out-of-bounds access fails the stage; libFuzzer writes the input to
 # fuzz/artifacts/TARGET/.
 # Needs the nightly toolchain; installs cargo-fuzz when missing.
 set -euo pipefail
 cd "$(dirname "$0")/../fuzz"
-table_secs=${FUZZ_SECONDS:-30}
-reader_secs=${READER_SECONDS:-30}
+table_secs=${FUZZ_SECONDS:-20}
+reader_secs=${READER_SECONDS:-20}
 if ! command -v cargo-fuzz > /dev/null; then
   echo "installing cargo-fuzz"
   cargo install --quiet --locked cargo-fuzz
