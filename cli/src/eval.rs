@@ -110,19 +110,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let mut warnings = Warnings::new();
     if args.json {
         // One record a line: the parameters and the contact, flat.
-        #[derive(serde::Serialize)]
-        struct Row<'a> {
-            #[serde(flatten)]
-            params: &'a ke_friction::Params,
-            #[serde(flatten)]
-            contact: &'a Contact,
-            #[serde(flatten, skip_serializing_if = "Option::is_none")]
-            source: Option<&'a crate::model_args::SurfaceSource>,
-        }
         for c in &contacts {
             let row = Row {
                 params: p,
-                contact: c,
+                result: c,
                 source: source.as_ref(),
             };
             outln!("{}", serde_json::to_string(&row).expect("a contact serialises"))?;
@@ -185,19 +176,10 @@ fn run_loads(
     }
     let p = model.params();
     if args.json {
-        #[derive(serde::Serialize)]
-        struct Row<'a> {
-            #[serde(flatten)]
-            params: &'a ke_friction::Params,
-            #[serde(flatten)]
-            friction: &'a Friction,
-            #[serde(flatten, skip_serializing_if = "Option::is_none")]
-            source: Option<&'a crate::model_args::SurfaceSource>,
-        }
         for f in &rows {
             let row = Row {
                 params: p,
-                friction: f,
+                result: f,
                 source,
             };
             outln!("{}", serde_json::to_string(&row).expect("a friction record serialises"))?;
@@ -247,4 +229,16 @@ fn run_loads(
     }
     warn(&warnings);
     Ok(())
+}
+
+/// One `--json` line of `eval`: the parameters, a result (a contact, or a
+/// load's friction) and the surface it came from, flat.
+#[derive(serde::Serialize)]
+struct Row<'a, T> {
+    #[serde(flatten)]
+    params: &'a ke_friction::Params,
+    #[serde(flatten)]
+    result: &'a T,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    source: Option<&'a crate::model_args::SurfaceSource>,
 }
