@@ -3,7 +3,7 @@
 use crate::convert::{on_error, same_len, slice, slice_mut};
 use crate::error::{raise, Failure};
 use crate::model::ModelCore;
-use crate::parallel::{cut, cut_pairs, CURVE_WORK};
+use crate::parallel::{curve_batch, cut_pairs, CURVE_WORK};
 use ke_friction::Curve;
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
@@ -47,26 +47,12 @@ impl CurveCore {
         nan: bool,
         threads: usize,
     ) -> PyResult<usize> {
-        let f = slice("f_star", &f_star)?;
-        let out = slice_mut("out", &mut out)?;
-        let n = out.len();
-        same_len(n, &[("f_star", f.len())])?;
         let (curve, on_error) = (&self.0, on_error(nan));
-        py.detach(|| {
-            CURVE_WORK.run(
-                n,
-                threads,
-                |chunks| cut(out, 1, chunks),
-                |_| (),
-                |chunk, out| {
-                    let start = chunk.start;
-                    curve
-                        .mu_batch_with(&f[chunk], out, on_error)
-                        .map_err(|e| Failure::of_batch(e, start))
-                },
-            )
+        curve_batch(py, "f_star", &f_star, &mut out, threads, |start, f, out| {
+            curve
+                .mu_batch_with(f, out, on_error)
+                .map_err(|e| Failure::of_batch(e, start))
         })
-        .map_err(|failure| failure.into_pyerr(py))
     }
 
     /// μ and dμ/dF* into `mu` and `slope`; as `mu_into`.

@@ -3,7 +3,7 @@
 use crate::convert::{on_error, same_len, slice, slice_mut};
 use crate::error::{raise, value_error, Failure};
 use crate::model::ModelCore;
-use crate::parallel::{cut, cut_pairs, CURVE_WORK};
+use crate::parallel::{curve_batch, cut_pairs, CURVE_WORK};
 use ke_friction::{FrictionLaw, LawTable, Named, OutOfRange, PressureError, LAW_TABLE_MAX_ROWS};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
@@ -90,24 +90,10 @@ impl FrictionLawCore {
         nan: bool,
         threads: usize,
     ) -> PyResult<usize> {
-        let p = slice("pressure", &pressure)?;
-        let out = slice_mut("out", &mut out)?;
-        let n = out.len();
-        same_len(n, &[("pressure", p.len())])?;
         let (law, on_error) = (&self.0, on_error(nan));
-        py.detach(|| {
-            CURVE_WORK.run(
-                n,
-                threads,
-                |chunks| cut(out, 1, chunks),
-                |_| (),
-                |chunk, out| {
-                    let start = chunk.start;
-                    law.mu_batch(&p[chunk], out, on_error).map_err(|e| failure(e, start))
-                },
-            )
+        curve_batch(py, "pressure", &pressure, &mut out, threads, |start, p, out| {
+            law.mu_batch(p, out, on_error).map_err(|e| failure(e, start))
         })
-        .map_err(|failure| failure.into_pyerr(py))
     }
 
     /// μ and dμ/dp into `mu` and `dmu_dp`; as `mu_into`.

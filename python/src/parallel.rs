@@ -203,3 +203,32 @@ impl<'a, const K: usize> Inputs<'a, K> {
         })
     }
 }
+
+/// A one-input curve-like batch (`Curve::mu_batch_with`,
+/// `FrictionLaw::mu_batch`) from the array `input` (called `name` in
+/// errors) into `out`, shared out as [`CURVE_WORK`]: `batch(start, input,
+/// out)` runs the core's batch on one chunk starting at element `start`.
+/// The NaN count, or the first bad element's error.
+pub fn curve_batch(
+    py: pyo3::Python<'_>,
+    name: &str,
+    input: &numpy::PyReadonlyArray1<'_, f64>,
+    out: &mut numpy::PyReadwriteArray1<'_, f64>,
+    threads: usize,
+    batch: impl Fn(usize, &[f64], &mut [f64]) -> Outcome + Sync,
+) -> PyResult<usize> {
+    let x = crate::convert::slice(name, input)?;
+    let out = crate::convert::slice_mut("out", out)?;
+    let n = out.len();
+    crate::convert::same_len(n, &[(name, x.len())])?;
+    py.detach(|| {
+        CURVE_WORK.run(
+            n,
+            threads,
+            |chunks| cut(out, 1, chunks),
+            |_| (),
+            |chunk, out| batch(chunk.start, &x[chunk], out),
+        )
+    })
+    .map_err(|failure| failure.into_pyerr(py))
+}
