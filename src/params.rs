@@ -4,6 +4,7 @@ use crate::bound::{Bound, End};
 use crate::checks::{check_in, ParamError};
 use crate::distribution::HeightDistribution;
 use crate::gw::{sigma_s_ratio, BETA_MIN};
+pub use crate::model::laws::registry::ModelKind;
 
 /// Which Kogut–Etsion friction row to integrate (MODEL.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
@@ -20,41 +21,11 @@ pub enum Fit {
     AsPrinted,
 }
 
-/// Which surface friction model to evaluate: which single-asperity
-/// contact law the surface integrals use (one registry line each in
-/// `src/model/laws/mod.rs`, docs/ARCHITECTURE.md).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
-pub enum ModelKind {
-    /// Kogut & Etsion (2004), MODEL.md §4.
-    #[default]
-    KogutEtsion,
-    /// The CEB-type comparison model, an approximate reconstruction of
-    /// Chang, Etsion & Bogy (1988) in the same statistical framework
-    /// (MODEL.md §8). Its adhesion term is the Kogut–Etsion one; the
-    /// [`Fit`] setting does not apply to it.
-    CebType,
-}
-
 crate::named!(Fit, "fit", [Consistent = "consistent", AsPrinted = "as-printed"]);
-crate::named!(ModelKind, "model", registry = crate::model::LAWS);
 
 /// The former name of [`ModelKind`].
 #[deprecated(note = "renamed ModelKind")]
 pub type Kind = ModelKind;
-
-impl ModelKind {
-    /// The law's registry entry (name, table code, label): read by the
-    /// table writer and the figures.
-    #[cfg(any(feature = "builder", feature = "plot", test))]
-    pub(crate) const fn law(self) -> crate::model::LawInfo {
-        crate::model::LAWS[self as usize]
-    }
-
-    /// The value stored as `code` in a table file's header, if any.
-    pub(crate) fn from_code(code: u8) -> Option<ModelKind> {
-        crate::model::LAWS.iter().find(|l| l.code == code).map(|l| l.kind)
-    }
-}
 
 /// The model constants of a material pair: everything fixed apart from ψ
 /// and θ (MODEL.md §1). A table is built for one set of constants; a

@@ -1,8 +1,10 @@
 //! `kefric eval`: direct integration at h* or F*, one row per point.
 
-use crate::args::{describe, number, warn, Failure};
+use crate::args::describe;
+use crate::load_args::{points, LoadArgs, Spacing};
 use crate::model_args::ModelArgs;
-use crate::surface::{sig, LoadArgs};
+use crate::output::sig;
+use crate::output::{warn, Failure};
 use ke_friction::{Contact, Friction, Warnings};
 
 /// Evaluate the model by direct integration at given h* or F*.
@@ -27,60 +29,6 @@ pub struct Args {
     /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
-}
-
-/// Spacing of the points of a range.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Spacing {
-    /// Equal steps.
-    Linear,
-    /// Equal ratios (all points > 0).
-    Log,
-}
-
-/// Parses `X` or `START:STOP:COUNT` into the points; `flag` names the input.
-pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Failure> {
-    let bad = |why: String| Failure::input(format!("{flag}: {why}"));
-    let parts: Vec<&str> = text.split(':').collect();
-    let num = |s: &str| number(flag, s);
-    let positive = |v: f64| {
-        if spacing == Spacing::Log && v <= 0.0 {
-            Err(bad(format!(
-                "{} is out of range: must be > 0",
-                ke_friction::Shortest(v)
-            )))
-        } else {
-            Ok(v)
-        }
-    };
-    match parts.as_slice() {
-        // One value: the core checks its range (its message, as every
-        // front end gives it); a range's ends must be > 0 to be spaced.
-        [one] => Ok(vec![num(one)?]),
-        [a, b, n] => {
-            let (a, b) = (positive(num(a)?)?, positive(num(b)?)?);
-            let n: usize = n
-                .trim()
-                .parse()
-                .ok()
-                .filter(|&n| (1..=1_000_000).contains(&n))
-                .ok_or_else(|| {
-                    bad(format!(
-                        "COUNT '{n}' is out of range: must be a whole number from 1 to 1000000"
-                    ))
-                })?;
-            Ok((0..n)
-                .map(|i| {
-                    let t = if n == 1 { 0.0 } else { i as f64 / (n - 1) as f64 };
-                    match spacing {
-                        Spacing::Linear => a + (b - a) * t,
-                        Spacing::Log => a * (b / a).powf(t),
-                    }
-                })
-                .collect())
-        }
-        _ => Err(bad(format!("'{text}' is not a number or START:STOP:COUNT"))),
-    }
 }
 
 /// Runs `kefric eval`.

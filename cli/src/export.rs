@@ -1,6 +1,7 @@
 //! `kefric export`: a table's values and its integration grid as NumPy arrays.
 
-use crate::args::{check_writable, load_table, output_dir, Bar, Failure};
+use crate::args::{check_writable, load_table, output_dir, Bar};
+use crate::output::Failure;
 use ke_friction::build::BuildError;
 use ke_friction::export::{arrays, texts, write_npy_dir, write_npz};
 use std::path::PathBuf;

@@ -2,7 +2,7 @@
 //! the library's surface readers (X3P, .npy, text); only the heights are
 //! used, so files without sampling intervals are fine.
 
-use crate::args::Failure;
+use crate::output::Failure;
 use ke_friction::topography::{read_file, ReadError, ReadOptions};
 use std::path::Path;
 

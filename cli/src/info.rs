@@ -1,6 +1,7 @@
 //! `kefric info`: what a table file holds.
 
-use crate::args::{load_table, print_worst, Failure};
+use crate::args::{load_table, print_worst};
+use crate::output::Failure;
 use ke_friction::build::verify::verify;
 use ke_friction::Shortest;
 use std::path::PathBuf;

@@ -1,8 +1,9 @@
 //! `kefric law`: a friction law's solver-ready table, `pressure,mu,dmu_dp`
 //! as CSV at log-spaced pressures ([`ke_friction::LawTable`]).
 
-use crate::args::{describe, fields, number, whole, Failure};
+use crate::args::{describe, fields, number, whole};
 use crate::model_args::ModelArgs;
+use crate::output::Failure;
 use ke_friction::{FrictionLaw, FrictionLawError, LawTable, OutOfRange, Shortest, LAW_TABLE_TOLERANCE};
 
 /// Write μ(p) and dμ/dp of a friction law as CSV, for a simulator.

@@ -1,7 +1,8 @@
 //! `kefric lookup`: μ, ∂μ/∂F* and h* from a table, for one point or for
 //! CSV rows streamed from stdin.
 
-use crate::args::{flag_of, load_table, parse_f64, DistributionArgs, Failure, SiArgs};
+use crate::args::{flag_of, load_table, parse_f64, DistributionArgs, SiArgs};
+use crate::output::Failure;
 use ke_friction::Shortest;
 use ke_friction::{LookupError, Table};
 use std::fmt::Write as _;
@@ -105,7 +106,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
     }
     let mut warnings = ke_friction::Warnings::new();
     warnings.note(ke_friction::Warning::of_point(f_star, r.h_star, Some(r.mu)));
-    crate::args::warn(&warnings);
+    crate::output::warn(&warnings);
     Ok(())
 }
 
@@ -258,6 +259,6 @@ fn csv(table: &Table, exact: bool) -> Result<(), Failure> {
     };
     // The rows before a bad one are complete lines; flush them either way.
     out.flush().map_err(write_failed)?;
-    crate::args::warn(&warnings);
+    crate::output::warn(&warnings);
     result
 }

@@ -9,17 +9,17 @@
 /// `println!` through [`args::write_stdout`]: `outln!(…)?` fails the run
 /// (exit 1) when stdout cannot be written.
 macro_rules! outln {
-    ($($t:tt)*) => { $crate::args::write_stdout(format_args!($($t)*), true) };
+    ($($t:tt)*) => { $crate::output::write_stdout(format_args!($($t)*), true) };
 }
 
 /// `print!` through [`args::write_stdout`].
 macro_rules! out {
-    ($($t:tt)*) => { $crate::args::write_stdout(format_args!($($t)*), false) };
+    ($($t:tt)*) => { $crate::output::write_stdout(format_args!($($t)*), false) };
 }
 
 /// `eprintln!` that cannot panic (see [`args::write_stderr`]).
 macro_rules! errln {
-    ($($t:tt)*) => { $crate::args::write_stderr(format_args!($($t)*)) };
+    ($($t:tt)*) => { $crate::output::write_stderr(format_args!($($t)*)) };
 }
 
 mod args;
@@ -29,17 +29,20 @@ mod export;
 mod heights;
 mod info;
 mod law;
+mod load_args;
 mod lookup;
 mod model_args;
+mod output;
 mod params;
 mod plot;
 mod scale;
 mod surface;
+mod surface_args;
 mod validate;
 mod verify;
 
-use args::Failure;
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use output::Failure;
 
 fn main() {
     restore_sigpipe();
@@ -102,10 +105,13 @@ fn run() -> i32 {
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
         Command::Law(args) => law::run(args),
+        Command::Surface(args) if args.scale_dependent => scale::run_scale_dependent(&args),
+        Command::Surface(args) if args.psd => scale::run_psd(&args),
+        Command::Surface(args) if args.scan => scale::run_scan(&args),
         Command::Surface(args) => surface::run(args),
     };
     // Whatever the command left in stdout's buffer must be written too.
-    match result.and_then(|()| args::flush_stdout()) {
+    match result.and_then(|()| output::flush_stdout()) {
         Ok(()) => 0,
         Err(f) => f.report(),
     }

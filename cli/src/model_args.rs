@@ -3,7 +3,8 @@
 //! materials. Apart from `args.rs` so that the shared flags (`args`) and
 //! the measured surface's (`surface`) depend on nothing of each other.
 
-use crate::args::{flag_of, parse_f64, warn, ConstantsArgs, Failure, SiArgs};
+use crate::args::{flag_of, parse_f64, ConstantsArgs, SiArgs};
+use crate::output::{warn, Failure};
 use ke_friction::{Model, Params, Physical, Shortest, Warnings};
 
 /// The model's parameters, shared by the subcommands that evaluate it:
@@ -24,7 +25,7 @@ pub struct ModelArgs {
     #[arg(long, value_name = "FILE", action = clap::ArgAction::Append)]
     pub surface: Vec<std::path::PathBuf>,
     #[command(flatten)]
-    pub read: crate::surface::SurfaceArgs,
+    pub read: crate::surface_args::SurfaceArgs,
 }
 
 impl ModelArgs {
@@ -87,7 +88,7 @@ impl ModelArgs {
         let mut warnings = Warnings::new();
         warnings.extend(surface.stats().warnings.iter().cloned());
         warn(&warnings);
-        let params = crate::surface::params(
+        let params = crate::surface_args::params(
             &surface,
             &materials,
             h.distribution,

@@ -1,6 +1,7 @@
 //! `kefric params`: the dimensionless parameters of SI inputs.
 
-use crate::args::{Failure, SiArgs};
+use crate::args::SiArgs;
+use crate::output::Failure;
 use ke_friction::Shortest;
 
 /// Convert SI quantities (moduli, Poisson's ratios, hardness, roughness,

@@ -1,8 +1,9 @@
 //! `kefric plot`: the paper's figures 3–6, a μ(F*) curve, a table's error
 //! map, μ(F*) for non-Gaussian heights. PNG or SVG by the output file's extension.
 
-use crate::args::{check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole, Failure};
+use crate::args::{check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole};
 use crate::model_args::ModelArgs;
+use crate::output::Failure;
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::topography::{psd_all, scan, Psd, ScanRange, Window};
 use ke_friction::{Family, Fit, LookupError, ModelKind, Shortest};
@@ -111,7 +112,7 @@ struct SurfacePlotArgs {
     #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
     files: Vec<PathBuf>,
     #[command(flatten)]
-    read: crate::surface::SurfaceArgs,
+    read: crate::surface_args::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
     #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
@@ -126,7 +127,7 @@ struct SurfacePlotArgs {
     #[arg(long, value_name = "N", default_value_t = 8, requires = "scan")]
     per_decade: usize,
     #[command(flatten)]
-    load: crate::surface::LoadArgs,
+    load: crate::load_args::LoadArgs,
     #[command(flatten)]
     out: Out,
 }
@@ -172,7 +173,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 for c in [lo, hi].into_iter().filter_map(|f| model.at_f_star(f).ok()) {
                     warnings.note_contact(&c);
                 }
-                crate::args::warn(&warnings);
+                crate::output::warn(&warnings);
             }
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
@@ -201,7 +202,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let axis = load_axis(&a, &surface, &materials)?;
             let mut fits = Vec::new();
             for family in [Family::Gaussian, Family::Pearson, Family::Empirical] {
-                let fit = crate::surface::params(
+                let fit = crate::surface_args::params(
                     &surface,
                     &materials,
                     Some(family),
@@ -240,7 +241,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                         .map_or_else(|| p.display().to_string(), |n| n.to_string_lossy().into_owned())
                 })
                 .collect();
-            let intervals = format!("at {}", crate::surface::intervals(surface.stats()));
+            let intervals = format!("at {}", crate::surface_args::intervals(surface.stats()));
             // The warnings `kefric surface` gives: the surface's, and the
             // loads' at the ends of the range (the first fit's).
             let mut warnings = ke_friction::Warnings::new();
@@ -252,7 +253,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                     }
                 }
             }
-            crate::args::warn(&warnings);
+            crate::output::warn(&warnings);
             let page = figures::surface_page(
                 &names.join(" + "),
                 &intervals,
@@ -335,7 +336,7 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
             let Ok(surface) = row.surface else { continue };
             let params = materials
                 .as_ref()
-                .map(|m| crate::surface::params(&surface, m, None, Fit::Consistent, ModelKind::KogutEtsion))
+                .map(|m| crate::surface_args::params(&surface, m, None, Fit::Consistent, ModelKind::KogutEtsion))
                 .transpose()
                 .ok()
                 .flatten();

@@ -2,8 +2,9 @@
 //! S-filter's nesting index λs, the power spectral density, and the
 //! scale-dependent slope and curvature (MODEL.md §11).
 
-use crate::args::Failure;
-use crate::surface::{evaluate, sig, Args};
+use crate::output::sig;
+use crate::output::Failure;
+use crate::surface::{evaluate, Args};
 use ke_friction::topography::{
     default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
 };

@@ -1,6 +1,6 @@
 //! `kefric validate`: the paper's statements against this model, as Markdown.
 
-use crate::args::Failure;
+use crate::output::Failure;
 use ke_friction::paper::nongaussian::nongaussian_statements;
 use ke_friction::paper::{statements, stretches, Statement, Verdict, RULES};
 

@@ -1,6 +1,7 @@
 //! `kefric verify`: re-measure a table against direct integration.
 
-use crate::args::{load_table, print_worst, Bar, Failure};
+use crate::args::{load_table, print_worst, Bar};
+use crate::output::Failure;
 use ke_friction::build::verify::{check_samples, verify};
 use ke_friction::Shortest;
 use std::path::PathBuf;

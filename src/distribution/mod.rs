@@ -21,12 +21,13 @@
 mod density;
 mod empirical;
 mod pearson;
+mod shape;
 mod weibull;
 
 pub use density::Density;
-pub(crate) use density::{End, PowerTails, JACOBI_POWER_MAX};
 pub use empirical::{Empirical, KDE_CENTRES};
 pub use pearson::PearsonType;
+pub(crate) use shape::{End, PowerTails, JACOBI_POWER_MAX};
 
 use crate::checks::{check, ParamError};
 use crate::num::Shortest;

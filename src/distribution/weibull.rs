@@ -1,7 +1,8 @@
 //! The Weibull family (MODEL.md §9): the standardised Weibull density of a
 //! skewness.
 
-use super::density::{Density, End, Shape};
+use super::density::Density;
+use super::shape::{End, Shape};
 use super::{WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN};
 use crate::special::ln_gamma;
 

@@ -2,12 +2,9 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
-mod laws;
+mod integrator;
+pub(crate) mod laws;
 mod surface;
-
-#[cfg(any(feature = "builder", feature = "plot", test))]
-pub(crate) use laws::LawInfo;
-pub(crate) use laws::LAWS;
 
 use crate::checks::ParamError;
 use crate::num::Shortest;

@@ -5,7 +5,7 @@
 
 use super::{jumps_of, ContactLaw, Jump, LoadLaw, Regime};
 use crate::model::asperity::{X_ELASTIC, X_EP1, X_PLASTIC};
-use crate::model::surface::{elastic_node, EndSide, Phi, Sums, Surface, Window};
+use crate::model::integrator::{elastic_node, EndSide, Integrator, Phi, Sums, Window};
 use crate::params::Constants;
 
 /// Depth of first yield on the axis, in contact radii (ν = 0.3).
@@ -178,7 +178,7 @@ impl ContactLaw for CebType {
     /// The elastic regime: `Q̄ = μ_CEB·P̄`, with the branch `μ2` below the
     /// crossing `xc` and `μ1` (which vanishes like `(1 − x)^½` at x = 1)
     /// above it.
-    fn elastic<H: Phi>(&self, s: &Surface, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+    fn elastic<H: Phi>(&self, s: &Integrator, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let ceb = &self.cap;
         let xc = ceb.x_cross;
         let mut acc = Sums::default();

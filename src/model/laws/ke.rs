@@ -5,7 +5,7 @@
 
 use super::{jumps_of, ContactLaw, FrictionRow, Jump, LoadLaw, Regime};
 use crate::model::asperity::{X_ELASTIC, X_EP1, X_PLASTIC};
-use crate::model::surface::{elastic_node, Phi, Sums, Surface, Window};
+use crate::model::integrator::{elastic_node, Integrator, Phi, Sums, Window};
 use crate::params::{hardness_coefficient, Constants, Fit};
 use crate::quadrature::Rule;
 
@@ -112,7 +112,7 @@ impl ContactLaw for KogutEtsion {
 
     /// Hertz load, adhesion row 0 and the friction row `0.52·x^0.982`
     /// (Gauss–Jacobi with that weight on the first panel).
-    fn elastic<H: Phi>(&self, s: &Surface, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+    fn elastic<H: Phi>(&self, s: &Integrator, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let mut acc = Sums::default();
         let b_fric = FRICTION_ELASTIC.1;
         s.panels(h, d, win, 0.0, X_ELASTIC, |p| {

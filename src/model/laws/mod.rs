@@ -18,30 +18,11 @@
 
 pub mod ceb;
 pub mod ke;
+pub mod registry;
 
-use super::surface::{Phi, Sums, Surface, Window};
-use crate::params::{Constants, ModelKind};
-
-/// One law's registry entry: what front ends, tables and figures call it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct LawInfo {
-    /// The variant of [`ModelKind`] (the registry is in the enum's order).
-    pub kind: ModelKind,
-    /// The name users type and read (`--model`, JSON, the bindings).
-    pub name: &'static str,
-    /// The model code stored in a table file's header (never reuse one).
-    pub code: u8,
-    /// The curve label in the comparison figures.
-    pub label: &'static str,
-}
-
-/// Every law, in the order of [`ModelKind`]'s variants (checked at
-/// compile time by `named!`).
-#[rustfmt::skip]
-pub const LAWS: [LawInfo; 2] = [
-    LawInfo { kind: ModelKind::KogutEtsion, name: "ke", code: 0, label: "Kogut–Etsion" },
-    LawInfo { kind: ModelKind::CebType, name: "ceb", code: 1, label: "CEB-type (approx.)" },
-];
+use crate::model::integrator::{Integrator, Phi, Sums, Window};
+use crate::params::Constants;
+use registry::ModelKind;
 
 /// A regime's load law `P̄/P̄_c` before its coefficient ([`Regime::coef`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -154,7 +135,7 @@ pub trait ContactLaw {
     /// The elastic regime `[0, 1)`: P̄, F̄_s (row 0, when `adh`), their
     /// d*-derivatives and, if `want_q`, the friction row with its
     /// coefficient applied.
-    fn elastic<H: Phi>(&self, s: &Surface, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
+    fn elastic<H: Phi>(&self, s: &Integrator, h: &H, d: f64, win: Window, adh: bool, want_q: bool) -> Sums {
         let _ = want_q;
         s.elastic_hertz(h, d, win, adh)
     }
@@ -184,6 +165,7 @@ impl Law {
 /// regime), no friction; registered only in the tests.
 #[cfg(test)]
 pub(crate) mod hertz {
+    use super::registry::LawInfo;
     use super::*;
 
     pub const INFO: LawInfo = LawInfo {
@@ -230,6 +212,7 @@ pub(crate) mod hertz {
 
 #[cfg(test)]
 mod tests {
+    use super::registry::LAWS;
     use super::*;
 
     #[test]

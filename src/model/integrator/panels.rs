@@ -1,10 +1,11 @@
-//! The surface integrals: panels, Gauss rules, each regime's sums, the
-//! non-contact adhesion.
+//! The law-independent machinery of the integrals: the panels of an
+//! integral in x, their Gauss rules (Gauss–Jacobi at the contact point and
+//! at the ends of a bounded support), the nodes of the elastic regime
+//! (Hertz load, elastic adhesion) and the non-contact adhesion.
 
 use super::density::{tail_cut, Phi, Window, TAIL};
-use super::{Sums, Surface};
+use super::{Integrator, Sums};
 use crate::model::asperity::{self, adhesion, load, X_ELASTIC};
-use crate::model::laws::{ContactLaw, LoadLaw, Regime};
 use crate::quadrature::{Rule, NODES};
 
 /// At most this many panels per integral (a safeguard: the tails of the
@@ -44,7 +45,16 @@ pub(crate) struct Panel {
 /// the laws; for a general density `dw` is `−w/ω` and multiplies the laws'
 /// slopes (`dp_dx` for the load), see [`Phi::GENERAL`].
 #[allow(clippy::too_many_arguments)]
-fn add_node<H: Phi>(acc: &mut Sums, p: f64, dp_dx: f64, x: f64, lx: f64, w: f64, dw: f64, b_adh: Option<f64>) {
+pub(crate) fn add_node<H: Phi>(
+    acc: &mut Sums,
+    p: f64,
+    dp_dx: f64,
+    x: f64,
+    lx: f64,
+    w: f64,
+    dw: f64,
+    b_adh: Option<f64>,
+) {
     acc.p += p * w;
     acc.dp += if H::GENERAL { dp_dx * dw } else { p * dw };
     if let Some(b) = b_adh {
@@ -63,118 +73,7 @@ pub(crate) fn elastic_node<H: Phi>(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: 
     p
 }
 
-impl Surface {
-    /// Contact integrals of MODEL.md §4 (§8 for the CEB-type law), without
-    /// their prefactors: the law's elastic regime, then its regimes above,
-    /// each times its coefficients.
-    pub(super) fn contact<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, win: Window, want_q: bool) -> Sums {
-        let adh = self.adh_pref != 0.0;
-        let el = law.elastic(self, h, d, win, adh, want_q);
-        let c = &self.adh_coef;
-        let mut sums = Sums {
-            p: el.p,
-            dp: el.dp,
-            fs: c[0] * el.fs,
-            dfs: c[0] * el.dfs,
-            q: el.q,
-        };
-        for r in law.regimes() {
-            let s = self.regime(law, h, d, win, r, adh, want_q);
-            sums.p += r.coef * s.p;
-            sums.dp += r.coef * s.dp;
-            if let Some(row) = r.adhesion {
-                sums.fs += c[row] * s.fs;
-                sums.dfs += c[row] * s.dfs;
-            }
-            if let Some(f) = r.friction {
-                sums.q += f.coef * s.q;
-            }
-        }
-        if H::GENERAL {
-            self.add_jumps(law, h, d, &mut sums);
-        }
-        sums
-    }
-
-    /// One regime's raw integrals (before its coefficients), in two pieces
-    /// where it is split.
-    #[allow(clippy::too_many_arguments)]
-    fn regime<L: ContactLaw, H: Phi>(
-        &self,
-        law: &L,
-        h: &H,
-        d: f64,
-        win: Window,
-        r: &Regime,
-        adh: bool,
-        want_q: bool,
-    ) -> Sums {
-        let b_adh = r.adhesion.filter(|_| adh).map(|row| adhesion::ROWS[row].1);
-        let q_to = r.friction.map_or(f64::NEG_INFINITY, |f| f.to);
-        match r.split.filter(|&x| x > r.xa && x < r.xc) {
-            Some(x) => {
-                let a = self.piece(law, h, d, win, r.xa, x, r.load, b_adh, want_q && r.xa < q_to);
-                let b = self.piece(law, h, d, win, x, r.xc, r.load, b_adh, want_q && x < q_to);
-                Sums {
-                    p: a.p + b.p,
-                    dp: a.dp + b.dp,
-                    fs: a.fs + b.fs,
-                    dfs: a.dfs + b.dfs,
-                    q: a.q + b.q,
-                }
-            }
-            None => self.piece(law, h, d, win, r.xa, r.xc, r.load, b_adh, want_q && r.xa < q_to),
-        }
-    }
-
-    /// `[xa, xc]` with the load law `load` (one instance of
-    /// [`smooth`](Self::smooth) per kind of law: no branch per node).
-    #[allow(clippy::too_many_arguments)]
-    #[inline(always)]
-    fn piece<L: ContactLaw, H: Phi>(
-        &self,
-        law: &L,
-        h: &H,
-        d: f64,
-        win: Window,
-        xa: f64,
-        xc: f64,
-        load: LoadLaw,
-        b_adh: Option<f64>,
-        want_q: bool,
-    ) -> Sums {
-        match load {
-            LoadLaw::Power(b) => {
-                let f = move |x: f64, lx: f64| {
-                    let p = (b * lx).exp();
-                    (p, b * p / x)
-                };
-                self.smooth(law, h, d, win, xa, xc, f, b_adh, want_q)
-            }
-            LoadLaw::Linear => self.smooth(law, h, d, win, xa, xc, |x, _| (x, 1.0), b_adh, want_q),
-            LoadLaw::Affine(a, b, c) => {
-                let f = move |x: f64, _: f64| (a * (b * x + c), a * b);
-                self.smooth(law, h, d, win, xa, xc, f, b_adh, want_q)
-            }
-        }
-    }
-
-    /// The terms of ∂P*/∂d*, ∂Fs*/∂d* from the jumps of the laws at the
-    /// regime boundaries (x = 1, 6, 110 for both laws here), which move
-    /// with d* (general densities, whose derivatives come from the laws'
-    /// slopes): the load and the contact adhesion below and above each
-    /// boundary, times φ* there.
-    fn add_jumps<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, sums: &mut Sums) {
-        // adh_coef holds the rows' coefficients, the jumps x^b alone.
-        let c = &self.adh_coef;
-        for j in law.jumps() {
-            let phi = h.phi(d + self.omega * j.x);
-            let [(r0, f0), (r1, f1)] = j.adhesion;
-            sums.dp += (j.load[0] - j.load[1]) * phi;
-            sums.dfs += (c[r0] * f0 - c[r1] * f1) * phi;
-        }
-    }
-
+impl Integrator {
     /// The elastic regime `0 ≤ x < 1` without friction: the Hertz load and
     /// the elastic adhesion (the default of [`ContactLaw::elastic`]).
     pub(crate) fn elastic_hertz<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool) -> Sums {
@@ -224,39 +123,9 @@ impl Surface {
         }
     }
 
-    /// A regime `[xa, xc]` with `xa ≥ 1`, where every factor is analytic:
-    /// load and its slope `load(x, ln x)`, adhesion `x^b_adh` (if any) and, if `want_q`, the
-    /// friction factor `load(x)·μ(x)` (the law's [`ContactLaw::mu`]).
-    #[allow(clippy::too_many_arguments)]
-    fn smooth<L: ContactLaw, H: Phi>(
-        &self,
-        law: &L,
-        h: &H,
-        d: f64,
-        win: Window,
-        xa: f64,
-        xc: f64,
-        load: impl Fn(f64, f64) -> (f64, f64),
-        b_adh: Option<f64>,
-        want_q: bool,
-    ) -> Sums {
-        let mut acc = Sums::default();
-        self.panels(h, d, win, xa, xc, |p| {
-            self.legendre_panel(h, d, p, |x, w, dw| {
-                let lx = x.ln();
-                let (p, dp_dx) = load(x, lx);
-                add_node::<H>(&mut acc, p, dp_dx, x, lx, w, dw, b_adh);
-                if want_q {
-                    acc.q += p * law.mu(x) * w;
-                }
-            })
-        });
-        acc
-    }
-
     /// The non-contact adhesion integral `J_nc` (MODEL.md §4) and its
     /// d*-derivative, in the gap `g = d* − z* ≥ 0`.
-    pub(super) fn noncontact<H: Phi>(&self, h: &H, d: f64) -> (f64, f64) {
+    pub(crate) fn noncontact<H: Phi>(&self, h: &H, d: f64) -> (f64, f64) {
         if H::GENERAL {
             return self.noncontact_general(h, d);
         }

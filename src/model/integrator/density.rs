@@ -89,7 +89,7 @@ pub(crate) trait Phi {
 
 /// The paper's Gaussian φ*.
 #[derive(Debug, Clone)]
-pub(super) struct Gauss {
+pub(crate) struct Gauss {
     pub(super) s: f64,
     pub(super) inv_s2: f64,
     /// 1/(s√(2π)).
@@ -147,7 +147,7 @@ impl ZEnd {
 
 /// Any other density: `φ*(z*) = g(z*/s)/s` (MODEL.md §9).
 #[derive(Debug, Clone)]
-pub(super) struct General {
+pub(crate) struct General {
     g: Density,
     inv_s: f64,
     ln_inv_s: f64,
@@ -367,7 +367,7 @@ impl TailRule {
 
 /// Which density the integrals use.
 #[derive(Debug, Clone)]
-pub(super) enum Heights {
+pub(crate) enum Heights {
     Gauss(Gauss),
     General(std::sync::Arc<General>),
 }

@@ -1,5 +1,5 @@
-//! The rough surface: Gaussian asperity heights and the integrals of
-//! MODEL.md §4 (Kogut–Etsion) and §8 (CEB-type).
+//! The integrals' machinery, the same for every contact law: the
+//! density of asperity heights, the panels and their Gauss rules.
 //!
 //! Every integral is taken in `x = (z* − d*)/ω_c*`, split at the regime
 //! boundaries (the single-asperity laws jump there) and then into panels on
@@ -13,60 +13,54 @@
 //! integrated out to infinity in one panel, in `1/(z* − c)` ([`TailRule`]).
 //! No allocation, no recursion: a fixed amount of arithmetic per panel.
 //!
-//! The height densities φ* are in `density.rs`, the integrals in
-//! `integrals.rs`.
+//! The height densities φ* are in `density.rs`, the panels, the elastic
+//! regime's nodes and the non-contact adhesion in `panels.rs`. The laws
+//! (`../laws/`) integrate their own elastic regime with these; the
+//! surface (`../surface.rs`) sums the regimes.
 //!
 //! [`NODES`]: crate::quadrature::NODES
 //! [`TailRule`]: density::TailRule
 
 mod density;
-mod integrals;
+mod panels;
 
 use super::asperity::{adhesion, load};
-use super::laws::{ContactLaw, Law};
 use crate::distribution::Density;
 use crate::gw::sigma_s_ratio;
-use crate::params::{hardness_coefficient, Params};
+use crate::params::Params;
 use crate::quadrature::Rule;
-use density::{Gauss, General, Heights};
+use density::{Gauss, General};
 
-pub(super) use density::{Phi, Window};
-pub(super) use integrals::{elastic_node, EndSide};
+pub(crate) use density::{Heights, Phi, Window};
+pub(crate) use panels::{add_node, elastic_node, EndSide};
 
-/// Everything the integrals need that depends only on the parameters
-/// (the "plan"; MODEL.md §2).
+/// What the integrals need that depends only on the parameters and not
+/// on the contact law: the height density and the scales (the "plan";
+/// MODEL.md §2).
 #[derive(Debug, Clone)]
-pub(crate) struct Surface {
-    /// The planned single-asperity law.
-    law: Law,
+pub(crate) struct Integrator {
     /// σ_s/σ.
     s: f64,
     /// The density of asperity heights φ*.
-    heights: Heights,
+    pub(super) heights: Heights,
     /// ω_c* = s/ψ².
-    pub(super) omega: f64,
-    /// y_s* = h* − d*.
-    pub ys: f64,
+    pub(crate) omega: f64,
     eps: f64,
-    /// (2/3)πβKω_c*, in front of P* and Q*.
-    load_pref: f64,
-    /// 2πβθ, in front of Fs*.
-    adh_pref: f64,
     /// `a·r^c` of the three contact adhesion rows.
-    adh_coef: [f64; 3],
-    pub(super) rules: &'static Rules,
+    pub(crate) adh_coef: [f64; 3],
+    pub(crate) rules: &'static Rules,
 }
 
 /// The Gauss rules, the same for every model: computed once per process.
 #[derive(Debug)]
-pub(super) struct Rules {
+pub(crate) struct Rules {
     gl: Rule,
     /// Gauss–Jacobi rules for `x^1.5`, `x^0.298` (first panels).
     gj_load: Rule,
     gj_adh: Rule,
     /// Gauss–Jacobi rule for `(1 − x)^½` (CEB-type, at x = 1), which is
     /// also the weight `x^0.5` of the Hertz load's slope.
-    pub(super) gj_half: Rule,
+    pub(crate) gj_half: Rule,
     /// Gauss–Jacobi rule for `x^−0.702`, the elastic adhesion's slope.
     gj_adh_slope: Rule,
 }
@@ -101,22 +95,12 @@ pub(crate) struct Sums {
     pub q: f64,
 }
 
-impl Surface {
-    /// The fraction of the asperities in contact at separation `d` (d*):
-    /// ∫ φ* over z* > d* (MODEL.md §4's number of contacts over η·A_n);
-    /// for the Gaussian ½·erfc(d*/(s√2)).
-    pub fn contact_fraction(&self, d: f64) -> f64 {
-        match &self.heights {
-            Heights::Gauss(g) => 0.5 * libm::erfc(d / (g.s * core::f64::consts::SQRT_2)),
-            Heights::General(h) => h.fraction_above(d),
-        }
-    }
-
-    /// Plans the integrals for valid parameters.
-    pub fn new(p: &Params) -> Surface {
+impl Integrator {
+    /// Plans the law-independent part of the integrals for valid
+    /// parameters.
+    pub fn new(p: &Params) -> Integrator {
         let pi = core::f64::consts::PI;
         let s = sigma_s_ratio(p.constants.beta);
-        let k = hardness_coefficient(p.constants.nu);
         let omega = s / (p.psi * p.psi);
         let r = p.constants.eps_star / omega;
         let gauss = Gauss {
@@ -131,53 +115,23 @@ impl Surface {
             let g = Density::new(&p.constants.distribution);
             Heights::General(std::sync::Arc::new(General::new(g, s)))
         };
-        Surface {
-            law: Law::new(&p.constants),
+        Integrator {
             s,
             heights,
             omega,
-            ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.constants.beta),
             eps: p.constants.eps_star,
-            load_pref: (2.0 / 3.0) * pi * p.constants.beta * k * omega,
-            adh_pref: 2.0 * pi * p.constants.beta * p.theta,
             adh_coef: adhesion::ROWS.map(|(a, _, c)| a * r.powf(c)),
             rules: Rules::get(),
         }
     }
 
-    /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`:
-    /// one `match` on the law, then static calls.
-    pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
-        match &self.law {
-            Law::Ke(law) => self.evaluate_law(law, d, want_q),
-            Law::Ceb(law) => self.evaluate_law(law, d, want_q),
-        }
-    }
-
-    /// [`evaluate`](Self::evaluate) with the law `law`.
-    #[inline(always)]
-    pub(super) fn evaluate_law<L: ContactLaw>(&self, law: &L, d: f64, want_q: bool) -> Sums {
+    /// The fraction of the asperities in contact at separation `d` (d*):
+    /// ∫ φ* over z* > d* (MODEL.md §4's number of contacts over η·A_n);
+    /// for the Gaussian ½·erfc(d*/(s√2)).
+    pub fn contact_fraction(&self, d: f64) -> f64 {
         match &self.heights {
-            Heights::Gauss(h) => self.evaluate_with(law, h, d, want_q),
-            Heights::General(h) => self.evaluate_with(law, &**h, d, want_q),
-        }
-    }
-
-    #[inline(always)]
-    fn evaluate_with<L: ContactLaw, H: Phi>(&self, law: &L, h: &H, d: f64, want_q: bool) -> Sums {
-        let win = h.window(d);
-        let mut c = self.contact(law, h, d, win, want_q);
-        if self.adh_pref != 0.0 {
-            let (j, dj) = self.noncontact(h, d);
-            c.fs += j;
-            c.dfs += dj;
-        }
-        Sums {
-            p: self.load_pref * c.p,
-            dp: self.load_pref * c.dp,
-            fs: self.adh_pref * c.fs,
-            dfs: self.adh_pref * c.dfs,
-            q: self.load_pref * c.q,
+            Heights::Gauss(g) => 0.5 * libm::erfc(d / (g.s * core::f64::consts::SQRT_2)),
+            Heights::General(h) => h.fraction_above(d),
         }
     }
 }
@@ -185,7 +139,6 @@ impl Surface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::Constants;
     use serde_json::Value;
 
     /// The fraction of summits above d* (the count of contacts' factor):
@@ -195,7 +148,7 @@ mod tests {
     #[test]
     fn the_fraction_of_summits_in_contact_matches_the_density() {
         let p = Params::new(1.0, 0.001).distribution(crate::HeightDistribution::pearson(0.6, 4.0).unwrap());
-        let surface = Surface::new(&p);
+        let grid = Integrator::new(&p);
         let density = p.constants.distribution.density().unwrap();
         let s = sigma_s_ratio(p.constants.beta);
         let (_, hi) = density.support();
@@ -208,12 +161,12 @@ mod tests {
                 sum += density.pdf(a + k as f64 * h);
             }
             let want = sum * h;
-            let got = surface.contact_fraction(d);
+            let got = grid.contact_fraction(d);
             assert!((got / want - 1.0).abs() < 1e-3, "d* = {d}: {got} vs {want}");
         }
     }
 
-    impl Surface {
+    impl Integrator {
         /// `I^b[xa, xc]` (MODEL.md §4) with the same panels and rules as the
         /// model's own integrals.
         fn moment(&self, d: f64, b: f64, xa: f64, xc: f64) -> f64 {
@@ -246,11 +199,11 @@ mod tests {
                 continue;
             }
             let f = |k: &str| p[k].as_f64().unwrap();
-            let surface = Surface::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
+            let grid = Integrator::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
             let (b, d) = (f("b"), f("d_star"));
-            let lower = surface.moment(d, b, 0.0, 1.0);
-            let upper = surface.moment(d, b, 1.0, f64::INFINITY);
-            let whole = surface.moment(d, b, 0.0, f64::INFINITY);
+            let lower = grid.moment(d, b, 0.0, 1.0);
+            let upper = grid.moment(d, b, 1.0, f64::INFINITY);
+            let whole = grid.moment(d, b, 0.0, f64::INFINITY);
             for (what, got, want) in [
                 ("I[0,1]", lower, f("i_0_1")),
                 ("I[1,inf)", upper, f("i_1_inf")),
@@ -263,49 +216,5 @@ mod tests {
             n += 1;
         }
         assert!(n >= 6);
-    }
-
-    /// The test-only Hertz law (x^1.5 at every interference, no plastic
-    /// regime) through the same integrals: P* matches the closed form
-    /// `(2/3)πβKω_c*·I^1.5[0,∞)` (MODEL.md §5), and, where every contact
-    /// is elastic (ψ small), the Kogut–Etsion model; with a bounded Pearson
-    /// density (K = 2.5) too: the general path, with the jumps.
-    #[test]
-    fn a_test_only_hertz_law_goes_through_the_same_integrals() {
-        use crate::model::laws::hertz::Hertz;
-        let doc: Value = serde_json::from_str(include_str!("../../../tests/data/reference_points.json")).unwrap();
-        let p = doc["points"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|p| p["kind"] == "closed_form" && p["b"] == 1.5)
-            .expect("a closed form for b = 1.5");
-        let f = |k: &str| p[k].as_f64().unwrap();
-        let surface = Surface::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
-        let s = surface.evaluate_law(&Hertz::new(), f("d_star"), true);
-        let want = surface.load_pref * f("i_0_inf");
-        assert!(s.p.is_finite() && s.p > 0.0 && s.dp < 0.0, "{s:?}");
-        assert!(((s.p - want) / want).abs() < 1e-12, "P* = {:e} vs {want:e}", s.p);
-        assert_eq!((s.fs, s.q), (0.0, 0.0));
-
-        let gaussian = Constants::default();
-        let pearson = Constants::default().distribution(crate::HeightDistribution::pearson(0.0, 2.5).unwrap());
-        for c in [gaussian, pearson] {
-            let params = c.at(0.1, 0.003).unwrap();
-            let surface = Surface::new(&params);
-            for d in [0.5, 1.0, 2.0] {
-                let hertz = surface.evaluate_law(&Hertz::new(), d, true);
-                let ke = surface.evaluate(d, true);
-                assert!(hertz.p.is_finite() && hertz.p > 0.0, "{hertz:?}");
-                for (what, a, b) in [
-                    ("P*", hertz.p, ke.p),
-                    ("dP*", hertz.dp, ke.dp),
-                    ("Fs*", hertz.fs, ke.fs),
-                    ("dFs*", hertz.dfs, ke.dfs),
-                ] {
-                    assert!(((a - b) / b).abs() < 1e-9, "d* = {d}: {what} {a:e} vs {b:e}");
-                }
-            }
-        }
     }
 }
