@@ -6,18 +6,18 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 
-/// `println!` through [`args::write_stdout`]: `outln!(…)?` fails the run
+/// `println!` through [`output::write_stdout`]: `outln!(…)?` fails the run
 /// (exit 1) when stdout cannot be written.
 macro_rules! outln {
     ($($t:tt)*) => { $crate::output::write_stdout(format_args!($($t)*), true) };
 }
 
-/// `print!` through [`args::write_stdout`].
+/// `print!` through [`output::write_stdout`].
 macro_rules! out {
     ($($t:tt)*) => { $crate::output::write_stdout(format_args!($($t)*), false) };
 }
 
-/// `eprintln!` that cannot panic (see [`args::write_stderr`]).
+/// `eprintln!` that cannot panic (see [`output::write_stderr`]).
 macro_rules! errln {
     ($($t:tt)*) => { $crate::output::write_stderr(format_args!($($t)*)) };
 }

@@ -7,7 +7,7 @@ use super::empirical::Kde;
 use crate::quadrature::Rule;
 use std::sync::Arc;
 
-/// The power tails of a density (types IV, VII): see [`Density::power_tails`].
+/// The power tails of a density (types IV, VII): see [`Density::power_tails`](super::Density::power_tails).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct PowerTails {
     /// The real part of the complex singularities.

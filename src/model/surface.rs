@@ -8,7 +8,7 @@
 
 use super::asperity::adhesion;
 use super::integrator::{add_node, Heights, Integrator, Phi, Sums, Window};
-use super::laws::{ContactLaw, Law, LoadLaw, Regime};
+use super::laws::{ContactLaw, Law, LawVisitor, LoadLaw, Regime};
 use crate::params::{hardness_coefficient, Params};
 
 /// A planned surface: its contact law and the integrals' machinery.
@@ -50,10 +50,19 @@ impl Surface {
     /// P*, Fs* (with their d*-derivatives) and, if `want_q`, Q* at `d`:
     /// one `match` on the law, then static calls.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
-        match &self.law {
-            Law::Ke(law) => self.evaluate_law(law, d, want_q),
-            Law::Ceb(law) => self.evaluate_law(law, d, want_q),
+        struct Evaluate<'a> {
+            s: &'a Surface,
+            d: f64,
+            want_q: bool,
         }
+        impl LawVisitor for Evaluate<'_> {
+            type Out = Sums;
+            #[inline(always)]
+            fn visit<L: ContactLaw>(self, law: &L) -> Sums {
+                self.s.evaluate_law(law, self.d, self.want_q)
+            }
+        }
+        self.law.visit(Evaluate { s: self, d, want_q })
     }
 
     /// [`evaluate`](Self::evaluate) with the law `law`.

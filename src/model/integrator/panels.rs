@@ -75,7 +75,7 @@ pub(crate) fn elastic_node<H: Phi>(acc: &mut Sums, x: f64, lx: f64, w: f64, dw: 
 
 impl Integrator {
     /// The elastic regime `0 ≤ x < 1` without friction: the Hertz load and
-    /// the elastic adhesion (the default of [`ContactLaw::elastic`]).
+    /// the elastic adhesion (the default of [`ContactLaw::elastic`](crate::model::laws::ContactLaw::elastic)).
     pub(crate) fn elastic_hertz<H: Phi>(&self, h: &H, d: f64, win: Window, adh: bool) -> Sums {
         let mut acc = Sums::default();
         self.panels(h, d, win, 0.0, X_ELASTIC, |p| {

@@ -1,6 +1,6 @@
 //! The contact-law seam: what the surface integrals need from a
 //! single-asperity law ([`ContactLaw`]), one implementation per file
-//! (`ke.rs`, `ceb.rs`), and one registry line per law ([`LAWS`]: its name,
+//! (`ke.rs`, `ceb.rs`), and one registry line per law ([`LAWS`](registry::LAWS): its name,
 //! its table code, its label).
 //!
 //! A law is everything that differs between surface models at one
@@ -11,9 +11,10 @@
 //! the height density, the non-contact adhesion) stay in `surface/`, the
 //! same for every law.
 //!
-//! Dispatch is static: [`Law`] wraps the planned laws, and
-//! `Surface::evaluate` matches on it once per evaluation and calls the
-//! generic integrals with the concrete law (no `dyn`, no allocation).
+//! Dispatch is static: [`Law`] wraps the planned laws (one line each in
+//! `laws!`), and `Surface::evaluate` matches on it once per evaluation
+//! ([`Law::visit`]) and calls the generic integrals with the concrete law
+//! (no `dyn`, no allocation).
 //! docs/ARCHITECTURE.md lists the places a new law touches.
 
 pub mod ceb;
@@ -141,24 +142,50 @@ pub trait ContactLaw {
     }
 }
 
-/// The planned laws: the wrapper the surface dispatches on (one `match`
-/// per evaluation).
-// One per Surface, read on every evaluation: inline, not boxed.
-#[allow(clippy::large_enum_variant)]
-#[derive(Debug, Clone)]
-pub(crate) enum Law {
-    Ke(ke::KogutEtsion),
-    Ceb(ceb::CebType),
+/// Something done with a law, whichever it is: [`Law::visit`] calls
+/// [`visit`](Self::visit) with the concrete law (static dispatch).
+pub(crate) trait LawVisitor {
+    /// What it gives.
+    type Out;
+    /// Does it with `law`.
+    fn visit<L: ContactLaw>(self, law: &L) -> Self::Out;
 }
 
-impl Law {
-    /// Plans the law `c.kind` for the constants `c`.
-    pub fn new(c: &Constants) -> Law {
-        match c.kind {
-            ModelKind::KogutEtsion => Law::Ke(ke::KogutEtsion::new(c)),
-            ModelKind::CebType => Law::Ceb(ceb::CebType::new(c)),
+/// Writes the wrapper [`Law`] from one line a law (the variant of
+/// [`ModelKind`] => its type): the enum, `Law::new` and `Law::visit`.
+macro_rules! laws {
+    ($($variant:ident => $law:ty),+ $(,)?) => {
+        /// The planned laws: the wrapper the surface dispatches on (one
+        /// `match` per evaluation).
+        // One per Surface, read on every evaluation: inline, not boxed.
+        #[allow(clippy::large_enum_variant)]
+        #[derive(Debug, Clone)]
+        pub(crate) enum Law {
+            $($variant($law)),+
         }
-    }
+
+        impl Law {
+            /// Plans the law `c.kind` for the constants `c`.
+            pub fn new(c: &Constants) -> Law {
+                match c.kind {
+                    $(ModelKind::$variant => Law::$variant(<$law>::new(c))),+
+                }
+            }
+
+            /// `v` with the concrete law: one `match`, then static calls.
+            #[inline(always)]
+            pub fn visit<V: LawVisitor>(&self, v: V) -> V::Out {
+                match self {
+                    $(Law::$variant(law) => v.visit(law)),+
+                }
+            }
+        }
+    };
+}
+
+laws! {
+    KogutEtsion => ke::KogutEtsion,
+    CebType => ceb::CebType,
 }
 
 /// A test-only law: Hertz `x^1.5` at every interference (no plastic

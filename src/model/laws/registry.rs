@@ -1,21 +1,44 @@
-//! The registry of contact laws: [`ModelKind`] and one [`LawInfo`] line a
-//! law ([`LAWS`]: its name, its table code, its label). A leaf: the
+//! The registry of contact laws: one line a law, giving its
+//! [`ModelKind`] variant and its [`LawInfo`] in [`LAWS`] (its name, its
+//! table code, its label). A leaf: the
 //! parameters, the table format, the figures and every front end read it,
 //! and it reads nothing of theirs.
 
-/// Which surface friction model to evaluate: which single-asperity
-/// contact law the surface integrals use (one line each in [`LAWS`],
-/// docs/ARCHITECTURE.md).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
-pub enum ModelKind {
+/// Writes [`ModelKind`] and [`LAWS`] from one line a law: its variant
+/// (with the variant's documentation), its name, its table code and its
+/// label. The first line is the default.
+macro_rules! registry {
+    ($($(#[doc = $doc:literal])* $variant:ident = ($name:literal, $code:literal, $label:literal)),+ $(,)?) => {
+        /// Which surface friction model to evaluate: which single-asperity
+        /// contact law the surface integrals use (one line each in
+        /// `src/model/laws/registry.rs`, docs/ARCHITECTURE.md).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum ModelKind {
+            $($(#[doc = $doc])* $variant),+
+        }
+
+        /// Every law, in the order of [`ModelKind`]'s variants.
+        pub const LAWS: [LawInfo; [$($name),+].len()] = [
+            $(LawInfo { kind: ModelKind::$variant, name: $name, code: $code, label: $label }),+
+        ];
+    };
+}
+
+registry! {
     /// Kogut & Etsion (2004), MODEL.md §4.
-    #[default]
-    KogutEtsion,
+    KogutEtsion = ("ke", 0, "Kogut–Etsion"),
     /// The CEB-type comparison model, an approximate reconstruction of
     /// Chang, Etsion & Bogy (1988) in the same statistical framework
     /// (MODEL.md §8). Its adhesion term is the Kogut–Etsion one; the
     /// [`Fit`](crate::Fit) setting does not apply to it.
-    CebType,
+    CebType = ("ceb", 1, "CEB-type (approx.)"),
+}
+
+/// The first law of the registry: Kogut–Etsion.
+impl Default for ModelKind {
+    fn default() -> ModelKind {
+        LAWS[0].kind
+    }
 }
 
 crate::named!(ModelKind, "model", registry = LAWS);
@@ -46,11 +69,3 @@ pub struct LawInfo {
     /// The curve label in the comparison figures.
     pub label: &'static str,
 }
-
-/// Every law, in the order of [`ModelKind`]'s variants (checked at
-/// compile time by `named!`).
-#[rustfmt::skip]
-pub const LAWS: [LawInfo; 2] = [
-    LawInfo { kind: ModelKind::KogutEtsion, name: "ke", code: 0, label: "Kogut–Etsion" },
-    LawInfo { kind: ModelKind::CebType, name: "ceb", code: 1, label: "CEB-type (approx.)" },
-];
