@@ -356,6 +356,25 @@ pub struct Materials {
 }
 
 impl Materials {
+    /// The field names, in order: the record names every front end uses
+    /// (the CLI's flags are these with `-` for `_`; the web page's keys;
+    /// Python's keyword arguments) and the order of [`from_array`](Self::from_array).
+    pub const FIELDS: [&'static str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
+
+    /// The materials from their values in the order of [`FIELDS`](Self::FIELDS).
+    pub const fn from_array(v: [f64; 7]) -> Materials {
+        let [e1, nu1, e2, nu2, hardness, delta_gamma, epsilon] = v;
+        Materials {
+            e1,
+            nu1,
+            e2,
+            nu2,
+            hardness,
+            delta_gamma,
+            epsilon,
+        }
+    }
+
     /// The physical inputs of these materials on a surface of roughness
     /// `sigma` (the std of the surface heights, m), `radius` (the summit
     /// radius R, m) and `density` (the summit density η, 1/m²).
@@ -383,6 +402,19 @@ pub(crate) fn hardness_coefficient(nu: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `FIELDS` are the record's field names in order, and `from_array`
+    /// fills them in that order.
+    #[test]
+    fn materials_fields_are_the_record_names_in_order() {
+        let v = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+        let json = serde_json::to_value(Materials::from_array(v)).unwrap();
+        let record = json.as_object().unwrap();
+        assert_eq!(record.keys().count(), Materials::FIELDS.len());
+        for (name, want) in Materials::FIELDS.iter().zip(v) {
+            assert_eq!(record[*name].as_f64(), Some(want), "{name}");
+        }
+    }
 
     #[test]
     fn validation_names_the_field_and_range() {

@@ -277,16 +277,7 @@ impl MaterialsArgs {
                 all.join(", ")
             )));
         }
-        let v = given.map(|(_, v)| v.unwrap_or_default());
-        Ok(Materials {
-            e1: v[0],
-            nu1: v[1],
-            e2: v[2],
-            nu2: v[3],
-            hardness: v[4],
-            delta_gamma: v[5],
-            epsilon: v[6],
-        })
+        Ok(Materials::from_array(given.map(|(_, v)| v.unwrap_or_default())))
     }
 }
 
@@ -406,9 +397,6 @@ pub fn describe(p: &Params) -> String {
 /// The flags the SI inputs stand in for, where a subcommand has them.
 const DIMENSIONLESS: [&str; 5] = ["psi", "theta", "beta", "nu", "eps_star"];
 
-/// The seven material flags ([`MaterialsArgs`]), by id.
-const MATERIALS: [&str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
-
 /// `command` (and its subcommands) with the help headings that depend on
 /// its flag set: the SI inputs' heading names the dimensionless flags
 /// this subcommand has (`lookup` has no `--beta`, `params` none at all),
@@ -439,12 +427,12 @@ pub fn help_headings(mut command: clap::Command) -> clap::Command {
             .get_arguments()
             .filter(|a| a.get_help_heading() == Some(SI_HEADING))
             .map(|a| a.get_id().to_string())
-            .chain(MATERIALS.iter().map(|id| id.to_string()))
+            .chain(Materials::FIELDS.iter().map(|id| id.to_string()))
             .collect();
         (heading, ids)
     } else {
         let heading = "Materials (all seven together)".to_string();
-        (heading, MATERIALS.iter().map(|id| id.to_string()).collect())
+        (heading, Materials::FIELDS.iter().map(|id| id.to_string()).collect())
     };
     // In place (`mut_arg` would move each to the end of the help).
     command.mut_args(|a| {

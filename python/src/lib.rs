@@ -45,6 +45,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("FAMILIES", <ke_friction::Family as Named>::names())?;
     m.add("FITS", <ke_friction::Fit as Named>::names())?;
     m.add("MODELS", <ke_friction::ModelKind as Named>::names())?;
+    m.add("MATERIALS", ke_friction::Materials::FIELDS)?;
     // The length units' names and symbols (`length_unit` gives metres).
     let units: Vec<&str> = <ke_friction::LengthUnit as Named>::names()
         .into_iter()

@@ -53,9 +53,6 @@ pub const KEYS: &[&str] = &[
     "pressure",
 ];
 
-/// The seven material keys, in the order of [`Materials`]' fields.
-const MATERIALS: [&str; 7] = ["e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon"];
-
 /// The loads of the μ-against-load curve: the given load times
 /// 10^(k/10) for k in this range (three decades below, one above).
 const LOAD_STEPS: std::ops::RangeInclusive<i32> = -30..=10;
@@ -248,26 +245,28 @@ impl Analysis {
             load.pressure()
                 .map_err(|e| format!("{}: {e}", flag(e.name.split(' ').next().unwrap_or(e.name))))?;
         }
-        let given: Vec<Option<f64>> = MATERIALS.iter().map(|k| options.number(k)).collect::<Result<_, _>>()?;
+        let given: Vec<Option<f64>> = Materials::FIELDS
+            .iter()
+            .map(|k| options.number(k))
+            .collect::<Result<_, _>>()?;
         let materials = if given.iter().any(Option::is_some) {
-            if let Some(k) = MATERIALS.iter().zip(&given).find_map(|(k, v)| v.is_none().then_some(k)) {
-                let all: Vec<String> = MATERIALS.iter().map(|k| flag(k)).collect();
+            if let Some(k) = Materials::FIELDS
+                .iter()
+                .zip(&given)
+                .find_map(|(k, v)| v.is_none().then_some(k))
+            {
+                let all: Vec<String> = Materials::FIELDS.iter().map(|k| flag(k)).collect();
                 return Err(format!(
                     "{}: missing: the SI inputs go together ({})",
                     flag(k),
                     all.join(", ")
                 ));
             }
-            let v: Vec<f64> = given.iter().map(|v| v.unwrap_or_default()).collect();
-            Some(Materials {
-                e1: v[0],
-                nu1: v[1],
-                e2: v[2],
-                nu2: v[3],
-                hardness: v[4],
-                delta_gamma: v[5],
-                epsilon: v[6],
-            })
+            let mut v = [0.0; 7];
+            for (v, given) in v.iter_mut().zip(&given) {
+                *v = given.unwrap_or_default();
+            }
+            Some(Materials::from_array(v))
         } else {
             let needs = if options.get("distribution").is_some() {
                 Some("--distribution")

@@ -24,6 +24,7 @@ DERIVATIVES: list[str]
 FAMILIES: list[str]
 FITS: list[str]
 MODELS: list[str]
+MATERIALS: list[str]
 # The length units' names (LengthUnit, as kefric surface --z-unit takes
 # them) and then their other symbols ("µm", "Å", ...).
 LENGTH_UNITS: list[str]

@@ -25,7 +25,7 @@ _FAMILIES = tuple(_core.FAMILIES)
 #: The length units' names (``kefric surface --z-unit``'s) and the other
 #: symbols SurfaceTopography gives its topographies' ``unit`` ("µm", "Å").
 _LENGTH_UNITS = tuple(_core.LENGTH_UNITS)
-_MATERIALS = ("e1", "nu1", "e2", "nu2", "hardness", "delta_gamma", "epsilon")
+_MATERIALS = tuple(_core.MATERIALS)
 
 
 class _Record(dict):  # type: ignore[type-arg]
