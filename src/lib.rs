@@ -85,7 +85,7 @@ pub use law_table::{
     LAW_TABLE_TOLERANCE_RANGE,
 };
 pub use load::{Friction, Load, LoadError};
-pub use model::{asperity, Contact, EvalError, Model, H_LIMIT};
+pub use model::{asperity, Contact, EvalError, Model, F_STAR_MAX, H_LIMIT};
 pub use named::{LengthUnit, NameError, Named};
 pub use num::Shortest;
 /// The former name of [`ModelKind`].
@@ -100,4 +100,4 @@ pub use table::{
     Accuracy, BuildRecord, ConstantsMismatch, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo,
     FAST_KERNEL_MAX_REL,
 };
-pub use warning::{Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_MAX, F_STAR_RANGE, MU_ADHESION};
+pub use warning::{Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_RANGE, MU_ADHESION};

@@ -16,12 +16,6 @@ use std::fmt;
 /// [`Warning::FStarAboveRange`]).
 pub const F_STAR_RANGE: (f64, f64) = (1e-5, 0.1);
 
-/// The largest external force the model takes, F* = 1: a nominal
-/// pressure equal to the hardness (MODEL.md §1). Above it every asperity
-/// would be fully plastic beyond the nominal area; the model has no
-/// meaning there and F* > 1 is refused as a domain error.
-pub const F_STAR_MAX: f64 = 1.0;
-
 /// μ above this is adhesion-dominated ([`Warning::AdhesionDominated`]):
 /// the friction force exceeds the load pressing the surfaces together.
 pub const MU_ADHESION: f64 = 1.0;
@@ -113,7 +107,7 @@ pub enum Warning {
         /// The external force F*.
         f_star: f64,
     },
-    /// F* above the paper's range (but ≤ [`F_STAR_MAX`]): extrapolated.
+    /// F* above the paper's range (but ≤ [`F_STAR_MAX`](crate::F_STAR_MAX)): extrapolated.
     FStarAboveRange {
         /// The external force F*.
         f_star: f64,
@@ -274,7 +268,7 @@ impl fmt::Display for Warning {
                 "F* = {} is above the range the paper covers ({lo} <= F* <= {hi}): the model is extrapolated there \
                  (F* > {} is refused: a pressure above the hardness)",
                 s(f_star),
-                Shortest(F_STAR_MAX)
+                Shortest(crate::F_STAR_MAX)
             ),
             Warning::NegativeSeparation { h_star } => write!(
                 f,

@@ -10,6 +10,10 @@
 pub use super::laws::ceb::CebCapacity;
 pub use super::laws::ke::{load, mu_ep, FRICTION_ELASTIC, X0};
 
+/// The Hertz load of the fully elastic regime, `P̄/P̄_c = x^1.5` as
+/// `(a, b)` of `a·x^b`: the same in every law (MODEL.md §3).
+pub const HERTZ: (f64, f64) = (1.0, 1.5);
+
 /// Upper end of the fully elastic regime.
 pub const X_ELASTIC: f64 = 1.0;
 /// Upper end of the 1st elastic-plastic regime.

@@ -11,6 +11,12 @@ use crate::num::Shortest;
 use crate::params::Params;
 use surface::Surface;
 
+/// The largest external force the model takes, F* = 1: a nominal
+/// pressure equal to the hardness (MODEL.md §1). Above it every asperity
+/// would be fully plastic beyond the nominal area; the model has no
+/// meaning there and F* > 1 is refused as a domain error.
+pub const F_STAR_MAX: f64 = 1.0;
+
 /// The state of the contact at one separation (all quantities dimensionless,
 /// MODEL.md §1).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
@@ -53,9 +59,9 @@ pub enum EvalError {
     /// F* is NaN, infinite, zero or negative.
     #[error("f_star = {} is out of range: must be > 0 and finite", Shortest(*.0))]
     FStar(f64),
-    /// F* above [`F_STAR_MAX`](crate::F_STAR_MAX) = 1: a nominal pressure
+    /// F* above [`F_STAR_MAX`] = 1: a nominal pressure
     /// above the hardness, where the model has no meaning.
-    #[error("f_star = {} is out of range: must be <= {} (a nominal pressure above the hardness: the model has no meaning there)", Shortest::sig(*.0), Shortest(crate::F_STAR_MAX))]
+    #[error("f_star = {} is out of range: must be <= {} (a nominal pressure above the hardness: the model has no meaning there)", Shortest::sig(*.0), Shortest(F_STAR_MAX))]
     FStarAboveHardness(f64),
     /// No separation in the supported range gives this F*.
     #[error("f_star = {} is out of reach: the largest F* for h_star >= -{} is {}", Shortest(*.f_star), Shortest(H_LIMIT), Shortest(*.f_max))]
@@ -178,7 +184,7 @@ impl Model {
     /// F*(h*) = f_star on the branch where F* > 0 and decreases
     /// (MODEL.md §5), to full double precision.
     ///
-    /// F* > [`F_STAR_MAX`](crate::F_STAR_MAX) = 1 (a nominal pressure
+    /// F* > [`F_STAR_MAX`] = 1 (a nominal pressure
     /// above the hardness) is [`EvalError::FStarAboveHardness`]: the model
     /// has no meaning there.
     pub fn at_f_star(&self, f_star: f64) -> Result<Contact, EvalError> {
@@ -303,11 +309,11 @@ impl Model {
     }
 }
 
-/// Refuses F* above [`F_STAR_MAX`](crate::F_STAR_MAX) (a nominal pressure
+/// Refuses F* above [`F_STAR_MAX`] (a nominal pressure
 /// above the hardness), where the model has no meaning.
 fn check_f_star(f_star: f64) -> Result<(), EvalError> {
     // +∞ is not a number to compare: EvalError::FStar, from the solver.
-    if f_star.is_finite() && f_star > crate::F_STAR_MAX {
+    if f_star.is_finite() && f_star > F_STAR_MAX {
         return Err(EvalError::FStarAboveHardness(f_star));
     }
     Ok(())

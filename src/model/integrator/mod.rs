@@ -24,7 +24,7 @@
 mod density;
 mod panels;
 
-use super::asperity::{adhesion, load};
+use super::asperity::{adhesion, HERTZ};
 use crate::distribution::Density;
 use crate::gw::sigma_s_ratio;
 use crate::params::Params;
@@ -70,7 +70,7 @@ impl Rules {
         static RULES: std::sync::OnceLock<Rules> = std::sync::OnceLock::new();
         RULES.get_or_init(|| Rules {
             gl: Rule::legendre(),
-            gj_load: Rule::jacobi(load::ELASTIC.1),
+            gj_load: Rule::jacobi(HERTZ.1),
             gj_adh: Rule::jacobi(adhesion::ELASTIC.1),
             gj_half: Rule::jacobi(0.5),
             gj_adh_slope: Rule::jacobi(adhesion::ELASTIC.1 - 1.0),

@@ -5,7 +5,7 @@
 
 use super::density::{tail_cut, Phi, Window, TAIL};
 use super::{Integrator, Sums};
-use crate::model::asperity::{self, adhesion, load, X_ELASTIC};
+use crate::model::asperity::{self, adhesion, HERTZ, X_ELASTIC};
 use crate::quadrature::{Rule, NODES};
 
 /// At most this many panels per integral (a safeguard: the tails of the
@@ -97,7 +97,7 @@ impl Integrator {
     /// `x^0.298 = x^−0.702·x`), so φ* is evaluated on two rules, not four.
     pub(crate) fn elastic_first_panel<H: Phi>(&self, h: &H, d: f64, x1: f64, adh: bool, acc: &mut Sums) {
         if H::GENERAL {
-            let b = load::ELASTIC.1;
+            let b = HERTZ.1;
             self.jacobi_panel(h, d, &self.rules.gj_half, b - 1.0, x1, |x, w, dw| {
                 acc.p += x * w;
                 acc.dp += b * dw;
@@ -111,7 +111,7 @@ impl Integrator {
             }
             return;
         }
-        self.jacobi_panel(h, d, &self.rules.gj_load, load::ELASTIC.1, x1, |_, w, dw| {
+        self.jacobi_panel(h, d, &self.rules.gj_load, HERTZ.1, x1, |_, w, dw| {
             acc.p += w;
             acc.dp += dw;
         });

@@ -15,8 +15,8 @@ pub const X0: f64 = 4.294_625_761_688_717;
 
 /// Contact load `P̄/P̄_c = a·x^b` per regime (MODEL.md §3).
 pub mod load {
-    /// Fully elastic: `x^1.5`.
-    pub const ELASTIC: (f64, f64) = (1.0, 1.5);
+    /// Fully elastic: `x^1.5` (Hertz, every law's: [`HERTZ`](crate::model::asperity::HERTZ)).
+    pub const ELASTIC: (f64, f64) = crate::model::asperity::HERTZ;
     /// 1st elastic-plastic: `1.03·x^1.425`.
     pub const EP1: (f64, f64) = (1.03, 1.425);
     /// 2nd elastic-plastic: `1.40·x^1.263`.

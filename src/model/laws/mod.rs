@@ -95,10 +95,10 @@ pub struct Jump {
 /// one's at x = 1, from the elastic regime: Hertz, adhesion row 0). The
 /// last regime must reach x = ∞.
 pub fn jumps_of<const N: usize>(regimes: &[Regime; N]) -> [Jump; N] {
-    use crate::model::asperity::{adhesion, load};
+    use crate::model::asperity::{adhesion, HERTZ};
     debug_assert!(regimes.last().is_none_or(|r| r.xc == f64::INFINITY));
     let adh = |row: Option<usize>, x: f64| row.map_or((0, 0.0), |row| (row, x.powf(adhesion::ROWS[row].1)));
-    let (mut coef, mut law, mut row) = (load::ELASTIC.0, LoadLaw::Power(load::ELASTIC.1), Some(0));
+    let (mut coef, mut law, mut row) = (HERTZ.0, LoadLaw::Power(HERTZ.1), Some(0));
     regimes.map(|r| {
         let x = r.xa;
         let jump = Jump {

@@ -2,12 +2,7 @@
 //! spectral moments m0, m2, m4 (MODEL.md §10).
 
 use super::{finite, positive, StatsError};
-use crate::bound::Bound;
-use crate::gw;
-
-/// The bandwidths α at which σ_s is real: > 16/π − 3√3 + 1 = 0.89680576…
-/// (MODEL.md §10).
-pub(super) static ALPHA_ADMISSIBLE: Bound = Bound::above(gw::ALPHA_MIN);
+use crate::gw::{self, ALPHA_ADMISSIBLE};
 
 /// α, η, R, β, σ_s, y_s from m0, m2, m4 (MODEL.md §10).
 pub(super) struct Derived {

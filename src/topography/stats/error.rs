@@ -57,7 +57,7 @@ pub enum StatsError {
     /// α ≤ 0.8968 (β ≤ 0.01928): σ_s would be imaginary.
     #[error(
         "alpha = {alpha} is out of range: must be {} (beta = {beta} must be {}), else sigma_s is imaginary",
-        super::derived::ALPHA_ADMISSIBLE.range(),
+        crate::gw::ALPHA_ADMISSIBLE.range(),
         crate::params::BETA_ADMISSIBLE.range()
     )]
     Bandwidth {
