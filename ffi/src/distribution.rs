@@ -2,7 +2,7 @@
 //! `KEF_DIST_*` families, setting one (or measured heights), reading it.
 
 use crate::constants::{kef_constants, named, update};
-use crate::error::{Failure, Message, KEF_ERR_INTERNAL};
+use crate::error::Failure;
 use ke_friction::{Family, HeightDistribution};
 use std::ffi::{c_char, c_int};
 
@@ -27,44 +27,26 @@ pub const KEF_DIST_EMPIRICAL: c_int = 3;
 /// by [`KEF_DIST_PEARSON`] alone, neither by [`KEF_DIST_GAUSSIAN`]),
 /// validated.
 fn distribution(family: c_int, skewness: f64, kurtosis: f64) -> Result<HeightDistribution, Failure> {
-    match family {
-        KEF_DIST_GAUSSIAN => Ok(HeightDistribution::Gaussian),
-        KEF_DIST_PEARSON => Ok(HeightDistribution::pearson(skewness, kurtosis)?),
-        KEF_DIST_WEIBULL => Ok(HeightDistribution::weibull(skewness)?),
-        KEF_DIST_EMPIRICAL => Err(Failure::argument(
+    let known = u8::try_from(family).ok().and_then(Family::from_code);
+    match known.map(|f| HeightDistribution::of_family(f, skewness, kurtosis)) {
+        Some(Some(d)) => Ok(d.validate().map(|()| d)?),
+        Some(None) => Err(Failure::argument(
             "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights".into(),
         )),
-        other => Err(Failure::argument(format!(
-            "family {other} is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
+        None => Err(Failure::argument(format!(
+            "family {family} is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
         ))),
     }
 }
 
-/// The `KEF_DIST_*` code of a distribution.
+/// The `KEF_DIST_*` code of a distribution: its family's core code.
 fn family_code(d: &HeightDistribution) -> c_int {
-    match d {
-        HeightDistribution::Gaussian => KEF_DIST_GAUSSIAN,
-        HeightDistribution::Pearson { .. } => KEF_DIST_PEARSON,
-        HeightDistribution::Weibull { .. } => KEF_DIST_WEIBULL,
-        HeightDistribution::Empirical(_) => KEF_DIST_EMPIRICAL,
-        // A family added to the core after this binding.
-        _ => -1,
-    }
+    c_int::from(d.family_kind().code())
 }
 
 /// Writes the distribution's family, skewness and kurtosis.
 fn describe(d: &HeightDistribution, family: &mut c_int, skewness: &mut f64, kurtosis: &mut f64) -> Result<(), Failure> {
-    let code = family_code(d);
-    if code < 0 {
-        return Err(Failure {
-            code: KEF_ERR_INTERNAL,
-            message: Message::Text(format!(
-                "the distribution family \"{}\" has no KEF_DIST_* code",
-                d.family()
-            )),
-        });
-    }
-    (*family, *skewness, *kurtosis) = (code, d.skewness(), d.kurtosis());
+    (*family, *skewness, *kurtosis) = (family_code(d), d.skewness(), d.kurtosis());
     Ok(())
 }
 
@@ -113,14 +95,9 @@ pub unsafe extern "C" fn kef_constants_set_distribution_named(
     }))
 }
 
-/// The `KEF_DIST_*` code of a family.
+/// The `KEF_DIST_*` code of a family: its core code.
 fn family_code_of(family: Family) -> c_int {
-    match family {
-        Family::Gaussian => KEF_DIST_GAUSSIAN,
-        Family::Pearson => KEF_DIST_PEARSON,
-        Family::Weibull => KEF_DIST_WEIBULL,
-        Family::Empirical => KEF_DIST_EMPIRICAL,
-    }
+    c_int::from(family.code())
 }
 
 /// Sets the asperity heights' distribution to the empirical (kernel)
@@ -164,4 +141,24 @@ pub unsafe extern "C" fn kef_constants_distribution(
     kurtosis: *mut f64,
 ) -> c_int {
     ffi!(constants, family, skewness, kurtosis => describe(&constants.distribution, family, skewness, kurtosis))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The C constants (literals, for cbindgen and the Fortran module) are
+    /// the core's family codes.
+    #[test]
+    fn the_kef_dist_constants_are_the_core_family_codes() {
+        for (c, family) in [
+            (KEF_DIST_GAUSSIAN, Family::Gaussian),
+            (KEF_DIST_PEARSON, Family::Pearson),
+            (KEF_DIST_WEIBULL, Family::Weibull),
+            (KEF_DIST_EMPIRICAL, Family::Empirical),
+        ] {
+            assert_eq!(c, c_int::from(family.code()), "{family}");
+        }
+        assert_eq!(Family::ALL.len(), 4, "a new family needs its KEF_DIST_* constant");
+    }
 }

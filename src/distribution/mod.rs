@@ -68,16 +68,33 @@ pub enum HeightDistribution {
 /// [`HeightDistribution`] without its parameters
 /// ([`HeightDistribution::family_kind`]). Its names are the record name
 /// `distribution` (JSON, the NumPy export, the bindings).
+///
+/// Its [`code`](Family::code) is the variant's value here: a table file's
+/// header stores it and the C ABI's `KEF_DIST_*` constants are it (never
+/// reuse one).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[repr(u8)]
 pub enum Family {
     /// [`HeightDistribution::Gaussian`].
-    Gaussian,
+    Gaussian = 0,
     /// [`HeightDistribution::Pearson`].
-    Pearson,
+    Pearson = 1,
     /// [`HeightDistribution::Weibull`].
-    Weibull,
+    Weibull = 2,
     /// [`HeightDistribution::Empirical`].
-    Empirical,
+    Empirical = 3,
+}
+
+impl Family {
+    /// The family's code: a table file's and the C ABI's (`KEF_DIST_*`).
+    pub const fn code(self) -> u8 {
+        self as u8
+    }
+
+    /// The family of a code, if any.
+    pub fn from_code(code: u8) -> Option<Family> {
+        Family::ALL.into_iter().find(|f| f.code() == code)
+    }
 }
 
 crate::named!(
@@ -162,7 +179,10 @@ impl HeightDistribution {
                 None => {
                     return conflict(
                         "distribution",
-                        format!("must be gaussian, pearson, weibull or empirical (not {f:?})"),
+                        format!(
+                            "must be one of {} (not {f:?})",
+                            <Family as crate::Named>::names().join(", ")
+                        ),
                     )
                 }
             },
@@ -223,6 +243,19 @@ impl HeightDistribution {
             }
         };
         Ok(d)
+    }
+
+    /// The distribution of `family` with `skewness` and `kurtosis`, not
+    /// validated (a table file's or a C caller's values: `validate`
+    /// follows): the Gaussian ignores both, Weibull the kurtosis; `None`
+    /// for the empirical family, which its heights make.
+    pub fn of_family(family: Family, skewness: f64, kurtosis: f64) -> Option<HeightDistribution> {
+        Some(match family {
+            Family::Gaussian => HeightDistribution::Gaussian,
+            Family::Pearson => HeightDistribution::Pearson { skewness, kurtosis },
+            Family::Weibull => HeightDistribution::Weibull { skewness },
+            Family::Empirical => return None,
+        })
     }
 
     /// The family's record name: `"gaussian"`, `"pearson"`, `"weibull"` or

@@ -55,7 +55,7 @@
 //! finite slope, from every kernel; `src/table/tests.rs` and the fuzz
 //! targets in `fuzz/` check each point with crafted files.
 
-use crate::distribution::HeightDistribution;
+use crate::distribution::{Family, HeightDistribution};
 use crate::params::{Constants, Fit, ModelKind};
 use serde::de::{self, EnumAccess, VariantAccess, Visitor};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -334,7 +334,7 @@ pub struct DistributionSpec {
 impl Default for DistributionSpec {
     fn default() -> DistributionSpec {
         DistributionSpec {
-            family: 0,
+            family: Family::Gaussian.code(),
             skewness: 0.0,
             kurtosis: 3.0,
         }
@@ -349,12 +349,12 @@ impl DistributionSpec {
         Some(match *d {
             _ if d.is_gaussian() => DistributionSpec::default(),
             HeightDistribution::Pearson { skewness, kurtosis } => DistributionSpec {
-                family: 1,
+                family: Family::Pearson.code(),
                 skewness,
                 kurtosis,
             },
             HeightDistribution::Weibull { skewness } => DistributionSpec {
-                family: 2,
+                family: Family::Weibull.code(),
                 skewness,
                 kurtosis: 0.0,
             },
@@ -365,22 +365,14 @@ impl DistributionSpec {
     /// The distribution these values describe, or why the code is invalid
     /// (the values are checked by `HeightDistribution::validate`).
     pub fn distribution(&self) -> Result<HeightDistribution, String> {
-        match self.family {
-            0 => Ok(HeightDistribution::Gaussian),
-            1 => Ok(HeightDistribution::Pearson {
-                skewness: self.skewness,
-                kurtosis: self.kurtosis,
-            }),
-            2 => Ok(HeightDistribution::Weibull {
-                skewness: self.skewness,
-            }),
-            f => Err(format!("unknown distribution code {f}")),
-        }
+        Family::from_code(self.family)
+            .and_then(|f| HeightDistribution::of_family(f, self.skewness, self.kurtosis))
+            .ok_or_else(|| format!("unknown distribution code {}", self.family))
     }
 
     /// Whether this is the Gaussian (a version-1 table).
     pub fn is_gaussian(&self) -> bool {
-        self.family == 0
+        self.family == Family::Gaussian.code()
     }
 }
 
