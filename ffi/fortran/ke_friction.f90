@@ -33,7 +33,7 @@ module ke_friction
             kef_law_mu_and_derivative, kef_law_mu_batch, kef_law_mu_batch_nan, &
             kef_law_mu_and_derivative_batch, kef_law_mu_and_derivative_batch_nan, kef_law_clamped, &
             kef_law_range, kef_law_max_error, kef_law_free, kef_law_from_props, kef_table_mu_with, &
-            kef_table_mu_batch_with, kef_law_from_surface
+            kef_table_mu_batch_with, kef_law_from_surface, kef_curve_from_table_with
   public :: c_int, c_double, c_size_t, c_ptr, c_associated, c_int64_t
 
   integer(c_int), parameter, public :: KEF_OK = 0
@@ -224,6 +224,14 @@ module ke_friction
       type(c_ptr), value :: table
       real(c_double), value :: psi, theta
       type(c_ptr) :: kef_curve_from_table
+    end function
+
+    ! kef_curve_from_table that refuses constants other than the table's.
+    function kef_curve_from_table_with(table, constants, psi, theta) bind(c, name="kef_curve_from_table_with")
+      import :: c_ptr, c_double
+      type(c_ptr), value :: table, constants
+      real(c_double), value :: psi, theta
+      type(c_ptr) :: kef_curve_from_table_with
     end function
 
     function kef_curve_from_model(psi, theta, beta, nu, eps_star, f_star_min, f_star_max) &

@@ -416,6 +416,19 @@ int kef_table_mu_with_slope_batch_nan(const kef_table *table,
 // `table` is NULL or a live table.
 kef_curve *kef_curve_from_table(const kef_table *table, double psi, double theta);
 
+// kef_curve_from_table for a surface pair whose model constants are
+// `constants` (NULL: the defaults): NULL with KEF_ERR_DOMAIN, naming the
+// first constant that differs and both values, unless they are the
+// table's (as kef_table_mu_with); then as kef_curve_from_table.
+//
+// # Safety
+// `table` is NULL or a live table; `constants` NULL or a live
+// kef_constants.
+kef_curve *kef_curve_from_table_with(const kef_table *table,
+                                     const kef_constants *constants,
+                                     double psi,
+                                     double theta);
+
 // A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
 // of the Kogut–Etsion model (ψ, θ, β, ν, ε*; the paper's constants are
 // β = 0.04, ν = 0.3, ε* = 0.004; the default fit and model): within 1e-6

@@ -44,6 +44,27 @@ pub unsafe extern "C" fn kef_curve_from_table(table: *const kef_table, psi: f64,
     ffi!(table => Ok(Box::new(kef_curve(table.curve(psi, theta)?))))
 }
 
+/// kef_curve_from_table for a surface pair whose model constants are
+/// `constants` (NULL: the defaults): NULL with KEF_ERR_DOMAIN, naming the
+/// first constant that differs and both values, unless they are the
+/// table's (as kef_table_mu_with); then as kef_curve_from_table.
+///
+/// # Safety
+/// `table` is NULL or a live table; `constants` NULL or a live
+/// kef_constants.
+#[no_mangle]
+pub unsafe extern "C" fn kef_curve_from_table_with(
+    table: *const kef_table,
+    constants: *const kef_constants,
+    psi: f64,
+    theta: f64,
+) -> *mut kef_curve {
+    ffi!(table, constants => {
+        table.check_constants(constants)?;
+        Ok(Box::new(kef_curve(table.curve(psi, theta)?)))
+    })
+}
+
 /// A curve μ(F*) for F* in [f_star_min, f_star_max] by direct integration
 /// of the Kogut–Etsion model (ψ, θ, β, ν, ε*; the paper's constants are
 /// β = 0.04, ν = 0.3, ε* = 0.004; the default fit and model): within 1e-6

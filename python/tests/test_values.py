@@ -197,5 +197,12 @@ def test_a_lookup_for_a_model_refuses_constants_the_table_was_not_built_for():
         t.mu_for(kf.Model(1.0, 0.001, distribution="pearson", skewness=0.3, kurtosis=3.5), 2e-4)
     with pytest.raises(ValueError, match=r"^fit = as-printed, but the table holds fit = consistent"):
         t.mu_for(kf.Model(1.0, 0.001, fit="as-printed"), 2e-4)
+    # The same for a curve from the table.
+    f = np.array([1e-4, 1e-3, 1e-2])
+    assert np.array_equal(t.curve_for(kf.Model(1.0, 0.001)).mu(f), t.curve(1.0, 0.001).mu(f))
+    with pytest.raises(ValueError, match=r"^beta = 0\.117, but the table holds beta = 0\.04"):
+        t.curve_for(measured)
+    with pytest.raises(TypeError, match="model must be a ke_friction.Model"):
+        t.curve_for((1.0, 0.001))
     with pytest.raises(TypeError, match="model must be a ke_friction.Model"):
         t.mu_for((1.0, 0.001), 2e-4)

@@ -472,3 +472,36 @@ fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
         kef_constants_free(by_code);
     }
 }
+
+/// A curve from a table for a surface pair's constants: the table's own
+/// (or NULL) give kef_curve_from_table's curve; others give NULL, the
+/// message naming β and both values.
+#[test]
+fn a_curve_from_a_table_with_the_constants_refuses_other_constants() {
+    let t = kef_table_default();
+    // SAFETY: live handles and local doubles.
+    unsafe {
+        let c = kef_constants_new();
+        let plain = kef_curve_from_table(t, 1.0, 0.001);
+        for constants in [c as *const kef_constants, null()] {
+            let checked = kef_curve_from_table_with(t, constants, 1.0, 0.001);
+            assert!(!checked.is_null(), "{}", last_error());
+            for f in [1e-4, 2e-3, 5e-2] {
+                let (mut a, mut b) = (0.0, 0.0);
+                assert_eq!(kef_curve_mu(plain, f, &mut a), KEF_OK);
+                assert_eq!(kef_curve_mu(checked, f, &mut b), KEF_OK);
+                assert_eq!(a, b);
+            }
+            kef_curve_free(checked);
+        }
+        assert_eq!(kef_constants_set_beta(c, 0.117), KEF_OK);
+        assert!(kef_curve_from_table_with(t, c, 1.0, 0.001).is_null());
+        assert!(
+            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
+            "{}",
+            last_error()
+        );
+        kef_curve_free(plain);
+        kef_constants_free(c);
+    }
+}

@@ -270,10 +270,27 @@ class Table:
 
     def curve(self, psi: float, theta: float) -> "Curve":
         """mu(F*) of the surface pair (psi, theta) over the table's F* range:
-        a :class:`Curve`, several times faster than :meth:`mu` per point."""
+        a :class:`Curve`, several times faster than :meth:`mu` per point.
+        It assumes the table's constants, as :meth:`mu`; :meth:`curve_for`
+        checks a model's."""
         _check_real(psi=psi, theta=theta)
         psi, theta = float(psi), float(theta)
         return Curve(self._core.curve(psi, theta), ("table", self, psi, theta))
+
+    def curve_for(self, model: Model) -> "Curve":
+        """:meth:`curve` of ``model``'s surface pair (its psi and theta),
+        after checking that the model's constants are the table's: a
+        ValueError naming the first that differs and both values, as
+        :meth:`mu_for`.
+
+        >>> t = Table.default()
+        >>> t.curve_for(Model(1.0, 0.001)).mu(0.01) == t.curve(1.0, 0.001).mu(0.01)
+        True
+        """
+        if not isinstance(model, Model):
+            raise TypeError(f"model must be a ke_friction.Model, not {type(model).__name__}")
+        self._core.check_constants(model._core)
+        return self.curve(model.psi, model.theta)
 
     def __repr__(self) -> str:
         i = self.info
