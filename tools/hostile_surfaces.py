@@ -7,7 +7,12 @@ The files are made here (nothing multi-MB is committed): an X3P whose
 main.xml nests 20,000 elements; a 2 MB zip bomb declaring 32768 x 32768
 16-bit points (2 GiB of data); a 100 MB one-column text file; a 4096 x 4096
 16-bit X3P read in full; a CR-only text matrix; an archive with two
-main.xml; a truncated archive.
+main.xml; a truncated archive. And the instruments' files of
+../shared/topographies (--topographies) with their grid size inflated:
+every field of the header that holds nx or ny (16/32-bit, either byte
+order, or decimal text) set, one at a time, to a size of billions of
+points; each is refused (exit 2) or read, never a crash, in < 10 s and
+within the file's own read peak + 100 MiB.
 
 Peak memory is the child's maximum resident set (`ru_maxrss` from
 `os.wait4`, what `/usr/bin/time -v` prints as "Maximum resident set
@@ -15,11 +20,13 @@ size"). Limits: < 100 MB and < 1 s for the refused bombs; for a file read,
 <= 1.5 x its f64 array + 64 MiB over the program's own baseline (kefric
 on a tiny file; Python after importing numpy and ke_friction).
 
-usage: hostile_surfaces.py KEFRIC [--python PYTHON] [--keep DIR]
+usage: hostile_surfaces.py KEFRIC [--python PYTHON] [--keep DIR] [--topographies DIR]
 """
 
 import argparse
+import json
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -175,6 +182,63 @@ def cli(kefric, files, d):
         )
 
 
+def inflations(data, nx, ny, header):
+    """(what, offset, old length, new bytes) for each field of the first
+    `header` bytes that holds nx or ny: binary (u16, u32; little- and
+    big-endian) set to the largest of its width, decimal text to
+    2000000000. Offsets, not patched copies: the caller patches one at a
+    time (this process's own memory counts in its children's peaks)."""
+    head = data[:header]
+    out = []
+    for n in sorted({nx, ny}):
+        for fmt, big in [("<H", 0xFFFF), (">H", 0xFFFF), ("<I", 2_000_000_000), (">I", 2_000_000_000)]:
+            if n >= 1 << (8 * struct.calcsize(fmt)):
+                continue
+            pattern = struct.pack(fmt, n)
+            at = head.find(pattern)
+            while at >= 0:
+                out.append((f"{fmt} {n} at {at}", at, len(pattern), struct.pack(fmt, big)))
+                at = head.find(pattern, at + 1)
+        for m in re.finditer(rb"(?<![0-9.])%d(?![0-9.])" % n, head):
+            out.append((f"text {n} at {m.start()}", m.start(), m.end() - m.start(), b"2000000000"))
+    return out
+
+
+def instruments(kefric, topographies, d):
+    """Each instrument file with its grid size inflated (module docstring)."""
+    names = sorted(f for f in os.listdir(topographies) if not f.endswith(".md"))
+    check(len(names) >= 8, f"{len(names)} instrument files in {topographies} (>= 8)")
+    for name in names:
+        path = os.path.join(topographies, name)
+        rc, err, _, base = run([kefric, "surface", path, "--json"])
+        out = subprocess.run([kefric, "surface", path, "--json"], capture_output=True, text=True).stdout
+        if rc != 0:
+            check(False, f"kefric {name}: exit {rc} {err.strip()[:160]}")
+            continue
+        grid = json.loads(out)["surface"]
+        nx, ny = grid["nx"], grid["ny"]
+        with open(path, "rb") as f:
+            data = f.read()
+        cases = inflations(data, nx, ny, 65536)[:24]
+        worst, slowest, codes = 0, 0.0, {}
+        bad = os.path.join(d, "inflated-" + name)
+        for what, at, length, new in cases:
+            with open(bad, "wb") as f:
+                f.write(data[:at])
+                f.write(new)
+                f.write(data[at + length:])
+            rc, err, secs, peak = run([kefric, "surface", bad])
+            codes[rc] = codes.get(rc, 0) + 1
+            worst, slowest = max(worst, peak), max(slowest, secs)
+            check(rc in (0, 2) and "panicked" not in err, f"kefric {name} {what}: exit {rc} {err.strip()[:160]!r}")
+        check(
+            worst <= base + 100 * MIB and slowest < 10.0,
+            f"kefric {name} ({nx} x {ny}), {len(cases)} inflated sizes (exits {codes}): peak {worst / MIB:.0f} MiB "
+            f"<= read peak {base / MIB:.0f} + 100 MiB, slowest {slowest:.2f} s (< 10 s)",
+        )
+        check(len(cases) > 0, f"kefric {name}: its header holds nx = {nx} or ny = {ny}")
+
+
 PY_READ = """
 import sys, warnings
 import numpy, ke_friction as kf
@@ -209,6 +273,12 @@ def main():
     ap.add_argument("kefric")
     ap.add_argument("--python", help="a Python with ke_friction installed")
     ap.add_argument("--keep", help="write the files here and keep them")
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap.add_argument(
+        "--topographies",
+        default=os.environ.get("KEF_TOPOGRAPHIES", os.path.join(here, "..", "..", "shared", "topographies")),
+        help="the instruments' example files (default $KEF_TOPOGRAPHIES or ../shared/topographies)",
+    )
     a = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         d = a.keep or tmp
@@ -217,6 +287,7 @@ def main():
         files = make_files(d)
         print(f"files made in {time.monotonic() - t0:.1f} s")
         cli(a.kefric, files, d)
+        instruments(a.kefric, a.topographies, d)
         if a.python:
             python(a.python, files)
     if FAILED:
