@@ -141,20 +141,6 @@ fn topography(heights: Vec<f64>, nx: usize, ny: usize, dx: f64, dy: Option<f64>)
     .map_err(raise)
 }
 
-/// The materials of `Surface.model`'s keywords, in the order e1, nu1, e2,
-/// nu2, hardness, delta_gamma, epsilon.
-fn materials((e1, nu1, e2, nu2, hardness, delta_gamma, epsilon): (f64, f64, f64, f64, f64, f64, f64)) -> Materials {
-    Materials {
-        e1,
-        nu1,
-        e2,
-        nu2,
-        hardness,
-        delta_gamma,
-        epsilon,
-    }
-}
-
 /// The exception of statistics that cannot be taken with `options`: a
 /// filter's refused nesting index names its keyword (`lambda_s: the
 /// cut-off wavelength lambda = … m is out of range: must be at least … m`).
@@ -626,12 +612,12 @@ impl SurfaceCore {
     fn params<'py>(
         &self,
         py: Python<'py>,
-        materials: (f64, f64, f64, f64, f64, f64, f64),
+        materials: [f64; 7],
         distribution: &DistributionCore,
     ) -> PyResult<Bound<'py, PyAny>> {
         let p = self
             .surface
-            .params(&self::materials(materials), distribution.dist.clone())
+            .params(&Materials::from_array(materials), distribution.dist.clone())
             .map_err(raise)?;
         record(py, serde_json::to_string(&p))
     }
@@ -646,7 +632,7 @@ impl SurfaceCore {
         &self,
         py: Python<'py>,
         model: &ModelCore,
-        materials: (f64, f64, f64, f64, f64, f64, f64),
+        materials: [f64; 7],
         force: Option<Vec<f64>>,
         area: Option<Vec<f64>>,
         pressure: Option<Vec<f64>>,
@@ -663,7 +649,7 @@ impl SurfaceCore {
         if loads.is_empty() {
             return Err(value_error("give force with area, or pressure alone"));
         }
-        let physical = self.surface.physical(&self::materials(materials));
+        let physical = self.surface.physical(&Materials::from_array(materials));
         let (records, warnings) = py
             .detach(|| {
                 let mut warnings = ke_friction::Warnings::new();
