@@ -2,14 +2,14 @@
 //! external force F* (MODEL.md §4–5).
 
 pub mod asperity;
+mod integrals;
 mod integrator;
 pub(crate) mod laws;
-mod surface;
 
 use crate::checks::ParamError;
 use crate::num::Shortest;
 use crate::params::Params;
-use surface::Surface;
+use integrals::Integrals;
 
 /// The largest external force the model takes, F* = 1: a nominal
 /// pressure equal to the hardness (MODEL.md §1). Above it every asperity
@@ -115,7 +115,7 @@ pub const H_LIMIT: f64 = 1e6;
 #[derive(Debug, Clone)]
 pub struct Model {
     params: Params,
-    surface: Surface,
+    integrals: Integrals,
 }
 
 impl Model {
@@ -123,7 +123,7 @@ impl Model {
     pub fn new(params: Params) -> Result<Model, ParamError> {
         params.validate()?;
         Ok(Model {
-            surface: Surface::new(&params),
+            integrals: Integrals::new(&params),
             params,
         })
     }
@@ -135,7 +135,7 @@ impl Model {
 
     /// y_s* = h* − d*, the offset between the two reference planes.
     pub fn y_s(&self) -> f64 {
-        self.surface.ys
+        self.integrals.ys
     }
 
     /// The contact at separation `h_star` (MODEL.md §4).
@@ -143,8 +143,8 @@ impl Model {
         if !(h_star.is_finite() && h_star.abs() <= H_LIMIT) {
             return Err(EvalError::HStar(h_star));
         }
-        let d = h_star - self.surface.ys;
-        let s = self.surface.evaluate(d, true);
+        let d = h_star - self.integrals.ys;
+        let s = self.integrals.evaluate(d, true);
         let f = s.p - s.fs;
         Ok(Contact {
             h_star,
@@ -171,12 +171,12 @@ impl Model {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn asperities_in_contact(&self, contact: &Contact, summits: f64) -> f64 {
-        summits * self.surface.contact_fraction(contact.d_star)
+        summits * self.integrals.contact_fraction(contact.d_star)
     }
 
     /// F* and dF*/dh* at `h_star` (no friction integrals).
     pub fn force(&self, h_star: f64) -> (f64, f64) {
-        let s = self.surface.evaluate(h_star - self.surface.ys, false);
+        let s = self.integrals.evaluate(h_star - self.integrals.ys, false);
         (s.p - s.fs, s.dp - s.dfs)
     }
 

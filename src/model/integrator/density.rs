@@ -52,7 +52,7 @@ pub(crate) trait Phi {
     /// integral); for a general density `−w/ω`, which the laws' slopes
     /// multiply (d* moves the laws, not the density: no terms at the ends
     /// of the support, which may be infinite there), with the laws' jumps
-    /// at the regime boundaries added apart (`Surface::add_jumps`).
+    /// at the regime boundaries added apart (`Integrals::add_jumps`).
     fn dw(&self, w: f64, z: f64, inv_omega: f64) -> f64;
     /// Panel length in z* for a panel from height `z` upwards (`up`) or
     /// downwards.

@@ -79,7 +79,7 @@ impl Rules {
 }
 
 /// The integrals at one separation: P*, Fs*, their d*-derivatives and Q*
-/// (what [`Surface::evaluate`](crate::model::surface::Surface::evaluate) returns, with their prefactors), or the raw
+/// (what [`Integrals::evaluate`](crate::model::integrals::Integrals::evaluate) returns, with their prefactors), or the raw
 /// integrals of one regime while they are summed (without).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub(crate) struct Sums {

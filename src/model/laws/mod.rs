@@ -12,7 +12,7 @@
 //! same for every law.
 //!
 //! Dispatch is static: [`Law`] wraps the planned laws (one line each in
-//! `laws!`), and `Surface::evaluate` matches on it once per evaluation
+//! `laws!`), and `Integrals::evaluate` matches on it once per evaluation
 //! ([`Law::visit`]) and calls the generic integrals with the concrete law
 //! (no `dyn`, no allocation).
 //! docs/ARCHITECTURE.md lists the places a new law touches.
@@ -116,7 +116,7 @@ pub fn jumps_of<const N: usize>(regimes: &[Regime; N]) -> [Jump; N] {
 /// The elastic regime `0 ≤ x < 1` (Hertz load `x^1.5`, adhesion row 0) is
 /// integrated by [`ContactLaw::elastic`], whose friction row is the law's
 /// own (a power of x, or a capacity with endpoint behaviour of its own);
-/// the regimes above it by the shared `Surface::smooth`, from
+/// the regimes above it by the shared `Integrals::smooth`, from
 /// [`ContactLaw::regimes`]. Jumps of the laws at the regime boundaries
 /// (general densities) follow from the regimes.
 pub trait ContactLaw {
@@ -157,7 +157,7 @@ macro_rules! laws {
     ($($variant:ident => $law:ty),+ $(,)?) => {
         /// The planned laws: the wrapper the surface dispatches on (one
         /// `match` per evaluation).
-        // One per Surface, read on every evaluation: inline, not boxed.
+        // One per Integrals, read on every evaluation: inline, not boxed.
         #[allow(clippy::large_enum_variant)]
         #[derive(Debug, Clone)]
         pub(crate) enum Law {

@@ -1,5 +1,6 @@
-//! The rough surface: the integrals of MODEL.md §4 (Kogut–Etsion) and §8
-//! (CEB-type) for one contact law, summed over its regimes.
+//! The surface integrals of MODEL.md §4 (Kogut–Etsion) and §8 (CEB-type)
+//! for one contact law, summed over its regimes ([`Integrals`]; not to be
+//! confused with a measured surface, `topography::Surface`).
 //!
 //! The law's elastic regime comes from the law ([`ContactLaw::elastic`]),
 //! the regimes above it from [`ContactLaw::regimes`] by the shared
@@ -11,9 +12,10 @@ use super::integrator::{add_node, Heights, Integrator, Phi, Sums, Window};
 use super::laws::{ContactLaw, Law, LawVisitor, LoadLaw, Regime};
 use crate::params::{hardness_coefficient, Params};
 
-/// A planned surface: its contact law and the integrals' machinery.
+/// The planned integrals of a rough surface: its contact law and the
+/// integrals' machinery.
 #[derive(Debug, Clone)]
-pub(crate) struct Surface {
+pub(crate) struct Integrals {
     /// The planned single-asperity law.
     law: Law,
     /// The panels, rules and height density.
@@ -26,7 +28,7 @@ pub(crate) struct Surface {
     adh_pref: f64,
 }
 
-impl Surface {
+impl Integrals {
     /// The fraction of the asperities in contact at separation `d` (d*)
     /// ([`Integrator::contact_fraction`]).
     pub fn contact_fraction(&self, d: f64) -> f64 {
@@ -34,11 +36,11 @@ impl Surface {
     }
 
     /// Plans the integrals for valid parameters.
-    pub fn new(p: &Params) -> Surface {
+    pub fn new(p: &Params) -> Integrals {
         let pi = core::f64::consts::PI;
         let grid = Integrator::new(p);
         let k = hardness_coefficient(p.constants.nu);
-        Surface {
+        Integrals {
             law: Law::new(&p.constants),
             ys: 1.0 / (4.0 * 3f64.sqrt() * pi * p.constants.beta),
             load_pref: (2.0 / 3.0) * pi * p.constants.beta * k * grid.omega,
@@ -51,7 +53,7 @@ impl Surface {
     /// one `match` on the law, then static calls.
     pub fn evaluate(&self, d: f64, want_q: bool) -> Sums {
         struct Evaluate<'a> {
-            s: &'a Surface,
+            s: &'a Integrals,
             d: f64,
             want_q: bool,
         }
@@ -256,9 +258,9 @@ mod tests {
             .find(|p| p["kind"] == "closed_form" && p["b"] == 1.5)
             .expect("a closed form for b = 1.5");
         let f = |k: &str| p[k].as_f64().unwrap();
-        let surface = Surface::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
-        let s = surface.evaluate_law(&Hertz::new(), f("d_star"), true);
-        let want = surface.load_pref * f("i_0_inf");
+        let integrals = Integrals::new(&Params::new(f("psi"), 0.0).beta(f("beta")));
+        let s = integrals.evaluate_law(&Hertz::new(), f("d_star"), true);
+        let want = integrals.load_pref * f("i_0_inf");
         assert!(s.p.is_finite() && s.p > 0.0 && s.dp < 0.0, "{s:?}");
         assert!(((s.p - want) / want).abs() < 1e-12, "P* = {:e} vs {want:e}", s.p);
         assert_eq!((s.fs, s.q), (0.0, 0.0));
@@ -267,10 +269,10 @@ mod tests {
         let pearson = Constants::default().distribution(crate::HeightDistribution::pearson(0.0, 2.5).unwrap());
         for c in [gaussian, pearson] {
             let params = c.at(0.1, 0.003).unwrap();
-            let surface = Surface::new(&params);
+            let integrals = Integrals::new(&params);
             for d in [0.5, 1.0, 2.0] {
-                let hertz = surface.evaluate_law(&Hertz::new(), d, true);
-                let ke = surface.evaluate(d, true);
+                let hertz = integrals.evaluate_law(&Hertz::new(), d, true);
+                let ke = integrals.evaluate(d, true);
                 assert!(hertz.p.is_finite() && hertz.p > 0.0, "{hertz:?}");
                 for (what, a, b) in [
                     ("P*", hertz.p, ke.p),
