@@ -137,6 +137,27 @@ pub struct Friction {
 }
 
 impl Friction {
+    /// The load and the friction as the load was given: (F, Q) in newtons
+    /// for a force on an area, (p, μp) in pascals for a pressure.
+    ///
+    /// ```
+    /// use ke_friction::{Load, Materials, Model};
+    /// let steel = Materials::from_array([200e9, 0.3, 200e9, 0.3, 2e9, 0.5, 0.4e-9]);
+    /// let physical = steel.with_roughness(1e-6, 100e-6, 1e9);
+    /// let model = Model::new(ke_friction::Params::from_physical(&physical)?)?;
+    /// let by_force = Load::Force { force: 100.0, area: 1e-4 }.friction(&model, &physical)?;
+    /// assert_eq!(by_force.as_given(), (100.0, by_force.mu * 100.0));
+    /// let by_pressure = Load::Pressure(1e6).friction(&model, &physical)?;
+    /// assert_eq!(by_pressure.as_given(), (1e6, by_pressure.mu * 1e6));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn as_given(&self) -> (f64, f64) {
+        match (self.force, self.friction_force) {
+            (Some(force), Some(q)) => (force, q),
+            _ => (self.pressure, self.friction_stress),
+        }
+    }
+
     /// The plausibility warnings of this result on `model` (the one it
     /// came from, with `physical`): the contact's
     /// ([`Warning::of_contact`]) and, for a force on a known area, too

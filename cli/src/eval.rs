@@ -160,10 +160,7 @@ fn run_loads(
             }
         )?;
         for f in &rows {
-            let (l, q) = match (f.force, f.friction_force) {
-                (Some(force), Some(q)) => (force, q),
-                _ => (f.pressure, f.friction_stress),
-            };
+            let (l, q) = f.as_given();
             outln!(
                 "{:>12} {:>12} {:>12} {:>12} {:>12} {:>12}",
                 sig(l).to_string(),

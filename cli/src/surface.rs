@@ -281,10 +281,7 @@ fn print_loads(friction: &[Friction]) -> Result<(), Failure> {
         "h (m)"
     )?;
     for f in friction {
-        let (l, q) = match (f.force, f.friction_force) {
-            (Some(force), Some(q)) => (force, q),
-            _ => (f.pressure, f.friction_stress),
-        };
+        let (l, q) = f.as_given();
         outln!(
             "{:>12} {:>12} {:>12} {:>14} {:>12} {:>12}",
             sig(l).to_string(),
