@@ -41,9 +41,7 @@ pub fn fields<'a, const N: usize>(flag: &str, text: &'a str, sep: char, form: &s
 }
 
 /// The flag that sets a [`ke_friction::Params`] field, for messages.
-pub fn flag_of(field: &str) -> String {
-    format!("--{}", field.replace('_', "-"))
-}
+pub use ke_friction::flags::flag as flag_of;
 
 /// Fails early (before long work) if the file `path`, given by `flag`,
 /// cannot be written: a directory, no file name, or a parent directory
@@ -272,10 +270,7 @@ impl MaterialsArgs {
         let given = self.given();
         if let Some((flag, _)) = given.iter().chain(extra).find(|(_, v)| v.is_none()) {
             let all: Vec<&str> = given.iter().chain(extra).map(|(f, _)| *f).collect();
-            return Err(Failure::input(format!(
-                "{flag}: missing: the SI inputs go together ({})",
-                all.join(", ")
-            )));
+            return Err(Failure::input(ke_friction::flags::missing_together(flag, &all)));
         }
         Ok(Materials::from_array(given.map(|(_, v)| v.unwrap_or_default())))
     }
@@ -285,12 +280,7 @@ impl MaterialsArgs {
 /// flag: `--density` for β (it is the last of η, R, σ one tunes),
 /// `roughness` for the dimensionless results (ψ, θ, ν, ε*).
 pub fn physical_failure(e: ke_friction::ParamError, roughness: &str) -> Failure {
-    let flag = match e.name {
-        n if n.starts_with("beta") => "--density".to_string(),
-        "psi" | "theta" | "nu" | "eps_star" => roughness.to_string(),
-        n => flag_of(n),
-    };
-    Failure::input(format!("{flag}: {e}"))
+    Failure::input(format!("{}: {e}", ke_friction::flags::param_flag(e.name, roughness)))
 }
 
 /// The help heading the SI inputs are declared under; [`help_headings`]

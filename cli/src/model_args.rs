@@ -132,7 +132,7 @@ impl ModelArgs {
         let (params, source) = self.params_and_source()?;
         let model = Model::new(params).map_err(|e| {
             let flag = if !self.surface.is_empty() {
-                "the surface with these materials".to_string()
+                ke_friction::flags::WITH_MATERIALS.to_string()
             } else if self.si.any() {
                 "SI inputs".to_string()
             } else {

@@ -211,7 +211,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 )
                 .and_then(|p| {
                     ke_friction::Model::new(p)
-                        .map_err(|e| Failure::input(format!("the surface with these materials: {e}")))
+                        .map_err(|e| Failure::input(format!("{}: {e}", ke_friction::flags::WITH_MATERIALS)))
                 });
                 match fit {
                     Ok(model) => fits.push((fit_label(family, surface.stats()), model)),

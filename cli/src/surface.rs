@@ -119,9 +119,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .iter()
         .find_map(|(given, flag)| given.then_some(*flag))
         {
-            return Err(Failure::input(format!(
-                "{flag}: needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon)"
-            )));
+            return Err(Failure::input(ke_friction::flags::materials_needed(flag)));
         }
         None
     };
@@ -157,8 +155,8 @@ pub fn evaluate(
         .transpose()?;
     let mut frictions = Vec::with_capacity(loads.len());
     if let (false, Some(p), Some(m)) = (loads.is_empty(), &params, materials) {
-        let model =
-            Model::new(p.clone()).map_err(|e| Failure::input(format!("the surface with these materials: {e}")))?;
+        let model = Model::new(p.clone())
+            .map_err(|e| Failure::input(format!("{}: {e}", ke_friction::flags::WITH_MATERIALS)))?;
         let physical = surface.physical(m);
         for load in loads {
             let f = load

@@ -4,9 +4,10 @@
 
 use crate::args::{named, parse_f64, physical_failure};
 use crate::output::{sig, Failure};
+use ke_friction::flags;
 use ke_friction::topography::{
-    read_dy_defaulting_to_dx, read_file, tip_reliability_cutoff, Channel, Derivative, Detrend, ReadError, ReadOptions,
-    StatsOptions, Surface, SurfaceStats, Topography, MAX_POINTS, TIP_SAFETY_FACTOR,
+    read_dy_defaulting_to_dx, read_file, Channel, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
+    SurfaceStats, Topography, MAX_POINTS,
 };
 use ke_friction::{Family, Fit, LengthUnit, Materials, ModelKind, Params, Shortest};
 use std::path::{Path, PathBuf};
@@ -51,18 +52,6 @@ pub struct SurfaceArgs {
     /// The instrument's lateral resolution (m): the reliability cut-off of an optical instrument (takes precedence over --tip-radius).
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
     pub resolution: Option<f64>,
-}
-
-/// The reliability cut-off of a scanning probe of tip radius `radius` (m)
-/// on `t` (safety factor [`TIP_SAFETY_FACTOR`], ½).
-fn tip_cutoff(t: &Topography, radius: f64) -> Result<Option<f64>, String> {
-    if !(radius.is_finite() && radius > 0.0) {
-        return Err(format!(
-            "--tip-radius {} is out of range: must be > 0 (metres)",
-            Shortest(radius)
-        ));
-    }
-    tip_reliability_cutoff(t, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
 }
 
 /// `--lambda-s`: a length or `auto`.
@@ -122,8 +111,8 @@ impl SurfaceArgs {
     pub fn reliability(&self, t: &Topography) -> Result<Option<f64>, String> {
         match (self.resolution, self.tip_radius) {
             (Some(r), _) => Ok(Some(r)),
-            (None, Some(radius)) => tip_cutoff(t, radius),
-            (None, None) => Err("give --tip-radius or --resolution for the reliability cut-off".into()),
+            (None, Some(radius)) => flags::tip_cutoff(t, radius),
+            (None, None) => Err(flags::RELIABILITY_NEEDED.into()),
         }
     }
 
@@ -152,10 +141,9 @@ impl SurfaceArgs {
         };
         let read = read_dy_defaulting_to_dx(&options(dy), |options| read_file(path, options));
         read.map_err(|e| match e {
-            ReadError::NeedInterval { path, name } => Failure::input(format!(
-                "{flag}: {}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit",
-                path.display()
-            )),
+            ReadError::NeedInterval { path, name } => {
+                Failure::input(flags::no_interval(format!("{flag}: {}", path.display()), name))
+            }
             ReadError::Conflict {
                 path,
                 name,
@@ -227,17 +215,12 @@ pub fn params(
     fit: Fit,
     model: ModelKind,
 ) -> Result<Params, Failure> {
-    let distribution = surface.distribution(family.map(Family::name)).map_err(|e| {
-        let hint = if family == Some(Family::Empirical) {
-            ""
-        } else {
-            " (try --distribution empirical)"
-        };
-        Failure::input(format!("--distribution: the surface's {e}{hint}"))
-    })?;
+    let distribution = surface
+        .distribution(family.map(Family::name))
+        .map_err(|e| Failure::input(flags::distribution_failure(e, family)))?;
     let p = surface
         .params(materials, distribution)
-        .map_err(|e| physical_failure(e, "the surface with these materials"))?;
+        .map_err(|e| physical_failure(e, flags::WITH_MATERIALS))?;
     // Params::from_physical validated it; fit and model change no range.
     Ok(p.fit(fit).kind(model))
 }

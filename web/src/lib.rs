@@ -9,10 +9,10 @@
 //! λs, the PSD, the height map and histogram) are further methods. Every
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
+use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, tip_reliability_cutoff, Channel, Derivative, Detrend, Format,
-    ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
-    TIP_SAFETY_FACTOR,
+    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Format, ReadError, ReadOptions,
+    ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
@@ -56,11 +56,6 @@ pub const KEYS: &[&str] = &[
 /// The loads of the μ-against-load curve: the given load times
 /// 10^(k/10) for k in this range (three decades below, one above).
 const LOAD_STEPS: std::ops::RangeInclusive<i32> = -30..=10;
-
-/// A flag as the CLI spells it: `lambda_s` → `--lambda-s`.
-fn flag(key: &str) -> String {
-    format!("--{}", key.replace('_', "-"))
-}
 
 /// The page's options: key → value text, every key one of [`KEYS`].
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -192,9 +187,7 @@ impl Analysis {
         };
         let topography =
             read_dy_defaulting_to_dx(&read_options, |o| read_bytes(bytes, name, o)).map_err(|e| match e {
-                ReadError::NeedInterval { name: which, .. } => format!(
-                    "surface: {name}: the file gives no sampling interval {which}: give --dx (and --dy for a map, if it differs), in --xy-unit"
-                ),
+                ReadError::NeedInterval { name: which, .. } => flags::no_interval(format!("surface: {name}"), which),
                 e => format!("surface: {e}"),
             })?;
 
@@ -204,14 +197,8 @@ impl Analysis {
         let reliability = || -> Result<Option<f64>, String> {
             match (resolution, tip_radius) {
                 (Some(r), _) => Ok(Some(r)),
-                (None, Some(radius)) if radius <= 0.0 => Err(format!(
-                    "--tip-radius {} is out of range: must be > 0 (metres)",
-                    Shortest(radius)
-                )),
-                (None, Some(radius)) => {
-                    tip_reliability_cutoff(&topography, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
-                }
-                (None, None) => Err("give --tip-radius or --resolution for the reliability cut-off".into()),
+                (None, Some(radius)) => flags::tip_cutoff(&topography, radius),
+                (None, None) => Err(flags::RELIABILITY_NEEDED.into()),
             }
         };
         let lambda_s = match options.get("lambda_s") {
@@ -256,11 +243,7 @@ impl Analysis {
                 .find_map(|(k, v)| v.is_none().then_some(k))
             {
                 let all: Vec<String> = Materials::FIELDS.iter().map(|k| flag(k)).collect();
-                return Err(format!(
-                    "{}: missing: the SI inputs go together ({})",
-                    flag(k),
-                    all.join(", ")
-                ));
+                return Err(flags::missing_together(&flag(k), &all));
             }
             let mut v = [0.0; 7];
             for (v, given) in v.iter_mut().zip(&given) {
@@ -280,9 +263,7 @@ impl Analysis {
                 None
             };
             if let Some(needs) = needs {
-                return Err(format!(
-                    "{needs}: needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon)"
-                ));
+                return Err(flags::materials_needed(needs));
             }
             None
         };
@@ -315,7 +296,7 @@ impl Analysis {
         let mut warnings = Warnings::new();
         warnings.extend(analysis.surface.stats().warnings.iter().cloned());
         if let (Some(f), Some(p), Some(m)) = (&friction, &params, &analysis.materials) {
-            let model = Model::new(p.clone()).map_err(|e| format!("the surface with these materials: {e}"))?;
+            let model = Model::new(p.clone()).map_err(|e| format!("{}: {e}", flags::WITH_MATERIALS))?;
             warnings.note(f.warnings(&model, &analysis.surface.physical(m)));
         }
         let record = SurfaceRecord::new(
@@ -338,31 +319,18 @@ impl Analysis {
         let Some(materials) = &self.materials else {
             return Ok((None, None));
         };
-        let distribution = surface.distribution(self.family.map(Family::name)).map_err(|e| {
-            let hint = if self.family == Some(Family::Empirical) {
-                ""
-            } else {
-                " (try --distribution empirical)"
-            };
-            format!("--distribution: the surface's {e}{hint}")
-        })?;
+        let distribution = surface
+            .distribution(self.family.map(Family::name))
+            .map_err(|e| flags::distribution_failure(e, self.family))?;
         let params = surface
             .params(materials, distribution)
-            .map_err(|e| {
-                // The flag the CLI names (its `physical_failure`).
-                let at = match e.name {
-                    n if n.starts_with("beta") => "--density".to_string(),
-                    "psi" | "theta" | "nu" | "eps_star" => "the surface with these materials".to_string(),
-                    n => flag(n),
-                };
-                format!("{at}: {e}")
-            })?
+            .map_err(|e| format!("{}: {e}", flags::param_flag(e.name, flags::WITH_MATERIALS)))?
             .fit(self.fit)
             .kind(self.model_kind);
         let Some(load) = load else {
             return Ok((Some(params), None));
         };
-        let model = Model::new(params.clone()).map_err(|e| format!("the surface with these materials: {e}"))?;
+        let model = Model::new(params.clone()).map_err(|e| format!("{}: {e}", flags::WITH_MATERIALS))?;
         let friction = load
             .friction(&model, &surface.physical(materials))
             .map_err(|e| format!("{}: {e}", self.load_flag()))?;

@@ -1,0 +1,107 @@
+//! The words of the CLI's flags, which the web page (`web/`) gives word
+//! for word: a record field's flag, and the messages about inputs that go
+//! together. One place for both front ends (the CLI's tests check the
+//! words, the page's browser test checks it says the CLI's).
+
+use crate::{Family, Materials};
+use std::fmt::Display;
+
+/// The flag of a record field: `--` and the name with `-` for `_`
+/// (`delta_gamma` → `--delta-gamma`).
+pub fn flag(field: &str) -> String {
+    format!("--{}", field.replace('_', "-"))
+}
+
+/// The input to blame for a [`ParamError`](crate::ParamError) of
+/// [`Params::from_physical`](crate::Params::from_physical) named `name`:
+/// β's bound is the summit density's (`--density`), a derived parameter
+/// out of range is the roughness' as a whole (`roughness`: what gave σ,
+/// R and η, e.g. [`WITH_MATERIALS`]), any other the flag of its field.
+pub fn param_flag(name: &str, roughness: &str) -> String {
+    match name {
+        n if n.starts_with("beta") => "--density".to_string(),
+        "psi" | "theta" | "nu" | "eps_star" => roughness.to_string(),
+        n => flag(n),
+    }
+}
+
+/// What a measured surface with materials is called in messages.
+pub const WITH_MATERIALS: &str = "the surface with these materials";
+
+/// `flag` (a load or a distribution) given without the materials.
+pub fn materials_needed(flag: &str) -> String {
+    let all: Vec<String> = Materials::FIELDS.iter().map(|f| self::flag(f)).collect();
+    format!("{flag}: needs the materials ({})", all.join(", "))
+}
+
+/// `missing` left out of the SI inputs `all` (flags) that go together.
+pub fn missing_together(missing: &str, all: &[impl AsRef<str>]) -> String {
+    let all: Vec<&str> = all.iter().map(AsRef::as_ref).collect();
+    format!("{missing}: missing: the SI inputs go together ({})", all.join(", "))
+}
+
+/// A surface whose heights the distribution `family` asks for (`None`:
+/// the default) cannot take, `e` saying why; with a hint to the
+/// empirical density unless that was asked for.
+pub fn distribution_failure(e: impl Display, family: Option<Family>) -> String {
+    let hint = if family == Some(Family::Empirical) {
+        ""
+    } else {
+        " (try --distribution empirical)"
+    };
+    format!("--distribution: the surface's {e}{hint}")
+}
+
+/// `--lambda-s auto` or a reliability check without what gives the
+/// cut-off.
+pub const RELIABILITY_NEEDED: &str = "give --tip-radius or --resolution for the reliability cut-off";
+
+/// A file (`file`, as the front end names it) that gives no sampling
+/// interval `name` (`dx` or `dy`).
+pub fn no_interval(file: impl Display, name: &str) -> String {
+    format!(
+        "{file}: the file gives no sampling interval {name}: give --dx (and --dy for a map, if it differs), in --xy-unit"
+    )
+}
+
+/// The reliability cut-off (m) of a scanning probe of tip radius `radius`
+/// (m, `--tip-radius`) on `t`, with the safety factor
+/// [`TIP_SAFETY_FACTOR`](crate::topography::TIP_SAFETY_FACTOR); `None`
+/// when the data show no tip artefact.
+#[cfg(feature = "topography")]
+pub fn tip_cutoff(t: &crate::topography::Topography, radius: f64) -> Result<Option<f64>, String> {
+    use crate::topography::{tip_reliability_cutoff, TIP_SAFETY_FACTOR};
+    if !(radius.is_finite() && radius > 0.0) {
+        return Err(format!(
+            "--tip-radius {} is out of range: must be > 0 (metres)",
+            crate::Shortest(radius)
+        ));
+    }
+    tip_reliability_cutoff(t, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_words_name_the_flags() {
+        assert_eq!(flag("delta_gamma"), "--delta-gamma");
+        assert_eq!(param_flag("beta (eta*R*sigma)", "x"), "--density");
+        assert_eq!(param_flag("psi", WITH_MATERIALS), WITH_MATERIALS);
+        assert_eq!(param_flag("e1", "x"), "--e1");
+        assert_eq!(
+            materials_needed("--force"),
+            "--force: needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon)"
+        );
+        assert_eq!(
+            missing_together("--nu1", &["--e1", "--nu1"]),
+            "--nu1: missing: the SI inputs go together (--e1, --nu1)"
+        );
+        assert_eq!(
+            distribution_failure("e", Some(Family::Empirical)),
+            "--distribution: the surface's e"
+        );
+        assert!(distribution_failure("e", None).ends_with(" (try --distribution empirical)"));
+    }
+}
