@@ -16,7 +16,7 @@ use ke_friction::topography::{
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
-    Warnings,
+    Warning, Warnings,
 };
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -132,11 +132,14 @@ fn quote(word: &str) -> String {
 }
 
 /// One measured surface analysed as `kefric surface` does.
+/// The model's inputs, and with a load its friction and that result's
+/// warnings ([`Analysis::evaluate`]).
+type Evaluated = (Option<Params>, Option<Friction>, Vec<Warning>);
+
 #[wasm_bindgen]
 pub struct Analysis {
     name: String,
     options: Options,
-    topography: Topography,
     stats_options: StatsOptions,
     cutoff: Option<f64>,
     surface: Surface,
@@ -153,6 +156,12 @@ pub struct Analysis {
 }
 
 impl Analysis {
+    /// The measured topography (the surface's one part: its own, not a
+    /// second copy of the heights).
+    fn topography(&self) -> &Topography {
+        &self.surface.parts()[0].0
+    }
+
     /// The analysis of `bytes`, the file `name`, with `options`; the error
     /// is the CLI's message (without its `error: `).
     pub fn analyse(bytes: &[u8], name: &str, options: Options) -> Result<Analysis, String> {
@@ -216,8 +225,7 @@ impl Analysis {
             lambda_s,
             lambda_c: options.number("lambda_c")?,
         };
-        let mut surface =
-            Surface::new(topography.clone(), stats_options).map_err(|e| format!("surface {name}: {e}"))?;
+        let mut surface = Surface::new(topography, stats_options).map_err(|e| format!("surface {name}: {e}"))?;
         if let Some(cutoff) = cutoff {
             surface.check_reliability(cutoff);
         }
@@ -277,7 +285,6 @@ impl Analysis {
         let mut analysis = Analysis {
             name: name.to_string(),
             options,
-            topography,
             stats_options,
             cutoff,
             surface,
@@ -291,13 +298,12 @@ impl Analysis {
             warnings: Warnings::new(),
             record: String::new(),
         };
-        let (params, friction) = analysis.evaluate(&analysis.surface, analysis.load)?;
+        let (params, friction, load_warnings) = analysis.evaluate(&analysis.surface, analysis.load)?;
         // The warnings as the CLI records them: the statistics' and the load's.
         let mut warnings = Warnings::new();
         warnings.extend(analysis.surface.stats().warnings.iter().cloned());
-        if let (Some(f), Some(p), Some(m)) = (&friction, &params, &analysis.materials) {
-            let model = Model::new(p.clone()).map_err(|e| format!("{}: {e}", flags::WITH_MATERIALS))?;
-            warnings.note(f.warnings(&model, &analysis.surface.physical(m)));
+        if friction.is_some() {
+            warnings.note(load_warnings);
         }
         let record = SurfaceRecord::new(
             vec![name.to_string()],
@@ -314,10 +320,10 @@ impl Analysis {
     }
 
     /// The model's inputs of `surface` with the materials and, with `load`,
-    /// the friction (as `kefric surface` evaluates them).
-    fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<(Option<Params>, Option<Friction>), String> {
+    /// the friction and its warnings (as `kefric surface` evaluates them).
+    fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<Evaluated, String> {
         let Some(materials) = &self.materials else {
-            return Ok((None, None));
+            return Ok((None, None, Vec::new()));
         };
         let distribution = surface
             .distribution(self.family.map(Family::name))
@@ -328,13 +334,15 @@ impl Analysis {
             .fit(self.fit)
             .kind(self.model_kind);
         let Some(load) = load else {
-            return Ok((Some(params), None));
+            return Ok((Some(params), None, Vec::new()));
         };
         let model = Model::new(params.clone()).map_err(|e| format!("{}: {e}", flags::WITH_MATERIALS))?;
+        let physical = surface.physical(materials);
         let friction = load
-            .friction(&model, &surface.physical(materials))
+            .friction(&model, &physical)
             .map_err(|e| format!("{}: {e}", self.load_flag()))?;
-        Ok((Some(params), Some(friction)))
+        let warnings = friction.warnings(&model, &physical).collect();
+        Ok((Some(params), Some(friction), warnings))
     }
 
     fn load_flag(&self) -> &'static str {
@@ -375,8 +383,8 @@ impl Analysis {
     /// The scan over λs (the CLI's `--scan` default range): one JSON row a
     /// λs with its β, ψ and μ (or its error); `progress(done, total)`.
     pub fn scan_rows(&self, progress: impl FnMut(usize, usize)) -> Result<Value, String> {
-        let range = ScanRange::default_for(&self.topography);
-        let rows = scan(&self.topography, &self.stats_options, &range, self.cutoff, progress)
+        let range = ScanRange::default_for(self.topography());
+        let rows = scan(self.topography(), &self.stats_options, &range, self.cutoff, progress)
             .map_err(|e| format!("--scan: {e}"))?;
         let rows: Vec<Value> = rows
             .iter()
@@ -386,7 +394,7 @@ impl Analysis {
                     Ok(surface) => {
                         r["beta"] = surface.stats().beta.into();
                         match self.evaluate(surface, self.load) {
-                            Ok((params, friction)) => {
+                            Ok((params, friction, _)) => {
                                 if let Some(p) = params {
                                     r["psi"] = p.psi.into();
                                 }
@@ -411,7 +419,7 @@ impl Analysis {
     pub fn histogram_value(&self, bins: usize) -> Result<Value, String> {
         let bins = bins.clamp(4, 400);
         let heights = self
-            .topography
+            .topography()
             .band_heights(&self.stats_options)
             .map_err(|e| e.to_string())?;
         let s = self.surface.stats();
@@ -506,7 +514,7 @@ impl Analysis {
     /// `{q, c}` a direction, named as `kefric surface --psd` names them).
     pub fn psd(&self) -> Result<String, JsError> {
         let detrended = self
-            .topography
+            .topography()
             .detrended_topography(self.stats_options.detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;
         let spectra = psd_all(&detrended, Window::None).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
@@ -526,20 +534,20 @@ impl Analysis {
 
     /// Points along x.
     pub fn nx(&self) -> usize {
-        self.topography.nx()
+        self.topography().nx()
     }
 
     /// Points along y (1 for a profile).
     pub fn ny(&self) -> usize {
-        self.topography.ny()
+        self.topography().ny()
     }
 
     /// The heights (m, row-major, NaN where missing), every `step`-th
     /// point along x and y: a map of at most ⌈nx/step⌉ × ⌈ny/step⌉.
     pub fn heights(&self, step: usize) -> Vec<f64> {
         let step = step.max(1);
-        let (nx, ny) = (self.topography.nx(), self.topography.ny());
-        let z = self.topography.heights();
+        let (nx, ny) = (self.topography().nx(), self.topography().ny());
+        let z = self.topography().heights();
         (0..ny)
             .step_by(step)
             .flat_map(|j| (0..nx).step_by(step).map(move |i| z[j * nx + i]))
