@@ -123,12 +123,15 @@ pub const PEARSON_SKEWNESS_MAX: f64 = 5.0;
 impl HeightDistribution {
     /// Every family name, as [`family`](Self::family) spells it (the
     /// names of [`Family::ALL`]).
-    pub const FAMILIES: [&'static str; 4] = [
-        Family::ALL[0].name(),
-        Family::ALL[1].name(),
-        Family::ALL[2].name(),
-        Family::ALL[3].name(),
-    ];
+    pub const FAMILIES: [&'static str; Family::ALL.len()] = {
+        let mut names = [""; Family::ALL.len()];
+        let mut i = 0;
+        while i < names.len() {
+            names[i] = Family::ALL[i].name();
+            i += 1;
+        }
+        names
+    };
 
     /// The Pearson distribution with skewness `skewness` and kurtosis
     /// `kurtosis` (not excess), validated: K > Sk² + 1, |Sk| ≤ 5, K ≤ 100.
