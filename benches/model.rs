@@ -56,7 +56,7 @@ fn bench_distributions(c: &mut Criterion) {
         .collect();
     let mut group = c.benchmark_group("distribution");
     for (name, d) in [
-        ("gaussian", HeightDistribution::Gaussian),
+        ("gaussian", HeightDistribution::GAUSSIAN),
         ("pearson_0_8", HeightDistribution::pearson(0.0, 8.0).unwrap()),
         ("pearson_-0.5_3.375", HeightDistribution::pearson(-0.5, 3.375).unwrap()),
         ("pearson_0.3_3.2", HeightDistribution::pearson(0.3, 3.2).unwrap()),

@@ -17,7 +17,7 @@ fn main() {
         "iv" => HeightDistribution::pearson(0.3, 3.2).unwrap(),
         "iii" => HeightDistribution::pearson(-0.5, 3.375).unwrap(),
         "weibull" => HeightDistribution::weibull(0.0).unwrap(),
-        "" => HeightDistribution::Gaussian,
+        "" => HeightDistribution::GAUSSIAN,
         sk => {
             let k = std::env::args().nth(2).expect("SK K").parse().unwrap();
             HeightDistribution::pearson(sk.parse().unwrap(), k).unwrap()

@@ -75,8 +75,9 @@ mod warning;
 pub use checks::ParamError;
 pub use curve::{Curve, CurveError, CURVE_ACCURACY, SURFACE_F_STAR};
 pub use distribution::{
-    Density, DistributionError, Empirical, Family, HeightDistribution, PearsonType, EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES,
-    PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN,
+    Density, DistributionError, Empirical, Family, Gaussian, HeightDistribution, Pearson, PearsonType, Weibull,
+    EMPIRICAL_MIN_HEIGHTS, KDE_CENTRES, PEARSON_KURTOSIS_MAX, PEARSON_SKEWNESS_MAX, WEIBULL_SKEWNESS_MAX,
+    WEIBULL_SKEWNESS_MIN,
 };
 pub use error::{Classify, ErrorKind};
 pub use gw::BETA_MIN;

@@ -57,7 +57,7 @@ pub struct Constants {
     #[serde(rename = "model")]
     pub kind: ModelKind,
     /// The asperity heights' distribution (default
-    /// [`HeightDistribution::Gaussian`]); its record names are
+    /// [`HeightDistribution::GAUSSIAN`]); its record names are
     /// `distribution`, `skewness` and `kurtosis`.
     #[serde(flatten)]
     pub distribution: HeightDistribution,
@@ -72,7 +72,7 @@ impl Default for Constants {
             eps_star: DEFAULT_EPS_STAR,
             fit: Fit::Consistent,
             kind: ModelKind::KogutEtsion,
-            distribution: HeightDistribution::Gaussian,
+            distribution: HeightDistribution::GAUSSIAN,
         }
     }
 }

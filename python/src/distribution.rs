@@ -54,7 +54,7 @@ impl DistributionCore {
     /// The paper's Gaussian.
     #[staticmethod]
     fn gaussian() -> DistributionCore {
-        DistributionCore::of(HeightDistribution::Gaussian)
+        DistributionCore::of(HeightDistribution::GAUSSIAN)
     }
 
     /// Pearson(skewness, kurtosis), validated (the core's message names

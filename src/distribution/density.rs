@@ -1,21 +1,17 @@
-//! The standardised density g of a [`HeightDistribution`] (its value,
+//! The standardised density g of a [`HeightDistribution`](super::HeightDistribution) (its value,
 //! support, mode and moments) and the quadrature driver that integrates
 //! against it: panels from the mode outwards, Gauss–Jacobi at finite ends.
 
-use super::empirical::{kde_value, kde_value_slope};
-use super::pearson::{self, PearsonType};
-use super::shape::{End, PowerTails, Shape};
-use super::HeightDistribution;
+use super::shape::{End, Form, PowerTails};
+use super::Shape;
 use crate::quadrature::{Rule, NODES};
-use crate::special::atan2;
 
 /// A standardised density g (mean 0, variance 1) of a
-/// [`HeightDistribution`]: its value, support, mode and moments.
+/// [`HeightDistribution`](super::HeightDistribution): its value, support,
+/// mode and moments.
 #[derive(Debug, Clone)]
 pub struct Density {
     pub(super) shape: Shape,
-    /// `(A1, A0, B0, B1, B2)` of a Pearson density.
-    pub(super) pearson: Option<([f64; 5], PearsonType)>,
     pub(super) lo: Option<End>,
     pub(super) hi: Option<End>,
     /// ln g(x) = ln_norm + shape(x).
@@ -24,46 +20,11 @@ pub struct Density {
 }
 
 impl Density {
-    /// The density of a distribution that validated.
-    pub(crate) fn new(dist: &HeightDistribution) -> Density {
-        let mut d = match dist {
-            _ if dist.is_gaussian() => Density::plain(Shape::Normal, None, None, 0.0),
-            HeightDistribution::Pearson { skewness, kurtosis } => {
-                Density::of_pearson(pearson::fit(*skewness, *kurtosis))
-            }
-            HeightDistribution::Weibull { skewness } => Density::weibull(*skewness),
-            HeightDistribution::Empirical(e) => {
-                let kde = &e.0;
-                let mode = kde
-                    .centres
-                    .iter()
-                    .copied()
-                    .max_by(|a, b| kde_value(kde, *a).total_cmp(&kde_value(kde, *b)))
-                    .unwrap_or(0.0);
-                Density::plain(Shape::Kde(e.0.clone()), None, None, mode)
-            }
-            HeightDistribution::Gaussian => unreachable!("is_gaussian"),
-        };
-        d.ln_norm = match d.shape {
-            Shape::Normal => -0.5 * (2.0 * core::f64::consts::PI).ln(),
-            Shape::Kde(_) | Shape::Weibull { .. } => 0.0,
-            _ => -d.integrate(|_| 1.0).ln(),
-        };
-        d
-    }
-
-    /// The density of a Pearson fit (its shape, ends, mode and type).
-    fn of_pearson(p: pearson::Fitted) -> Density {
-        Density {
-            pearson: Some((p.coeffs, p.ty)),
-            ..Density::plain(p.shape, p.lo, p.hi, p.mode)
-        }
-    }
-
+    /// A density of `shape` with these ends and mode, normalised by the
+    /// shape itself (`ln_norm` 0) until its family says otherwise.
     pub(super) fn plain(shape: Shape, lo: Option<End>, hi: Option<End>, mode: f64) -> Density {
         Density {
             shape,
-            pearson: None,
             lo,
             hi,
             ln_norm: 0.0,
@@ -89,19 +50,7 @@ impl Density {
     /// centres for an empirical density (whose outliers make it
     /// multimodal: a tail may not be cut at the first dip).
     pub(crate) fn tails(&self) -> (f64, f64) {
-        match &self.shape {
-            Shape::Kde(kde) => (kde.centres[0], kde.centres[kde.centres.len() - 1]),
-            _ => (self.mode, self.mode),
-        }
-    }
-
-    /// The Pearson type, for a Pearson density (the Gaussian is
-    /// [`PearsonType::Normal`]).
-    pub fn pearson_type(&self) -> Option<PearsonType> {
-        match self.shape {
-            Shape::Normal => Some(PearsonType::Normal),
-            _ => self.pearson.map(|(_, t)| t),
-        }
+        self.shape.tails(self.mode)
     }
 
     /// The power tails of a type IV or VII density: `g ~ |x − centre|^−exponent`
@@ -109,14 +58,7 @@ impl Density {
     /// (its only singularities are the complex roots of the Pearson
     /// quadratic B(x), `centre ± i·half_width`).
     pub(crate) fn power_tails(&self) -> Option<PowerTails> {
-        match self.shape {
-            Shape::Complex { b1, b2, w, c4a, .. } => Some(PowerTails {
-                centre: -b1 / (2.0 * b2),
-                half_width: w / (2.0 * b2.abs()),
-                exponent: -2.0 * c4a,
-            }),
-            _ => None,
-        }
+        self.shape.power_tails()
     }
 
     pub(crate) fn lower_end(&self) -> Option<End> {
@@ -131,18 +73,22 @@ impl Density {
     /// without its log-slope showing it: a kernel's width for an empirical
     /// density, else unlimited.
     pub(crate) fn smoothness_scale(&self) -> f64 {
-        match &self.shape {
-            Shape::Kde(kde) => kde.h,
-            _ => f64::INFINITY,
-        }
+        self.shape.smoothness_scale()
     }
 
     /// ln g(x); −∞ outside the support.
     pub fn ln_pdf(&self, x: f64) -> f64 {
+        self.ln_pdf_in(&self.shape, x)
+    }
+
+    /// [`ln_pdf`](Self::ln_pdf) with the density's own `form` (the one
+    /// [`visit_form`](Self::visit_form) gives): no dispatch on the family.
+    #[inline]
+    pub(crate) fn ln_pdf_in<F: Form>(&self, form: &F, x: f64) -> f64 {
         if let Some(e) = self.lo {
             if x <= e.at {
                 return if x == e.at {
-                    self.ln_pdf_at_end(e, 0.0)
+                    self.ln_pdf_at_end_in(form, e, 0.0)
                 } else {
                     f64::NEG_INFINITY
                 };
@@ -151,13 +97,13 @@ impl Density {
         if let Some(e) = self.hi {
             if x >= e.at {
                 return if x == e.at {
-                    self.ln_pdf_at_end(e, 0.0)
+                    self.ln_pdf_at_end_in(form, e, 0.0)
                 } else {
                     f64::NEG_INFINITY
                 };
             }
         }
-        self.ln_norm + self.shape_ln(x)
+        self.ln_norm + form.ln(x)
     }
 
     /// g(x); 0 outside the support.
@@ -167,103 +113,20 @@ impl Density {
 
     /// g'(x)/g(x) inside the support.
     pub fn dln_pdf(&self, x: f64) -> f64 {
-        if let Some(([a1, a0, b0, b1, b2], _)) = self.pearson {
-            return -(a1 * x + a0) / (b0 + x * (b1 + x * b2));
-        }
-        match &self.shape {
-            Shape::Weibull { k, mu, sd } => {
-                let w = mu + sd * x;
-                sd * ((k - 1.0) / w - k * w.powf(k - 1.0))
-            }
-            Shape::Kde(kde) => {
-                let (v, dv) = kde_value_slope(kde, x);
-                dv / v
-            }
-            _ => -x,
-        }
+        self.shape.dln(x)
     }
 
     /// ln g at distance `dist ≥ 0` inside the support from its finite end
     /// `e`, computed from the distance itself (no rounding of `e.at ± dist`).
     pub(crate) fn ln_pdf_at_end(&self, e: End, dist: f64) -> f64 {
-        let upper = self.hi == Some(e);
-        let x = if upper { e.at - dist } else { e.at + dist };
-        self.ln_norm
-            + match self.shape {
-                Shape::TwoRoots { ra, rb, ca, cb, .. } => {
-                    let term = |r: f64, c: f64| {
-                        if r == e.at {
-                            -c * (dist / r.abs()).ln()
-                        } else {
-                            -c * (-x / r).ln_1p()
-                        }
-                    };
-                    term(ra, ca) + term(rb, cb)
-                }
-                Shape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (dist * inv_e0.abs()).ln(),
-                Shape::TypeV { r, cv1, cv2 } => {
-                    let xr = if upper { -dist } else { dist };
-                    cv1 * (dist / r.abs()).ln() + cv2 * (1.0 / xr + 1.0 / r)
-                }
-                Shape::Weibull { k, mu: _, sd } => {
-                    let w = sd * dist;
-                    (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
-                }
-                _ => self.shape_ln(x),
-            }
+        self.ln_pdf_at_end_in(&self.shape, e, dist)
     }
 
-    /// ln g(x) − ln_norm inside the support.
-    fn shape_ln(&self, x: f64) -> f64 {
-        match &self.shape {
-            Shape::Normal => -0.5 * x * x,
-            Shape::TwoRoots { stable: Some(st), .. } => {
-                let [b0, b1, b2] = st.b;
-                let g = (x * st.k / (b0 * (1.0 - x / st.rb))).ln_1p() / st.k;
-                -st.e * ((b1 * x + b2 * x * x) / b0).ln_1p() - st.f * g
-            }
-            Shape::TwoRoots { ra, rb, ca, cb, .. } => -ca * (-x / ra).ln_1p() - cb * (-x / rb).ln_1p(),
-            Shape::NearNormal => {
-                let ([a1, a0, b0, b1, b2], _) = self.pearson.expect("a Pearson density");
-                let r = Rule::shared_legendre();
-                -x * (0..NODES)
-                    .map(|i| {
-                        let t = x * r.t[i];
-                        r.w[i] * (a1 * t + a0) / (b0 + t * (b1 + t * b2))
-                    })
-                    .sum::<f64>()
-            }
-            Shape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (x * inv_e0).ln_1p(),
-            Shape::TypeV { r, cv1, cv2 } => cv1 * (-x / r).ln_1p() + cv2 * (1.0 / (x - r) + 1.0 / r),
-            Shape::Complex {
-                b0,
-                b1,
-                b2,
-                w,
-                c4a,
-                c4b,
-            } => {
-                // ln(1 + u), not ln_1p(u): the density is exp of this, so
-                // only its absolute error matters (≤ 2^-53, the rounding
-                // of 1 + u), and ln costs a third of ln_1p.
-                let ln = c4a * (1.0 + (b1 * x + b2 * x * x) / b0).ln();
-                if *c4b == 0.0 {
-                    // Type VII (Sk = 0): no arctangent term; a third of
-                    // the work per node.
-                    return ln;
-                }
-                // atan2(2B2x/w, 1 + uv) with both arguments times w²: no
-                // cancellation when w is small (near type V).
-                let y = 2.0 * b2 * x * w;
-                let xx = w * w + (2.0 * b2 * x + b1) * b1;
-                ln + c4b * atan2(y, xx)
-            }
-            Shape::Weibull { k, mu, sd } => {
-                let w = mu + sd * x;
-                (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(*k)
-            }
-            Shape::Kde(kde) => kde_value(kde, x).ln(),
-        }
+    /// [`ln_pdf_at_end`](Self::ln_pdf_at_end) with the density's own `form`.
+    pub(crate) fn ln_pdf_at_end_in<F: Form>(&self, form: &F, e: End, dist: f64) -> f64 {
+        let upper = self.hi == Some(e);
+        let x = if upper { e.at - dist } else { e.at + dist };
+        self.ln_norm + form.ln_at_end(e, upper, dist, x)
     }
 
     /// `[∫g, mean, variance, skewness, kurtosis]`, by the same quadrature

@@ -1,10 +1,17 @@
 //! The empirical family: a kernel density of measured heights (MODEL.md §9).
 
-use super::EMPIRICAL_MIN_HEIGHTS;
+use super::density::Density;
+use super::family::{DistributionFamily, Parameters};
+use super::shape::Form;
+use super::{DistributionError, Shape};
 use crate::checks::{check, ParamError};
 use std::sync::Arc;
 
-/// An empirical density of measured heights (MODEL.md §9): the heights are
+/// Fewest finite heights an [`Empirical`] density accepts.
+pub const EMPIRICAL_MIN_HEIGHTS: usize = 100;
+
+/// An empirical density of measured heights (MODEL.md §9;
+/// [`HeightDistribution::Empirical`](super::HeightDistribution::Empirical)): the heights are
 /// standardised, binned onto at most [`KDE_CENTRES`] evenly spaced centres
 /// (no more than four per kernel width) and smoothed by a
 /// Gaussian kernel of Silverman's bandwidth `h = 1.06·n^(−1/5)`, then
@@ -179,14 +186,109 @@ impl Empirical {
     }
 }
 
-pub(super) fn kde_value(kde: &Kde, x: f64) -> f64 {
+impl Parameters for Empirical {
+    fn validate(&self) -> Result<(), ParamError> {
+        Ok(())
+    }
+
+    fn skewness(&self) -> f64 {
+        self.0.skewness
+    }
+
+    fn kurtosis(&self) -> f64 {
+        self.0.kurtosis
+    }
+
+    fn heights(&self) -> Option<usize> {
+        Some(self.0.n)
+    }
+
+    /// None: tables do not hold measured heights.
+    fn stored(&self) -> Option<[f64; 2]> {
+        None
+    }
+
+    /// The kernel density itself (normalised by construction), its mode at
+    /// the highest centre.
+    fn density(&self) -> Density {
+        let kde = &*self.0;
+        let mode = kde
+            .centres
+            .iter()
+            .copied()
+            .max_by(|a, b| kde_value(kde, *a).total_cmp(&kde_value(kde, *b)))
+            .unwrap_or(0.0);
+        Density::plain(Shape::Empirical(self.clone()), None, None, mode)
+    }
+}
+
+impl DistributionFamily for Empirical {
+    type Form = Empirical;
+    const TAKES_HEIGHTS: bool = true;
+
+    /// The heights, and neither skewness nor kurtosis.
+    fn from_arguments(
+        skewness: Option<f64>,
+        kurtosis: Option<f64>,
+        heights: Option<&[f64]>,
+    ) -> Result<Empirical, DistributionError> {
+        let conflict = |name: &'static str, reason: &str| {
+            Err(DistributionError::Conflict {
+                name,
+                reason: reason.into(),
+            })
+        };
+        if let Some(name) = [("skewness", skewness), ("kurtosis", kurtosis)]
+            .into_iter()
+            .find_map(|(name, v)| v.map(|_| name))
+        {
+            return conflict(name, "not with an empirical density (the heights give its shape)");
+        }
+        match heights {
+            Some(heights) => Ok(Empirical::new(heights)?),
+            None => conflict("heights", "the empirical distribution needs measured heights"),
+        }
+    }
+
+    /// None: its heights make it.
+    fn from_stored(_: f64, _: f64) -> Option<Empirical> {
+        None
+    }
+}
+
+impl Form for Empirical {
+    #[inline]
+    fn ln(&self, x: f64) -> f64 {
+        kde_value(&self.0, x).ln()
+    }
+
+    #[inline]
+    fn dln(&self, x: f64) -> f64 {
+        let (v, dv) = kde_value_slope(&self.0, x);
+        dv / v
+    }
+
+    /// The outermost kernel centres: outliers make the density
+    /// multimodal, and a tail may not be cut at the first dip.
+    fn tails(&self, _: f64) -> (f64, f64) {
+        let c = &self.0.centres;
+        (c[0], c[c.len() - 1])
+    }
+
+    /// A kernel's width.
+    fn smoothness_scale(&self) -> f64 {
+        self.0.h
+    }
+}
+
+fn kde_value(kde: &Kde, x: f64) -> f64 {
     kde_value_slope(kde, x).0
 }
 
 /// The kernel density and its slope at `x`: the kernels within
 /// [`KDE_REACH`] widths, by a recurrence from the nearest centre (the
 /// centres are evenly spaced: two exponentials per call).
-pub(super) fn kde_value_slope(kde: &Kde, x: f64) -> (f64, f64) {
+fn kde_value_slope(kde: &Kde, x: f64) -> (f64, f64) {
     let (h, c, w) = (kde.h, &kde.centres, &kde.weights);
     let n = c.len();
     let delta = (c[n - 1] - c[0]) / (n - 1) as f64;

@@ -19,70 +19,198 @@
 //! ```
 
 mod density;
-mod empirical;
-mod pearson;
+mod family;
 mod shape;
-mod weibull;
 
 pub use density::Density;
-pub use empirical::{Empirical, KDE_CENTRES};
-pub use pearson::PearsonType;
-pub(crate) use shape::{End, PowerTails, JACOBI_POWER_MAX};
+pub(crate) use shape::{End, Form, FormVisitor, PowerTails, JACOBI_POWER_MAX};
 
-use crate::checks::{check, ParamError};
+use crate::checks::ParamError;
 use crate::num::Shortest;
+use family::{DistributionFamily, Parameters};
 
-/// The shape of the asperity heights' distribution: one of the model
-/// constants ([`Constants::distribution`](crate::Constants::distribution)).
-///
-/// Its record names (JSON, the NumPy export, the bindings) are
-/// `distribution` ([`family`](Self::family)), `skewness` and `kurtosis`.
-///
-/// Equality is as distributions: Pearson(0, 3) equals the Gaussian.
-#[derive(Debug, Clone, Default)]
-#[non_exhaustive]
-pub enum HeightDistribution {
-    /// The paper's Gaussian (skewness 0, kurtosis 3).
-    #[default]
-    Gaussian,
-    /// The Pearson system from skewness Sk and kurtosis K (not excess: 3
-    /// for a Gaussian), admissible where K > Sk² + 1. Pearson(0, 3) is the
-    /// Gaussian.
-    Pearson {
-        /// Skewness Sk (ISO 25178 Ssk).
-        skewness: f64,
-        /// Kurtosis K, not excess (ISO 25178 Sku).
-        kurtosis: f64,
-    },
-    /// A standardised Weibull distribution with skewness Sk in
-    /// (−1.1395, 2]; its kurtosis follows from Sk (2.717 at Sk = 0).
-    Weibull {
-        /// Skewness Sk.
-        skewness: f64,
-    },
-    /// A kernel density of measured heights ([`Empirical`]).
-    Empirical(Empirical),
+/// Writes, from one line a family (`Variant = code, "name" => module::Type`,
+/// with the variant's docs), the family's module, [`HeightDistribution`]
+/// (one variant holding the family's parameters, `Type`), [`Family`] with
+/// its codes and names, the density's forms (`Shape`, one variant holding
+/// the family's [`Form`], dispatched by a `match`: no dynamic call where
+/// the model integrates), and the calls from a distribution or a family
+/// to the family's [`Parameters`] and [`DistributionFamily`].
+macro_rules! families {
+    ($( $(#[cfg($cfg:meta)])? $(#[doc = $doc:literal])* $variant:ident = $code:literal, $name:literal => $module:ident :: $ty:ident ),+ $(,)?) => {
+        $( $(#[cfg($cfg)])? mod $module; $(#[cfg($cfg)])? pub use $module::*; )+
+
+        /// The shape of the asperity heights' distribution: one of the model
+        /// constants ([`Constants::distribution`](crate::Constants::distribution)).
+        /// Each variant holds its family's parameters.
+        ///
+        /// Its record names (JSON, the NumPy export, the bindings) are
+        /// `distribution` ([`family`](Self::family)), `skewness` and `kurtosis`.
+        ///
+        /// Equality is as distributions: Pearson(0, 3) equals the Gaussian.
+        #[derive(Debug, Clone)]
+        #[non_exhaustive]
+        pub enum HeightDistribution {
+            $( $(#[cfg($cfg)])? $(#[doc = $doc])* $variant($ty), )+
+        }
+
+        /// A family of asperity-height distributions: the shape of a
+        /// [`HeightDistribution`] without its parameters
+        /// ([`HeightDistribution::family_kind`]). Its names are the record name
+        /// `distribution` (JSON, the NumPy export, the bindings).
+        ///
+        /// Its [`code`](Family::code) is the variant's value here: a table file's
+        /// header stores it and the C ABI's `KEF_DIST_*` constants are it (never
+        /// reuse one).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        #[repr(u8)]
+        pub enum Family {
+            $( $(#[cfg($cfg)])? #[doc = concat!("[`HeightDistribution::", stringify!($variant), "`].")] $variant = $code, )+
+        }
+
+        impl Family {
+            /// How many families there are.
+            const COUNT: usize = {
+                let mut n = 0;
+                $( $(#[cfg($cfg)])? { n += 1; } )+
+                n
+            };
+
+            /// Every family, in the documented order.
+            pub const ALL: [Family; Family::COUNT] = {
+                // Filled in order; the Gaussian is a placeholder.
+                let mut all = [Family::Gaussian; Family::COUNT];
+                let mut i = 0;
+                $( $(#[cfg($cfg)])? { all[i] = Family::$variant; i += 1; } )+
+                let _ = i;
+                all
+            };
+
+            /// The name users type and read (CLI flags, JSON, the bindings).
+            pub const fn name(self) -> &'static str {
+                match self { $( $(#[cfg($cfg)])? Family::$variant => $name, )+ }
+            }
+
+            /// Whether the family is made of measured heights.
+            fn takes_heights(self) -> bool {
+                match self { $( $(#[cfg($cfg)])? Family::$variant => <$ty as DistributionFamily>::TAKES_HEIGHTS, )+ }
+            }
+
+            /// The family's distribution of a front end's arguments.
+            fn distribution_of(
+                self,
+                skewness: Option<f64>,
+                kurtosis: Option<f64>,
+                heights: Option<&[f64]>,
+            ) -> Result<HeightDistribution, DistributionError> {
+                Ok(match self {
+                    $( $(#[cfg($cfg)])? Family::$variant => HeightDistribution::$variant(<$ty>::from_arguments(skewness, kurtosis, heights)?), )+
+                })
+            }
+
+            /// The family's distribution of stored values, if it has one.
+            fn stored_distribution(self, skewness: f64, kurtosis: f64) -> Option<HeightDistribution> {
+                match self {
+                    $( $(#[cfg($cfg)])? Family::$variant => <$ty>::from_stored(skewness, kurtosis).map(HeightDistribution::$variant), )+
+                }
+            }
+        }
+
+        crate::named!(@common Family, "distribution");
+
+        /// The forms of a [`Density`]'s logarithm, one a family.
+        #[derive(Debug, Clone)]
+        pub(crate) enum Shape {
+            $( $(#[cfg($cfg)])? $variant(<$ty as DistributionFamily>::Form), )+
+        }
+
+        impl Form for Shape {
+            #[inline]
+            fn ln(&self, x: f64) -> f64 {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.ln(x), )+ }
+            }
+            #[inline]
+            fn dln(&self, x: f64) -> f64 {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.dln(x), )+ }
+            }
+            #[inline]
+            fn ln_at_end(&self, end: End, upper: bool, dist: f64, x: f64) -> f64 {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.ln_at_end(end, upper, dist, x), )+ }
+            }
+            fn tails(&self, mode: f64) -> (f64, f64) {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.tails(mode), )+ }
+            }
+            fn smoothness_scale(&self) -> f64 {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.smoothness_scale(), )+ }
+            }
+            fn power_tails(&self) -> Option<PowerTails> {
+                match self { $( $(#[cfg($cfg)])? Shape::$variant(f) => f.power_tails(), )+ }
+            }
+        }
+
+        impl Density {
+            /// `visitor` called with the density's form.
+            #[inline(always)]
+            pub(crate) fn visit_form<V: FormVisitor>(&self, visitor: V) -> V::Out {
+                match &self.shape { $( $(#[cfg($cfg)])? Shape::$variant(f) => visitor.visit(f), )+ }
+            }
+        }
+
+        impl HeightDistribution {
+            /// The family's parameters.
+            fn parameters(&self) -> &dyn Parameters {
+                match self { $( $(#[cfg($cfg)])? HeightDistribution::$variant(p) => p, )+ }
+            }
+
+            /// The family ([`Family`]). Pearson(0, 3) is [`Family::Pearson`]
+            /// here, though it equals the Gaussian.
+            ///
+            /// ```
+            /// use ke_friction::{Family, HeightDistribution, Named};
+            /// assert_eq!(HeightDistribution::weibull(0.5)?.family_kind(), Family::Weibull);
+            /// assert_eq!(Family::parse("pearson")?.name(), "pearson");
+            /// # Ok::<(), Box<dyn std::error::Error>>(())
+            /// ```
+            pub fn family_kind(&self) -> Family {
+                match self { $( $(#[cfg($cfg)])? HeightDistribution::$variant(_) => Family::$variant, )+ }
+            }
+
+            /// The same family and parameters.
+            fn same_parameters(&self, other: &HeightDistribution) -> bool {
+                match (self, other) {
+                    $( $(#[cfg($cfg)])? (HeightDistribution::$variant(a), HeightDistribution::$variant(b)) => a == b, )+
+                    _ => false,
+                }
+            }
+        }
+    };
 }
 
-/// A family of asperity-height distributions: the shape of a
-/// [`HeightDistribution`] without its parameters
-/// ([`HeightDistribution::family_kind`]). Its names are the record name
-/// `distribution` (JSON, the NumPy export, the bindings).
-///
-/// Its [`code`](Family::code) is the variant's value here: a table file's
-/// header stores it and the C ABI's `KEF_DIST_*` constants are it (never
-/// reuse one).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[repr(u8)]
-pub enum Family {
-    /// [`HeightDistribution::Gaussian`].
-    Gaussian = 0,
-    /// [`HeightDistribution::Pearson`].
-    Pearson = 1,
-    /// [`HeightDistribution::Weibull`].
-    Weibull = 2,
-    /// [`HeightDistribution::Empirical`].
-    Empirical = 3,
+families! {
+    /// The paper's Gaussian (skewness 0, kurtosis 3):
+    /// [`HeightDistribution::GAUSSIAN`].
+    Gaussian = 0, "gaussian" => gaussian::Gaussian,
+    /// The Pearson system from skewness Sk and kurtosis K (not excess: 3
+    /// for a Gaussian), admissible where K > Sk² + 1
+    /// ([`HeightDistribution::pearson`]). Pearson(0, 3) is the Gaussian.
+    Pearson = 1, "pearson" => pearson::Pearson,
+    /// A standardised Weibull distribution with skewness Sk in
+    /// (−1.1395, 2] ([`HeightDistribution::weibull`]); its kurtosis
+    /// follows from Sk (2.717 at Sk = 0).
+    Weibull = 2, "weibull" => weibull::Weibull,
+    /// A kernel density of measured heights ([`Empirical`],
+    /// [`HeightDistribution::empirical`]).
+    Empirical = 3, "empirical" => empirical::Empirical,
+    #[cfg(test)]
+    /// A test-only family: the uniform density, what adding a family takes.
+    Uniform = 4, "uniform" => uniform::Uniform,
+}
+
+impl Default for HeightDistribution {
+    /// The Gaussian.
+    fn default() -> HeightDistribution {
+        HeightDistribution::GAUSSIAN
+    }
 }
 
 impl Family {
@@ -97,29 +225,6 @@ impl Family {
     }
 }
 
-crate::named!(
-    Family,
-    "distribution",
-    [
-        Gaussian = "gaussian",
-        Pearson = "pearson",
-        Weibull = "weibull",
-        Empirical = "empirical"
-    ]
-);
-
-/// Bounds of the Weibull skewness (MODEL.md §9): Sk in (WEIBULL_SKEWNESS_MIN, WEIBULL_SKEWNESS_MAX].
-pub const WEIBULL_SKEWNESS_MIN: f64 = -1.1395;
-/// Upper bound of the Weibull skewness.
-pub const WEIBULL_SKEWNESS_MAX: f64 = 2.0;
-/// Fewest finite heights an [`Empirical`] density accepts.
-pub const EMPIRICAL_MIN_HEIGHTS: usize = 100;
-/// Kurtosis accepted by the Pearson family, at most (beyond it the tails
-/// are too heavy for the model's integrals to be meaningful).
-pub const PEARSON_KURTOSIS_MAX: f64 = 100.0;
-/// |Skewness| accepted by the Pearson family, at most.
-pub const PEARSON_SKEWNESS_MAX: f64 = 5.0;
-
 impl HeightDistribution {
     /// Every family name, as [`family`](Self::family) spells it (the
     /// names of [`Family::ALL`]).
@@ -133,17 +238,20 @@ impl HeightDistribution {
         names
     };
 
+    /// The paper's Gaussian (the default).
+    pub const GAUSSIAN: HeightDistribution = HeightDistribution::Gaussian(Gaussian);
+
     /// The Pearson distribution with skewness `skewness` and kurtosis
     /// `kurtosis` (not excess), validated: K > Sk² + 1, |Sk| ≤ 5, K ≤ 100.
     pub fn pearson(skewness: f64, kurtosis: f64) -> Result<HeightDistribution, ParamError> {
-        let d = HeightDistribution::Pearson { skewness, kurtosis };
+        let d = HeightDistribution::Pearson(Pearson { skewness, kurtosis });
         d.validate()?;
         Ok(d)
     }
 
     /// The standardised Weibull distribution with skewness `skewness`, validated.
     pub fn weibull(skewness: f64) -> Result<HeightDistribution, ParamError> {
-        let d = HeightDistribution::Weibull { skewness };
+        let d = HeightDistribution::Weibull(Weibull { skewness });
         d.validate()?;
         Ok(d)
     }
@@ -193,59 +301,18 @@ impl HeightDistribution {
             (None, None) if skewness.is_some() || kurtosis.is_some() => Family::Pearson,
             (None, None) => Family::Gaussian,
         };
-        if family != Family::Empirical && heights.is_some() {
+        if heights.is_some() && !family.takes_heights() {
+            let with: Vec<&str> = Family::ALL
+                .into_iter()
+                .filter(|f| f.takes_heights())
+                .map(Family::name)
+                .collect();
             return conflict(
                 "heights",
-                format!("only with the empirical distribution (not {family})"),
+                format!("only with the {} distribution (not {family})", with.join(" or ")),
             );
         }
-        let d = match family {
-            Family::Gaussian => {
-                for (name, value, normal) in [("skewness", skewness, 0.0), ("kurtosis", kurtosis, 3.0)] {
-                    if value.is_some_and(|v| v != normal) {
-                        return conflict(
-                            name,
-                            "the gaussian distribution has skewness 0 and kurtosis 3 (ask for pearson)".into(),
-                        );
-                    }
-                }
-                HeightDistribution::Gaussian
-            }
-            Family::Pearson => HeightDistribution::pearson(skewness.unwrap_or(0.0), kurtosis.unwrap_or(3.0))?,
-            Family::Weibull => {
-                let d = HeightDistribution::weibull(skewness.unwrap_or(0.0))?;
-                if let Some(k) = kurtosis {
-                    let implied = d.kurtosis();
-                    if k != implied {
-                        return conflict(
-                            "kurtosis",
-                            format!(
-                                "= {}: not with weibull, whose kurtosis follows from the skewness ({})",
-                                Shortest(k),
-                                Shortest(implied)
-                            ),
-                        );
-                    }
-                }
-                d
-            }
-            Family::Empirical => {
-                if let Some(name) = [("skewness", skewness), ("kurtosis", kurtosis)]
-                    .into_iter()
-                    .find_map(|(name, v)| v.map(|_| name))
-                {
-                    return conflict(
-                        name,
-                        "not with an empirical density (the heights give its shape)".into(),
-                    );
-                }
-                let Some(heights) = heights else {
-                    return conflict("heights", "the empirical distribution needs measured heights".into());
-                };
-                HeightDistribution::empirical(heights)?
-            }
-        };
-        Ok(d)
+        family.distribution_of(skewness, kurtosis, heights)
     }
 
     /// The distribution of `family` with `skewness` and `kurtosis`, not
@@ -253,12 +320,15 @@ impl HeightDistribution {
     /// follows): the Gaussian ignores both, Weibull the kurtosis; `None`
     /// for the empirical family, which its heights make.
     pub fn of_family(family: Family, skewness: f64, kurtosis: f64) -> Option<HeightDistribution> {
-        Some(match family {
-            Family::Gaussian => HeightDistribution::Gaussian,
-            Family::Pearson => HeightDistribution::Pearson { skewness, kurtosis },
-            Family::Weibull => HeightDistribution::Weibull { skewness },
-            Family::Empirical => return None,
-        })
+        family.stored_distribution(skewness, kurtosis)
+    }
+
+    /// The skewness and kurtosis a table file stores for the distribution
+    /// (which [`of_family`](Self::of_family) reads back; Weibull's
+    /// kurtosis is stored as 0); `None` for an empirical density, which
+    /// tables do not hold.
+    pub fn stored(&self) -> Option<[f64; 2]> {
+        self.parameters().stored()
     }
 
     /// The family's record name: `"gaussian"`, `"pearson"`, `"weibull"` or
@@ -267,83 +337,38 @@ impl HeightDistribution {
         self.family_kind().name()
     }
 
-    /// The family ([`Family`]). Pearson(0, 3) is [`Family::Pearson`]
-    /// here, though it equals the Gaussian.
-    ///
-    /// ```
-    /// use ke_friction::{Family, HeightDistribution, Named};
-    /// assert_eq!(HeightDistribution::weibull(0.5)?.family_kind(), Family::Weibull);
-    /// assert_eq!(Family::parse("pearson")?.name(), "pearson");
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
-    /// ```
-    pub fn family_kind(&self) -> Family {
-        match self {
-            HeightDistribution::Gaussian => Family::Gaussian,
-            HeightDistribution::Pearson { .. } => Family::Pearson,
-            HeightDistribution::Weibull { .. } => Family::Weibull,
-            HeightDistribution::Empirical(_) => Family::Empirical,
-        }
-    }
-
     /// Whether the model treats this distribution as the paper's Gaussian
     /// (the Gaussian itself, or Pearson(0, 3) exactly).
     pub fn is_gaussian(&self) -> bool {
-        match self {
-            HeightDistribution::Gaussian => true,
-            HeightDistribution::Pearson { skewness, kurtosis } => *skewness == 0.0 && *kurtosis == 3.0,
-            _ => false,
-        }
+        self.parameters().is_gaussian()
     }
 
     /// The skewness of the distribution.
     pub fn skewness(&self) -> f64 {
-        match self {
-            HeightDistribution::Gaussian => 0.0,
-            HeightDistribution::Pearson { skewness, .. } | HeightDistribution::Weibull { skewness } => *skewness,
-            HeightDistribution::Empirical(e) => e.0.skewness,
-        }
+        self.parameters().skewness()
     }
 
     /// The kurtosis (not excess) of the distribution; for Weibull, the one
     /// its skewness implies.
     pub fn kurtosis(&self) -> f64 {
-        match self {
-            HeightDistribution::Gaussian => 3.0,
-            HeightDistribution::Pearson { kurtosis, .. } => *kurtosis,
-            HeightDistribution::Weibull { .. } => self.density().map_or(f64::NAN, |d| d.moments()[4]),
-            HeightDistribution::Empirical(e) => e.0.kurtosis,
-        }
+        self.parameters().kurtosis()
     }
 
     /// Checks the parameters (MODEL.md §9), naming the bound.
     pub fn validate(&self) -> Result<(), ParamError> {
-        match *self {
-            HeightDistribution::Gaussian | HeightDistribution::Empirical(_) => Ok(()),
-            HeightDistribution::Pearson { skewness, kurtosis } => {
-                check("skewness", skewness, "in [-5, 5]", |v| v.abs() <= PEARSON_SKEWNESS_MAX)?;
-                check("kurtosis", kurtosis, "<= 100 (not excess: 3 for a Gaussian)", |v| {
-                    v <= PEARSON_KURTOSIS_MAX
-                })?;
-                check(
-                    "kurtosis",
-                    kurtosis,
-                    "> skewness² + 1 (the Pearson bound; kurtosis is not excess: 3 for a Gaussian)",
-                    |v| v > skewness * skewness + 1.0,
-                )
-            }
-            HeightDistribution::Weibull { skewness } => {
-                check("skewness", skewness, "in (-1.1395, 2] (the Weibull family)", |v| {
-                    v > WEIBULL_SKEWNESS_MIN && v <= WEIBULL_SKEWNESS_MAX
-                })
-            }
-        }
+        self.parameters().validate()
     }
 
     /// The standardised density g (mean 0, variance 1), or why the
     /// distribution is not valid ([`validate`](Self::validate)).
     pub fn density(&self) -> Result<Density, ParamError> {
         self.validate()?;
-        Ok(Density::new(self))
+        Ok(self.validated_density())
+    }
+
+    /// The density of a distribution that validated.
+    pub(crate) fn validated_density(&self) -> Density {
+        self.parameters().density()
     }
 }
 
@@ -394,8 +419,8 @@ impl std::fmt::Display for HeightDistribution {
             return f.write_str("gaussian");
         }
         write!(f, "{} (", self.family())?;
-        if let HeightDistribution::Empirical(e) = self {
-            write!(f, "{} heights, ", e.len())?;
+        if let Some(n) = self.parameters().heights() {
+            write!(f, "{n} heights, ")?;
         }
         write!(
             f,
@@ -410,23 +435,10 @@ impl PartialEq for HeightDistribution {
     /// The same distribution: the same family and parameters, or both the
     /// Gaussian (Pearson(0, 3) is the Gaussian).
     fn eq(&self, other: &HeightDistribution) -> bool {
-        use HeightDistribution::*;
-        match (self, other) {
-            _ if self.is_gaussian() || other.is_gaussian() => self.is_gaussian() && other.is_gaussian(),
-            (
-                Pearson {
-                    skewness: a,
-                    kurtosis: k,
-                },
-                Pearson {
-                    skewness: b,
-                    kurtosis: l,
-                },
-            ) => a == b && k == l,
-            (Weibull { skewness: a }, Weibull { skewness: b }) => a == b,
-            (Empirical(a), Empirical(b)) => a == b,
-            _ => false,
+        if self.is_gaussian() || other.is_gaussian() {
+            return self.is_gaussian() && other.is_gaussian();
         }
+        self.same_parameters(other)
     }
 }
 
@@ -440,8 +452,8 @@ impl serde::Serialize for HeightDistribution {
         m.serialize_entry("distribution", self.family())?;
         m.serialize_entry("skewness", &self.skewness())?;
         m.serialize_entry("kurtosis", &self.kurtosis())?;
-        if let HeightDistribution::Empirical(e) = self {
-            m.serialize_entry("heights", &e.0.n)?;
+        if let Some(n) = self.parameters().heights() {
+            m.serialize_entry("heights", &n)?;
         }
         m.end()
     }
@@ -456,7 +468,7 @@ mod tests {
     fn family_names_are_the_record_names() {
         assert_eq!(HeightDistribution::FAMILIES.to_vec(), Family::names());
         for (d, name) in [
-            (HeightDistribution::Gaussian, "gaussian"),
+            (HeightDistribution::GAUSSIAN, "gaussian"),
             (HeightDistribution::pearson(0.0, 3.0).unwrap(), "pearson"),
             (HeightDistribution::weibull(0.0).unwrap(), "weibull"),
         ] {
@@ -465,7 +477,8 @@ mod tests {
         }
         assert_eq!(
             Family::parse("normal").unwrap_err().to_string(),
-            "distribution 'normal' is unknown: must be one of gaussian, pearson, weibull, empirical"
+            // The test-only uniform family is one of them in the unit tests.
+            "distribution 'normal' is unknown: must be one of gaussian, pearson, weibull, empirical, uniform"
         );
     }
 }

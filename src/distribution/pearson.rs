@@ -1,7 +1,116 @@
 //! The Pearson system (MODEL.md §9): the density of a skewness and
 //! kurtosis, by type.
 
-use super::shape::{End, Shape, Stable};
+use super::density::Density;
+use super::family::{DistributionFamily, Parameters};
+use super::gaussian::Gaussian;
+use super::shape::{End, Form, PowerTails};
+use super::{DistributionError, Shape};
+use crate::checks::{check, ParamError};
+use crate::quadrature::{Rule, NODES};
+use crate::special::atan2;
+
+/// Kurtosis accepted by the Pearson family, at most (beyond it the tails
+/// are too heavy for the model's integrals to be meaningful).
+pub const PEARSON_KURTOSIS_MAX: f64 = 100.0;
+/// |Skewness| accepted by the Pearson family, at most.
+pub const PEARSON_SKEWNESS_MAX: f64 = 5.0;
+
+/// The Pearson system from skewness Sk and kurtosis K (not excess: 3 for
+/// a Gaussian), admissible where K > Sk² + 1
+/// ([`HeightDistribution::Pearson`](super::HeightDistribution::Pearson)).
+/// Pearson(0, 3) is the Gaussian.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pearson {
+    /// Skewness Sk (ISO 25178 Ssk).
+    pub skewness: f64,
+    /// Kurtosis K, not excess (ISO 25178 Sku).
+    pub kurtosis: f64,
+}
+
+impl Parameters for Pearson {
+    fn validate(&self) -> Result<(), ParamError> {
+        let Pearson { skewness, kurtosis } = *self;
+        check("skewness", skewness, "in [-5, 5]", |v| v.abs() <= PEARSON_SKEWNESS_MAX)?;
+        check("kurtosis", kurtosis, "<= 100 (not excess: 3 for a Gaussian)", |v| {
+            v <= PEARSON_KURTOSIS_MAX
+        })?;
+        check(
+            "kurtosis",
+            kurtosis,
+            "> skewness² + 1 (the Pearson bound; kurtosis is not excess: 3 for a Gaussian)",
+            |v| v > skewness * skewness + 1.0,
+        )
+    }
+
+    fn skewness(&self) -> f64 {
+        self.skewness
+    }
+
+    fn kurtosis(&self) -> f64 {
+        self.kurtosis
+    }
+
+    /// Pearson(0, 3) exactly.
+    fn is_gaussian(&self) -> bool {
+        self.skewness == 0.0 && self.kurtosis == 3.0
+    }
+
+    fn stored(&self) -> Option<[f64; 2]> {
+        Some([self.skewness, self.kurtosis])
+    }
+
+    /// The Gaussian's for Pearson(0, 3); else the fit, normalised by
+    /// quadrature.
+    fn density(&self) -> Density {
+        if self.is_gaussian() {
+            return Gaussian.density();
+        }
+        let p = fit(self.skewness, self.kurtosis);
+        let form = PearsonForm {
+            coeffs: p.coeffs,
+            ty: p.ty,
+            shape: p.shape,
+        };
+        let mut d = Density::plain(Shape::Pearson(form), p.lo, p.hi, p.mode);
+        d.ln_norm = -d.integrate(|_| 1.0).ln();
+        d
+    }
+}
+
+impl DistributionFamily for Pearson {
+    type Form = PearsonForm;
+
+    /// Skewness and kurtosis, 0 and 3 where left out.
+    fn from_arguments(
+        skewness: Option<f64>,
+        kurtosis: Option<f64>,
+        _: Option<&[f64]>,
+    ) -> Result<Pearson, DistributionError> {
+        let d = Pearson {
+            skewness: skewness.unwrap_or(0.0),
+            kurtosis: kurtosis.unwrap_or(3.0),
+        };
+        d.validate()?;
+        Ok(d)
+    }
+
+    fn from_stored(skewness: f64, kurtosis: f64) -> Option<Pearson> {
+        Some(Pearson { skewness, kurtosis })
+    }
+}
+
+impl Density {
+    /// The Pearson type, for a Pearson density (the Gaussian is
+    /// [`PearsonType::Normal`]).
+    pub fn pearson_type(&self) -> Option<PearsonType> {
+        match &self.shape {
+            Shape::Gaussian(_) => Some(PearsonType::Normal),
+            Shape::Pearson(p) => Some(p.ty),
+            _ => None,
+        }
+    }
+}
 
 /// The type of a Pearson density (MODEL.md §9).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -41,23 +150,170 @@ impl PearsonType {
 }
 
 /// Roots of B(x) at least this far from 0 make a Pearson density "near
-/// normal" ([`Shape::NearNormal`]).
+/// normal" ([`PearsonShape::NearNormal`]).
 const NEAR_NORMAL: f64 = 1000.0;
 
-/// A Pearson density's parts: what [`Density`](super::Density) holds of it.
-pub(super) struct Fitted {
+/// A Pearson density's form: its coefficients, type and the closed form
+/// of its logarithm.
+#[derive(Debug, Clone)]
+pub(crate) struct PearsonForm {
+    /// `(A1, A0, B0, B1, B2)`: `g'/g = −(A1·x + A0)/(B0 + B1·x + B2·x²)`.
+    coeffs: [f64; 5],
+    ty: PearsonType,
+    shape: PearsonShape,
+}
+
+/// The closed forms of a Pearson density's logarithm, by type.
+#[derive(Debug, Clone)]
+enum PearsonShape {
+    /// Types I, II, VI: `−c_a·ln(1 − x/r_a) − c_b·ln(1 − x/r_b)`, or
+    /// where that cancels (roots close together, near type V) the same as
+    /// `−e·ln(B(x)/B0) − f·G(x)` with `G = ∫₀^x dt/B(t)` ([`Stable`]).
+    TwoRoots {
+        ra: f64,
+        rb: f64,
+        ca: f64,
+        cb: f64,
+        stable: Option<Stable>,
+    },
+    /// Near the normal point every closed form cancels: `−∫₀^x (A1t +
+    /// A0)/B(t) dt` by Gauss–Legendre (the roots of B are ≥ NEAR_NORMAL
+    /// away, so the rule is exact to rounding).
+    NearNormal,
+    /// Type III: `c1·x + c2·ln(1 + x/e₀)` with the end at `−e₀`.
+    Gamma { c1: f64, c2: f64, inv_e0: f64 },
+    /// Type V: `cv1·ln(1 − x/r) + cv2·(1/(x − r) + 1/r)`.
+    TypeV { r: f64, cv1: f64, cv2: f64 },
+    /// Types IV, VII.
+    Complex {
+        b0: f64,
+        b1: f64,
+        b2: f64,
+        w: f64,
+        c4a: f64,
+        c4b: f64,
+    },
+}
+
+/// `ln g = −e·ln(B(x)/B0) − f·G(x)`, `G(x) = ln(1 + x·k/(B0·(1 − x/r_b)))/k`.
+#[derive(Debug, Clone, Copy)]
+struct Stable {
+    e: f64,
+    f: f64,
+    k: f64,
+    b: [f64; 3],
+    rb: f64,
+}
+
+impl Form for PearsonForm {
+    #[inline(always)]
+    fn ln(&self, x: f64) -> f64 {
+        match &self.shape {
+            PearsonShape::TwoRoots { stable: Some(st), .. } => {
+                let [b0, b1, b2] = st.b;
+                let g = (x * st.k / (b0 * (1.0 - x / st.rb))).ln_1p() / st.k;
+                -st.e * ((b1 * x + b2 * x * x) / b0).ln_1p() - st.f * g
+            }
+            PearsonShape::TwoRoots { ra, rb, ca, cb, .. } => -ca * (-x / ra).ln_1p() - cb * (-x / rb).ln_1p(),
+            PearsonShape::NearNormal => near_normal_ln(self.coeffs, x),
+            PearsonShape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (x * inv_e0).ln_1p(),
+            PearsonShape::TypeV { r, cv1, cv2 } => cv1 * (-x / r).ln_1p() + cv2 * (1.0 / (x - r) + 1.0 / r),
+            PearsonShape::Complex {
+                b0,
+                b1,
+                b2,
+                w,
+                c4a,
+                c4b,
+            } => {
+                // ln(1 + u), not ln_1p(u): the density is exp of this, so
+                // only its absolute error matters (≤ 2^-53, the rounding
+                // of 1 + u), and ln costs a third of ln_1p.
+                let ln = c4a * (1.0 + (b1 * x + b2 * x * x) / b0).ln();
+                if *c4b == 0.0 {
+                    // Type VII (Sk = 0): no arctangent term; a third of
+                    // the work per node.
+                    return ln;
+                }
+                // atan2(2B2x/w, 1 + uv) with both arguments times w²: no
+                // cancellation when w is small (near type V).
+                let y = 2.0 * b2 * x * w;
+                let xx = w * w + (2.0 * b2 * x + b1) * b1;
+                ln + c4b * atan2(y, xx)
+            }
+        }
+    }
+
+    #[inline]
+    fn dln(&self, x: f64) -> f64 {
+        let [a1, a0, b0, b1, b2] = self.coeffs;
+        -(a1 * x + a0) / (b0 + x * (b1 + x * b2))
+    }
+
+    fn ln_at_end(&self, e: End, upper: bool, dist: f64, x: f64) -> f64 {
+        match self.shape {
+            PearsonShape::TwoRoots { ra, rb, ca, cb, .. } => {
+                let term = |r: f64, c: f64| {
+                    if r == e.at {
+                        -c * (dist / r.abs()).ln()
+                    } else {
+                        -c * (-x / r).ln_1p()
+                    }
+                };
+                term(ra, ca) + term(rb, cb)
+            }
+            PearsonShape::Gamma { c1, c2, inv_e0 } => c1 * x + c2 * (dist * inv_e0.abs()).ln(),
+            PearsonShape::TypeV { r, cv1, cv2 } => {
+                let xr = if upper { -dist } else { dist };
+                cv1 * (dist / r.abs()).ln() + cv2 * (1.0 / xr + 1.0 / r)
+            }
+            _ => self.ln(x),
+        }
+    }
+
+    /// Types IV and VII: `g ~ |x − centre|^−exponent` on both sides, with g
+    /// analytic in `1/(x − centre)` out to infinity (its only
+    /// singularities are the complex roots of B(x), `centre ± i·half_width`).
+    fn power_tails(&self) -> Option<PowerTails> {
+        match self.shape {
+            PearsonShape::Complex { b1, b2, w, c4a, .. } => Some(PowerTails {
+                centre: -b1 / (2.0 * b2),
+                half_width: w / (2.0 * b2.abs()),
+                exponent: -2.0 * c4a,
+            }),
+            _ => None,
+        }
+    }
+}
+
+/// `−∫₀^x (A1t + A0)/B(t) dt` by Gauss–Legendre ([`PearsonShape::NearNormal`]);
+/// out of line: its twelve nodes would make every other form's call
+/// spill registers.
+#[inline(never)]
+fn near_normal_ln([a1, a0, b0, b1, b2]: [f64; 5], x: f64) -> f64 {
+    let r = Rule::shared_legendre();
+    -x * (0..NODES)
+        .map(|i| {
+            let t = x * r.t[i];
+            r.w[i] * (a1 * t + a0) / (b0 + t * (b1 + t * b2))
+        })
+        .sum::<f64>()
+}
+
+/// A Pearson density's parts.
+struct Fitted {
     /// `(A1, A0, B0, B1, B2)`.
-    pub coeffs: [f64; 5],
-    pub ty: PearsonType,
-    pub shape: Shape,
-    pub lo: Option<End>,
-    pub hi: Option<End>,
-    pub mode: f64,
+    coeffs: [f64; 5],
+    ty: PearsonType,
+    shape: PearsonShape,
+    lo: Option<End>,
+    hi: Option<End>,
+    mode: f64,
 }
 
 /// The standardised Pearson density with skewness `sk` and kurtosis `k`
 /// (validated): its type, shape, ends and mode (MODEL.md §9).
-pub(super) fn fit(sk: f64, k: f64) -> Fitted {
+fn fit(sk: f64, k: f64) -> Fitted {
     let s2 = sk * sk;
     let a1 = 10.0 * k - 12.0 * s2 - 18.0;
     let a0 = sk * (k + 3.0);
@@ -74,7 +330,7 @@ pub(super) fn fit(sk: f64, k: f64) -> Fitted {
             jacobi_width: f64::INFINITY,
         };
         let (lo, hi) = if b1 > 0.0 { (Some(e), None) } else { (None, Some(e)) };
-        let shape = Shape::Gamma {
+        let shape = PearsonShape::Gamma {
             c1,
             c2,
             inv_e0: b1 / b0,
@@ -108,7 +364,7 @@ pub(super) fn fit(sk: f64, k: f64) -> Fitted {
             b: [b0, b1, b2],
             rb,
         });
-        let shape = Shape::TwoRoots { ra, rb, ca, cb, stable };
+        let shape = PearsonShape::TwoRoots { ra, rb, ca, cb, stable };
         if b2 < 0.0 {
             let (lo, hi) = if ra < rb {
                 (end(ra, ca), end(rb, cb))
@@ -132,7 +388,7 @@ pub(super) fn fit(sk: f64, k: f64) -> Fitted {
             jacobi_width: f64::INFINITY,
         };
         let (lo, hi) = if r < 0.0 { (Some(e), None) } else { (None, Some(e)) };
-        let shape = Shape::TypeV {
+        let shape = PearsonShape::TypeV {
             r,
             cv1: -a1 / b2,
             cv2: (a1 * r + a0) / b2,
@@ -140,7 +396,7 @@ pub(super) fn fit(sk: f64, k: f64) -> Fitted {
         (PearsonType::V, shape, lo, hi)
     } else {
         let w = (-disc).sqrt();
-        let shape = Shape::Complex {
+        let shape = PearsonShape::Complex {
             b0,
             b1,
             b2,
@@ -165,7 +421,7 @@ pub(super) fn fit(sk: f64, k: f64) -> Fitted {
         }
     };
     let shape = if nearest >= NEAR_NORMAL {
-        Shape::NearNormal
+        PearsonShape::NearNormal
     } else {
         shape
     };

@@ -1,11 +1,8 @@
-//! The forms a standardised density's logarithm takes ([`Shape`], one
-//! variant per family or Pearson type) and the ends of its support
-//! ([`End`]): what the families build and [`Density`](super::Density)
-//! evaluates. A leaf of `distribution/`.
+//! What a family's density supplies to [`Density`](super::Density): the
+//! form its logarithm takes ([`Form`], one type per family) and the ends
+//! of its support ([`End`]). A leaf of `distribution/`.
 
-use super::empirical::Kde;
 use crate::quadrature::Rule;
-use std::sync::Arc;
 
 /// The power tails of a density (types IV, VII): see [`Density::power_tails`](super::Density::power_tails).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -49,58 +46,49 @@ impl End {
     }
 }
 
-#[derive(Debug, Clone)]
-pub(crate) enum Shape {
-    Normal,
-    /// Types I, II, VI: `−c_a·ln(1 − x/r_a) − c_b·ln(1 − x/r_b)`, or
-    /// where that cancels (roots close together, near type V) the same as
-    /// `−e·ln(B(x)/B0) − f·G(x)` with `G = ∫₀^x dt/B(t)` ([`Stable`]).
-    TwoRoots {
-        ra: f64,
-        rb: f64,
-        ca: f64,
-        cb: f64,
-        stable: Option<Stable>,
-    },
-    /// Near the normal point every closed form cancels: `−∫₀^x (A1t +
-    /// A0)/B(t) dt` by Gauss–Legendre (the roots of B are ≥ NEAR_NORMAL
-    /// away, so the rule is exact to rounding).
-    NearNormal,
-    /// Type III: `c1·x + c2·ln(1 + x/e₀)` with the end at `−e₀`.
-    Gamma {
-        c1: f64,
-        c2: f64,
-        inv_e0: f64,
-    },
-    /// Type V: `cv1·ln(1 − x/r) + cv2·(1/(x − r) + 1/r)`.
-    TypeV {
-        r: f64,
-        cv1: f64,
-        cv2: f64,
-    },
-    /// Types IV, VII.
-    Complex {
-        b0: f64,
-        b1: f64,
-        b2: f64,
-        w: f64,
-        c4a: f64,
-        c4b: f64,
-    },
-    Weibull {
-        k: f64,
-        mu: f64,
-        sd: f64,
-    },
-    Kde(Arc<Kde>),
+/// The logarithm of a family's standardised density, up to its
+/// normalising constant: what [`Density`](super::Density) evaluates, one
+/// type per family (the family's [`DistributionFamily::Form`](super::family::DistributionFamily::Form)),
+/// dispatched without a dynamic call (`Shape`, written by `families!`).
+pub(crate) trait Form {
+    /// ln g(x) − ln_norm inside the support.
+    fn ln(&self, x: f64) -> f64;
+
+    /// g'(x)/g(x) inside the support.
+    fn dln(&self, x: f64) -> f64;
+
+    /// ln g(x) − ln_norm at distance `dist ≥ 0` inside the support from its
+    /// finite end `end` (`upper`: the support's upper end), at `x` (`end.at
+    /// ∓ dist`): from the distance itself where rounding `x` would lose it.
+    fn ln_at_end(&self, end: End, upper: bool, dist: f64, x: f64) -> f64 {
+        let _ = (end, upper, dist);
+        self.ln(x)
+    }
+
+    /// Below the first and above the second, g only falls away from its
+    /// mass (`mode`, for a unimodal density).
+    fn tails(&self, mode: f64) -> (f64, f64) {
+        (mode, mode)
+    }
+
+    /// The scale on which g may change shape without its log-slope
+    /// showing it (unlimited unless said).
+    fn smoothness_scale(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    /// The power tails of the density, if it has them.
+    fn power_tails(&self) -> Option<PowerTails> {
+        None
+    }
 }
 
-/// `ln g = −e·ln(B(x)/B0) − f·G(x)`, `G(x) = ln(1 + x·k/(B0·(1 − x/r_b)))/k`.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Stable {
-    pub(super) e: f64,
-    pub(super) f: f64,
-    pub(super) k: f64,
-    pub(super) b: [f64; 3],
-    pub(super) rb: f64,
+/// A computation generic over a density's form, called with the form
+/// itself ([`Density::visit_form`](super::Density::visit_form)): the model
+/// dispatches on the family once per integral, not once per node.
+pub(crate) trait FormVisitor {
+    /// What the computation returns.
+    type Out;
+    /// The computation with the form `form`.
+    fn visit<F: Form>(self, form: &F) -> Self::Out;
 }

@@ -2,39 +2,57 @@
 //! skewness.
 
 use super::density::Density;
-use super::shape::{End, Shape};
-use super::{WEIBULL_SKEWNESS_MAX, WEIBULL_SKEWNESS_MIN};
+use super::family::{DistributionFamily, Parameters};
+use super::shape::{End, Form};
+use super::{DistributionError, Shape};
+use crate::checks::{check, ParamError};
+use crate::num::Shortest;
 use crate::special::ln_gamma;
 
-impl Density {
-    /// The standardised Weibull density with shape `k`; its standard
-    /// deviation by quadrature (`Γ(1 + 2/k) − Γ(1 + 1/k)²` cancels for large k).
-    fn weibull_of_shape(k: f64) -> Density {
-        let (mu, sd) = weibull_mean_sd(k);
-        let make = |sd: f64| {
-            let at = -mu / sd;
-            let mode = if k > 1.0 {
-                (((k - 1.0) / k).powf(1.0 / k) - mu) / sd
-            } else {
-                at
-            };
-            let lo = End {
-                at,
-                power: k - 1.0,
-                jacobi_width: 1e-6f64.powf(1.0 / k) / sd,
-            };
-            Density::plain(Shape::Weibull { k, mu, sd }, Some(lo), None, mode)
-        };
-        let rough = make(sd);
-        let var = rough.integrate(|x| x * x) - rough.integrate(|x| x).powi(2);
-        make(sd * var.sqrt())
+/// Bounds of the Weibull skewness (MODEL.md §9): Sk in (WEIBULL_SKEWNESS_MIN, WEIBULL_SKEWNESS_MAX].
+pub const WEIBULL_SKEWNESS_MIN: f64 = -1.1395;
+/// Upper bound of the Weibull skewness.
+pub const WEIBULL_SKEWNESS_MAX: f64 = 2.0;
+
+/// A standardised Weibull distribution with skewness Sk in (−1.1395, 2]
+/// ([`HeightDistribution::Weibull`](super::HeightDistribution::Weibull));
+/// its kurtosis follows from Sk (2.717 at Sk = 0).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Weibull {
+    /// Skewness Sk.
+    pub skewness: f64,
+}
+
+impl Parameters for Weibull {
+    fn validate(&self) -> Result<(), ParamError> {
+        check("skewness", self.skewness, "in (-1.1395, 2] (the Weibull family)", |v| {
+            v > WEIBULL_SKEWNESS_MIN && v <= WEIBULL_SKEWNESS_MAX
+        })
     }
 
-    /// The standardised Weibull density with skewness `sk`: k by a secant
-    /// search on the skewness by quadrature, from the Γ-function estimate.
-    pub(super) fn weibull(sk: f64) -> Density {
+    fn skewness(&self) -> f64 {
+        self.skewness
+    }
+
+    /// The kurtosis its skewness implies.
+    fn kurtosis(&self) -> f64 {
+        match self.validate() {
+            Ok(()) => self.density().moments()[4],
+            Err(_) => f64::NAN,
+        }
+    }
+
+    /// The skewness, and 0 for the kurtosis (which follows from it).
+    fn stored(&self) -> Option<[f64; 2]> {
+        Some([self.skewness, 0.0])
+    }
+
+    /// k by a secant search on the skewness by quadrature, from the
+    /// Γ-function estimate.
+    fn density(&self) -> Density {
+        let sk = self.skewness;
         let skew_of = |ln_k: f64| {
-            let d = Density::weibull_of_shape(ln_k.exp());
+            let d = of_shape(ln_k.exp());
             (d.integrate(|x| x * x * x), d)
         };
         let mut a = weibull_shape(sk).unwrap_or(f64::NAN).ln();
@@ -56,6 +74,95 @@ impl Density {
         }
         best
     }
+}
+
+impl DistributionFamily for Weibull {
+    type Form = WeibullForm;
+
+    /// The skewness (0 if left out); a kurtosis only if it is the one the
+    /// skewness implies.
+    fn from_arguments(
+        skewness: Option<f64>,
+        kurtosis: Option<f64>,
+        _: Option<&[f64]>,
+    ) -> Result<Weibull, DistributionError> {
+        let d = Weibull {
+            skewness: skewness.unwrap_or(0.0),
+        };
+        d.validate()?;
+        if let Some(k) = kurtosis {
+            let implied = d.kurtosis();
+            if k != implied {
+                return Err(DistributionError::Conflict {
+                    name: "kurtosis",
+                    reason: format!(
+                        "= {}: not with weibull, whose kurtosis follows from the skewness ({})",
+                        Shortest(k),
+                        Shortest(implied)
+                    ),
+                });
+            }
+        }
+        Ok(d)
+    }
+
+    fn from_stored(skewness: f64, _: f64) -> Option<Weibull> {
+        Some(Weibull { skewness })
+    }
+}
+
+/// `ln(sd·k) + (k − 1)·ln w − w^k` with `w = mu + sd·x`: Weibull(k)
+/// standardised.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct WeibullForm {
+    k: f64,
+    mu: f64,
+    sd: f64,
+}
+
+impl Form for WeibullForm {
+    #[inline]
+    fn ln(&self, x: f64) -> f64 {
+        let Self { k, mu, sd } = *self;
+        let w = mu + sd * x;
+        (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
+    }
+
+    #[inline]
+    fn dln(&self, x: f64) -> f64 {
+        let Self { k, mu, sd } = *self;
+        let w = mu + sd * x;
+        sd * ((k - 1.0) / w - k * w.powf(k - 1.0))
+    }
+
+    fn ln_at_end(&self, _: End, _: bool, dist: f64, _: f64) -> f64 {
+        let Self { k, sd, .. } = *self;
+        let w = sd * dist;
+        (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
+    }
+}
+
+/// The standardised Weibull density with shape `k`; its standard
+/// deviation by quadrature (`Γ(1 + 2/k) − Γ(1 + 1/k)²` cancels for large k).
+fn of_shape(k: f64) -> Density {
+    let (mu, sd) = weibull_mean_sd(k);
+    let make = |sd: f64| {
+        let at = -mu / sd;
+        let mode = if k > 1.0 {
+            (((k - 1.0) / k).powf(1.0 / k) - mu) / sd
+        } else {
+            at
+        };
+        let lo = End {
+            at,
+            power: k - 1.0,
+            jacobi_width: 1e-6f64.powf(1.0 / k) / sd,
+        };
+        Density::plain(Shape::Weibull(WeibullForm { k, mu, sd }), Some(lo), None, mode)
+    };
+    let rough = make(sd);
+    let var = rough.integrate(|x| x * x) - rough.integrate(|x| x).powi(2);
+    make(sd * var.sqrt())
 }
 
 fn weibull_mean_sd(k: f64) -> (f64, f64) {

@@ -31,7 +31,7 @@ pub const DENSITY_Y: (f64, f64) = (1e-8, 1.0);
 /// The Gaussian and the Pearson distributions of [`DISTRIBUTION_SET`],
 /// each with its legend label ("Gaussian", "Sk = 0.5, K = 3.375").
 pub fn distribution_set() -> Result<Vec<(String, HeightDistribution)>, FigureError> {
-    let mut out = vec![("Gaussian".to_string(), HeightDistribution::Gaussian)];
+    let mut out = vec![("Gaussian".to_string(), HeightDistribution::GAUSSIAN)];
     for (sk, k) in DISTRIBUTION_SET {
         out.push((
             format!("Sk = {}, K = {}", num(sk), num(k)),

@@ -8,7 +8,7 @@
 //! law-independent [`Integrator`]'s.
 
 use super::asperity::adhesion;
-use super::integrator::{add_node, Heights, Integrator, Phi, Sums, Window};
+use super::integrator::{add_node, Heights, Integrator, Phi, PhiVisitor, Sums, Window};
 use super::laws::{ContactLaw, Law, LawVisitor, LoadLaw, Regime};
 use crate::params::{hardness_coefficient, Params};
 
@@ -72,7 +72,27 @@ impl Integrals {
     pub(super) fn evaluate_law<L: ContactLaw>(&self, law: &L, d: f64, want_q: bool) -> Sums {
         match &self.grid.heights {
             Heights::Gauss(h) => self.evaluate_with(law, h, d, want_q),
-            Heights::General(h) => self.evaluate_with(law, &**h, d, want_q),
+            Heights::General(h) => {
+                struct With<'a, L> {
+                    s: &'a Integrals,
+                    law: &'a L,
+                    d: f64,
+                    want_q: bool,
+                }
+                impl<L: ContactLaw> PhiVisitor for With<'_, L> {
+                    type Out = Sums;
+                    #[inline(always)]
+                    fn visit<H: Phi>(self, h: &H) -> Sums {
+                        self.s.evaluate_with(self.law, h, self.d, self.want_q)
+                    }
+                }
+                h.visit(With {
+                    s: self,
+                    law,
+                    d,
+                    want_q,
+                })
+            }
         }
     }
 

@@ -35,7 +35,7 @@ fn mu(m: &Model, f: f64) -> Result<f64, PaperError> {
 /// μ(Sk = 0.5, K = 5)/μ(Gaussian) at (ψ, θ, F*).
 pub fn tayebi_ratio(psi: f64, theta: f64, f_star: f64) -> Result<f64, PaperError> {
     let p = model(psi, theta, HeightDistribution::pearson(0.5, 5.0)?)?;
-    let g = model(psi, theta, HeightDistribution::Gaussian)?;
+    let g = model(psi, theta, HeightDistribution::GAUSSIAN)?;
     Ok(mu(&p, f_star)? / mu(&g, f_star)?)
 }
 
@@ -60,7 +60,7 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
     for psi in NONGAUSSIAN_PSIS {
         for theta in NONGAUSSIAN_THETAS {
             let p = model(psi, theta, HeightDistribution::pearson(0.5, 5.0)?)?;
-            let g = model(psi, theta, HeightDistribution::Gaussian)?;
+            let g = model(psi, theta, HeightDistribution::GAUSSIAN)?;
             for f in NONGAUSSIAN_LOADS {
                 let r = mu(&p, f)? / mu(&g, f)?;
                 n += 1;
@@ -110,7 +110,7 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
     // (2) Tayebi & Polycarpou: for high K, μ decreases as F* decreases.
     for psi in NONGAUSSIAN_PSIS {
         let p = model(psi, NONGAUSSIAN_THETA, HeightDistribution::pearson(0.0, 8.0)?)?;
-        let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::Gaussian)?;
+        let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::GAUSSIAN)?;
         let c = holds_where(NONGAUSSIAN_F_STAR, |f| log_slope(&p, f), |s| s > 0.0)?;
         let gs = log_slope(&g, 1e-4)?;
         rows.push(Statement {
@@ -179,7 +179,7 @@ pub fn nongaussian_statements() -> Result<Vec<Statement>, PaperError> {
 /// 1e-5 ≤ F* ≤ 0.1, and whether it is larger at F* = 1e-4 than at 0.05.
 fn higher_than_gaussian(psi: f64, d: HeightDistribution, paper: &'static str) -> Result<Statement, PaperError> {
     let p = model(psi, NONGAUSSIAN_THETA, d)?;
-    let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::Gaussian)?;
+    let g = model(psi, NONGAUSSIAN_THETA, HeightDistribution::GAUSSIAN)?;
     let ratio = |f: f64| -> Result<f64, PaperError> { Ok(mu(&p, f)? / mu(&g, f)?) };
     let c = holds_where(NONGAUSSIAN_F_STAR, ratio, |r| r > 1.0)?;
     let (r_light, r_heavy) = (ratio(1e-4)?, ratio(0.05)?);

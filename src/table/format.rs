@@ -314,7 +314,7 @@ impl ModelSpec {
             eps_star: self.eps_star,
             fit,
             kind,
-            distribution: crate::HeightDistribution::Gaussian,
+            distribution: crate::HeightDistribution::GAUSSIAN,
         })
     }
 }
@@ -323,11 +323,11 @@ impl ModelSpec {
 /// version 2; version 1 is Gaussian).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct DistributionSpec {
-    /// 0 = Gaussian, 1 = Pearson, 2 = Weibull.
+    /// The family's [`code`](Family::code): 0 = Gaussian, 1 = Pearson, 2 = Weibull.
     pub family: u8,
-    /// Skewness (Pearson, Weibull).
+    /// Skewness ([`HeightDistribution::stored`]).
     pub skewness: f64,
-    /// Kurtosis, not excess (Pearson).
+    /// Kurtosis, not excess (0 for Weibull: [`HeightDistribution::stored`]).
     pub kurtosis: f64,
 }
 
@@ -346,19 +346,14 @@ impl DistributionSpec {
     /// which tables do not hold.
     #[cfg(any(feature = "builder", test))]
     pub fn of(d: &HeightDistribution) -> Option<DistributionSpec> {
-        Some(match *d {
-            _ if d.is_gaussian() => DistributionSpec::default(),
-            HeightDistribution::Pearson { skewness, kurtosis } => DistributionSpec {
-                family: Family::Pearson.code(),
-                skewness,
-                kurtosis,
-            },
-            HeightDistribution::Weibull { skewness } => DistributionSpec {
-                family: Family::Weibull.code(),
-                skewness,
-                kurtosis: 0.0,
-            },
-            _ => return None,
+        if d.is_gaussian() {
+            return Some(DistributionSpec::default());
+        }
+        let [skewness, kurtosis] = d.stored()?;
+        Some(DistributionSpec {
+            family: d.family_kind().code(),
+            skewness,
+            kurtosis,
         })
     }
 

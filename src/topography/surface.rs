@@ -116,7 +116,7 @@ impl Surface {
         let family = family.unwrap_or(Self::DEFAULT_FAMILY);
         let (sk, k) = (self.stats.skewness, self.stats.kurtosis);
         match family {
-            "gaussian" => Ok(HeightDistribution::Gaussian),
+            "gaussian" => Ok(HeightDistribution::GAUSSIAN),
             "pearson" => Ok(HeightDistribution::pearson(sk, k)?),
             "weibull" => Ok(HeightDistribution::weibull(sk)?),
             "empirical" => {

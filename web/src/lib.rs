@@ -452,7 +452,7 @@ impl Analysis {
         Ok(json!({
             "z": centres,
             "density": density,
-            "gaussian": of(Ok(HeightDistribution::Gaussian)),
+            "gaussian": of(Ok(HeightDistribution::GAUSSIAN)),
             "pearson": of(HeightDistribution::pearson(s.skewness, s.kurtosis)),
         }))
     }

@@ -25,13 +25,12 @@ mod density;
 mod panels;
 
 use super::asperity::{adhesion, HERTZ};
-use crate::distribution::Density;
 use crate::gw::sigma_s_ratio;
 use crate::params::Params;
 use crate::quadrature::Rule;
 use density::{Gauss, General};
 
-pub(crate) use density::{Heights, Phi, Window};
+pub(crate) use density::{Heights, Phi, PhiVisitor, Window};
 pub(crate) use panels::{add_node, elastic_node, EndSide};
 
 /// What the integrals need that depends only on the parameters and not
@@ -112,7 +111,7 @@ impl Integrator {
             Heights::Gauss(gauss)
         } else {
             // Model::new validated the constants.
-            let g = Density::new(&p.constants.distribution);
+            let g = p.constants.distribution.validated_density();
             Heights::General(std::sync::Arc::new(General::new(g, s)))
         };
         Integrator {
