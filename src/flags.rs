@@ -3,6 +3,7 @@
 //! together. One place for both front ends (the CLI's tests check the
 //! words, the page's browser test checks it says the CLI's).
 
+use crate::topography::EvaluateError;
 use crate::{Family, Materials};
 use std::fmt::Display;
 
@@ -50,6 +51,20 @@ pub fn distribution_failure(e: impl Display, family: Option<Family>) -> String {
         " (try --distribution empirical)"
     };
     format!("--distribution: the surface's {e}{hint}")
+}
+
+/// Why a surface has no model inputs or friction
+/// ([`Surface::evaluate`](crate::topography::Surface::evaluate)), in the
+/// CLI's words: the step's flag (`load_flag`: `--force` or `--pressure`
+/// for a load's failure) and the error; `family` is the distribution asked
+/// for.
+pub fn evaluate_failure(e: &EvaluateError, family: Option<Family>, load_flag: &str) -> String {
+    match e {
+        EvaluateError::Distribution(e) => distribution_failure(e, family),
+        EvaluateError::Params(e) => format!("{}: {e}", param_flag(e.name, WITH_MATERIALS)),
+        EvaluateError::Model(e) => format!("{WITH_MATERIALS}: {e}"),
+        EvaluateError::Load(e) => format!("{load_flag}: {e}"),
+    }
 }
 
 /// `--lambda-s auto` or a reliability check without what gives the

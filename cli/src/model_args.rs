@@ -5,6 +5,7 @@
 
 use crate::args::{flag_of, parse_f64, ConstantsArgs, SiArgs};
 use crate::output::{warn, Failure};
+use ke_friction::topography::SurfaceModel;
 use ke_friction::{Model, Params, Physical, Shortest, Warnings};
 
 /// The model's parameters, shared by the subcommands that evaluate it:
@@ -88,13 +89,13 @@ impl ModelArgs {
         let mut warnings = Warnings::new();
         warnings.extend(surface.stats().warnings.iter().cloned());
         warn(&warnings);
-        let params = crate::surface_args::params(
-            &surface,
-            &materials,
-            h.distribution,
-            self.constants.fit,
-            self.constants.model,
-        )?;
+        let how = SurfaceModel {
+            materials,
+            family: h.distribution,
+            fit: self.constants.fit,
+            kind: self.constants.model,
+        };
+        let params = crate::surface_args::params(&surface, &how)?;
         let source = SurfaceSource {
             physical: surface.physical(&materials),
             files: self.surface.iter().map(|p| p.display().to_string()).collect(),

@@ -35,13 +35,18 @@ impl Failure {
     /// input that cannot be read: 2; a missed tolerance: 1; a bug: 70
     /// (EX_SOFTWARE), saying so.
     pub fn of(context: impl Display, e: impl Classify) -> Failure {
-        match e.kind() {
-            ErrorKind::Tolerance => Failure::other(format!("{context}: {e}")),
+        Failure::classified(format!("{context}: {e}"), e.kind())
+    }
+
+    /// `message` with the exit status of `kind` ([`Failure::of`]).
+    pub fn classified(message: String, kind: ErrorKind) -> Failure {
+        match kind {
+            ErrorKind::Tolerance => Failure::other(message),
             ErrorKind::Internal => Failure {
-                message: format!("{context}: {e} (this is a bug: please report it with the command line)"),
+                message: format!("{message} (this is a bug: please report it with the command line)"),
                 code: 70,
             },
-            _ => Failure::input(format!("{context}: {e}")),
+            _ => Failure::input(message),
         }
     }
 

@@ -5,8 +5,8 @@ use crate::args::{check_writable, fields, flag_of, load_table, number, output_di
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
 use ke_friction::figures::{self, Figure, FigureError, Format};
-use ke_friction::topography::{psd_all, scan, Psd, ScanRange, Window};
-use ke_friction::{Family, Fit, LookupError, ModelKind, Shortest};
+use ke_friction::topography::{psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
+use ke_friction::{Family, LookupError, Shortest};
 use std::path::{Path, PathBuf};
 
 /// Draw the paper's figures, a curve, or a table's error map, as PNG or SVG
@@ -202,17 +202,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let axis = load_axis(&a, &surface, &materials)?;
             let mut fits = Vec::new();
             for family in [Family::Gaussian, Family::Pearson, Family::Empirical] {
-                let fit = crate::surface_args::params(
-                    &surface,
-                    &materials,
-                    Some(family),
-                    Fit::Consistent,
-                    ModelKind::KogutEtsion,
-                )
-                .and_then(|p| {
-                    ke_friction::Model::new(p)
-                        .map_err(|e| Failure::input(format!("{}: {e}", ke_friction::flags::WITH_MATERIALS)))
-                });
+                let how = SurfaceModel {
+                    family: Some(family),
+                    ..SurfaceModel::new(materials)
+                };
+                let fit = crate::surface_args::model(&surface, &how);
                 match fit {
                     Ok(model) => fits.push((fit_label(family, surface.stats()), model)),
                     // A fit the surface does not admit (e.g. a skewness
@@ -334,19 +328,14 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
         let mut points = Vec::with_capacity(rows.len());
         for row in rows {
             let Ok(surface) = row.surface else { continue };
-            let params = materials
+            // ψ wherever the surface has inputs, μ wherever the load has one.
+            let how = materials.map(SurfaceModel::new);
+            let params = how.as_ref().and_then(|how| surface.model_params(how).ok());
+            let mu = how
                 .as_ref()
-                .map(|m| crate::surface_args::params(&surface, m, None, Fit::Consistent, ModelKind::KogutEtsion))
-                .transpose()
-                .ok()
-                .flatten();
-            let mu = match (&load, &params, &materials) {
-                (Some(load), Some(p), Some(m)) => ke_friction::Model::new(p.clone())
-                    .ok()
-                    .and_then(|model| load.friction(&model, &surface.physical(m)).ok())
-                    .map(|f| f.mu),
-                _ => None,
-            };
+                .zip(load)
+                .and_then(|(how, load)| surface.evaluate(how, &[load]).ok())
+                .map(|e| e.frictions[0].mu);
             points.push(figures::ScanPoint {
                 lambda_s: row.lambda_s,
                 mu,

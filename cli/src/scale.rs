@@ -50,7 +50,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
         .then(|| args.materials.materials(&[]))
         .transpose()?;
     if load.is_some() && materials.is_none() {
-        return Err(Failure::input("--force/--pressure: needs the materials"));
+        return Err(Failure::input(ke_friction::flags::materials_needed(args.load.flag())));
     }
     let read = &args.read;
     let t = read.read("surface", path)?;

@@ -6,9 +6,9 @@
 use crate::args::{named, parse_f64, MaterialsArgs};
 use crate::load_args::LoadArgs;
 use crate::output::{sig, Failure};
-use crate::surface_args::{intervals, params, SurfaceArgs};
-use ke_friction::topography::{Format, Surface, SurfaceRecord, SurfaceStats};
-use ke_friction::{Family, Fit, Friction, Load, Materials, Model, ModelKind, Params, Warnings};
+use crate::surface_args::{intervals, SurfaceArgs};
+use ke_friction::topography::{Format, Surface, SurfaceModel, SurfaceRecord, SurfaceStats};
+use ke_friction::{Family, Fit, Friction, Load, Materials, ModelKind, Params, Warnings};
 use std::path::PathBuf;
 
 /// Statistics of a measured surface and, with materials and a load, μ.
@@ -150,23 +150,18 @@ pub fn evaluate(
 ) -> Result<(Option<Params>, Vec<Friction>, Warnings), Failure> {
     let mut warnings = Warnings::new();
     warnings.extend(surface.stats().warnings.iter().cloned());
-    let params = materials
-        .map(|m| params(surface, m, args.distribution, args.fit, args.model))
-        .transpose()?;
-    let mut frictions = Vec::with_capacity(loads.len());
-    if let (false, Some(p), Some(m)) = (loads.is_empty(), &params, materials) {
-        let model = Model::new(p.clone())
-            .map_err(|e| Failure::input(format!("{}: {e}", ke_friction::flags::WITH_MATERIALS)))?;
-        let physical = surface.physical(m);
-        for load in loads {
-            let f = load
-                .friction(&model, &physical)
-                .map_err(|e| Failure::of(args.load.flag(), e))?;
-            warnings.note(f.warnings(&model, &physical));
-            frictions.push(f);
-        }
-    }
-    Ok((params, frictions, warnings))
+    let Some(materials) = materials else {
+        return Ok((None, Vec::new(), warnings));
+    };
+    let how = SurfaceModel {
+        materials: *materials,
+        family: args.distribution,
+        fit: args.fit,
+        kind: args.model,
+    };
+    let e = crate::surface_args::evaluate(surface, &how, loads, args.load.flag())?;
+    e.note_into(&mut warnings);
+    Ok((Some(e.params), e.frictions, warnings))
 }
 
 fn print_text(args: &Args, surface: &Surface, params: Option<&Params>, friction: &[Friction]) -> Result<(), Failure> {

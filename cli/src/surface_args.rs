@@ -2,14 +2,14 @@
 //! filters, `--channel`, …), shared by `surface`, `eval --surface` and
 //! `plot surface`; and the model's inputs of a read surface.
 
-use crate::args::{named, parse_f64, physical_failure};
+use crate::args::{named, parse_f64};
 use crate::output::{sig, Failure};
 use ke_friction::flags;
 use ke_friction::topography::{
-    read_dy_defaulting_to_dx, read_file, Channel, Derivative, Detrend, ReadError, ReadOptions, StatsOptions, Surface,
-    SurfaceStats, Topography, MAX_POINTS,
+    read_dy_defaulting_to_dx, read_file, Channel, Derivative, Detrend, EvaluateError, Evaluation, ReadError,
+    ReadOptions, StatsOptions, Surface, SurfaceModel, SurfaceStats, Topography, MAX_POINTS,
 };
-use ke_friction::{Family, Fit, LengthUnit, Materials, ModelKind, Params, Shortest};
+use ke_friction::{Classify, LengthUnit, Load, Model, Params, Shortest};
 use std::path::{Path, PathBuf};
 
 /// How a surface file is read and its statistics taken.
@@ -206,21 +206,24 @@ pub fn intervals(s: &SurfaceStats) -> String {
     text
 }
 
-/// The model's inputs for `materials` on `surface` with the distribution
-/// `family` asks for (`None`: the surface's default, pearson).
-pub fn params(
-    surface: &Surface,
-    materials: &Materials,
-    family: Option<Family>,
-    fit: Fit,
-    model: ModelKind,
-) -> Result<Params, Failure> {
-    let distribution = surface
-        .distribution(family.map(Family::name))
-        .map_err(|e| Failure::input(flags::distribution_failure(e, family)))?;
-    let p = surface
-        .params(materials, distribution)
-        .map_err(|e| physical_failure(e, flags::WITH_MATERIALS))?;
-    // Params::from_physical validated it; fit and model change no range.
-    Ok(p.fit(fit).kind(model))
+/// [`Surface::evaluate`] with the CLI's failure ([`failure`]).
+pub fn evaluate(surface: &Surface, how: &SurfaceModel, loads: &[Load], load_flag: &str) -> Result<Evaluation, Failure> {
+    surface.evaluate(how, loads).map_err(|e| failure(e, how, load_flag))
+}
+
+/// [`Surface::model_params`] with the CLI's failure.
+pub fn params(surface: &Surface, how: &SurfaceModel) -> Result<Params, Failure> {
+    surface.model_params(how).map_err(|e| failure(e, how, ""))
+}
+
+/// [`Surface::model`] with the CLI's failure.
+pub fn model(surface: &Surface, how: &SurfaceModel) -> Result<Model, Failure> {
+    surface.model(how).map_err(|e| failure(e, how, ""))
+}
+
+/// A failed step of a surface's evaluation in the CLI's words
+/// ([`flags::evaluate_failure`]; `load_flag` names a load's) with its
+/// error's exit status.
+fn failure(e: EvaluateError, how: &SurfaceModel, load_flag: &str) -> Failure {
+    Failure::classified(flags::evaluate_failure(&e, how.family, load_flag), e.kind())
 }

@@ -649,20 +649,17 @@ impl SurfaceCore {
         if loads.is_empty() {
             return Err(value_error("give force with area, or pressure alone"));
         }
-        let physical = self.surface.physical(&Materials::from_array(materials));
-        let (records, warnings) = py
-            .detach(|| {
-                let mut warnings = ke_friction::Warnings::new();
-                warnings.extend(self.surface.stats().warnings.iter().cloned());
-                let mut records = Vec::with_capacity(loads.len());
-                for load in &loads {
-                    let f = load.friction(&model.0, &physical)?;
-                    warnings.note(f.warnings(&model.0, &physical));
-                    records.push(f);
-                }
-                Ok::<_, ke_friction::LoadError>((records, warnings))
-            })
+        let materials = Materials::from_array(materials);
+        let frictions = py
+            .detach(|| self.surface.frictions(&model.0, &materials, &loads))
             .map_err(raise)?;
+        let mut warnings = ke_friction::Warnings::new();
+        warnings.extend(self.surface.stats().warnings.iter().cloned());
+        let mut records = Vec::with_capacity(frictions.len());
+        for (f, w) in frictions {
+            warnings.note(w);
+            records.push(f);
+        }
         let summaries: Vec<ke_friction::Summary<'_>> = warnings.summaries().collect();
         let out = serde_json::json!({ "records": records, "warnings": summaries });
         record(py, serde_json::to_string(&out))

@@ -7,6 +7,7 @@
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
 
+mod evaluate;
 mod filter;
 mod metadata;
 mod psd;
@@ -18,6 +19,7 @@ mod stats;
 mod surface;
 mod write;
 
+pub use evaluate::{EvaluateError, Evaluation, SurfaceModel};
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use metadata::Metadata;
 pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};

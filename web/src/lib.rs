@@ -12,7 +12,7 @@
 use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
     psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Format, ReadError, ReadOptions,
-    ScanRange, StatsOptions, Surface, SurfaceRecord, Topography, Window, MAX_POINTS,
+    ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
@@ -320,29 +320,22 @@ impl Analysis {
     }
 
     /// The model's inputs of `surface` with the materials and, with `load`,
-    /// the friction and its warnings (as `kefric surface` evaluates them).
+    /// the friction and its warnings ([`Surface::evaluate`], its failure
+    /// in the CLI's words).
     fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<Evaluated, String> {
-        let Some(materials) = &self.materials else {
+        let Some(materials) = self.materials else {
             return Ok((None, None, Vec::new()));
         };
-        let distribution = surface
-            .distribution(self.family.map(Family::name))
-            .map_err(|e| flags::distribution_failure(e, self.family))?;
-        let params = surface
-            .params(materials, distribution)
-            .map_err(|e| format!("{}: {e}", flags::param_flag(e.name, flags::WITH_MATERIALS)))?
-            .fit(self.fit)
-            .kind(self.model_kind);
-        let Some(load) = load else {
-            return Ok((Some(params), None, Vec::new()));
+        let how = SurfaceModel {
+            materials,
+            family: self.family,
+            fit: self.fit,
+            kind: self.model_kind,
         };
-        let model = Model::new(params.clone()).map_err(|e| format!("{}: {e}", flags::WITH_MATERIALS))?;
-        let physical = surface.physical(materials);
-        let friction = load
-            .friction(&model, &physical)
-            .map_err(|e| format!("{}: {e}", self.load_flag()))?;
-        let warnings = friction.warnings(&model, &physical).collect();
-        Ok((Some(params), Some(friction), warnings))
+        let mut e = surface
+            .evaluate(&how, load.as_slice())
+            .map_err(|e| flags::evaluate_failure(&e, self.family, self.load_flag()))?;
+        Ok((Some(e.params), e.frictions.pop(), e.warnings.pop().unwrap_or_default()))
     }
 
     fn load_flag(&self) -> &'static str {
