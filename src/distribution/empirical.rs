@@ -250,6 +250,11 @@ impl DistributionFamily for Empirical {
         }
     }
 
+    /// None: the heights themselves make it.
+    fn from_moments(_: f64, _: f64) -> Option<Result<Empirical, ParamError>> {
+        None
+    }
+
     /// None: its heights make it.
     fn from_stored(_: f64, _: f64) -> Option<Empirical> {
         None

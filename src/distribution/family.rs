@@ -60,4 +60,9 @@ pub(crate) trait DistributionFamily: Parameters + Sized {
     /// The parameters of stored values ([`Parameters::stored`]), not
     /// validated; `None` if the family cannot be made from them.
     fn from_stored(skewness: f64, kurtosis: f64) -> Option<Self>;
+
+    /// The family's distribution of measured heights' skewness and
+    /// kurtosis (a surface's), validated; `None` if moments do not make
+    /// it (the empirical family takes the heights themselves).
+    fn from_moments(skewness: f64, kurtosis: f64) -> Option<Result<Self, ParamError>>;
 }

@@ -108,6 +108,13 @@ macro_rules! families {
                 })
             }
 
+            /// The family's distribution of measured moments, if they make it.
+            fn moments_distribution(self, skewness: f64, kurtosis: f64) -> Option<Result<HeightDistribution, ParamError>> {
+                match self {
+                    $( $(#[cfg($cfg)])? Family::$variant => <$ty>::from_moments(skewness, kurtosis).map(|d| d.map(HeightDistribution::$variant)), )+
+                }
+            }
+
             /// The family's distribution of stored values, if it has one.
             fn stored_distribution(self, skewness: f64, kurtosis: f64) -> Option<HeightDistribution> {
                 match self {
@@ -321,6 +328,14 @@ impl HeightDistribution {
     /// for the empirical family, which its heights make.
     pub fn of_family(family: Family, skewness: f64, kurtosis: f64) -> Option<HeightDistribution> {
         family.stored_distribution(skewness, kurtosis)
+    }
+
+    /// The distribution of `family` fitted to measured heights' `skewness`
+    /// and `kurtosis` (a surface's), validated: the Gaussian ignores both,
+    /// Weibull the kurtosis; `None` for the empirical family, which the
+    /// heights themselves make.
+    pub fn of_moments(family: Family, skewness: f64, kurtosis: f64) -> Option<Result<HeightDistribution, ParamError>> {
+        family.moments_distribution(skewness, kurtosis)
     }
 
     /// The skewness and kurtosis a table file stores for the distribution

@@ -95,6 +95,12 @@ impl DistributionFamily for Pearson {
         Ok(d)
     }
 
+    /// The Pearson density of both moments.
+    fn from_moments(skewness: f64, kurtosis: f64) -> Option<Result<Pearson, ParamError>> {
+        let d = Pearson { skewness, kurtosis };
+        Some(d.validate().map(|()| d))
+    }
+
     fn from_stored(skewness: f64, kurtosis: f64) -> Option<Pearson> {
         Some(Pearson { skewness, kurtosis })
     }

@@ -63,6 +63,10 @@ impl DistributionFamily for Uniform {
         }
     }
 
+    fn from_moments(_: f64, _: f64) -> Option<Result<Uniform, ParamError>> {
+        Some(Ok(Uniform))
+    }
+
     fn from_stored(_: f64, _: f64) -> Option<Uniform> {
         Some(Uniform)
     }
@@ -95,6 +99,7 @@ mod tests {
         assert_eq!(Family::parse("uniform"), Ok(Family::Uniform));
         assert_eq!(Family::from_code(4), Some(Family::Uniform));
         assert_eq!(HeightDistribution::from_arguments(Some("uniform"), None, None, None), Ok(d.clone()));
+        assert_eq!(HeightDistribution::of_moments(Family::Uniform, 0.3, 5.0), Some(Ok(d.clone())));
         let spec = DistributionSpec::of(&d).unwrap();
         assert_eq!(spec.distribution(), Ok(d.clone()));
         assert_eq!(d.to_string(), "uniform (skewness 0, kurtosis 1.8)");

@@ -106,6 +106,12 @@ impl DistributionFamily for Weibull {
         Ok(d)
     }
 
+    /// The Weibull density of the skewness (its kurtosis follows).
+    fn from_moments(skewness: f64, _: f64) -> Option<Result<Weibull, ParamError>> {
+        let d = Weibull { skewness };
+        Some(d.validate().map(|()| d))
+    }
+
     fn from_stored(skewness: f64, _: f64) -> Option<Weibull> {
         Some(Weibull { skewness })
     }

@@ -3,7 +3,7 @@
 //! height distribution and, with the materials, the model's inputs.
 
 use super::{combine, StatsError, StatsOptions, SurfaceStats, Topography};
-use crate::{DistributionError, HeightDistribution, Materials, ParamError, Params, Physical};
+use crate::{DistributionError, Empirical, Family, HeightDistribution, Materials, ParamError, Params, Physical};
 
 /// A rough surface against a flat, from measured heights: one topography,
 /// or two rough surfaces pressed together, whose equivalent surface has
@@ -108,37 +108,35 @@ impl Surface {
     ///   kurtosis (a pair's from the added cumulants);
     /// - `"weibull"`: the Weibull density of the measured skewness;
     /// - `"empirical"`: the kernel density of the detrended heights (a
-    ///   pair's: the convolution of the two, [`crate::Empirical::sum`]).
+    ///   pair's: the convolution of the two, [`crate::Empirical::sum`]);
+    /// - any other family: its [`HeightDistribution::of_moments`].
     ///
     /// A measured skewness or kurtosis outside the family's range is an
     /// error naming it (`skewness` or `kurtosis`).
     pub fn distribution(&self, family: Option<&str>) -> Result<HeightDistribution, DistributionError> {
-        let family = family.unwrap_or(Self::DEFAULT_FAMILY);
-        let (sk, k) = (self.stats.skewness, self.stats.kurtosis);
-        match family {
-            "gaussian" => Ok(HeightDistribution::GAUSSIAN),
-            "pearson" => Ok(HeightDistribution::pearson(sk, k)?),
-            "weibull" => Ok(HeightDistribution::weibull(sk)?),
-            "empirical" => {
-                let mut densities = Vec::with_capacity(2);
-                for (t, s) in &self.parts {
-                    let heights = t.band_heights(&self.options).map_err(|e| DistributionError::Conflict {
-                        name: "heights",
-                        reason: e.to_string(),
-                    })?;
-                    let HeightDistribution::Empirical(e) = HeightDistribution::empirical(&heights)? else {
-                        unreachable!("an empirical distribution")
-                    };
-                    densities.push((e, s.sigma));
-                }
-                let (first, sd) = densities.remove(0);
-                Ok(HeightDistribution::Empirical(match densities.pop() {
-                    None => first,
-                    Some((second, other_sd)) => first.sum(sd, &second, other_sd)?,
-                }))
-            }
-            other => HeightDistribution::from_arguments(Some(other), None, None, None),
+        let name = family.unwrap_or(Self::DEFAULT_FAMILY);
+        let Some(family) = Family::from_name(name) else {
+            // The unknown name's error, as every front end words it.
+            return HeightDistribution::from_arguments(Some(name), None, None, None);
+        };
+        if let Some(d) = HeightDistribution::of_moments(family, self.stats.skewness, self.stats.kurtosis) {
+            return Ok(d?);
         }
+        // The empirical density: of the detrended heights, or a pair's
+        // convolution.
+        let mut densities = Vec::with_capacity(2);
+        for (t, s) in &self.parts {
+            let heights = t.band_heights(&self.options).map_err(|e| DistributionError::Conflict {
+                name: "heights",
+                reason: e.to_string(),
+            })?;
+            densities.push((Empirical::new(&heights)?, s.sigma));
+        }
+        let (first, sd) = densities.remove(0);
+        Ok(HeightDistribution::Empirical(match densities.pop() {
+            None => first,
+            Some((second, other_sd)) => first.sum(sd, &second, other_sd)?,
+        }))
     }
 
     /// The physical inputs of `materials` on this surface: σ, R and η from
