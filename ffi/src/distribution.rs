@@ -28,15 +28,31 @@ pub const KEF_DIST_EMPIRICAL: c_int = 3;
 /// validated.
 fn distribution(family: c_int, skewness: f64, kurtosis: f64) -> Result<HeightDistribution, Failure> {
     let known = u8::try_from(family).ok().and_then(Family::from_code);
-    match known.map(|f| HeightDistribution::of_family(f, skewness, kurtosis)) {
-        Some(Some(d)) => Ok(d.validate().map(|()| d)?),
-        Some(None) => Err(Failure::argument(
-            "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights".into(),
-        )),
-        None => Err(Failure::argument(format!(
-            "family {family} is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
+    match known.map(|f| (f, HeightDistribution::of_family(f, skewness, kurtosis))) {
+        Some((_, Some(d))) => Ok(d.validate().map(|()| d)?),
+        Some((f, None)) => Err(Failure::argument(format!(
+            "family {family} ({}) is set by kef_constants_set_heights",
+            constant(f)
         ))),
+        None => {
+            // The families a code sets, from the core's list.
+            let settable: Vec<String> = Family::ALL
+                .into_iter()
+                .filter(|f| HeightDistribution::of_family(*f, 0.0, 3.0).is_some())
+                .map(|f| format!("{} ({})", constant(f), f.code()))
+                .collect();
+            let (last, rest) = settable.split_last().expect("a family set by its code");
+            Err(Failure::argument(format!(
+                "family {family} is unknown: must be {} or {last}",
+                rest.join(", ")
+            )))
+        }
     }
+}
+
+/// The name of a family's `KEF_DIST_*` constant.
+fn constant(f: Family) -> String {
+    format!("KEF_DIST_{}", f.name().to_uppercase())
 }
 
 /// The `KEF_DIST_*` code of a distribution: its family's core code.

@@ -2,8 +2,8 @@
 //! its standardised density.
 
 use crate::convert::{same_len, slice, slice_mut};
-use crate::error::raise;
-use ke_friction::{Density, HeightDistribution};
+use crate::error::{raise, value_error};
+use ke_friction::{Density, Family, HeightDistribution, Named};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
@@ -98,6 +98,23 @@ impl DistributionCore {
         let heights = slice("heights", &heights)?;
         py.detach(|| HeightDistribution::empirical(&heights).map(DistributionCore::of))
             .map_err(raise)
+    }
+
+    /// The distribution of `family` with the values a table stores (and
+    /// a pickle keeps: `stored`), validated (`HeightDistribution::of_family`).
+    #[staticmethod]
+    fn of_stored(family: &str, skewness: f64, kurtosis: f64) -> PyResult<DistributionCore> {
+        let family = <Family as Named>::parse(family).map_err(value_error)?;
+        let d = HeightDistribution::of_family(family, skewness, kurtosis)
+            .ok_or_else(|| value_error(format!("{family}: made of measured heights, not of values")))?;
+        d.validate().map_err(raise)?;
+        Ok(DistributionCore::of(d))
+    }
+
+    /// The (skewness, kurtosis) a table stores for it, or None (an
+    /// empirical density: its heights make it).
+    fn stored(&self) -> Option<(f64, f64)> {
+        self.dist.stored().map(|[s, k]| (s, k))
     }
 
     /// The density of `sd`·X + `other_sd`·Y, X and Y of the empirical

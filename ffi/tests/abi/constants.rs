@@ -265,6 +265,21 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
             "{}",
             last_error()
         );
+        // An unknown code, and the empirical family's, which its heights set.
+        assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
+        assert_eq!(
+            last_error(),
+            "family 7 is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
+        );
+        assert_eq!(
+            kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
+            KEF_ERR_ARGUMENT
+        );
+        assert_eq!(
+            last_error(),
+            "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights"
+        );
+        assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, f64::NAN, 3.0),
             KEF_ERR_ARGUMENT

@@ -15,17 +15,17 @@ from ._args import ArrayLike, _arrays, _check_real, _is_scalar
 def _distribution_of(family: str, skewness: Optional[float], kurtosis: Optional[float],
                      heights: Optional[np.ndarray], parts: Optional[Tuple[Any, ...]] = None) -> "HeightDistribution":
     """A pickled :class:`HeightDistribution`: its family and what made it
-    (``parts``: the two surfaces' detrended heights and standard
-    deviations of an empirical density of a :meth:`Surface.pair`)."""
+    (the values a table stores, the heights of an empirical density, or
+    ``parts``: the two surfaces' detrended heights and standard deviations
+    of an empirical density of a :meth:`Surface.pair`)."""
     if parts is not None:
         return HeightDistribution._empirical_sum(*parts)
-    if family == "gaussian":
-        return HeightDistribution.gaussian()
-    if family == "pearson":
-        return HeightDistribution.pearson(skewness, kurtosis)
-    if family == "weibull":
-        return HeightDistribution.weibull(skewness)
-    return HeightDistribution.empirical(heights)
+    if heights is not None:
+        return HeightDistribution.empirical(heights)
+    # A pickle of before the stored values kept None for a kurtosis the
+    # family ignores.
+    return HeightDistribution(_core.DistributionCore.of_stored(
+        family, float(skewness or 0.0), float("nan") if kurtosis is None else float(kurtosis)))
 
 
 def _heights_of(name: str, heights: Any, copy: bool = True) -> np.ndarray:
@@ -99,9 +99,10 @@ class HeightDistribution:
         family = self.family
         if self._parts is not None:
             return _distribution_of, (family, None, None, None, self._parts)
-        if family == "empirical":
+        stored = self._core.stored()
+        if stored is None:
             return _distribution_of, (family, None, None, self._heights)
-        return _distribution_of, (family, self.skewness, self.kurtosis if family == "pearson" else None, None)
+        return _distribution_of, (family, stored[0], stored[1], None)
 
     def __copy__(self) -> "HeightDistribution":
         return self
