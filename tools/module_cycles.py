@@ -56,6 +56,19 @@ def modules(root, crate_root):
                     found[path + (name,)] = cand
                     todo.append((path + (name,), cand))
                     break
+        # Modules a macro declares (`families!`'s `mod $module;`, the law
+        # registry's `registered_laws!`): the macro names them by a
+        # metavariable, so take every file in a module file's folder that
+        # is not a module yet.
+        if f == crate_root or f.endswith("mod.rs"):
+            known = set(found.values())
+            for entry in sorted(os.listdir(os.path.join(root, here))):
+                cand = f"{here}/{entry}"
+                name = entry[:-3]
+                if (entry.endswith(".rs") and entry not in ("mod.rs", "tests.rs", "main.rs", "lib.rs")
+                        and cand not in known):
+                    found[path + (name,)] = cand
+                    todo.append((path + (name,), cand))
     return found
 
 

@@ -17,8 +17,6 @@
 //! (no `dyn`, no allocation).
 //! docs/ARCHITECTURE.md lists the places a new law touches.
 
-pub mod ceb;
-pub mod ke;
 pub mod registry;
 
 use crate::model::integrator::{Integrator, Phi, Sums, Window};
@@ -183,10 +181,9 @@ macro_rules! laws {
     };
 }
 
-laws! {
-    KogutEtsion => ke::KogutEtsion,
-    CebType => ceb::CebType,
-}
+// The laws of the registry's lines: their modules (`pub mod ke;` …) and
+// `Law`.
+registry::registered_laws!();
 
 /// A test-only law: Hertz `x^1.5` at every interference (no plastic
 /// regime), no friction; registered only in the tests.

@@ -5,10 +5,10 @@
 //! and it reads nothing of theirs.
 
 /// Writes [`ModelKind`] and [`LAWS`] from one line a law: its variant
-/// (with the variant's documentation), its name, its table code and its
-/// label. The first line is the default.
+/// (with the variant's documentation), its name, its table code, its
+/// label and its type (in `laws/`). The first line is the default.
 macro_rules! registry {
-    ($($(#[doc = $doc:literal])* $variant:ident = ($name:literal, $code:literal, $label:literal)),+ $(,)?) => {
+    ($($(#[doc = $doc:literal])* $variant:ident = ($name:literal, $code:literal, $label:literal) => $module:ident :: $law:ident),+ $(,)?) => {
         /// Which surface friction model to evaluate: which single-asperity
         /// contact law the surface integrals use (one line each in
         /// `src/model/laws/registry.rs`, docs/ARCHITECTURE.md).
@@ -21,17 +21,29 @@ macro_rules! registry {
         pub const LAWS: [LawInfo; [$($name),+].len()] = [
             $(LawInfo { kind: ModelKind::$variant, name: $name, code: $code, label: $label }),+
         ];
+
+        /// The laws' modules, variants and types, for `laws/mod.rs`: it
+        /// declares the modules and writes the planned [`Law`](super::Law)
+        /// with `laws!`. The paths are tokens here, resolved there: this
+        /// file stays a leaf.
+        macro_rules! registered_laws {
+            () => {
+                $(pub mod $module;)+
+                laws! { $($variant => $module::$law),+ }
+            };
+        }
+        pub(super) use registered_laws;
     };
 }
 
 registry! {
     /// Kogut & Etsion (2004), MODEL.md §4.
-    KogutEtsion = ("ke", 0, "Kogut–Etsion"),
+    KogutEtsion = ("ke", 0, "Kogut–Etsion") => ke::KogutEtsion,
     /// The CEB-type comparison model, an approximate reconstruction of
     /// Chang, Etsion & Bogy (1988) in the same statistical framework
     /// (MODEL.md §8). Its adhesion term is the Kogut–Etsion one; the
     /// [`Fit`](crate::Fit) setting does not apply to it.
-    CebType = ("ceb", 1, "CEB-type (approx.)"),
+    CebType = ("ceb", 1, "CEB-type (approx.)") => ceb::CebType,
 }
 
 /// The first law of the registry: Kogut–Etsion.
