@@ -23,21 +23,11 @@
 //! before anything is allocated. A bad file gives a [`ReadError`] naming
 //! the file and the problem; nothing panics.
 
-mod al3d;
 mod ctx;
 use ctx::Ctx;
 mod binary;
 mod instrument;
 pub(super) use instrument::iso_date_in;
-mod metropro;
-mod nanoscope;
-mod nid;
-mod npy;
-mod opd;
-mod plu;
-mod sur;
-mod text;
-pub(super) mod x3p;
 
 use std::fs::File;
 use std::io::{self, BufReader, Cursor, Read, Seek};
@@ -67,7 +57,7 @@ const SNIFF_BYTES: usize = 64;
 pub struct Format(&'static Entry);
 
 /// A registry entry: everything about one format, in one place. Adding a
-/// format is a reader module and one line in [`REGISTRY`].
+/// format is a reader module and one line in `readers!`.
 struct Entry {
     name: &'static str,
     description: &'static str,
@@ -81,22 +71,32 @@ struct Entry {
 /// A reader: the file's context, its bytes, their length, the options.
 type ReadFn = fn(&Ctx, &mut dyn Source, u64, &ReadOptions) -> Result<Topography, ReadError>;
 
-/// The formats, in the order a format is chosen by sniffing (text and
-/// matrix have no signature: any file is text to them, chosen when no
-/// signature matches).
-static REGISTRY: [Entry; 11] = [
-    x3p::ENTRY,
-    npy::ENTRY,
-    text::ENTRY,
-    text::MATRIX,
-    sur::ENTRY,
-    plu::ENTRY,
-    opd::ENTRY,
-    al3d::ENTRY,
-    metropro::ENTRY,
-    nanoscope::ENTRY,
-    nid::ENTRY,
-];
+/// Declares the readers' modules and writes [`REGISTRY`] from one line a
+/// reader module: `module => [its entries]` (a module may read more than
+/// one format: text and matrix).
+macro_rules! readers {
+    ($($vis:vis $module:ident => [$($entry:ident),+]),+ $(,)?) => {
+        $($vis mod $module;)+
+
+        /// The formats, in the order a format is chosen by sniffing (text
+        /// and matrix have no signature: any file is text to them, chosen
+        /// when no signature matches).
+        static REGISTRY: [Entry; [$($(stringify!($entry)),+),+].len()] = [$($($module::$entry),+),+];
+    };
+}
+
+readers! {
+    pub(super) x3p => [ENTRY],
+    npy => [ENTRY],
+    text => [ENTRY, MATRIX],
+    sur => [ENTRY],
+    plu => [ENTRY],
+    opd => [ENTRY],
+    al3d => [ENTRY],
+    metropro => [ENTRY],
+    nanoscope => [ENTRY],
+    nid => [ENTRY],
+}
 
 /// Extensions other programs use too (`.dat` for any data, `.spm`, the
 /// numbered `.001`, ...): a file with one is its format's only if its
