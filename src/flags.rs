@@ -3,6 +3,7 @@
 //! together. One place for both front ends (the CLI's tests check the
 //! words, the page's browser test checks it says the CLI's).
 
+#[cfg(feature = "topography")]
 use crate::topography::EvaluateError;
 use crate::{Family, Materials};
 use std::fmt::Display;
@@ -58,6 +59,7 @@ pub fn distribution_failure(e: impl Display, family: Option<Family>) -> String {
 /// CLI's words: the step's flag (`load_flag`: `--force` or `--pressure`
 /// for a load's failure) and the error; `family` is the distribution asked
 /// for.
+#[cfg(feature = "topography")]
 pub fn evaluate_failure(e: &EvaluateError, family: Option<Family>, load_flag: &str) -> String {
     match e {
         EvaluateError::Distribution(e) => distribution_failure(e, family),
