@@ -91,15 +91,32 @@ impl crate::Classify for NameError {
 #[macro_export]
 #[doc(hidden)]
 macro_rules! named {
-    ($ty:ident, $what:literal, [$($variant:ident = $name:literal),+ $(,)?]) => {
+    // An entry after the first may carry a `#[cfg(...)]` (a test-only
+    // value): it is then left out of `ALL` and `name` alike.
+    ($ty:ident, $what:literal, [$first:ident = $first_name:literal
+        $(, $(#[cfg($cfg:meta)])? $variant:ident = $name:literal)* $(,)?]) => {
         impl $ty {
+            /// How many values there are (those configured in).
+            const COUNT: usize = {
+                let mut n = 1;
+                $( $(#[cfg($cfg)])? { n += 1; } )*
+                n
+            };
+
             /// Every value, in the documented order.
-            pub const ALL: [$ty; [$($name),+].len()] = [$($ty::$variant),+];
+            pub const ALL: [$ty; Self::COUNT] = {
+                let mut all = [$ty::$first; Self::COUNT];
+                let mut i = 1;
+                $( $(#[cfg($cfg)])? { all[i] = $ty::$variant; i += 1; } )*
+                let _ = i;
+                all
+            };
 
             /// The name users type and read (CLI flags, JSON, the bindings).
             pub const fn name(self) -> &'static str {
                 match self {
-                    $($ty::$variant => $name),+
+                    $ty::$first => $first_name,
+                    $( $(#[cfg($cfg)])? $ty::$variant => $name, )*
                 }
             }
         }

@@ -29,10 +29,12 @@ use crate::checks::ParamError;
 use crate::num::Shortest;
 use family::{DistributionFamily, Parameters};
 
-/// Writes, from one line a family (`Variant = code, "name" => module::Type`,
-/// with the variant's docs), the family's module, [`HeightDistribution`]
-/// (one variant holding the family's parameters, `Type`), [`Family`] with
-/// its codes and names, the density's forms (`Shape`, one variant holding
+/// Writes, from one line a family (`Variant = code, "name" =>
+/// module::Type`, with the variant's docs, and first a `#[cfg(..)]` for a
+/// family built only so: the test-only uniform), the family's module,
+/// [`HeightDistribution`] (one variant holding the family's parameters,
+/// `Type`), [`Family`] with its codes and its names (`named!`, which takes
+/// the `#[cfg]` too), the density's forms (`Shape`, one variant holding
 /// the family's [`Form`], dispatched by a `match`: no dynamic call where
 /// the model integrates), and the calls from a distribution or a family
 /// to the family's [`Parameters`] and [`DistributionFamily`].
@@ -69,28 +71,6 @@ macro_rules! families {
         }
 
         impl Family {
-            /// How many families there are.
-            const COUNT: usize = {
-                let mut n = 0;
-                $( $(#[cfg($cfg)])? { n += 1; } )+
-                n
-            };
-
-            /// Every family, in the documented order.
-            pub const ALL: [Family; Family::COUNT] = {
-                // Filled in order; the Gaussian is a placeholder.
-                let mut all = [Family::Gaussian; Family::COUNT];
-                let mut i = 0;
-                $( $(#[cfg($cfg)])? { all[i] = Family::$variant; i += 1; } )+
-                let _ = i;
-                all
-            };
-
-            /// The name users type and read (CLI flags, JSON, the bindings).
-            pub const fn name(self) -> &'static str {
-                match self { $( $(#[cfg($cfg)])? Family::$variant => $name, )+ }
-            }
-
             /// Whether the family is made of measured heights.
             fn takes_heights(self) -> bool {
                 match self { $( $(#[cfg($cfg)])? Family::$variant => <$ty as DistributionFamily>::TAKES_HEIGHTS, )+ }
@@ -123,7 +103,7 @@ macro_rules! families {
             }
         }
 
-        crate::named!(@common Family, "distribution");
+        crate::named!(Family, "distribution", [ $( $(#[cfg($cfg)])? $variant = $name ),+ ]);
 
         /// The forms of a [`Density`]'s logarithm, one a family.
         #[derive(Debug, Clone)]
