@@ -37,9 +37,20 @@ pub fn materials_needed(flag: &str) -> String {
 }
 
 /// `missing` left out of the SI inputs `all` (flags) that go together.
-pub fn missing_together(missing: &str, all: &[impl AsRef<str>]) -> String {
+fn missing_together(missing: &str, all: &[impl AsRef<str>]) -> String {
     let all: Vec<&str> = all.iter().map(AsRef::as_ref).collect();
     format!("{missing}: missing: the SI inputs go together ({})", all.join(", "))
+}
+
+/// The values of inputs that go together (`(flag, value)` pairs), in
+/// order, or the message naming the first one left out (`--nu1:
+/// missing: the SI inputs go together (…)`).
+pub fn together(given: &[(&str, Option<f64>)]) -> Result<Vec<f64>, String> {
+    if let Some((missing, _)) = given.iter().find(|(_, v)| v.is_none()) {
+        let all: Vec<&str> = given.iter().map(|(f, _)| *f).collect();
+        return Err(missing_together(missing, &all));
+    }
+    Ok(given.iter().map(|(_, v)| v.unwrap_or_default()).collect())
 }
 
 /// A surface whose heights the distribution `family` asks for (`None`:
@@ -114,6 +125,14 @@ mod tests {
         assert_eq!(
             missing_together("--nu1", &["--e1", "--nu1"]),
             "--nu1: missing: the SI inputs go together (--e1, --nu1)"
+        );
+        assert_eq!(
+            together(&[("--e1", Some(1.0)), ("--nu1", None)]),
+            Err("--nu1: missing: the SI inputs go together (--e1, --nu1)".to_string())
+        );
+        assert_eq!(
+            together(&[("--e1", Some(1.0)), ("--nu1", Some(0.3))]),
+            Ok(vec![1.0, 0.3])
         );
         assert_eq!(
             distribution_failure("e", Some(Family::Empirical)),

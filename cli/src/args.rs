@@ -267,12 +267,11 @@ impl MaterialsArgs {
     /// listing the others that go with it (`extra`: the flags of the
     /// roughness that go with them, if any).
     pub fn materials(&self, extra: &[(&'static str, Option<f64>)]) -> Result<Materials, Failure> {
-        let given = self.given();
-        if let Some((flag, _)) = given.iter().chain(extra).find(|(_, v)| v.is_none()) {
-            let all: Vec<&str> = given.iter().chain(extra).map(|(f, _)| *f).collect();
-            return Err(Failure::input(ke_friction::flags::missing_together(flag, &all)));
-        }
-        Ok(Materials::from_array(given.map(|(_, v)| v.unwrap_or_default())))
+        let given: Vec<(&str, Option<f64>)> = self.given().into_iter().chain(extra.iter().copied()).collect();
+        let values = ke_friction::flags::together(&given).map_err(Failure::input)?;
+        let mut seven = [0.0; 7];
+        seven.copy_from_slice(&values[..7]);
+        Ok(Materials::from_array(seven))
     }
 }
 

@@ -11,12 +11,12 @@
 
 use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Format, ReadError, ReadOptions,
-    ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
+    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation, Format, ReadError,
+    ReadOptions, ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
-    Warning, Warnings,
+    Warnings,
 };
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
@@ -132,10 +132,6 @@ fn quote(word: &str) -> String {
 }
 
 /// One measured surface analysed as `kefric surface` does.
-/// The model's inputs, and with a load its friction and that result's
-/// warnings ([`Analysis::evaluate`]).
-type Evaluated = (Option<Params>, Option<Friction>, Vec<Warning>);
-
 #[wasm_bindgen]
 pub struct Analysis {
     name: String,
@@ -240,24 +236,16 @@ impl Analysis {
             load.pressure()
                 .map_err(|e| format!("{}: {e}", flag(e.name.split(' ').next().unwrap_or(e.name))))?;
         }
-        let given: Vec<Option<f64>> = Materials::FIELDS
+        let names: Vec<String> = Materials::FIELDS.iter().map(|k| flag(k)).collect();
+        let given: Vec<(&str, Option<f64>)> = names
             .iter()
-            .map(|k| options.number(k))
-            .collect::<Result<_, _>>()?;
-        let materials = if given.iter().any(Option::is_some) {
-            if let Some(k) = Materials::FIELDS
-                .iter()
-                .zip(&given)
-                .find_map(|(k, v)| v.is_none().then_some(k))
-            {
-                let all: Vec<String> = Materials::FIELDS.iter().map(|k| flag(k)).collect();
-                return Err(flags::missing_together(&flag(k), &all));
-            }
-            let mut v = [0.0; 7];
-            for (v, given) in v.iter_mut().zip(&given) {
-                *v = given.unwrap_or_default();
-            }
-            Some(Materials::from_array(v))
+            .zip(Materials::FIELDS)
+            .map(|(name, k)| Ok((name.as_str(), options.number(k)?)))
+            .collect::<Result<_, String>>()?;
+        let materials = if given.iter().any(|(_, v)| v.is_some()) {
+            let mut seven = [0.0; 7];
+            seven.copy_from_slice(&flags::together(&given)?);
+            Some(Materials::from_array(seven))
         } else {
             let needs = if options.get("distribution").is_some() {
                 Some("--distribution")
@@ -298,13 +286,17 @@ impl Analysis {
             warnings: Warnings::new(),
             record: String::new(),
         };
-        let (params, friction, load_warnings) = analysis.evaluate(&analysis.surface, analysis.load)?;
+        let evaluation = analysis.evaluate(&analysis.surface, analysis.load)?;
         // The warnings as the CLI records them: the statistics' and the load's.
         let mut warnings = Warnings::new();
         warnings.extend(analysis.surface.stats().warnings.iter().cloned());
-        if friction.is_some() {
-            warnings.note(load_warnings);
+        if let Some(e) = &evaluation {
+            e.note_into(&mut warnings);
         }
+        let (params, friction) = match evaluation {
+            Some(mut e) => (Some(e.params), e.frictions.pop()),
+            None => (None, None),
+        };
         let record = SurfaceRecord::new(
             vec![name.to_string()],
             &analysis.surface,
@@ -321,10 +313,10 @@ impl Analysis {
 
     /// The model's inputs of `surface` with the materials and, with `load`,
     /// the friction and its warnings ([`Surface::evaluate`], its failure
-    /// in the CLI's words).
-    fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<Evaluated, String> {
+    /// in the CLI's words); `None` without materials.
+    fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<Option<Evaluation>, String> {
         let Some(materials) = self.materials else {
-            return Ok((None, None, Vec::new()));
+            return Ok(None);
         };
         let how = SurfaceModel {
             materials,
@@ -332,10 +324,10 @@ impl Analysis {
             fit: self.fit,
             kind: self.model_kind,
         };
-        let mut e = surface
+        surface
             .evaluate(&how, load.as_slice())
-            .map_err(|e| flags::evaluate_failure(&e, self.family, self.load_flag()))?;
-        Ok((Some(e.params), e.frictions.pop(), e.warnings.pop().unwrap_or_default()))
+            .map(Some)
+            .map_err(|e| flags::evaluate_failure(&e, self.family, self.load_flag()))
     }
 
     fn load_flag(&self) -> &'static str {
@@ -387,14 +379,13 @@ impl Analysis {
                     Ok(surface) => {
                         r["beta"] = surface.stats().beta.into();
                         match self.evaluate(surface, self.load) {
-                            Ok((params, friction, _)) => {
-                                if let Some(p) = params {
-                                    r["psi"] = p.psi.into();
-                                }
-                                if let Some(f) = friction {
+                            Ok(Some(e)) => {
+                                r["psi"] = e.params.psi.into();
+                                if let Some(f) = e.frictions.first() {
                                     r["mu"] = f.mu.into();
                                 }
                             }
+                            Ok(None) => {}
                             Err(e) => r["error"] = e.into(),
                         }
                     }
