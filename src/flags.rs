@@ -92,20 +92,28 @@ pub fn no_interval(file: impl Display, name: &str) -> String {
     )
 }
 
-/// The reliability cut-off (m) of a scanning probe of tip radius `radius`
-/// (m, `--tip-radius`) on `t`, with the safety factor
-/// [`TIP_SAFETY_FACTOR`](crate::topography::TIP_SAFETY_FACTOR); `None`
-/// when the data show no tip artefact.
+/// The instrument's reliability cut-off (m) on `t`: `resolution`
+/// (`--resolution`) as given, or that of a scanning probe of tip radius
+/// `tip_radius` (m, `--tip-radius`) with the safety factor
+/// [`TIP_SAFETY_FACTOR`](crate::topography::TIP_SAFETY_FACTOR), `None`
+/// when the data show no tip artefact; [`RELIABILITY_NEEDED`] without
+/// either.
 #[cfg(feature = "topography")]
-pub fn tip_cutoff(t: &crate::topography::Topography, radius: f64) -> Result<Option<f64>, String> {
+pub fn reliability_cutoff(
+    t: &crate::topography::Topography,
+    resolution: Option<f64>,
+    tip_radius: Option<f64>,
+) -> Result<Option<f64>, String> {
     use crate::topography::{tip_reliability_cutoff, TIP_SAFETY_FACTOR};
-    if !(radius.is_finite() && radius > 0.0) {
-        return Err(format!(
+    match (resolution, tip_radius) {
+        (Some(r), _) => Ok(Some(r)),
+        (None, Some(radius)) if !(radius.is_finite() && radius > 0.0) => Err(format!(
             "--tip-radius {} is out of range: must be > 0 (metres)",
             crate::Shortest(radius)
-        ));
+        )),
+        (None, Some(radius)) => tip_reliability_cutoff(t, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string()),
+        (None, None) => Err(RELIABILITY_NEEDED.into()),
     }
-    tip_reliability_cutoff(t, radius, TIP_SAFETY_FACTOR).map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

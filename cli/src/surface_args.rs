@@ -109,11 +109,7 @@ impl SurfaceArgs {
     /// The instrument's reliability cut-off (m): --resolution as given, or
     /// from --tip-radius; `None` when the data show no tip artefact.
     pub fn reliability(&self, t: &Topography) -> Result<Option<f64>, String> {
-        match (self.resolution, self.tip_radius) {
-            (Some(r), _) => Ok(Some(r)),
-            (None, Some(radius)) => flags::tip_cutoff(t, radius),
-            (None, None) => Err(flags::RELIABILITY_NEEDED.into()),
-        }
+        flags::reliability_cutoff(t, self.resolution, self.tip_radius)
     }
 
     /// The topography in `path`; `flag` names the input in messages.

@@ -199,13 +199,7 @@ impl Analysis {
         // The reliability cut-off and λs as `--tip-radius`, `--resolution`
         // and `--lambda-s [auto]` give them.
         let (resolution, tip_radius) = (options.number("resolution")?, options.number("tip_radius")?);
-        let reliability = || -> Result<Option<f64>, String> {
-            match (resolution, tip_radius) {
-                (Some(r), _) => Ok(Some(r)),
-                (None, Some(radius)) => flags::tip_cutoff(&topography, radius),
-                (None, None) => Err(flags::RELIABILITY_NEEDED.into()),
-            }
-        };
+        let reliability = || flags::reliability_cutoff(&topography, resolution, tip_radius);
         let lambda_s = match options.get("lambda_s") {
             None => None,
             Some("auto") => reliability().map_err(|e| format!("surface: {name}: --lambda-s auto: {e}"))?,
