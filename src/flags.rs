@@ -37,8 +37,7 @@ pub fn materials_needed(flag: &str) -> String {
 }
 
 /// `missing` left out of the SI inputs `all` (flags) that go together.
-fn missing_together(missing: &str, all: &[impl AsRef<str>]) -> String {
-    let all: Vec<&str> = all.iter().map(AsRef::as_ref).collect();
+fn missing_together(missing: &str, all: &[&str]) -> String {
     format!("{missing}: missing: the SI inputs go together ({})", all.join(", "))
 }
 
