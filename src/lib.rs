@@ -50,7 +50,6 @@ mod error;
 pub mod export;
 #[cfg(feature = "plot")]
 pub mod figures;
-pub mod flags;
 mod gw;
 #[cfg(feature = "builder")]
 mod io;

@@ -41,7 +41,7 @@ pub fn fields<'a, const N: usize>(flag: &str, text: &'a str, sep: char, form: &s
 }
 
 /// The flag that sets a [`ke_friction::Params`] field, for messages.
-pub use ke_friction::flags::flag as flag_of;
+pub use crate::words::flag as flag_of;
 
 /// Fails early (before long work) if the file `path`, given by `flag`,
 /// cannot be written: a directory, no file name, or a parent directory
@@ -258,6 +258,11 @@ impl MaterialsArgs {
         ]
     }
 
+    /// The values, in the order of [`Materials`]' fields.
+    pub fn values(&self) -> [Option<f64>; 7] {
+        self.given().map(|(_, v)| v)
+    }
+
     /// Whether any of the flags is given.
     pub fn any(&self) -> bool {
         self.given().iter().any(|(_, v)| v.is_some())
@@ -268,7 +273,7 @@ impl MaterialsArgs {
     /// roughness that go with them, if any).
     pub fn materials(&self, extra: &[(&'static str, Option<f64>)]) -> Result<Materials, Failure> {
         let given: Vec<(&str, Option<f64>)> = self.given().into_iter().chain(extra.iter().copied()).collect();
-        let values = ke_friction::flags::together(&given).map_err(Failure::input)?;
+        let values = crate::words::together(&given).map_err(Failure::input)?;
         let mut seven = [0.0; 7];
         seven.copy_from_slice(&values[..7]);
         Ok(Materials::from_array(seven))
@@ -279,7 +284,7 @@ impl MaterialsArgs {
 /// flag: `--density` for β (it is the last of η, R, σ one tunes),
 /// `roughness` for the dimensionless results (ψ, θ, ν, ε*).
 pub fn physical_failure(e: ke_friction::ParamError, roughness: &str) -> Failure {
-    Failure::input(format!("{}: {e}", ke_friction::flags::param_flag(e.name, roughness)))
+    Failure::input(format!("{}: {e}", crate::words::param_flag(e.name, roughness)))
 }
 
 /// The help heading the SI inputs are declared under; [`help_headings`]

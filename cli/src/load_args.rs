@@ -3,6 +3,7 @@
 
 use crate::args::{flag_of, number, parse_f64};
 use crate::output::Failure;
+use ke_friction::topography::LoadInputs;
 use ke_friction::Load;
 
 /// Spacing of the points of a range.
@@ -102,6 +103,19 @@ impl LoadArgs {
             .as_deref()
             .or(self.pressure.as_deref())
             .is_some_and(|t| t.contains(':'))
+    }
+
+    /// The loads as given (ranges spaced), for the core's request, which
+    /// checks them.
+    pub fn inputs(&self) -> Result<LoadInputs, Failure> {
+        let spaced = |flag: &str, text: &Option<String>| -> Result<Option<Vec<f64>>, Failure> {
+            text.as_deref().map(|t| points(flag, t, Spacing::Log)).transpose()
+        };
+        Ok(LoadInputs {
+            force: spaced("--force", &self.force)?,
+            area: self.area,
+            pressure: spaced("--pressure", &self.pressure)?,
+        })
     }
 
     /// The loads, if given: one, or COUNT spaced logarithmically from

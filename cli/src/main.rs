@@ -40,6 +40,7 @@ mod surface;
 mod surface_args;
 mod validate;
 mod verify;
+mod words;
 
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use output::Failure;

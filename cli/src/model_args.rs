@@ -95,7 +95,7 @@ impl ModelArgs {
             fit: self.constants.fit,
             kind: self.constants.model,
         };
-        let params = crate::surface_args::params(&surface, &how)?;
+        let params = crate::surface_args::params(&surface, &how, ke_friction::topography::Field::Force)?;
         let source = SurfaceSource {
             physical: surface.physical(&materials),
             files: self.surface.iter().map(|p| p.display().to_string()).collect(),
@@ -133,7 +133,7 @@ impl ModelArgs {
         let (params, source) = self.params_and_source()?;
         let model = Model::new(params).map_err(|e| {
             let flag = if !self.surface.is_empty() {
-                ke_friction::flags::WITH_MATERIALS.to_string()
+                ke_friction::topography::WITH_MATERIALS.to_string()
             } else if self.si.any() {
                 "SI inputs".to_string()
             } else {

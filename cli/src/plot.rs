@@ -296,7 +296,7 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
         .file_name()
         .map_or_else(|| path.display().to_string(), |n| n.to_string_lossy().into_owned());
     let t = a.read.read("surface", path)?;
-    let options = a.read.options_for("surface", path, &t)?;
+    let (options, cutoff) = a.read.options_for("surface", path, &t)?;
     let page = if a.psd {
         let detrended = t
             .detrended_topography(options.detrend)
@@ -313,13 +313,7 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
     } else {
         let load = a.load.load()?;
         let materials = a.materials.any().then(|| a.materials.materials(&[])).transpose()?;
-        let cutoff = match (a.read.resolution, a.read.tip_radius) {
-            (None, None) => None,
-            _ => a
-                .read
-                .reliability(&t)
-                .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
-        };
+        let cutoff = cutoff.value();
         let range = ScanRange {
             per_decade: a.per_decade,
             ..ScanRange::default_for(&t)

@@ -5,6 +5,7 @@
 use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::{evaluate, Args};
+use crate::surface_args::request_failure;
 use ke_friction::topography::{
     default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
 };
@@ -44,23 +45,11 @@ const SCAN_COLUMNS: [(&str, &str); 16] = [
 pub fn run_scan(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scan")?;
     let load = args.load.load()?;
-    let materials = args
-        .materials
-        .any()
-        .then(|| args.materials.materials(&[]))
-        .transpose()?;
-    if load.is_some() && materials.is_none() {
-        return Err(Failure::input(ke_friction::flags::materials_needed(args.load.flag())));
-    }
-    let read = &args.read;
-    let t = read.read("surface", path)?;
-    let options = read.options_for("surface", path, &t)?;
-    let cutoff = match (read.resolution, read.tip_radius) {
-        (None, None) => None,
-        _ => read
-            .reliability(&t)
-            .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
-    };
+    let request = args.request()?;
+    let materials = request.check().map_err(|e| request_failure("surface", e))?.materials;
+    let t = args.read.read("surface", path)?;
+    let (options, cutoff) = args.read.options_for("surface", path, &t)?;
+    let cutoff = cutoff.value();
     let default = ScanRange::default_for(&t);
     let range = ScanRange {
         from: args.from.unwrap_or(default.from),
@@ -246,12 +235,8 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
     let t = read.read("surface", path)?;
     let failed =
         |e: ke_friction::topography::ScaleError| Failure::of(format!("--scale-dependent: {}", path.display()), e);
-    let cutoff = match (read.resolution, read.tip_radius) {
-        (None, None) => None,
-        _ => read
-            .reliability(&t)
-            .map_err(|e| Failure::input(format!("surface: {}: {e}", path.display())))?,
-    };
+    let (_, cutoff) = read.options_for("surface", path, &t)?;
+    let cutoff = cutoff.value();
     let distances = default_distances(&t, 1);
     let slope = scale_dependent_slope(&t, &distances).map_err(failed)?;
     let curvature = scale_dependent_curvature(&t, &distances).map_err(failed)?;

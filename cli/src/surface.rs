@@ -6,8 +6,10 @@
 use crate::args::{named, parse_f64, MaterialsArgs};
 use crate::load_args::LoadArgs;
 use crate::output::{sig, Failure};
-use crate::surface_args::{intervals, SurfaceArgs};
-use ke_friction::topography::{Format, Surface, SurfaceModel, SurfaceRecord, SurfaceStats};
+use crate::surface_args::{intervals, request_failure, SurfaceArgs};
+use ke_friction::topography::{
+    Format, Sensitivity, Source, Surface, SurfaceRecord, SurfaceRequest, SurfaceStats, SENSITIVITY_FAMILIES,
+};
 use ke_friction::{Family, Fit, Friction, Load, Materials, ModelKind, Params, Warnings};
 use std::path::PathBuf;
 
@@ -44,6 +46,9 @@ pub struct Args {
     pub model: ModelKind,
     #[command(flatten)]
     pub load: LoadArgs,
+    /// With a load: μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too, beside μ (`off`: the single number, faster).
+    #[arg(long, value_enum, default_value_t = OnOff::On)]
+    pub sensitivity: OnOff,
     /// Print one JSON object (SI units; the library's record names).
     #[arg(long)]
     pub json: bool,
@@ -99,6 +104,31 @@ fn formats_help() -> String {
     help
 }
 
+/// `--sensitivity`: μ under the other height models and at the band's
+/// ends beside each μ, or not.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum OnOff {
+    /// Computed and shown.
+    On,
+    /// Not computed (the single number, faster).
+    Off,
+}
+
+impl Args {
+    /// The request of the flags (the files apart).
+    pub fn request(&self) -> Result<SurfaceRequest, Failure> {
+        Ok(SurfaceRequest {
+            materials: self.materials.values(),
+            distribution: self.distribution,
+            fit: self.fit,
+            model: self.model,
+            loads: self.load.inputs()?,
+            sensitivity: self.sensitivity == OnOff::On,
+            ..self.read.request()
+        })
+    }
+}
+
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
     // --scan, --psd and --scale-dependent run from main.rs (scale.rs).
@@ -107,37 +137,25 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
         ));
     }
-    let loads = args.load.loads()?;
-    let surface = args.read.surface("surface", &args.files)?;
-    let materials = if args.materials.any() {
-        Some(args.materials.materials(&[])?)
-    } else {
-        if let Some(flag) = [
-            (args.distribution.is_some(), "--distribution"),
-            (loads.is_some(), args.load.flag()),
-        ]
-        .iter()
-        .find_map(|(given, flag)| given.then_some(*flag))
-        {
-            return Err(Failure::input(ke_friction::flags::materials_needed(flag)));
-        }
-        None
-    };
-    let loads = loads.unwrap_or_default();
-    let (params, friction, warnings) = evaluate(&args, &surface, materials.as_ref(), &loads)?;
-    crate::output::warn(&warnings);
+    let request = args.request()?;
+    let sources: Vec<Source> = args.files.iter().map(|p| Source::Path(p)).collect();
+    let analysis = request.run(&sources).map_err(|e| request_failure("surface", e))?;
+    crate::output::warn(&analysis.warnings);
+    let surface = &analysis.surface;
+    let params = analysis.evaluation.as_ref().map(|e| &e.params);
+    let friction: &[Friction] = analysis.evaluation.as_ref().map_or(&[], |e| &e.frictions);
     if args.json {
         let files = args.files.iter().map(|p| p.display().to_string()).collect();
-        let record = SurfaceRecord::new(files, &surface, params.as_ref(), None)
-            .with_frictions(&friction, args.load.is_range())
-            .with_warnings(&warnings);
+        let record = SurfaceRecord::new(files, surface, params, None)
+            .with_sensitivity(friction, &analysis.sensitivity, args.load.is_range())
+            .with_warnings(&analysis.warnings);
         outln!(
             "{}",
             serde_json::to_string(&record).expect("a surface record serialises")
         )?;
         return Ok(());
     }
-    print_text(&args, &surface, params.as_ref(), &friction)
+    print_text(&args, surface, params, friction, &analysis.sensitivity)
 }
 
 /// The model's inputs of `surface` with `materials`, and with loads μ at
@@ -153,18 +171,41 @@ pub fn evaluate(
     let Some(materials) = materials else {
         return Ok((None, Vec::new(), warnings));
     };
-    let how = SurfaceModel {
-        materials: *materials,
-        family: args.distribution,
-        fit: args.fit,
-        kind: args.model,
+    let request = SurfaceRequest {
+        sensitivity: false,
+        ..args.request()?
     };
-    let e = crate::surface_args::evaluate(surface, &how, loads, args.load.flag())?;
+    let e = request
+        .evaluate(surface, *materials, loads)
+        .map_err(|e| request_failure("surface", e))?;
     e.note_into(&mut warnings);
     Ok((Some(e.params), e.frictions, warnings))
 }
 
-fn print_text(args: &Args, surface: &Surface, params: Option<&Params>, friction: &[Friction]) -> Result<(), Failure> {
+/// The sensitivity of one μ in a line: the range and which choice gives
+/// which end.
+fn sensitivity_line(s: &Sensitivity) -> Option<String> {
+    let ((lo_what, lo), (hi_what, hi)) = s.range()?;
+    Some(format!(
+        "{} to {} ({lo_what} to {hi_what}; height models {}, band lambda_s {})",
+        sig(lo),
+        sig(hi),
+        SENSITIVITY_FAMILIES.map(|f| f.name()).join("/"),
+        s.lambda_s
+            .iter()
+            .map(|b| format!("{} m", sig(b.lambda_s)))
+            .collect::<Vec<_>>()
+            .join(" to ")
+    ))
+}
+
+fn print_text(
+    args: &Args,
+    surface: &Surface,
+    params: Option<&Params>,
+    friction: &[Friction],
+    sensitivity: &[Sensitivity],
+) -> Result<(), Failure> {
     let s = surface.stats();
     let shape = |s: &SurfaceStats| {
         if s.dy.is_some() {
@@ -245,6 +286,9 @@ fn print_text(args: &Args, surface: &Surface, params: Option<&Params>, friction:
         }
         row("F* = F/(A_n H)", sig(f.contact.f_star).to_string(), "")?;
         row("mu", sig(f.mu).to_string(), "")?;
+        if let Some(line) = sensitivity.first().and_then(sensitivity_line) {
+            outln!("{:<28} {line}", "mu sensitivity")?;
+        }
         match f.friction_force {
             Some(q) => row("Q = mu F (friction force)", sig(q).to_string(), "N")?,
             None => row("mu F/A_n (friction stress)", sig(f.friction_stress).to_string(), "Pa")?,

@@ -4,12 +4,11 @@
 
 use crate::args::{named, parse_f64};
 use crate::output::{sig, Failure};
-use ke_friction::flags;
 use ke_friction::topography::{
-    read_dy_defaulting_to_dx, read_file, Channel, Derivative, Detrend, EvaluateError, Evaluation, ReadError,
-    ReadOptions, StatsOptions, Surface, SurfaceModel, SurfaceStats, Topography, MAX_POINTS,
+    evaluate_failure, Channel, Cutoff, Derivative, Detrend, EvaluateError, Field, LambdaS, RequestError, Source,
+    StatsOptions, Surface, SurfaceModel, SurfaceRequest, SurfaceStats, Topography, MAX_POINTS,
 };
-use ke_friction::{Classify, LengthUnit, Load, Model, Params, Shortest};
+use ke_friction::{LengthUnit, Model, Params};
 use std::path::{Path, PathBuf};
 
 /// How a surface file is read and its statistics taken.
@@ -42,7 +41,7 @@ pub struct SurfaceArgs {
     pub channel: Option<Channel>,
     /// S-filter nesting index λs in metres (ISO 16610-61 Gaussian, 50 % transmission at λs): wavelengths shorter than λs are removed before the statistics; `auto` = the reliability cut-off of --tip-radius or --resolution. At least 2·max(dx, dy).
     #[arg(long, value_name = "M|auto", value_parser = parse_lambda)]
-    pub lambda_s: Option<Lambda>,
+    pub lambda_s: Option<LambdaS>,
     /// L-filter nesting index λc in metres (ISO 16610-61 Gaussian): form and waviness longer than λc are removed (the roughness is z minus its Gaussian mean at λc), after the detrending. At most the scan size.
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
     pub lambda_c: Option<f64>,
@@ -54,25 +53,53 @@ pub struct SurfaceArgs {
     pub resolution: Option<f64>,
 }
 
-/// `--lambda-s`: a length or `auto`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Lambda {
-    /// Metres.
-    Metres(f64),
-    /// The reliability cut-off.
-    Auto,
+fn parse_lambda(s: &str) -> Result<LambdaS, String> {
+    if s == "auto" {
+        Ok(LambdaS::Auto)
+    } else {
+        parse_f64(s).map(LambdaS::Metres)
+    }
 }
 
-fn parse_lambda(s: &str) -> Result<Lambda, String> {
-    if s == "auto" {
-        Ok(Lambda::Auto)
-    } else {
-        parse_f64(s).map(Lambda::Metres)
+/// A request's failure in the CLI's words: each input its flag, the file
+/// `flag` (the command, `surface`, or `--surface`).
+pub fn request_failure(flag: &str, e: RequestError) -> Failure {
+    Failure::classified(e.render(&spell(flag)), e.kind)
+}
+
+/// The CLI's spelling of a request's inputs: `--` and the name (the file:
+/// `flag`).
+pub fn spell(flag: &str) -> impl Fn(Field) -> String + '_ {
+    move |f| {
+        if f == Field::File {
+            flag.to_string()
+        } else {
+            f.flag()
+        }
     }
 }
 
 impl SurfaceArgs {
-    /// The options of the statistics.
+    /// The request of these flags (no materials, model or loads yet).
+    pub fn request(&self) -> SurfaceRequest {
+        SurfaceRequest {
+            dx: self.dx,
+            dy: self.dy,
+            z_unit: self.z_unit.metres(),
+            xy_unit: self.xy_unit.metres(),
+            max_points: self.max_points.unwrap_or(MAX_POINTS),
+            channel: self.channel.clone(),
+            detrend: self.detrend,
+            derivative: self.derivative,
+            lambda_s: self.lambda_s,
+            lambda_c: self.lambda_c,
+            tip_radius: self.tip_radius,
+            resolution: self.resolution,
+            ..SurfaceRequest::default()
+        }
+    }
+
+    /// The options of the statistics (no filters).
     pub fn options(&self) -> StatsOptions {
         StatsOptions {
             detrend: self.detrend,
@@ -82,108 +109,34 @@ impl SurfaceArgs {
         }
     }
 
-    /// The options of the statistics of `t`: the filters' nesting indices
-    /// included (`--lambda-s auto`: the reliability cut-off).
-    pub fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<StatsOptions, Failure> {
-        let lambda_s = match self.lambda_s {
-            None => None,
-            Some(Lambda::Metres(m)) => Some(m),
-            Some(Lambda::Auto) => match self.reliability(t) {
-                Ok(Some(cutoff)) => Some(cutoff),
-                Ok(None) => None,
-                Err(e) => {
-                    return Err(Failure::input(format!(
-                        "{flag}: {}: --lambda-s auto: {e}",
-                        path.display()
-                    )))
-                }
-            },
-        };
-        Ok(StatsOptions {
-            lambda_s,
-            lambda_c: self.lambda_c,
-            ..self.options()
-        })
-    }
-
-    /// The instrument's reliability cut-off (m): --resolution as given, or
-    /// from --tip-radius; `None` when the data show no tip artefact.
-    pub fn reliability(&self, t: &Topography) -> Result<Option<f64>, String> {
-        flags::reliability_cutoff(t, self.resolution, self.tip_radius)
+    /// The reliability cut-off of `t` (read from `path`) and the
+    /// statistics' options with it (`--lambda-s auto`).
+    pub fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<(StatsOptions, Cutoff), Failure> {
+        let request = self.request();
+        let name = path.display().to_string();
+        let cutoff = request.cutoff(t, &name).map_err(|e| request_failure(flag, e))?;
+        let options = request
+            .stats_options(cutoff, &name)
+            .map_err(|e| request_failure(flag, e))?;
+        Ok((options, cutoff))
     }
 
     /// The topography in `path`; `flag` names the input in messages.
-    pub fn read(&self, flag: &str, path: &Path) -> Result<ke_friction::topography::Topography, Failure> {
-        let metres = self.xy_unit.metres();
-        let interval = |name: &str, v: Option<f64>| -> Result<Option<f64>, Failure> {
-            match v {
-                Some(v) if v <= 0.0 => Err(Failure::input(format!(
-                    "--{name}: {} is out of range: must be > 0",
-                    Shortest(v)
-                ))),
-                v => Ok(v.map(|v| v * metres)),
-            }
-        };
-        let dx = interval("dx", self.dx)?;
-        let dy = interval("dy", self.dy)?;
-        let options = |dy: Option<f64>| ReadOptions {
-            dx,
-            dy,
-            z_unit: self.z_unit.metres(),
-            xy_unit: metres,
-            max_points: self.max_points.unwrap_or(MAX_POINTS),
-            channel: self.channel.clone(),
-            ..ReadOptions::default()
-        };
-        let read = read_dy_defaulting_to_dx(&options(dy), |options| read_file(path, options));
-        read.map_err(|e| match e {
-            ReadError::NeedInterval { path, name } => {
-                Failure::input(flags::no_interval(format!("{flag}: {}", path.display()), name))
-            }
-            ReadError::Conflict {
-                path,
-                name,
-                file,
-                option,
-            } => Failure::input(format!(
-                "{flag}: {}: the file gives {name} = {} m, --{name} {} m: leave --{name} out to use the file's",
-                path.display(),
-                Shortest(file),
-                Shortest(option)
-            )),
-            e => Failure::of(flag, e),
-        })
+    pub fn read(&self, flag: &str, path: &Path) -> Result<Topography, Failure> {
+        let request = self.request();
+        request.check().map_err(|e| request_failure(flag, e))?;
+        request.read(Source::Path(path)).map_err(|e| request_failure(flag, e))
     }
 
     /// The surface of one file, or the equivalent surface of two.
     pub fn surface(&self, flag: &str, files: &[PathBuf]) -> Result<Surface, Failure> {
-        let stats_failure =
-            |e: ke_friction::topography::StatsError, what: String| Failure::of(format!("{flag} {what}"), e);
-        let name = |p: &PathBuf| p.display().to_string();
-        let one = |p: &PathBuf| {
-            let t = self.read(flag, p)?;
-            let options = self.options_for(flag, p, &t)?;
-            let cutoff = match (self.resolution, self.tip_radius) {
-                (None, None) => None,
-                _ => self
-                    .reliability(&t)
-                    .map_err(|e| Failure::input(format!("{flag}: {}: {e}", p.display())))?,
-            };
-            let mut surface = Surface::new(t, options).map_err(|e| stats_failure(e, name(p)))?;
-            if let Some(cutoff) = cutoff {
-                surface.check_reliability(cutoff);
-            }
-            Ok(surface)
-        };
-        match files {
-            [single] => one(single),
-            [a, b] => {
-                // Each surface's own failure names its file; the pair's
-                // (a profile with a map) names both.
-                Surface::join(one(a)?, one(b)?).map_err(|e| stats_failure(e, format!("{} + {}", name(a), name(b))))
-            }
-            _ => Err(Failure::input(format!("{flag}: give one surface file or two"))),
-        }
+        let request = self.request();
+        request.check().map_err(|e| request_failure(flag, e))?;
+        let sources: Vec<Source> = files.iter().map(|p| Source::Path(p)).collect();
+        request
+            .surface(&sources)
+            .map(|(s, _)| s)
+            .map_err(|e| request_failure(flag, e))
     }
 }
 
@@ -202,24 +155,18 @@ pub fn intervals(s: &SurfaceStats) -> String {
     text
 }
 
-/// [`Surface::evaluate`] with the CLI's failure ([`failure`]).
-pub fn evaluate(surface: &Surface, how: &SurfaceModel, loads: &[Load], load_flag: &str) -> Result<Evaluation, Failure> {
-    surface.evaluate(how, loads).map_err(|e| failure(e, how, load_flag))
-}
-
 /// [`Surface::model_params`] with the CLI's failure.
-pub fn params(surface: &Surface, how: &SurfaceModel) -> Result<Params, Failure> {
-    surface.model_params(how).map_err(|e| failure(e, how, ""))
+pub fn params(surface: &Surface, how: &SurfaceModel, load: Field) -> Result<Params, Failure> {
+    surface.model_params(how).map_err(|e| failure(e, how, load))
 }
 
 /// [`Surface::model`] with the CLI's failure.
 pub fn model(surface: &Surface, how: &SurfaceModel) -> Result<Model, Failure> {
-    surface.model(how).map_err(|e| failure(e, how, ""))
+    surface.model(how).map_err(|e| failure(e, how, Field::Force))
 }
 
-/// A failed step of a surface's evaluation in the CLI's words
-/// ([`flags::evaluate_failure`]; `load_flag` names a load's) with its
-/// error's exit status.
-fn failure(e: EvaluateError, how: &SurfaceModel, load_flag: &str) -> Failure {
-    Failure::classified(flags::evaluate_failure(&e, how.family, load_flag), e.kind())
+/// A failed step of a surface's evaluation in the CLI's words (`load`
+/// names a load's input).
+fn failure(e: EvaluateError, how: &SurfaceModel, load: Field) -> Failure {
+    request_failure("surface", evaluate_failure(&e, how.family, load))
 }

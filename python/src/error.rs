@@ -12,7 +12,7 @@
 //! read, else a `ValueError` (one over the points limit,
 //! `ReadError::TooManyPoints`, included: its message names the limit and
 //! `max_points`), but for `ReadError::OutOfMemory`, a `MemoryError`
-//! ([`read_error`]).
+//! (`SurfaceRequest`'s `out_of_memory`, in `surface.rs`).
 //!
 //! Errors of the binding itself (a wrong length or layout in a direct call
 //! of `_core`) are `ValueError`s too ([`value_error`]).
@@ -49,18 +49,6 @@ pub fn exception(kind: ErrorKind, message: String) -> PyErr {
 /// The exception of a core error.
 pub fn raise(e: impl Classify) -> PyErr {
     exception(e.kind(), e.to_string())
-}
-
-/// The exception of a surface file's read error: a `MemoryError` when
-/// the heights could not be allocated (`ReadError::OutOfMemory`), else as
-/// [`raise`] has it (`OSError` for a file that cannot be read, `ValueError`
-/// for one read whose content is bad, unsupported or over the points
-/// limit).
-pub fn read_error(e: ReadError) -> PyErr {
-    match e {
-        ReadError::OutOfMemory { .. } => PyMemoryError::new_err(e.to_string()),
-        e => raise(e),
-    }
 }
 
 /// A `ValueError` of the binding's own checks.

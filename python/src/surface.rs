@@ -4,12 +4,12 @@
 
 use crate::convert::{record, slice};
 use crate::distribution::DistributionCore;
-use crate::error::{exception, raise, read_error, value_error};
+use crate::error::{exception, raise, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
-    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError,
-    StatsOptions, Surface, Topography, Window, MAX_POINTS,
+    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, tip_reliability_cutoff,
+    Channel, Cutoff, Derivative, Detrend, Field, FilterError, LambdaS, LoadInputs, Psd, RequestError, ScanRange,
+    Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -52,58 +52,48 @@ fn options(detrend: &str, derivative: &str) -> PyResult<StatsOptions> {
     })
 }
 
-/// The safety factor of the tip-radius cut-off (Sanner et al. 2022, as
-/// `kefric surface --tip-radius` and SurfaceTopography take it).
-const SAFETY_FACTOR: f64 = 0.5;
-
-/// What is known of the instrument's reliability cut-off (m) of a
-/// topography: nothing (`Unknown`), or a cut-off that may be `None` (a
-/// tip whose radius distorts no scale of the data).
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Cutoff {
-    Unknown,
-    Known(Option<f64>),
-}
-
-impl Cutoff {
-    /// The cut-off of a `resolution` (taking precedence) or a
-    /// `tip_radius` on `t`, as `kefric surface --resolution/--tip-radius`.
-    fn of(t: &Topography, tip_radius: Option<f64>, resolution: Option<f64>) -> PyResult<Cutoff> {
-        match (resolution, tip_radius) {
-            (Some(r), _) => {
-                if !(r.is_finite() && r > 0.0) {
-                    return Err(value_error(format!(
-                        "resolution = {r:e} is out of range: must be > 0 and finite (metres)"
-                    )));
-                }
-                Ok(Cutoff::Known(Some(r)))
-            }
-            (None, Some(radius)) => tip_reliability_cutoff(t, radius, SAFETY_FACTOR)
-                .map(Cutoff::Known)
-                .map_err(|e| value_error(format!("tip_radius: {e}"))),
-            (None, None) => Ok(Cutoff::Unknown),
-        }
-    }
-
-    fn value(self) -> Option<f64> {
-        match self {
-            Cutoff::Unknown => None,
-            Cutoff::Known(c) => c,
-        }
-    }
+/// The cut-off of a `resolution` (taking precedence) or a `tip_radius` on
+/// `t`, as `kefric surface --resolution/--tip-radius` (the core's request).
+fn cutoff_of(t: &Topography, tip_radius: Option<f64>, resolution: Option<f64>) -> PyResult<Cutoff> {
+    let request = SurfaceRequest {
+        tip_radius,
+        resolution,
+        ..SurfaceRequest::default()
+    };
+    request.check().map_err(request_error)?;
+    request.cutoff(t, "the surface").map_err(request_error)
 }
 
 /// The S-filter's nesting index of the Python keywords: `lambda_s` metres,
 /// or with `auto` the reliability cut-off (none if the instrument
 /// distorts no scale; an error if nothing is known of it).
 fn lambda_s_of(lambda_s: Option<f64>, auto: bool, cutoff: Cutoff) -> PyResult<Option<f64>> {
-    match (auto, cutoff) {
-        (false, _) => Ok(lambda_s),
-        (true, Cutoff::Known(c)) => Ok(c),
-        (true, Cutoff::Unknown) => Err(value_error(
-            "lambda_s = \"auto\": give tip_radius or resolution for the reliability cut-off",
-        )),
+    let request = SurfaceRequest {
+        lambda_s: if auto {
+            Some(LambdaS::Auto)
+        } else {
+            lambda_s.map(LambdaS::Metres)
+        },
+        ..SurfaceRequest::default()
+    };
+    request
+        .stats_options(cutoff, "the surface")
+        .map(|o| o.lambda_s)
+        .map_err(request_error)
+}
+
+/// A request's failure as Python names its inputs (the keywords): the
+/// exception of its kind.
+pub fn request_error(e: RequestError) -> PyErr {
+    if e.out_of_memory {
+        return pyo3::exceptions::PyMemoryError::new_err(e.message.to_string());
     }
+    let message = if e.field == Field::File {
+        e.message.to_string()
+    } else {
+        e.to_string()
+    };
+    exception(e.kind, message)
 }
 
 /// The surface of `t` with `options`, its statistics checked against the
@@ -269,7 +259,7 @@ impl SurfaceCore {
             let cutoff = if no_cutoff {
                 Cutoff::Known(None)
             } else {
-                py.detach(|| Cutoff::of(&t, tip_radius, resolution))?
+                py.detach(|| cutoff_of(&t, tip_radius, resolution))?
             };
             lambda = Some(lambda_s_of(lambda_s, auto, cutoff)?);
             topographies.push((t, cutoff));
@@ -314,27 +304,32 @@ impl SurfaceCore {
         resolution: Option<f64>,
         channel: Option<String>,
     ) -> PyResult<SurfaceCore> {
-        let base = options(detrend, derivative)?;
-        let channel = channel.map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {}));
-        let read = ReadOptions {
-            channel,
+        let request = SurfaceRequest {
             dx,
             dy,
             z_unit,
             xy_unit,
             max_points: max_points.unwrap_or(MAX_POINTS),
-            ..ReadOptions::default()
+            channel: channel.map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {})),
+            detrend: detrend_of(detrend)?,
+            derivative: derivative_of(derivative)?,
+            lambda_s: if auto {
+                Some(LambdaS::Auto)
+            } else {
+                lambda_s.map(LambdaS::Metres)
+            },
+            lambda_c,
+            tip_radius,
+            resolution,
+            ..SurfaceRequest::default()
         };
-        let topography = py.detach(|| read_file(&path, &read)).map_err(read_error)?;
+        request.check().map_err(request_error)?;
+        let topography = py.detach(|| request.read(Source::Path(&path))).map_err(request_error)?;
         let name = path.display().to_string();
         let cutoff = py
-            .detach(|| Cutoff::of(&topography, tip_radius, resolution))
-            .map_err(|e| value_error(format!("{name}: {e}")))?;
-        let options = StatsOptions {
-            lambda_s: lambda_s_of(lambda_s, auto, cutoff)?,
-            lambda_c,
-            ..base
-        };
+            .detach(|| request.cutoff(&topography, &name))
+            .map_err(request_error)?;
+        let options = request.stats_options(cutoff, &name).map_err(request_error)?;
         SurfaceCore::build(py, vec![(topography, cutoff)], options, Some(&name))
     }
 
@@ -473,7 +468,7 @@ impl SurfaceCore {
         Vec<(f64, Option<bool>, Option<SurfaceCore>, Option<String>)>,
     )> {
         let t = self.single("scan")?;
-        let cutoff = match py.detach(|| Cutoff::of(t, tip_radius, resolution))? {
+        let cutoff = match py.detach(|| cutoff_of(t, tip_radius, resolution))? {
             Cutoff::Unknown => self.cutoff,
             known => known,
         };
@@ -663,6 +658,50 @@ impl SurfaceCore {
         let summaries: Vec<ke_friction::Summary<'_>> = warnings.summaries().collect();
         let out = serde_json::json!({ "records": records, "warnings": summaries });
         record(py, serde_json::to_string(&out))
+    }
+
+    /// The sensitivity of each load (lists as `friction`'s) with
+    /// `materials`, the height model `distribution` (None: the default),
+    /// `fit` and `model`: μ under each height model and at the two ends
+    /// of the band, the core's `Sensitivity` records (JSON list), each μ
+    /// the single evaluation with that option.
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (materials, distribution, fit, model, force, area, pressure))]
+    fn sensitivity<'py>(
+        &self,
+        py: Python<'py>,
+        materials: [f64; 7],
+        distribution: Option<&str>,
+        fit: &str,
+        model: &str,
+        force: Option<Vec<f64>>,
+        area: Option<Vec<f64>>,
+        pressure: Option<Vec<f64>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        use ke_friction::{Family, Fit, ModelKind, Named};
+        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
+        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
+        let mut loads = Vec::with_capacity(n);
+        for k in 0..n {
+            if let Some(load) = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k)).map_err(raise)? {
+                loads.push(load);
+            }
+        }
+        let options = self.surface.options();
+        let request = SurfaceRequest {
+            detrend: options.detrend,
+            derivative: options.derivative,
+            lambda_c: options.lambda_c,
+            materials: materials.map(Some),
+            distribution: distribution.map(Family::parse).transpose().map_err(value_error)?,
+            fit: Fit::parse(fit).map_err(value_error)?,
+            model: ModelKind::parse(model).map_err(value_error)?,
+            loads: LoadInputs::default(),
+            ..SurfaceRequest::default()
+        };
+        let materials = Materials::from_array(materials);
+        let s = py.detach(|| request.sensitivity_of(&self.surface, self.cutoff, materials, &loads));
+        record(py, serde_json::to_string(&s))
     }
 
     /// The surface's warnings, one summary a kind (as `friction`'s).

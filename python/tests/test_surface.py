@@ -668,3 +668,23 @@ def test_x3p_files_of_another_writer(tmp_path, z_type, storage, revision):
     want = kf.Surface.from_heights(stored, 2e-6, 3e-6)
     assert got.stats == want.stats
     assert (got.stats["nx"], got.stats["ny"], got.stats["missing"]) == (nx, ny, 1)
+
+
+def test_sensitivity_values_are_the_single_runs(files):
+    """Each mu of Surface.friction's "sensitivity" is the single run with
+    that option: each height model, each end of the band (filtered at
+    that lambda_s); sensitivity=False leaves it out."""
+    paths, _ = files
+    s = kf.Surface.read(paths["b"], dx=DX, dy=DY)
+    f = s.friction(pressure=1e6, **MATERIALS)
+    sens = f["sensitivity"]
+    assert sorted(sens["distribution"]) == ["empirical", "gaussian", "pearson"]
+    for family, outcome in sens["distribution"].items():
+        single = s.friction(pressure=1e6, **MATERIALS, distribution=family, sensitivity=False)
+        assert "sensitivity" not in single
+        assert outcome["mu"] == pytest.approx(single["mu"], rel=1e-12, abs=0), family
+    assert len(sens["lambda_s"]) == 2
+    assert sens["lambda_s"][0]["lambda_s"] == pytest.approx(2 * max(DX, DY), rel=1e-15)
+    for end in sens["lambda_s"]:
+        single = s.filtered(lambda_s=end["lambda_s"]).friction(pressure=1e6, **MATERIALS, sensitivity=False)
+        assert end["mu"] == pytest.approx(single["mu"], rel=1e-12, abs=0), end

@@ -2,8 +2,7 @@
 //! friction at each load and its warnings: what every front end (the CLI's
 //! `kefric surface`, its scans and plots, the web page) asks of a surface,
 //! once, with an error that says which step failed
-//! ([`flags::evaluate_failure`](crate::flags::evaluate_failure) words it
-//! as the CLI does).
+//! ([`evaluate_failure`](super::evaluate_failure) names the input to blame).
 
 use super::Surface;
 use crate::{
@@ -176,7 +175,7 @@ impl Surface {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::flags::evaluate_failure;
+    use crate::topography::{evaluate_failure, Field};
     use crate::topography::{StatsOptions, Topography};
 
     fn surface() -> Surface {
@@ -222,14 +221,14 @@ mod tests {
             "{err:?}"
         );
         assert!(
-            evaluate_failure(&err, None, "--pressure").starts_with("--hardness: "),
+            evaluate_failure(&err, None, Field::Pressure).field == Field::Hardness,
             "{err}"
         );
 
         let err = s.evaluate(&how, &[Load::Pressure(-1.0)]).unwrap_err();
         assert!(matches!(err, EvaluateError::Load(_)), "{err:?}");
         assert!(
-            evaluate_failure(&err, None, "--pressure").starts_with("--pressure: "),
+            evaluate_failure(&err, None, Field::Pressure).field == Field::Pressure,
             "{err}"
         );
         assert_eq!(

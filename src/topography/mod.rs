@@ -13,8 +13,10 @@ mod metadata;
 mod psd;
 mod read;
 mod record;
+mod request;
 mod scale;
 mod scan;
+mod sensitivity;
 mod stats;
 mod surface;
 mod write;
@@ -23,15 +25,18 @@ pub use evaluate::{EvaluateError, Evaluation, SurfaceModel};
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use metadata::Metadata;
 pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
-pub use read::{
-    read_bytes, read_dy_defaulting_to_dx, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS,
+pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
+pub use record::{FrictionRecord, Frictions, SurfaceRecord};
+pub use request::{
+    evaluate_failure, reliability_needed, Analysis, Checked, Cutoff, Field, LambdaS, LoadInputs, Message, Part,
+    RequestError, Source, SurfaceRequest, WITH_MATERIALS,
 };
-pub use record::{Frictions, SurfaceRecord};
 pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
+pub use sensitivity::{band_ends, BandEnd, Outcome, Sensitivity, SENSITIVITY_FAMILIES};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
 };

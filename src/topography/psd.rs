@@ -54,6 +54,8 @@ pub enum Window {
     Hann,
 }
 
+crate::named!(Window, "window", [None = "none", Hann = "hann"]);
+
 /// A power spectral density: C at the wavevectors q, both in SI units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Psd {

@@ -2,7 +2,7 @@
 //! --json` prints and the web page shows (`web/`), one definition with its
 //! field names (serde) for every front end.
 
-use super::{Derivative, Detrend, Metadata, Surface, SurfaceStats};
+use super::{Derivative, Detrend, Metadata, Sensitivity, Surface, SurfaceStats};
 use crate::{Friction, Params, Warnings};
 
 /// One surface (or pair) analysed: the files, what they said about the
@@ -51,9 +51,21 @@ fn summaries<S: serde::Serializer>(warnings: &Warnings, serializer: S) -> Result
 #[serde(untagged)]
 pub enum Frictions<'a> {
     /// One load's (a record).
-    One(&'a Friction),
+    One(FrictionRecord<'a>),
     /// A range of loads' (a list of records).
-    Many(&'a [Friction]),
+    Many(Vec<FrictionRecord<'a>>),
+}
+
+/// One load's friction and, where computed, its sensitivity (μ under
+/// each height model and at the ends of the band).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct FrictionRecord<'a> {
+    /// The friction.
+    #[serde(flatten)]
+    pub friction: &'a Friction,
+    /// μ under the other choices.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sensitivity: Option<&'a Sensitivity>,
 }
 
 impl<'a> SurfaceRecord<'a> {
@@ -78,7 +90,12 @@ impl<'a> SurfaceRecord<'a> {
             surface: stats,
             parts: (surface.parts().len() > 1).then(|| surface.parts().iter().map(|(_, s)| s).collect()),
             model,
-            friction: friction.map(Frictions::One),
+            friction: friction.map(|friction| {
+                Frictions::One(FrictionRecord {
+                    friction,
+                    sensitivity: None,
+                })
+            }),
             warnings,
         }
     }
@@ -86,11 +103,27 @@ impl<'a> SurfaceRecord<'a> {
     /// The record with the friction of `frictions`: none for none, one
     /// record for one load unless `range` (loads given as a range are a
     /// list, even of one).
-    pub fn with_frictions(mut self, frictions: &'a [Friction], range: bool) -> SurfaceRecord<'a> {
-        self.friction = match frictions {
-            [] => None,
-            [one] if !range => Some(Frictions::One(one)),
-            many => Some(Frictions::Many(many)),
+    pub fn with_frictions(self, frictions: &'a [Friction], range: bool) -> SurfaceRecord<'a> {
+        self.with_sensitivity(frictions, &[], range)
+    }
+
+    /// The record with the friction of `frictions` (as
+    /// [`with_frictions`](Self::with_frictions)), each with its
+    /// `sensitivity` (in the same order; none where the list is shorter).
+    pub fn with_sensitivity(
+        mut self,
+        frictions: &'a [Friction],
+        sensitivity: &'a [Sensitivity],
+        range: bool,
+    ) -> SurfaceRecord<'a> {
+        let mut records = frictions.iter().enumerate().map(|(k, friction)| FrictionRecord {
+            friction,
+            sensitivity: sensitivity.get(k),
+        });
+        self.friction = match frictions.len() {
+            0 => None,
+            1 if !range => records.next().map(Frictions::One),
+            _ => Some(Frictions::Many(records.collect())),
         };
         self
     }

@@ -1,7 +1,7 @@
 //! The web page's analysis: `kefric surface` compiled to WebAssembly.
 //!
 //! The page (`web/static/`) hands a file's bytes and its options (the URL
-//! query: `kefric surface`'s flags with `_` for `-`, [`KEYS`]) to
+//! query: `kefric surface`'s flags with `_` for `-`, [`keys`]) to
 //! [`Analysis::new`], which reads the file with the core's reader registry
 //! ([`read_bytes`]), takes the statistics and, with materials and a load,
 //! μ exactly as `kefric surface --json` does, and keeps the core's record
@@ -9,55 +9,88 @@
 //! λs, the PSD, the height map and histogram) are further methods. Every
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
-use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation, Format, ReadError,
-    ReadOptions, ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
+    psd_all, scan, Analysis as Answer, Channel, Cutoff, Derivative, Detrend, Evaluation, Field, Format, LambdaS,
+    LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest, Topography,
+    Window,
 };
 use ke_friction::{
-    Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
-    Warnings,
+    Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Warnings,
 };
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
 
 /// The options the page takes, as URL query keys, in the order the
-/// equivalent command line gives them: each is `kefric surface`'s flag
-/// with `_` for `-` (`lambda_s` is `--lambda-s`).
-pub const KEYS: &[&str] = &[
-    "dx",
-    "dy",
-    "xy_unit",
-    "z_unit",
-    "max_points",
-    "channel",
-    "detrend",
-    "derivative",
-    "lambda_s",
-    "lambda_c",
-    "tip_radius",
-    "resolution",
-    "e1",
-    "nu1",
-    "e2",
-    "nu2",
-    "hardness",
-    "delta_gamma",
-    "epsilon",
-    "distribution",
-    "fit",
-    "model",
-    "force",
-    "area",
-    "pressure",
-];
+/// equivalent command line gives them: the core request's fields
+/// ([`Field`]) but the file, each `kefric surface`'s flag with `_` for
+/// `-` (`lambda_s` is `--lambda-s`).
+pub fn keys() -> Vec<&'static str> {
+    Field::ALL
+        .iter()
+        .filter(|f| **f != Field::File)
+        .map(|f| f.name())
+        .collect()
+}
+
+/// The page's label of a request's input (the text of its field in
+/// `static/index.html`, without the unit), how its messages name it.
+pub fn label(field: Field) -> &'static str {
+    match field {
+        Field::File => "file",
+        Field::Dx => "Δx",
+        Field::Dy => "Δy",
+        Field::ZUnit => "unit of heights",
+        Field::XyUnit => "unit of Δx, Δy",
+        Field::MaxPoints => "max points",
+        Field::Channel => "channel",
+        Field::Detrend => "detrend",
+        Field::Derivative => "derivative",
+        Field::LambdaS => "λs",
+        Field::LambdaC => "λc",
+        Field::TipRadius => "tip radius",
+        Field::Resolution => "resolution",
+        Field::E1 => "E₁",
+        Field::Nu1 => "ν₁",
+        Field::E2 => "E₂",
+        Field::Nu2 => "ν₂",
+        Field::Hardness => "hardness H",
+        Field::DeltaGamma => "Δγ",
+        Field::Epsilon => "ε",
+        Field::Distribution => "heights",
+        Field::Fit => "fit",
+        Field::Model => "model",
+        Field::Force => "force F",
+        Field::Area => "area Aₙ",
+        Field::Pressure => "pressure",
+    }
+}
+
+/// An input named on the page: its label in quotes.
+fn spell(field: Field) -> String {
+    format!("“{}”", label(field))
+}
+
+/// A request's failure in the page's words: its fields by their labels;
+/// a file's own failure without a prefix (the message names the file).
+pub fn page_error(e: &RequestError) -> String {
+    if e.field == Field::File {
+        e.message.render(&spell)
+    } else {
+        e.render(&spell)
+    }
+}
+
+/// The error of a field's own value: `“label”: why`.
+fn field_error(field: Field, why: impl std::fmt::Display) -> String {
+    format!("{}: {why}", spell(field))
+}
 
 /// The loads of the μ-against-load curve: the given load times
 /// 10^(k/10) for k in this range (three decades below, one above).
 const LOAD_STEPS: std::ops::RangeInclusive<i32> = -30..=10;
 
-/// The page's options: key → value text, every key one of [`KEYS`].
+/// The page's options: key → value text, every key one of [`keys`].
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Options {
     values: BTreeMap<String, String>,
@@ -71,8 +104,8 @@ impl Options {
             serde_json::from_str(json).map_err(|e| format!("options: not a JSON object of strings: {e}"))?;
         let mut values = BTreeMap::new();
         for (key, value) in map {
-            if !KEYS.contains(&key.as_str()) {
-                return Err(format!("{key}: unknown option: must be one of {}", KEYS.join(", ")));
+            if !keys().contains(&key.as_str()) {
+                return Err(format!("{key}: unknown option: must be one of {}", keys().join(", ")));
             }
             let value = value.trim().to_string();
             if !value.is_empty() {
@@ -82,34 +115,90 @@ impl Options {
         Ok(Options { values })
     }
 
-    fn get(&self, key: &str) -> Option<&str> {
-        self.values.get(key).map(String::as_str)
+    fn get(&self, field: Field) -> Option<&str> {
+        self.values.get(field.name()).map(String::as_str)
     }
 
-    /// A number: finite, or an error naming the flag (the CLI's wording).
-    fn number(&self, key: &str) -> Result<Option<f64>, String> {
-        let Some(text) = self.get(key) else { return Ok(None) };
+    /// A number: finite, or an error naming the field.
+    fn number(&self, field: Field) -> Result<Option<f64>, String> {
+        let Some(text) = self.get(field) else { return Ok(None) };
         match text.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(Some(v)),
-            Ok(_) => Err(format!("{}: '{text}' is not a finite number", flag(key))),
-            Err(_) => Err(format!("{}: '{text}' is not a number (e.g. 0.5 or 1e-3)", flag(key))),
+            Ok(_) => Err(field_error(field, format!("'{text}' is not a finite number"))),
+            Err(_) => Err(field_error(
+                field,
+                format!("'{text}' is not a number (e.g. 0.5 or 1e-3)"),
+            )),
         }
     }
 
     /// One of a core name list ([`Named`]), or `default`.
-    fn named<T: Named>(&self, key: &str, default: T) -> Result<T, String> {
-        match self.get(key) {
+    fn named<T: Named>(&self, field: Field, default: T) -> Result<T, String> {
+        match self.get(field) {
             None => Ok(default),
-            Some(text) => T::parse(text).map_err(|e| format!("{}: {e}", flag(key))),
+            Some(text) => T::parse(text).map_err(|e| field_error(field, e)),
         }
+    }
+
+    /// The core's request of these options (with the sensitivity).
+    pub fn request(&self) -> Result<SurfaceRequest, String> {
+        let max_points = match self.get(Field::MaxPoints) {
+            None => SurfaceRequest::default().max_points,
+            Some(text) => match text.parse::<u64>() {
+                Ok(n) if n >= 1 => n,
+                _ => {
+                    return Err(field_error(
+                        Field::MaxPoints,
+                        format!("'{text}' is out of range: must be a whole number >= 1"),
+                    ))
+                }
+            },
+        };
+        let mut materials = [None; 7];
+        for (m, field) in materials.iter_mut().zip(Field::MATERIALS) {
+            *m = self.number(field)?;
+        }
+        Ok(SurfaceRequest {
+            dx: self.number(Field::Dx)?,
+            dy: self.number(Field::Dy)?,
+            z_unit: self.named(Field::ZUnit, LengthUnit::M)?.metres(),
+            xy_unit: self.named(Field::XyUnit, LengthUnit::M)?.metres(),
+            max_points,
+            channel: self
+                .get(Field::Channel)
+                .map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {})),
+            detrend: self.named(Field::Detrend, Detrend::Plane)?,
+            derivative: self.named(Field::Derivative, Derivative::FiniteDifference)?,
+            lambda_s: match self.get(Field::LambdaS) {
+                None => None,
+                Some("auto") => Some(LambdaS::Auto),
+                Some(_) => self.number(Field::LambdaS)?.map(LambdaS::Metres),
+            },
+            lambda_c: self.number(Field::LambdaC)?,
+            tip_radius: self.number(Field::TipRadius)?,
+            resolution: self.number(Field::Resolution)?,
+            materials,
+            distribution: self
+                .get(Field::Distribution)
+                .map(|_| self.named(Field::Distribution, Family::Pearson))
+                .transpose()?,
+            fit: self.named(Field::Fit, Fit::Consistent)?,
+            model: self.named(Field::Model, ModelKind::KogutEtsion)?,
+            loads: LoadInputs::one(
+                self.number(Field::Force)?,
+                self.number(Field::Area)?,
+                self.number(Field::Pressure)?,
+            ),
+            sensitivity: true,
+        })
     }
 
     /// The equivalent command line: `kefric surface FILE … --json`.
     pub fn command(&self, file: &str) -> String {
         let mut words = vec!["kefric".to_string(), "surface".to_string(), quote(file)];
-        for key in KEYS {
-            if let Some(v) = self.get(key) {
-                words.push(flag(key));
+        for field in Field::ALL {
+            if let Some(v) = self.get(field) {
+                words.push(field.flag());
                 words.push(quote(v));
             }
         }
@@ -136,18 +225,10 @@ fn quote(word: &str) -> String {
 pub struct Analysis {
     name: String,
     options: Options,
-    stats_options: StatsOptions,
-    cutoff: Option<f64>,
-    surface: Surface,
-    materials: Option<Materials>,
-    family: Option<Family>,
-    fit: Fit,
-    model_kind: ModelKind,
+    request: SurfaceRequest,
+    answer: Answer,
     load: Option<Load>,
-    params: Option<Params>,
-    friction: Option<Friction>,
-    /// The statistics' and the load's warnings, as the CLI gives them.
-    warnings: Warnings,
+    materials: Option<Materials>,
     record: String,
 }
 
@@ -155,192 +236,84 @@ impl Analysis {
     /// The measured topography (the surface's one part: its own, not a
     /// second copy of the heights).
     fn topography(&self) -> &Topography {
-        &self.surface.parts()[0].0
+        &self.answer.surface.parts()[0].0
     }
 
-    /// The analysis of `bytes`, the file `name`, with `options`; the error
-    /// is the CLI's message (without its `error: `).
+    fn surface(&self) -> &Surface {
+        &self.answer.surface
+    }
+
+    fn stats_options(&self) -> StatsOptions {
+        self.answer.surface.options()
+    }
+
+    fn cutoff(&self) -> Option<f64> {
+        match self.answer.cutoff {
+            Cutoff::Unknown => None,
+            Cutoff::Known(c) => c,
+        }
+    }
+
+    fn params(&self) -> Option<&Params> {
+        self.answer.evaluation.as_ref().map(|e| &e.params)
+    }
+
+    /// The warnings (the statistics' and the load's).
+    fn warning_list(&self) -> &Warnings {
+        &self.answer.warnings
+    }
+
+    /// The analysis of `bytes`, the file `name`, with `options`: the
+    /// core's request; the error names the page's fields.
     pub fn analyse(bytes: &[u8], name: &str, options: Options) -> Result<Analysis, String> {
-        let xy_unit = options.named("xy_unit", LengthUnit::M)?.metres();
-        let interval = |key: &str| -> Result<Option<f64>, String> {
-            match options.number(key)? {
-                Some(v) if v <= 0.0 => Err(format!("{}: {} is out of range: must be > 0", flag(key), Shortest(v))),
-                v => Ok(v.map(|v| v * xy_unit)),
-            }
-        };
-        let max_points = match options.get("max_points") {
-            None => MAX_POINTS,
-            Some(text) => match text.parse::<u64>() {
-                Ok(n) if n >= 1 => n,
-                _ => {
-                    return Err(format!(
-                        "--max-points: '{text}' is out of range: must be a whole number >= 1"
-                    ))
-                }
-            },
-        };
-        let read_options = ReadOptions {
-            dx: interval("dx")?,
-            dy: interval("dy")?,
-            z_unit: options.named("z_unit", LengthUnit::M)?.metres(),
-            xy_unit,
-            max_points,
-            channel: options
-                .get("channel")
-                .map(|c| c.parse::<Channel>().unwrap_or_else(|never| match never {})),
-            ..ReadOptions::default()
-        };
-        let topography =
-            read_dy_defaulting_to_dx(&read_options, |o| read_bytes(bytes, name, o)).map_err(|e| match e {
-                ReadError::NeedInterval { name: which, .. } => flags::no_interval(format!("surface: {name}"), which),
-                e => format!("surface: {e}"),
-            })?;
-
-        // The reliability cut-off and λs as `--tip-radius`, `--resolution`
-        // and `--lambda-s [auto]` give them.
-        let (resolution, tip_radius) = (options.number("resolution")?, options.number("tip_radius")?);
-        let reliability = || flags::reliability_cutoff(&topography, resolution, tip_radius);
-        let lambda_s = match options.get("lambda_s") {
-            None => None,
-            Some("auto") => reliability().map_err(|e| format!("surface: {name}: --lambda-s auto: {e}"))?,
-            Some(_) => options.number("lambda_s")?,
-        };
-        let cutoff = match (resolution, tip_radius) {
-            (None, None) => None,
-            _ => reliability().map_err(|e| format!("surface: {name}: {e}"))?,
-        };
-        let stats_options = StatsOptions {
-            detrend: options.named("detrend", Detrend::Plane)?,
-            derivative: options.named("derivative", Derivative::FiniteDifference)?,
-            lambda_s,
-            lambda_c: options.number("lambda_c")?,
-        };
-        let mut surface = Surface::new(topography, stats_options).map_err(|e| format!("surface {name}: {e}"))?;
-        if let Some(cutoff) = cutoff {
-            surface.check_reliability(cutoff);
-        }
-
-        let load = Load::from_parts(
-            options.number("force")?,
-            options.number("area")?,
-            options.number("pressure")?,
-        )
-        .map_err(|e| format!("--force: {e} (--pressure)"))?;
-        if let Some(load) = &load {
-            load.pressure()
-                .map_err(|e| format!("{}: {e}", flag(e.name.split(' ').next().unwrap_or(e.name))))?;
-        }
-        let names: Vec<String> = Materials::FIELDS.iter().map(|k| flag(k)).collect();
-        let given: Vec<(&str, Option<f64>)> = names
-            .iter()
-            .zip(Materials::FIELDS)
-            .map(|(name, k)| Ok((name.as_str(), options.number(k)?)))
-            .collect::<Result<_, String>>()?;
-        let materials = if given.iter().any(|(_, v)| v.is_some()) {
-            let mut seven = [0.0; 7];
-            seven.copy_from_slice(&flags::together(&given)?);
-            Some(Materials::from_array(seven))
-        } else {
-            let needs = if options.get("distribution").is_some() {
-                Some("--distribution")
-            } else if load.is_some() {
-                Some(if options.get("pressure").is_some() {
-                    "--pressure"
-                } else {
-                    "--force"
-                })
-            } else {
-                None
-            };
-            if let Some(needs) = needs {
-                return Err(flags::materials_needed(needs));
-            }
-            None
-        };
-        let family = options
-            .get("distribution")
-            .map(Family::parse)
-            .transpose()
-            .map_err(|e| format!("--distribution: {e}"))?;
-        let fit = options.named("fit", Fit::Consistent)?;
-        let model_kind = options.named("model", ModelKind::KogutEtsion)?;
-        let mut analysis = Analysis {
-            name: name.to_string(),
-            options,
-            stats_options,
-            cutoff,
-            surface,
-            materials,
-            family,
-            fit,
-            model_kind,
-            load,
-            params: None,
-            friction: None,
-            warnings: Warnings::new(),
-            record: String::new(),
-        };
-        let evaluation = analysis.evaluate(&analysis.surface, analysis.load)?;
-        // The warnings as the CLI records them: the statistics' and the load's.
-        let mut warnings = Warnings::new();
-        warnings.extend(analysis.surface.stats().warnings.iter().cloned());
-        if let Some(e) = &evaluation {
-            e.note_into(&mut warnings);
-        }
-        let (params, friction) = match evaluation {
-            Some(mut e) => (Some(e.params), e.frictions.pop()),
-            None => (None, None),
-        };
+        let request = options.request()?;
+        let checked = request.check().map_err(|e| page_error(&e))?;
+        let (surface, cutoff) = request
+            .surface(&[Source::Bytes { bytes, name }])
+            .map_err(|e| page_error(&e))?;
+        let answer = request.analyse(surface, cutoff, &checked).map_err(|e| page_error(&e))?;
+        let frictions: &[Friction] = answer.evaluation.as_ref().map_or(&[], |e| &e.frictions);
         let record = SurfaceRecord::new(
             vec![name.to_string()],
-            &analysis.surface,
-            params.as_ref(),
-            friction.as_ref(),
+            &answer.surface,
+            answer.evaluation.as_ref().map(|e| &e.params),
+            None,
         )
-        .with_warnings(&warnings);
-        analysis.record = serde_json::to_string(&record).map_err(|e| format!("the record: {e}"))?;
-        analysis.params = params;
-        analysis.friction = friction;
-        analysis.warnings = warnings;
-        Ok(analysis)
+        .with_sensitivity(frictions, &answer.sensitivity, false)
+        .with_warnings(&answer.warnings);
+        let record = serde_json::to_string(&record).map_err(|e| format!("the record: {e}"))?;
+        Ok(Analysis {
+            name: name.to_string(),
+            options,
+            load: checked.loads.and_then(|l| l.into_iter().next()),
+            materials: checked.materials,
+            request,
+            answer,
+            record,
+        })
     }
 
     /// The model's inputs of `surface` with the materials and, with `load`,
-    /// the friction and its warnings ([`Surface::evaluate`], its failure
-    /// in the CLI's words); `None` without materials.
+    /// the friction and its warnings; `None` without materials.
     fn evaluate(&self, surface: &Surface, load: Option<Load>) -> Result<Option<Evaluation>, String> {
         let Some(materials) = self.materials else {
             return Ok(None);
         };
-        let how = SurfaceModel {
-            materials,
-            family: self.family,
-            fit: self.fit,
-            kind: self.model_kind,
-        };
-        surface
-            .evaluate(&how, load.as_slice())
+        self.request
+            .evaluate(surface, materials, load.as_slice())
             .map(Some)
-            .map_err(|e| flags::evaluate_failure(&e, self.family, self.load_flag()))
-    }
-
-    fn load_flag(&self) -> &'static str {
-        if self.options.get("pressure").is_some() {
-            "--pressure"
-        } else {
-            "--force"
-        }
+            .map_err(|e| page_error(&e))
     }
 
     /// μ at loads around the given one: (load in N or Pa, μ) rows.
     pub fn mu_against_load_rows(&self) -> Vec<(f64, f64)> {
-        let (Some(load), Some(params), Some(materials)) = (self.load, &self.params, &self.materials) else {
+        let (Some(load), Some(params), Some(materials)) = (self.load, self.params(), &self.materials) else {
             return Vec::new();
         };
         let Ok(model) = Model::new(params.clone()) else {
             return Vec::new();
         };
-        let physical = self.surface.physical(materials);
+        let physical = self.surface().physical(materials);
         LOAD_STEPS
             .filter_map(|k| {
                 let factor = 10f64.powf(f64::from(k) / 10.0);
@@ -363,8 +336,14 @@ impl Analysis {
     /// λs with its β, ψ and μ (or its error); `progress(done, total)`.
     pub fn scan_rows(&self, progress: impl FnMut(usize, usize)) -> Result<Value, String> {
         let range = ScanRange::default_for(self.topography());
-        let rows = scan(self.topography(), &self.stats_options, &range, self.cutoff, progress)
-            .map_err(|e| format!("--scan: {e}"))?;
+        let rows = scan(
+            self.topography(),
+            &self.stats_options(),
+            &range,
+            self.cutoff(),
+            progress,
+        )
+        .map_err(|e| format!("scan: {e}"))?;
         let rows: Vec<Value> = rows
             .iter()
             .map(|row| {
@@ -388,7 +367,7 @@ impl Analysis {
                 r
             })
             .collect();
-        Ok(json!({ "cutoff": self.cutoff, "rows": rows }))
+        Ok(json!({ "cutoff": self.cutoff(), "rows": rows }))
     }
 
     /// The height histogram of the heights the statistics see (`bins`
@@ -398,9 +377,9 @@ impl Analysis {
         let bins = bins.clamp(4, 400);
         let heights = self
             .topography()
-            .band_heights(&self.stats_options)
+            .band_heights(&self.stats_options())
             .map_err(|e| e.to_string())?;
-        let s = self.surface.stats();
+        let s = self.surface().stats();
         let (lo, hi) = (-4.0 * s.sigma, 4.0 * s.sigma);
         let width = (hi - lo) / bins as f64;
         let mut counts = vec![0usize; bins];
@@ -439,7 +418,7 @@ impl Analysis {
 #[wasm_bindgen]
 impl Analysis {
     /// Analyses `bytes`, the content of the file `name`, with the options
-    /// `options_json` (a JSON object of strings, keys of [`KEYS`]); a
+    /// `options_json` (a JSON object of strings, keys of [`keys`]); a
     /// failure throws the CLI's message.
     #[wasm_bindgen(constructor)]
     pub fn new(bytes: &[u8], name: &str, options_json: &str) -> Result<Analysis, JsError> {
@@ -455,7 +434,11 @@ impl Analysis {
     /// The warnings (the statistics' and the load's), once a kind, as
     /// the CLI prints them on stderr (JSON list).
     pub fn warnings(&self) -> String {
-        let w: Vec<String> = self.warnings.summaries().map(|s| format!("warning: {s}")).collect();
+        let w: Vec<String> = self
+            .warning_list()
+            .summaries()
+            .map(|s| format!("warning: {s}"))
+            .collect();
         json!(w).to_string()
     }
 
@@ -493,9 +476,10 @@ impl Analysis {
     pub fn psd(&self) -> Result<String, JsError> {
         let detrended = self
             .topography()
-            .detrended_topography(self.stats_options.detrend)
+            .detrended_topography(self.stats_options().detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;
-        let spectra = psd_all(&detrended, Window::None).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
+        let spectra =
+            psd_all(&detrended, Window::None).map_err(|e| JsError::new(&format!("power spectral density: {e}")))?;
         let mut doc = serde_json::Map::new();
         for (name, p) in &spectra {
             doc.insert(name.to_string(), json!({ "q": p.q, "c": p.c }));
@@ -539,7 +523,7 @@ pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_string()
 }
 
-/// The page's names, from the core: the option keys ([`KEYS`]), the
+/// The page's names, from the core: the option keys ([`keys`]), the
 /// surface formats of the reader registry (name, description,
 /// extensions), and the values of each named option (JSON).
 #[wasm_bindgen]
@@ -547,8 +531,10 @@ pub fn names() -> String {
     let formats: Vec<Value> = Format::all()
         .map(|f| json!({ "name": f.name(), "description": f.description(), "extensions": f.extensions() }))
         .collect();
+    let labels: BTreeMap<&str, &str> = Field::ALL.iter().map(|f| (f.name(), label(*f))).collect();
     json!({
-        "keys": KEYS,
+        "keys": keys(),
+        "labels": labels,
         "formats": formats,
         "detrend": Detrend::names(),
         "derivative": Derivative::names(),
@@ -564,6 +550,16 @@ pub fn names() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_field_has_a_label_in_the_page() {
+        let html = include_str!("../static/index.html");
+        for f in Field::ALL.iter().filter(|f| **f != Field::File) {
+            assert!(html.contains(&format!("name=\"{}\"", f.name())), "{f:?} has no field");
+            let text = label(*f).trim_start_matches("or ");
+            assert!(html.contains(text), "{f:?}: no label {text:?} on the page");
+        }
+    }
 
     #[test]
     fn an_unknown_option_is_refused_naming_the_valid_keys() {
@@ -648,7 +644,7 @@ mod tests {
             .unwrap();
         assert_eq!(
             e,
-            "surface: h.txt: the file gives no sampling interval dx: give --dx (and --dy for a map, if it differs), in --xy-unit"
+            "h.txt: the file gives no sampling interval dx: give “Δx” (and “Δy” for a map, if it differs), in “unit of Δx, Δy”"
         );
     }
 
@@ -661,10 +657,10 @@ mod tests {
         };
         let e = run(r#"{"dx": "1e-6", "e1": "70e9"}"#);
         assert!(
-            e.starts_with("--nu1: missing: the SI inputs go together (--e1, --nu1,"),
+            e.starts_with("“ν₁”: missing: the SI inputs go together (“E₁”, “ν₁”,"),
             "{e}"
         );
         let e = run(r#"{"dx": "1e-6", "pressure": "1e6"}"#);
-        assert!(e.starts_with("--pressure: needs the materials"), "{e}");
+        assert!(e.starts_with("“pressure”: needs the materials"), "{e}");
     }
 }

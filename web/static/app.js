@@ -103,6 +103,8 @@ async function openFile(f) {
 function handle(m) {
   if (m.type === 'ready') {
     names = m.names;
+    // The fields' labels, as the page's messages name them (the browser test reads them).
+    document.documentElement.dataset.labels = JSON.stringify(names.labels);
     version = m.version;
     $('version').textContent = version;
     fillSelects();

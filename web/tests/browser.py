@@ -8,7 +8,7 @@ screenshots go. The page is served from 127.0.0.1 and driven through
 --json` on the same file and options (every number within 1e-12
 relative), its `#command` must be that command line, the browser's
 console must stay free of errors, a bad file must show the CLI's error
-text and leave the page usable. Every file of --topographies that kefric
+text in the page's words (its fields by their labels) and leave the page usable. Every file of --topographies that kefric
 reads is compared too (the formats the reader registry gains come
 through). --big: a 1024 x 1024 X3P read, analysed and its mu(F) curve drawn
 within BIG_SECONDS, best of BIG_RUNS (the figure is printed for docs/PERFORMANCE.md).
@@ -110,6 +110,17 @@ def kefric(exe, path, options, *extra):
     p = subprocess.run([exe, "surface", path.name, *flags(options), *extra, "--json"], cwd=path.parent,
                        capture_output=True, text=True, timeout=600)
     return p.returncode, p.stdout, p.stderr
+
+
+def page_words(page, err):
+    """kefric's message `err` as the page words it: each flag by the page's
+    label of its field (in quotes), a file's own failure without the
+    command's name (the message names the file)."""
+    labels = json.loads(page.d.execute_script("return document.documentElement.dataset.labels"))
+    text = err.strip().removeprefix("error: ").removeprefix("surface: ")
+    for key in sorted(labels, key=len, reverse=True):
+        text = text.replace("--" + key.replace("_", "-"), f"\u201c{labels[key]}\u201d")
+    return "error: " + text
 
 
 def compare(page, cli, where="record"):
@@ -240,7 +251,7 @@ def main():
         assert status == 2, (status, err)
         page.open(MATERIALS)
         page.load(bad)
-        assert page.error() == err.strip(), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
+        assert page.error() == page_words(page, err), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
         page.d.save_screenshot(str(args.out / "bad-file.png"))
         page.load(example)
         assert page.error() is None and json.loads(page.text("record"))["files"] == ["example.x3p"]
@@ -251,8 +262,8 @@ def main():
             assert status == 2, (options, status, err)
             page.open(options)
             page.load(example)
-            assert page.error() == err.strip(), f"{options}: page: {page.error()!r}\nkefric: {err.strip()!r}"
-            print(f"web: {json.dumps(options)}: the page says kefric's {err.strip()!r}")
+            assert page.error() == page_words(page, err), f"{options}: page: {page.error()!r}\nkefric: {err.strip()!r}"
+            print(f"web: {json.dumps(options)}: the page says kefric's {err.strip()!r} in its own words")
 
         # A text matrix has no intervals: the page asks for dx as kefric does.
         text = args.out / "heights.txt"
@@ -262,7 +273,7 @@ def main():
         assert status == 2, (status, err)
         page.open({})
         page.load(text)
-        assert page.error() == err.strip(), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
+        assert page.error() == page_words(page, err), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
         check_file(page, exe, text, {"dx": "0.5", "xy_unit": "um", "z_unit": "um", **MATERIALS, "pressure": "1e6"}, args.out)
 
         # The instrument files kefric reads (more as readers are added).

@@ -124,7 +124,7 @@ fn each_scan_row_is_the_single_command_at_that_lambda_s() {
         let lambda_s = format!("{lambda:e}");
         let mut args = strs(&base);
         args.extend(load);
-        args.extend(["--lambda-s", &lambda_s]);
+        args.extend(["--lambda-s", &lambda_s, "--sensitivity", "off"]);
         let single = json(&args);
         for group in ["surface", "model", "friction"] {
             assert_eq!(row[group], single[group], "{group} at {lambda}");

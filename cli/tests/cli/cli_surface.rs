@@ -95,7 +95,10 @@ fn one_surface_force_and_area_give_the_librarys_mu_and_q() {
         ],
         MATERIAL_FLAGS,
     );
-    let v = json(&as_strs(&args));
+    let mut v = json(&as_strs(&args));
+    // The sensitivity beside μ (checked in `sensitivity_values_are_the_single_runs`).
+    assert!(v["friction"]["sensitivity"].is_object(), "{v}");
+    v["friction"].as_object_mut().unwrap().remove("sensitivity");
 
     // The library, called directly.
     let surface = Surface::new(Topography::map(z, n, n, 2e-6, 2e-6).unwrap(), StatsOptions::default()).unwrap();
@@ -603,4 +606,70 @@ fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_list
             assert_bad_input(&kefric(&["surface", path, "--channel", "Intensity"]), "0 Raw");
         }
     }
+}
+
+/// Every μ of a surface answer's sensitivity is the single run with that
+/// option: each height model (`--distribution`), each end of the band
+/// (`--lambda-s`); the text names the range and what gives its ends.
+#[test]
+fn sensitivity_values_are_the_single_runs() {
+    let dir = TempDir::new("surface-sensitivity");
+    let n = 96;
+    let z = heights(n, 0.0);
+    let file = write_npy(&dir, "map.npy", &z, n);
+    let base = run(
+        &[
+            "surface",
+            &file,
+            "--dx",
+            "2",
+            "--xy-unit",
+            "um",
+            "--force",
+            "10",
+            "--area",
+            "1e-5",
+        ],
+        MATERIAL_FLAGS,
+    );
+    let mut with_json = base.clone();
+    with_json.push("--json".into());
+    let v = json(&as_strs(&with_json));
+    let s = &v["friction"]["sensitivity"];
+    let single = |extra: &[&str]| {
+        let mut args = with_json.clone();
+        args.extend(extra.iter().map(|s| s.to_string()));
+        args.extend(["--sensitivity".to_string(), "off".to_string()]);
+        let v = json(&as_strs(&args));
+        assert!(v["friction"].get("sensitivity").is_none(), "{v}");
+        v["friction"]["mu"].as_f64().unwrap()
+    };
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+    let families = s["distribution"].as_object().unwrap();
+    let mut names = ke_friction::topography::SENSITIVITY_FAMILIES.map(|f| f.name()).to_vec();
+    names.sort_unstable();
+    assert_eq!(families.keys().map(String::as_str).collect::<Vec<_>>(), names);
+    for (family, outcome) in families {
+        let mu = outcome["mu"].as_f64().unwrap_or_else(|| panic!("{family}: {outcome}"));
+        assert!(close(mu, single(&["--distribution", family])), "{family}");
+    }
+    let ends = s["lambda_s"].as_array().unwrap();
+    assert_eq!(ends.len(), 2);
+    // The short end: 2·max(dx, dy) without a cut-off.
+    assert_eq!(ends[0]["lambda_s"].as_f64(), Some(4e-6));
+    assert!(ends[1]["lambda_s"].as_f64().unwrap() > 4e-6);
+    for end in ends {
+        let lambda = format!("{:e}", end["lambda_s"].as_f64().unwrap());
+        assert!(
+            close(end["mu"].as_f64().unwrap(), single(&["--lambda-s", &lambda])),
+            "{end}"
+        );
+    }
+    let o = kefric(&as_strs(&base));
+    let text = String::from_utf8_lossy(&o.stdout);
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("mu sensitivity"))
+        .unwrap_or_else(|| panic!("{text}"));
+    assert!(line.contains(" to ") && line.contains("height models"), "{line}");
 }

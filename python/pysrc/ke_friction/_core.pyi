@@ -214,6 +214,10 @@ class SurfaceCore:
     # and the warnings (one summary a kind): {"records": [...], "warnings": [...]}.
     def friction(self, model: ModelCore, materials: Tuple[float, ...], force: Optional[List[float]],
                  area: Optional[List[float]], pressure: Optional[List[float]]) -> Dict[str, Any]: ...
+    # The Sensitivity record of each load: mu under each height model and at the band's ends.
+    def sensitivity(self, materials: Tuple[float, ...], distribution: Optional[str], fit: str, model: str,
+                    force: Optional[List[float]], area: Optional[List[float]],
+                    pressure: Optional[List[float]]) -> List[Dict[str, Any]]: ...
     # The surface's warnings, one summary a kind.
     def warnings(self) -> List[Dict[str, Any]]: ...
 

@@ -544,7 +544,7 @@ class Surface:
     def friction(self, *, force: Optional[ArrayLike] = None, area: Optional[ArrayLike] = None,
                  pressure: Optional[ArrayLike] = None, e1: float, nu1: float, e2: float, nu2: float,
                  hardness: float, delta_gamma: float, epsilon: float, distribution: str = "pearson",
-                 fit: str = "consistent", model: str = "ke") -> Dict[str, Any]:
+                 fit: str = "consistent", model: str = "ke", sensitivity: bool = True) -> Dict[str, Any]:
         """The static friction of a load on :meth:`model` (the same
         keywords): a ``force`` (N) on a nominal ``area`` (m^2), or a
         nominal ``pressure`` (Pa); numbers, or array-likes that broadcast
@@ -555,6 +555,12 @@ class Surface:
         ``friction_stress``, ``separation`` h = h* sigma (m), and the
         dimensionless contact at F* = pressure/hardness: ``h_star``,
         ``d_star``, ``p_star``, ``fs_star``, ``q_star``, ``f_star``.
+        With ``sensitivity`` (the default), ``"sensitivity"``: mu under each
+        height model (``{"distribution": {"gaussian": {"mu": ...},
+        "pearson": {"mu": ...} or {"error": "..."}, "empirical": ...},
+        "lambda_s": [{"lambda_s": ..., "mu": ...}, ...]}``: the band's two
+        ends), as ``kefric surface --json`` gives it; for array loads, a
+        list of such dicts in the loads' flat order.
         The warnings ``kefric surface --json`` records (``"warnings"``, one
         a kind) are warned as :class:`ModelWarning` warnings, each with its record:
         the surface's, and the loads' (F* outside the paper's 1e-5..0.1,
@@ -578,6 +584,9 @@ class Surface:
             out = dict(records[0])
         else:
             out = {k: np.array([r[k] for r in records], dtype=np.float64).reshape(shape) for k in records[0]}
+        if sensitivity:
+            s = self._core.sensitivity(mats, distribution, fit, model, *lists)
+            out["sensitivity"] = s[0] if scalar else s
         return out
 
     def _model(self, materials: Dict[str, Any], distribution: str, fit: str, model: str) -> Model:

@@ -191,7 +191,13 @@ impl Ctx<'_> {
         if profile {
             Topography::profile(heights, dx)
         } else {
-            let dy = self.interval("dy", dy, options.dy)?;
+            // dy defaults to dx where neither the file nor the options
+            // give one: a file's own dy is kept (only a dy given
+            // explicitly contradicts it).
+            let dy = match (dy, options.dy) {
+                (None, None) => self.interval("dy", None, Some(dx))?,
+                _ => self.interval("dy", dy, options.dy)?,
+            };
             Topography::map(heights, nx, ny, dx, dy)
         }
         .map_err(|e| self.topography(e))

@@ -228,7 +228,9 @@ impl std::fmt::Display for Format {
 pub struct ReadOptions {
     /// Sampling interval along x (metres), for files that give none.
     pub dx: Option<f64>,
-    /// Sampling interval along y (metres), for maps from files that give none.
+    /// Sampling interval along y (metres), for maps from files that give
+    /// none; `None`: `dx` where the file gives no dy either (a file's own
+    /// dy is kept: only a dy given here contradicts it).
     pub dy: Option<f64>,
     /// Metres per unit of the heights in `.npy` and text files (1 = metres,
     /// 1e-6 = micrometres). Not applied to X3P, which stores metres, nor
@@ -585,28 +587,6 @@ pub fn read_bytes(bytes: &[u8], name: &str, options: &ReadOptions) -> Result<Top
     read_from(&cx, &mut Cursor::new(bytes), len, options)
 }
 
-/// Reads with `read` ([`read_file`] or [`read_bytes`] on one file) and
-/// the front ends' rule for an interval given alone: `dy` defaults to `dx`
-/// for a map whose file gives no dy, and a file's own dy is kept (the file
-/// is read again without it: only a `dy` given explicitly contradicts the
-/// file's, [`ReadError::Conflict`]).
-pub fn read_dy_defaulting_to_dx(
-    options: &ReadOptions,
-    read: impl Fn(&ReadOptions) -> Result<Topography, ReadError>,
-) -> Result<Topography, ReadError> {
-    if options.dy.is_some() || options.dx.is_none() {
-        return read(options);
-    }
-    let square = ReadOptions {
-        dy: options.dx,
-        ..options.clone()
-    };
-    match read(&square) {
-        Err(ReadError::Conflict { name: "dy", .. }) => read(options),
-        read => read,
-    }
-}
-
 /// The units in the options are finite and positive.
 fn check_options(cx: &Ctx, options: &ReadOptions) -> Result<(), ReadError> {
     for (name, value) in [("z_unit", options.z_unit), ("xy_unit", options.xy_unit)] {
@@ -689,7 +669,7 @@ mod tests {
 
     #[test]
     fn dy_defaults_to_dx_only_where_the_file_gives_none() {
-        let read = |o: &ReadOptions| read_dy_defaulting_to_dx(o, |o| read_bytes(MAP, "map.txt", o));
+        let read = |o: &ReadOptions| read_bytes(MAP, "map.txt", o);
         // A text matrix gives no intervals: dy = dx.
         let t = read(&options(Some(2e-6), None)).unwrap();
         assert_eq!((t.dx(), t.dy()), (2e-6, Some(2e-6)));
@@ -703,7 +683,7 @@ mod tests {
         ));
         // An xyz file gives its own dy (2 m), which dx alone does not contradict.
         let xyz = b"0 0 1\n1 0 2\n0 2 3\n1 2 4\n";
-        let t = read_dy_defaulting_to_dx(&options(Some(1.0), None), |o| read_bytes(xyz, "map.xyz", o));
+        let t = read_bytes(xyz, "map.xyz", &options(Some(1.0), None));
         let t = t.unwrap();
         assert_eq!((t.dx(), t.dy()), (1.0, Some(2.0)));
     }
