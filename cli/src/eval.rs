@@ -2,9 +2,11 @@
 
 use crate::args::describe;
 use crate::load_args::{points, LoadArgs, Spacing};
-use crate::model_args::ModelArgs;
+use crate::model_args::{ModelArgs, SurfaceSource};
 use crate::output::sig;
 use crate::output::{warn, Failure};
+use crate::surface::{sensitivity_line, OnOff};
+use ke_friction::topography::Sensitivity;
 use ke_friction::{Contact, Friction, Warnings};
 
 /// Evaluate the model by direct integration at given h* or F*.
@@ -26,9 +28,33 @@ pub struct Args {
     pub f_star: Option<String>,
     #[command(flatten)]
     pub load: LoadArgs,
+    /// With --surface and a load (or F*): μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too (`off`: the single number, faster).
+    #[arg(long, value_enum, default_value_t = OnOff::On)]
+    pub sensitivity: OnOff,
     /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
+}
+
+impl Args {
+    /// The sensitivity of μ at each F* of `f_star` on the surface, where
+    /// one gave the model and it is asked for.
+    fn sensitivity(&self, source: Option<&SurfaceSource>, f_star: impl Iterator<Item = f64>) -> Vec<Sensitivity> {
+        match source {
+            Some(source) if self.sensitivity == OnOff::On => source.sensitivity(f_star),
+            _ => Vec::new(),
+        }
+    }
+}
+
+/// The sensitivity lines under a table: one a row, named by its F*.
+fn print_sensitivity(f_star: impl Iterator<Item = f64>, sensitivity: &[Sensitivity]) -> Result<(), Failure> {
+    for (f, s) in f_star.zip(sensitivity) {
+        if let Some(line) = sensitivity_line(s) {
+            outln!("# mu sensitivity at F* = {}: {line}", sig(f))?;
+        }
+    }
+    Ok(())
 }
 
 /// Runs `kefric eval`.
@@ -56,13 +82,20 @@ pub fn run(args: Args) -> Result<(), Failure> {
         .map_err(|e| Failure::of(flag, e))?;
     let p = model.params();
     let mut warnings = Warnings::new();
+    // The sensitivity at F* (at h*, the other choices give another F*).
+    let sensitivity = if args.h_star.is_some() {
+        Vec::new()
+    } else {
+        args.sensitivity(source.as_ref(), contacts.iter().map(|c| c.f_star))
+    };
     if args.json {
         // One record a line: the parameters and the contact, flat.
-        for c in &contacts {
+        for (k, c) in contacts.iter().enumerate() {
             let row = Row {
                 params: p,
                 result: c,
                 source: source.as_ref(),
+                sensitivity: sensitivity.get(k),
             };
             outln!("{}", serde_json::to_string(&row).expect("a contact serialises"))?;
             warnings.note_contact(c);
@@ -96,6 +129,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             )?;
             warnings.note_contact(c);
         }
+        print_sensitivity(contacts.iter().map(|c| c.f_star), &sensitivity)?;
     }
     warn(&warnings);
     Ok(())
@@ -103,11 +137,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
 
 /// `kefric eval` at loads in SI units (--force on --area, or --pressure):
 /// F* = pressure/hardness, then the model there, one row a load.
-fn run_loads(
-    args: &Args,
-    model: &ke_friction::Model,
-    source: Option<&crate::model_args::SurfaceSource>,
-) -> Result<(), Failure> {
+fn run_loads(args: &Args, model: &ke_friction::Model, source: Option<&SurfaceSource>) -> Result<(), Failure> {
     let flag = args.load.flag();
     let Some(physical) = args.model.physical(source)? else {
         return Err(Failure::input(format!(
@@ -123,12 +153,14 @@ fn run_loads(
         rows.push(f);
     }
     let p = model.params();
+    let sensitivity = args.sensitivity(source, rows.iter().map(|f| f.contact.f_star));
     if args.json {
-        for f in &rows {
+        for (k, f) in rows.iter().enumerate() {
             let row = Row {
                 params: p,
                 result: f,
                 source,
+                sensitivity: sensitivity.get(k),
             };
             outln!("{}", serde_json::to_string(&row).expect("a friction record serialises"))?;
         }
@@ -171,6 +203,7 @@ fn run_loads(
                 sig(q).to_string()
             )?;
         }
+        print_sensitivity(rows.iter().map(|f| f.contact.f_star), &sensitivity)?;
     }
     warn(&warnings);
     Ok(())
@@ -186,4 +219,7 @@ struct Row<'a, T> {
     result: &'a T,
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
     source: Option<&'a crate::model_args::SurfaceSource>,
+    /// μ under the other height models and at the band's ends (--surface).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sensitivity: Option<&'a Sensitivity>,
 }

@@ -5,8 +5,9 @@
 
 use crate::args::{flag_of, parse_f64, ConstantsArgs, SiArgs};
 use crate::output::{warn, Failure};
-use ke_friction::topography::SurfaceModel;
-use ke_friction::{Model, Params, Physical, Shortest, Warnings};
+use crate::surface_args::request_failure;
+use ke_friction::topography::{Cutoff, Sensitivity, Source, Surface, SurfaceRequest};
+use ke_friction::{Load, Materials, Model, Params, Physical, Shortest, Warnings};
 
 /// The model's parameters, shared by the subcommands that evaluate it:
 /// dimensionless (ψ, θ, β, ν, ε*) or SI quantities ([`SiArgs`]).
@@ -84,18 +85,25 @@ impl ModelArgs {
                 "{flag}: the surface supplies it: give --surface with the seven material flags only"
             )));
         }
-        let surface = self.read.surface("--surface", &self.surface)?;
         let materials = self.si.materials.materials(&[])?;
+        let request = SurfaceRequest {
+            materials: self.si.materials.values(),
+            distribution: h.distribution,
+            fit: self.constants.fit,
+            model: self.constants.model,
+            ..self.read.request()
+        };
+        let flag = "--surface";
+        request.check().map_err(|e| request_failure(flag, e))?;
+        let sources: Vec<Source> = self.surface.iter().map(|p| Source::Path(p)).collect();
+        let (surface, cutoff) = request.surface(&sources).map_err(|e| request_failure(flag, e))?;
         let mut warnings = Warnings::new();
         warnings.extend(surface.stats().warnings.iter().cloned());
         warn(&warnings);
-        let how = SurfaceModel {
-            materials,
-            family: h.distribution,
-            fit: self.constants.fit,
-            kind: self.constants.model,
-        };
-        let params = crate::surface_args::params(&surface, &how, ke_friction::topography::Field::Force)?;
+        let params = request
+            .evaluate(&surface, materials, &[])
+            .map_err(|e| request_failure(flag, e))?
+            .params;
         let source = SurfaceSource {
             physical: surface.physical(&materials),
             files: self.surface.iter().map(|p| p.display().to_string()).collect(),
@@ -103,6 +111,7 @@ impl ModelArgs {
             dy: surface.stats().dy,
             lambda_s: surface.stats().lambda_s,
             lambda_c: surface.stats().lambda_c,
+            analysis: Box::new((request, surface, cutoff, materials)),
         };
         Ok((params, source))
     }
@@ -167,6 +176,19 @@ pub struct SurfaceSource {
     /// The L-filter's nesting index (m), if filtered.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lambda_c: Option<f64>,
+    /// The request, the surface, its reliability cut-off and the
+    /// materials (for the sensitivity of a μ).
+    #[serde(skip)]
+    pub analysis: Box<(SurfaceRequest, Surface, Cutoff, Materials)>,
+}
+
+impl SurfaceSource {
+    /// The sensitivity of μ at each F* of `f_star` on this surface.
+    pub fn sensitivity(&self, f_star: impl Iterator<Item = f64>) -> Vec<Sensitivity> {
+        let (request, surface, cutoff, materials) = &*self.analysis;
+        let loads: Vec<Load> = f_star.map(|f| Load::Pressure(f * self.physical.hardness)).collect();
+        request.sensitivity_of(surface, *cutoff, *materials, &loads)
+    }
 }
 
 impl std::fmt::Display for SurfaceSource {

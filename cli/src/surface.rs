@@ -184,7 +184,7 @@ pub fn evaluate(
 
 /// The sensitivity of one μ in a line: the range and which choice gives
 /// which end.
-fn sensitivity_line(s: &Sensitivity) -> Option<String> {
+pub fn sensitivity_line(s: &Sensitivity) -> Option<String> {
     let ((lo_what, lo), (hi_what, hi)) = s.range()?;
     Some(format!(
         "{} to {} ({lo_what} to {hi_what}; height models {}, band lambda_s {})",

@@ -8,7 +8,7 @@ use ke_friction::topography::{
     evaluate_failure, Channel, Cutoff, Derivative, Detrend, EvaluateError, Field, LambdaS, RequestError, Source,
     StatsOptions, Surface, SurfaceModel, SurfaceRequest, SurfaceStats, Topography, MAX_POINTS,
 };
-use ke_friction::{LengthUnit, Model, Params};
+use ke_friction::{LengthUnit, Model};
 use std::path::{Path, PathBuf};
 
 /// How a surface file is read and its statistics taken.
@@ -153,11 +153,6 @@ pub fn intervals(s: &SurfaceStats) -> String {
         }
     }
     text
-}
-
-/// [`Surface::model_params`] with the CLI's failure.
-pub fn params(surface: &Surface, how: &SurfaceModel, load: Field) -> Result<Params, Failure> {
-    surface.model_params(how).map_err(|e| failure(e, how, load))
 }
 
 /// [`Surface::model`] with the CLI's failure.
