@@ -322,8 +322,8 @@ impl fmt::Display for Warning {
             Warning::Unreliable { scale, cutoff } => write!(
                 f,
                 "the shortest scale analysed, {} m, is below the instrument's reliability cut-off \
-                 {} m: beta, R, eta and psi come from distorted scales; filter with --lambda-s {} \
-                 (or auto)",
+                 {} m: beta, R, eta and psi come from distorted scales; filter at lambda_s = {} m \
+                 (or lambda_s auto)",
                 s(scale),
                 s(cutoff),
                 s(cutoff)

@@ -42,6 +42,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     // side checks its string arguments against.
     m.add("DETRENDS", <ke_friction::topography::Detrend as Named>::names())?;
     m.add("DERIVATIVES", <ke_friction::topography::Derivative as Named>::names())?;
+    m.add("WINDOWS", <ke_friction::topography::Window as Named>::names())?;
     m.add("FAMILIES", <ke_friction::Family as Named>::names())?;
     m.add("FITS", <ke_friction::Fit as Named>::names())?;
     m.add("MODELS", <ke_friction::ModelKind as Named>::names())?;

@@ -11,7 +11,7 @@ use ke_friction::topography::{
     Channel, Cutoff, Derivative, Detrend, Field, FilterError, LambdaS, LoadInputs, Psd, RequestError, ScanRange,
     Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window, MAX_POINTS,
 };
-use ke_friction::{Classify, Load, Materials};
+use ke_friction::{Classify, Load, Materials, Named};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -28,18 +28,12 @@ pub fn length_unit(name: &str) -> PyResult<f64> {
 }
 
 fn detrend_of(name: &str) -> PyResult<Detrend> {
-    Detrend::from_name(name).ok_or_else(|| {
-        let names: Vec<String> = Detrend::ALL.iter().map(|d| format!("{:?}", d.name())).collect();
-        value_error(format!("detrend = {name:?}: must be one of {}", names.join(", ")))
-    })
+    Detrend::parse(name).map_err(value_error)
 }
 
 /// The derivative estimate called `name` (the core's names).
 fn derivative_of(name: &str) -> PyResult<Derivative> {
-    Derivative::from_name(name).ok_or_else(|| {
-        let names: Vec<String> = Derivative::ALL.iter().map(|d| format!("{:?}", d.name())).collect();
-        value_error(format!("derivative = {name:?}: must be one of {}", names.join(", ")))
-    })
+    Derivative::parse(name).map_err(value_error)
 }
 
 /// The statistics' options of the Python keywords (no filters).
@@ -111,13 +105,9 @@ fn psd_arrays<'py>(py: Python<'py>, p: Psd) -> (Bound<'py, PyArray1<f64>>, Bound
     (PyArray1::from_vec(py, p.q), PyArray1::from_vec(py, p.c))
 }
 
-/// The window of the Python keyword.
+/// The window of the Python keyword (the core's names).
 fn window_of(name: &str) -> PyResult<Window> {
-    match name {
-        "none" => Ok(Window::None),
-        "hann" => Ok(Window::Hann),
-        _ => Err(value_error(format!("window = {name:?}: must be \"none\" or \"hann\""))),
-    }
+    Window::parse(name).map_err(value_error)
 }
 
 /// The topography of `heights` (row-major, `ny` rows of `nx`): a profile

@@ -21,6 +21,7 @@ CURVE_ACCURACY: float
 SURFACE_F_STAR: Tuple[float, float]
 DETRENDS: list[str]
 DERIVATIVES: list[str]
+WINDOWS: list[str]
 FAMILIES: list[str]
 FITS: list[str]
 MODELS: list[str]

@@ -22,6 +22,7 @@ from ._model import Model
 _DETRENDS = tuple(_core.DETRENDS)
 _DERIVATIVES = tuple(_core.DERIVATIVES)
 _FAMILIES = tuple(_core.FAMILIES)
+_WINDOWS = tuple(_core.WINDOWS)
 #: The length units' names (``kefric surface --z-unit``'s) and the other
 #: symbols SurfaceTopography gives its topographies' ``unit`` ("µm", "Å").
 _LENGTH_UNITS = tuple(_core.LENGTH_UNITS)
@@ -644,7 +645,7 @@ class Surface:
         ``"area"`` (the radially averaged 2-D PSD, C in m^4). ``window``:
         ``"none"`` or ``"hann"``. Of a single surface (ValueError for a
         pair) without missing points."""
-        window = _choice("window", window, ("none", "hann"))
+        window = _choice("window", window, _WINDOWS)
         return {name: (q, c) for name, q, c in self._core.psd(window)}
 
     def scale_dependent(self, distances: Optional[ArrayLike] = None, order: int = 1) -> Dict[str, np.ndarray]:
