@@ -12,7 +12,7 @@
 use ke_friction::topography::{
     psd_all, scan, Analysis as Answer, Channel, Cutoff, Derivative, Detrend, Evaluation, Field, Format, LambdaS,
     LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest, Topography,
-    Window,
+    Window, SENSITIVITY_FAMILIES,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Warnings,
@@ -307,10 +307,38 @@ impl Analysis {
 
     /// μ at loads around the given one: (load in N or Pa, μ) rows.
     pub fn mu_against_load_rows(&self) -> Vec<(f64, f64)> {
-        let (Some(load), Some(params), Some(materials)) = (self.load, self.params(), &self.materials) else {
+        match self.params() {
+            Some(params) => self.mu_against_load_of(params.clone()),
+            None => Vec::new(),
+        }
+    }
+
+    /// μ at loads around the given one under the height model `family`
+    /// (the other choices the analysis's): (load, μ) rows, or why the
+    /// surface admits no such model.
+    pub fn mu_against_load_under(&self, family: Family) -> Result<Vec<(f64, f64)>, String> {
+        let Some(materials) = self.materials else {
+            return Ok(Vec::new());
+        };
+        let how = ke_friction::topography::SurfaceModel {
+            family: Some(family),
+            ..self.request.model_of(materials)
+        };
+        let params = self.surface().model_params(&how).map_err(|e| {
+            page_error(&ke_friction::topography::evaluate_failure(
+                &e,
+                Some(family),
+                Field::Force,
+            ))
+        })?;
+        Ok(self.mu_against_load_of(params))
+    }
+
+    fn mu_against_load_of(&self, params: Params) -> Vec<(f64, f64)> {
+        let (Some(load), Some(materials)) = (self.load, &self.materials) else {
             return Vec::new();
         };
-        let Ok(model) = Model::new(params.clone()) else {
+        let Ok(model) = Model::new(params) else {
             return Vec::new();
         };
         let physical = self.surface().physical(materials);
@@ -457,7 +485,23 @@ impl Analysis {
             "N"
         };
         let (load, mu): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
-        json!({ "unit": unit, "load": load, "mu": mu }).to_string()
+        // The same loads under each height model of the sensitivity, the
+        // chosen one among them.
+        let mut models = serde_json::Map::new();
+        if self.load.is_some() {
+            for family in SENSITIVITY_FAMILIES {
+                let value = match self.mu_against_load_under(family) {
+                    Ok(rows) => {
+                        let (load, mu): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
+                        json!({ "load": load, "mu": mu })
+                    }
+                    Err(e) => json!({ "error": e }),
+                };
+                models.insert(family.name().to_string(), value);
+            }
+        }
+        let chosen = self.params().map(|p| p.constants.distribution.family());
+        json!({ "unit": unit, "load": load, "mu": mu, "models": models, "chosen": chosen }).to_string()
     }
 
     /// The scan over λs (JSON), calling `progress(done, total)` after each row.
