@@ -6,7 +6,8 @@ use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::{evaluate, Args};
 use ke_friction::topography::{
-    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
+    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanError, ScanRange,
+    Window,
 };
 use ke_friction::Shortest;
 use std::path::Path;
@@ -73,7 +74,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
             eprint!("\rscan: {done}/{total}");
         }
     })
-    .map_err(|e| Failure::of("--scan", e))?;
+    .map_err(|e| Failure::of(scan_flags(&e), e))?;
     if tty {
         eprintln!();
     }
@@ -332,4 +333,12 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
         outln!("{}", cells.join(","))?;
     }
     Ok(())
+}
+
+/// The flags a refused scan range names.
+pub(crate) fn scan_flags(e: &ScanError) -> &'static str {
+    match e {
+        ScanError::PerDecade { .. } => "--per-decade",
+        _ => "--from/--to",
+    }
 }

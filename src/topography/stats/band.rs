@@ -13,6 +13,7 @@ impl Topography {
         if options.lambda_s.is_none() && options.lambda_c.is_none() {
             return Ok(None);
         }
+        options.check()?;
         let s = match options.lambda_s {
             Some(lambda) => s_filter(self, lambda)?,
             None => self.clone(),
