@@ -38,6 +38,8 @@ pub use stats::{
 pub use surface::Surface;
 pub use write::write_x3p;
 
+use std::sync::Arc;
+
 /// A measured height map (or profile) on a regular grid, in SI units.
 ///
 /// Heights are stored row-major: `ny` rows of `nx` points, a row running
@@ -47,9 +49,12 @@ pub use write::write_x3p;
 ///
 /// Two topographies are equal when their grids and heights are (the
 /// [`Metadata`] describes, it is not compared).
+///
+/// A clone shares the heights (they are immutable, behind an [`Arc`]): a
+/// scan's rows and a surface's parts hold no copy of them.
 #[derive(Debug, Clone)]
 pub struct Topography {
-    heights: Vec<f64>,
+    heights: Arc<Vec<f64>>,
     nx: usize,
     ny: usize,
     dx: f64,
@@ -138,7 +143,7 @@ impl Topography {
             return Err(TopographyError::Infinite { index });
         }
         Ok(Topography {
-            heights,
+            heights: Arc::new(heights),
             nx,
             ny,
             dx,
