@@ -206,8 +206,11 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 /// `surface --psd`: the power spectral densities of the detrended heights.
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
-    let t = args.read.read("surface", path)?;
-    let detrended = t
+    // The heights as read are dropped once detrended: one map held
+    // while the spectra are taken.
+    let detrended = args
+        .read
+        .read("surface", path)?
         .detrended_topography(args.read.options().detrend)
         .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;
     let window = if args.hann { Window::Hann } else { Window::None };
