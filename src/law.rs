@@ -371,7 +371,7 @@ impl FrictionLaw {
         };
         // +∞ is above the range like any large pressure: clamped to
         // μ(p_max), not refused (FRIC_COEF gave it the open-contact μ).
-        if !(p > 0.0) || self.policy == OutOfRange::Error {
+        if p.is_nan() || p <= 0.0 || self.policy == OutOfRange::Error {
             return Err(error);
         }
         self.clamped.fetch_add(1, Ordering::Relaxed);

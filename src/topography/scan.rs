@@ -101,7 +101,7 @@ impl ScanRange {
         let decades = to.log10() - from.log10();
         let steps = (decades * per_decade as f64 - 1e-9).ceil().max(0.0);
         // steps + 1 values (the last is `to`).
-        if !(steps < SCAN_ROWS_MAX as f64) {
+        if steps.is_nan() || steps >= SCAN_ROWS_MAX as f64 {
             return Err(ScanError::TooManyRows {
                 from,
                 to,
