@@ -121,3 +121,36 @@ fn negative_numbers_are_flag_values() {
     let o = kefric(&["eval", "--psi", "-1", "--theta", "10", "--h-star", "1"]);
     assert_bad_input(&o, "--psi");
 }
+
+/// A Pearson density near its bound (K = Sk² + 1.01) makes μ(F*) jump:
+/// the law fails at the first cell count whose 40 halvings miss by more
+/// than finer cells could mend (16 cells per octave), saying where, not
+/// after every finer build (it took 4.7 s, release).
+#[test]
+fn a_law_whose_mu_jumps_fails_at_the_first_cell_count() {
+    let o = kefric(&[
+        "law",
+        "--psi",
+        "1",
+        "--theta",
+        "1e-3",
+        "--hardness",
+        "1e9",
+        "--pressure",
+        "1e5:1e7",
+        "--distribution",
+        "pearson",
+        "--skewness",
+        "5",
+        "--kurtosis",
+        "26.01",
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("--pressure") && err.contains("at F* = 0.00146"), "{err}");
+    assert!(
+        err.contains("with 16 cells per octave") && err.contains("jumps"),
+        "{err}"
+    );
+}
