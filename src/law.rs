@@ -115,8 +115,8 @@ impl Classify for FrictionLawError {
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 #[non_exhaustive]
 pub enum PressureError {
-    /// The pressure is NaN, infinite, ≤ 0 (an open contact) or, under
-    /// [`OutOfRange::Error`], outside the law's range. In a batch, `index`
+    /// The pressure is NaN, ≤ 0 (an open contact, −∞ included) or, under
+    /// [`OutOfRange::Error`], outside the law's range (+∞ included). In a batch, `index`
     /// is the element's position.
     #[error("{}pressure = {} Pa {}", Index(*.index), Shortest(*.value), Reason(*.value, *.lo, *.hi))]
     Pressure {
@@ -200,7 +200,8 @@ impl PressureError {
 }
 
 impl Classify for PressureError {
-    /// p ≤ 0 (an open contact) is [`ErrorKind::NoMu`]; NaN, ±∞ and slices
+    /// p ≤ 0 (an open contact) is [`ErrorKind::NoMu`]; NaN, ±∞ (+∞ only
+    /// under [`OutOfRange::Error`]) and slices
     /// of different lengths are [`ErrorKind::Argument`]; a pressure outside
     /// the range is [`ErrorKind::Domain`].
     fn kind(&self) -> ErrorKind {
@@ -223,9 +224,10 @@ impl Classify for PressureError {
 ///   [`CURVE_ACCURACY`] (1e-6).
 /// - dμ/dp = (dμ/dF*)/H, in 1/Pa: the slope of the curve's cubic
 ///   (continuous across cells).
-/// - Outside `[p_min, p_max]` (a positive, finite p): the [`OutOfRange`]
-///   policy chosen at construction. p ≤ 0 (an open contact), NaN and ±∞
-///   are always errors — in a batch, NaN under [`OnError::Nan`].
+/// - Outside `[p_min, p_max]` (a positive p, +∞ included: clamped, +∞
+///   gets μ(p_max) as 1e300 does): the [`OutOfRange`] policy chosen at
+///   construction. p ≤ 0 (an open contact, −∞ included) and NaN are always
+///   errors — in a batch, NaN under [`OnError::Nan`].
 #[derive(Debug)]
 pub struct FrictionLaw {
     /// μ(F*) over `[p_min/H, p_max/H]`.
@@ -333,8 +335,8 @@ impl FrictionLaw {
         FrictionLaw::new(params, materials.hardness, range, policy)
     }
 
-    /// μ at the pressure `p` (Pa): an error for p ≤ 0, NaN or ±∞, and
-    /// outside the range under [`OutOfRange::Error`].
+    /// μ at the pressure `p` (Pa): an error for p ≤ 0 (−∞ too) or NaN,
+    /// and outside the range (+∞ too) under [`OutOfRange::Error`].
     #[inline]
     pub fn mu(&self, p: f64) -> Result<f64, PressureError> {
         match self.curve.mu(p / self.hardness) {
@@ -367,7 +369,9 @@ impl FrictionLaw {
             lo: self.range.0,
             hi: self.range.1,
         };
-        if !(p > 0.0 && p.is_finite()) || self.policy == OutOfRange::Error {
+        // +∞ is above the range like any large pressure: clamped to
+        // μ(p_max), not refused (FRIC_COEF gave it the open-contact μ).
+        if p.is_nan() || p <= 0.0 || self.policy == OutOfRange::Error {
             return Err(error);
         }
         self.clamped.fetch_add(1, Ordering::Relaxed);
@@ -583,11 +587,23 @@ mod tests {
         assert_eq!(law.mu_and_derivative(10.0).unwrap(), (law.mu(lo).unwrap(), 0.0));
         assert_eq!(law.mu_and_derivative(1e9).unwrap(), (law.mu(hi).unwrap(), 0.0));
         assert_eq!(law.clamped(), 2);
-        // Open contacts and NaN are never clamped.
-        for p in [0.0, -1.0, f64::NAN, f64::INFINITY, -0.0] {
+        // Open contacts (−∞ too) and NaN are never clamped.
+        for p in [0.0, -1.0, f64::NAN, f64::NEG_INFINITY, -0.0] {
             assert!(law.mu(p).is_err(), "{p}");
         }
-        assert_eq!(law.reset_clamped(), 2);
+        // +∞ is above the range as 1e300 is (issue 46: FRIC_COEF gave it
+        // the open-contact μ(p_min)).
+        for p in [1e300, f64::INFINITY] {
+            assert_eq!(law.mu_and_derivative(p).unwrap(), (law.mu(hi).unwrap(), 0.0), "{p}");
+            let (mut mu, mut d) = ([0.0], [0.0]);
+            assert_eq!(
+                law.mu_and_derivative_batch(&[p], &mut mu, &mut d, OnError::Nan)
+                    .unwrap(),
+                0
+            );
+            assert_eq!((mu[0], d[0]), (law.mu(hi).unwrap(), 0.0));
+        }
+        assert_eq!(law.reset_clamped(), 6);
         assert_eq!(law.clamped(), 0);
     }
 

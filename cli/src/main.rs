@@ -86,7 +86,17 @@ enum Command {
 /// The command line's definition: the derived one with the help headings
 /// that depend on each subcommand's flags ([`args::help_headings`]).
 fn command() -> clap::Command {
-    args::help_headings(Cli::command())
+    negative_numbers(args::help_headings(Cli::command()))
+}
+
+/// Every (sub)command takes a negative number as a flag's value without
+/// `=` (`--skewness -1`, `--h-star -0.5`), not as an unknown flag.
+fn negative_numbers(mut command: clap::Command) -> clap::Command {
+    let names: Vec<String> = command.get_subcommands().map(|c| c.get_name().to_string()).collect();
+    for name in names {
+        command = command.mut_subcommand(name, negative_numbers);
+    }
+    command.allow_negative_numbers(true)
 }
 
 /// Parses the command line, runs the subcommand, returns the exit status.

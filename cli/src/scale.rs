@@ -7,7 +7,8 @@ use crate::output::Failure;
 use crate::surface::{evaluate, Args};
 use crate::surface_args::request_failure;
 use ke_friction::topography::{
-    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
+    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanError, ScanRange,
+    Window,
 };
 use ke_friction::Shortest;
 use std::path::Path;
@@ -62,7 +63,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
             eprint!("\rscan: {done}/{total}");
         }
     })
-    .map_err(|e| Failure::of("--scan", e))?;
+    .map_err(|e| Failure::of(scan_flags(&e), e))?;
     if tty {
         eprintln!();
     }
@@ -194,8 +195,11 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 /// `surface --psd`: the power spectral densities of the detrended heights.
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
-    let t = args.read.read("surface", path)?;
-    let detrended = t
+    // The heights as read are dropped once detrended: one map held
+    // while the spectra are taken.
+    let detrended = args
+        .read
+        .read("surface", path)?
         .detrended_topography(args.read.options().detrend)
         .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;
     let window = if args.hann { Window::Hann } else { Window::None };
@@ -317,4 +321,12 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
         outln!("{}", cells.join(","))?;
     }
     Ok(())
+}
+
+/// The flags a refused scan range names.
+pub(crate) fn scan_flags(e: &ScanError) -> &'static str {
+    match e {
+        ScanError::PerDecade { .. } => "--per-decade",
+        _ => "--from/--to",
+    }
 }

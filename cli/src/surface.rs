@@ -64,7 +64,7 @@ pub struct Args {
     /// The largest λs of --scan (m) [default: a tenth of the scan size].
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true, requires = "scan")]
     pub to: Option<f64>,
-    /// Values a decade of --scan.
+    /// Values a decade of --scan (1 to 100; a scan has at most 1000 rows: --from to --to spans at most 999/N decades).
     #[arg(long, value_name = "N", default_value_t = 5, requires = "scan")]
     pub per_decade: usize,
     /// The power spectral density of the detrended heights (unfiltered): 1-D along x (and y) averaged over lines, and the radially averaged 2-D PSD of a map, in SurfaceTopography's conventions (q in rad/m; C in m³, or m⁴ for 2-D).

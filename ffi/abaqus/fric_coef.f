@@ -20,6 +20,7 @@ C routine keeps no state, so it is safe to call from several threads).
 C Pressures outside [p_min, p_max] get mu at the nearest end and a zero
 C derivative. A node at p <= 0 (first touch, opening) gets mu at p_min
 C and a zero derivative: the stick limit mu*p is 0 there anyway.
+C p = +inf gets mu at p_max (clamped); a NaN pressure gets mu = NaN.
 C Props the library refuses stop the analysis (XIT) with its message.
 C
 C Fixed-form Fortran with the C interfaces written out, so that the file
@@ -46,7 +47,6 @@ C fCoefDeriv(:,2,1), the other derivatives 0.
       SUBROUTINE KEF_FRIC_COEF(fCoef, fCoefDeriv, nBlock, nProps, props,
      *   pressure)
       USE, INTRINSIC :: ISO_C_BINDING
-      USE, INTRINSIC :: IEEE_ARITHMETIC, ONLY: IEEE_IS_NAN
       IMPLICIT NONE
       INTEGER nBlock, nProps
       REAL(C_DOUBLE) fCoef(nBlock,2), fCoefDeriv(nBlock,20,2),
@@ -113,7 +113,7 @@ C       Open nodes (p <= 0): mu at p_min, no slope.
         IF (code .EQ. 0) code = kef_law_mu(law, pMin, muMin)
         IF (code .NE. 0) CALL KEF_ABAQUS_STOP('kef_law_mu')
         DO k = 1, nBlock
-          IF (IEEE_IS_NAN(fCoef(k,1))) THEN
+          IF (pressure(k) .LE. 0.d0) THEN
             fCoef(k,1) = muMin
             fCoefDeriv(k,i_fDer_Pressure,1) = 0.d0
           END IF

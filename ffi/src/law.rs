@@ -156,8 +156,10 @@ pub unsafe extern "C" fn kef_law_from_surface(
 }
 
 /// mu at the contact pressure `p` (Pa) into `*mu`. KEF_ERR_NO_MU for
-/// p <= 0 (an open contact: no friction coefficient), KEF_ERR_ARGUMENT for
-/// NaN or +-inf, KEF_ERR_DOMAIN outside the range under KEF_LAW_ERROR.
+/// p <= 0 (an open contact: no friction coefficient; -inf too),
+/// KEF_ERR_ARGUMENT for NaN, KEF_ERR_DOMAIN outside the range under
+/// KEF_LAW_ERROR (+inf: KEF_ERR_ARGUMENT there; under KEF_LAW_CLAMP it is
+/// clamped to mu(p_max) like any pressure above the range).
 /// A failure costs about what a lookup does (its message is formatted by
 /// kef_last_error).
 ///

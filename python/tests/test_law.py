@@ -90,7 +90,7 @@ def test_error_policy_names_the_pressure_and_the_range():
     assert law.clamped == 0
 
 
-@pytest.mark.parametrize("p", [0.0, -1e6, float("nan"), float("inf")])
+@pytest.mark.parametrize("p", [0.0, -1e6, float("nan"), float("-inf")])
 def test_an_open_contact_is_never_a_number(law, p):
     with pytest.raises(ValueError, match="pressure"):
         law.mu(p)

@@ -118,16 +118,20 @@ pub enum CurveError {
     /// range outside its F*).
     #[error(transparent)]
     Lookup(#[from] LookupError),
-    /// Even 256 cells per octave, with the cells that miss it bisected
-    /// 40 times, miss the accuracy asked for: μ(F*) is not continuous near
-    /// `f_star`, or not smooth over more than a few cells.
+    /// A cell bisected 40 times still misses the accuracy asked for (μ(F*)
+    /// jumps near `f_star`: finer cells cannot help, so this is known at
+    /// the first cell count where it happens), or even 256 cells per
+    /// octave miss it in more cells than are bisected: μ(F*) is not
+    /// smooth over more than a few cells.
     #[error(
         "the curve misses its accuracy: max relative error {max_error:e} > {accuracy:e} at F* = {f_star} \
-         with 256 cells per octave and the cells that miss it bisected up to 40 times; mu(F*) is not \
-         smooth enough there for cubic cells; build curves on ranges either side of it, or use direct \
-         integration"
+         with {cells_per_octave} cells per octave and the cells that miss it bisected up to 40 times; \
+         mu(F*) jumps or is not smooth enough there for cubic cells; build curves on ranges either side \
+         of it, or use direct integration"
     )]
     Accuracy {
+        /// The cells per octave of the last attempt (16 to 256).
+        cells_per_octave: u32,
         /// The measured error.
         max_error: f64,
         /// The accuracy asked for.
@@ -260,11 +264,28 @@ impl Curve {
                         curve.max_error = kept.fold(max_split, f64::max);
                         return Ok(curve);
                     }
+                    // A piece 40 halvings narrow that misses. Where μ has
+                    // a cusp |F* − F₀|^α (α ≤ 1: with α > 1 the halvings
+                    // meet it long before), the error of the narrowest
+                    // piece falls by at most 2 a bit of cell count, so
+                    // if it misses by more than 2^(bits left) the finer
+                    // builds cannot meet it either (a jump, α = 0): said
+                    // now, not after them (issue 46: 4.7 s for a Pearson
+                    // density near its bound).
+                    Err(missed_by) if missed_by.0 > accuracy * f64::from(1u32 << (MAX_CELL_BITS - cell_bits)) => {
+                        return Err(CurveError::Accuracy {
+                            cells_per_octave: 1 << cell_bits,
+                            max_error: missed_by.0,
+                            accuracy,
+                            f_star: missed_by.1,
+                        })
+                    }
                     Err(missed_by) => worst = missed_by,
                 }
             }
         }
         Err(CurveError::Accuracy {
+            cells_per_octave: 1 << MAX_CELL_BITS,
             max_error: worst.0,
             accuracy,
             f_star: worst.1,

@@ -51,6 +51,12 @@ impl Parameters for Weibull {
     /// Γ-function estimate.
     fn density(&self) -> Density {
         let sk = self.skewness;
+        if sk == WEIBULL_SKEWNESS_MAX {
+            // k = 1 exactly: the exponential, whose skewness is 2 (a
+            // search could land on k a rounding below 1, where the
+            // density's end would be a pole).
+            return of_shape(1.0);
+        }
         let skew_of = |ln_k: f64| {
             let d = of_shape(ln_k.exp());
             (d.integrate(|x| x * x * x), d)
@@ -131,20 +137,32 @@ impl Form for WeibullForm {
     fn ln(&self, x: f64) -> f64 {
         let Self { k, mu, sd } = *self;
         let w = mu + sd * x;
-        (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
+        (sd * k).ln() + power_ln(k, w) - w.powf(k)
     }
 
     #[inline]
     fn dln(&self, x: f64) -> f64 {
         let Self { k, mu, sd } = *self;
         let w = mu + sd * x;
-        sd * ((k - 1.0) / w - k * w.powf(k - 1.0))
+        let pole = if k == 1.0 { 0.0 } else { (k - 1.0) / w };
+        sd * (pole - k * w.powf(k - 1.0))
     }
 
     fn ln_at_end(&self, _: End, _: bool, dist: f64, _: f64) -> f64 {
         let Self { k, sd, .. } = *self;
         let w = sd * dist;
-        (sd * k).ln() + (k - 1.0) * w.ln() - w.powf(k)
+        (sd * k).ln() + power_ln(k, w) - w.powf(k)
+    }
+}
+
+/// (k − 1)·ln w, 0 for k = 1 (Sk = 2, the exponential: w⁰ = 1 at w = 0
+/// too, where 0·ln 0 would be NaN).
+#[inline]
+fn power_ln(k: f64, w: f64) -> f64 {
+    if k == 1.0 {
+        0.0
+    } else {
+        (k - 1.0) * w.ln()
     }
 }
 
@@ -192,6 +210,10 @@ fn weibull_moments(k: f64) -> (f64, f64) {
 pub(crate) fn weibull_shape(sk: f64) -> Option<f64> {
     if !(sk > WEIBULL_SKEWNESS_MIN && sk <= WEIBULL_SKEWNESS_MAX) {
         return None;
+    }
+    if sk == WEIBULL_SKEWNESS_MAX {
+        // The exponential.
+        return Some(1.0);
     }
     let (mut lo, mut hi) = (0.5f64.ln(), 1000f64.ln());
     for _ in 0..200 {

@@ -12,7 +12,7 @@ use crate::{Model, Params, Table};
 /// The model constants a table holds, or a curve asks for, in words.
 fn constants(p: &Params) -> String {
     format!(
-        "beta = {}, nu = {}, eps_star = {}, fit {:?}, model {:?}",
+        "beta = {}, nu = {}, eps_star = {}, fit {}, model {}",
         p.constants.beta, p.constants.nu, p.constants.eps_star, p.constants.fit, p.constants.kind
     )
 }

@@ -120,7 +120,7 @@ pub fn gaussian_lowpass_using(t: &Topography, lambda: f64, method: Convolution) 
         offset,
         scale,
         residual: mut heights,
-    } = filtered(t, lambda, method)?;
+    } = filtered(t, None, lambda, method)?;
     for h in &mut heights {
         // NaN (missing) stays NaN.
         *h = offset + scale * *h;
@@ -137,20 +137,70 @@ pub fn s_filter(t: &Topography, lambda_s: f64) -> Result<Topography, FilterError
 /// The L-filter: the roughness z − `G_λc[z]` (metres), the wavelengths
 /// longer than `lambda_c` removed. Missing points stay missing.
 pub fn l_filter(t: &Topography, lambda_c: f64) -> Result<Topography, FilterError> {
-    let f = filtered(t, lambda_c, Convolution::Auto)?;
-    let heights = t
+    l_filter_of(t, None, lambda_c)
+}
+
+/// The L-filter of `t` less `trend` (the F-operation's plane), the
+/// detrended heights never held: computed row by row where they are
+/// needed. Holds one map-sized buffer besides `t` (two with missing
+/// points), the result's.
+pub(crate) fn l_filter_of(t: &Topography, trend: Option<&Trend>, lambda_c: f64) -> Result<Topography, FilterError> {
+    let Filtered {
+        offset,
+        scale,
+        residual: mut heights,
+    } = filtered(t, trend, lambda_c, Convolution::Auto)?;
+    let mut buffer = Vec::new();
+    for (j, (z, r)) in t
         .heights()
-        .iter()
-        .zip(&f.residual)
-        .map(|(&z, r)| {
-            if r.is_nan() {
+        .chunks_exact(t.nx())
+        .zip(heights.chunks_exact_mut(t.nx()))
+        .enumerate()
+    {
+        let z = source_row(trend, j, z, &mut buffer);
+        for (&z, r) in z.iter().zip(r) {
+            // NaN (missing) stays NaN.
+            *r = if r.is_nan() {
                 f64::NAN
             } else {
-                (z - f.offset) - f.scale * r
-            }
-        })
-        .collect();
+                (z - offset) - scale * *r
+            };
+        }
+    }
     Ok(like(t, heights))
+}
+
+/// A fitted plane (or line, or mean) taken off heights row by row:
+/// `(z − z0) − (rows[j] + columns[i])` at column i of row j (NaN stays
+/// NaN), the F-operation of [`Topography::detrended`] without a
+/// map-sized copy.
+#[derive(Debug, Clone)]
+pub(crate) struct Trend {
+    /// The first valid height (taken off first, for precision).
+    pub(crate) z0: f64,
+    /// The plane's value less its x term, per row.
+    pub(crate) rows: Vec<f64>,
+    /// The plane's x term, per column.
+    pub(crate) columns: Vec<f64>,
+}
+
+impl Trend {
+    /// Row `j`'s heights `z` less the trend, in `buffer`.
+    pub(crate) fn row<'a>(&self, j: usize, z: &[f64], buffer: &'a mut Vec<f64>) -> &'a [f64] {
+        let p = self.rows[j];
+        buffer.clear();
+        buffer.extend(z.iter().zip(&self.columns).map(|(&z, &l)| (z - self.z0) - (p + l)));
+        buffer
+    }
+}
+
+/// Row `j` of the filter's input: the heights `z`, less `trend` if any.
+#[inline]
+fn source_row<'a>(trend: Option<&Trend>, j: usize, z: &'a [f64], buffer: &'a mut Vec<f64>) -> &'a [f64] {
+    match trend {
+        Some(trend) => trend.row(j, z, buffer),
+        None => z,
+    }
 }
 
 fn like(t: &Topography, heights: Vec<f64>) -> Topography {
@@ -158,7 +208,7 @@ fn like(t: &Topography, heights: Vec<f64>) -> Topography {
     // finite heights, kept in range by the offset and scale of
     // `filtered`).
     Topography {
-        heights,
+        heights: std::sync::Arc::new(heights),
         nx: t.nx(),
         ny: t.ny(),
         dx: t.dx(),
@@ -190,10 +240,14 @@ fn check(t: &Topography, lambda: f64) -> Result<(), FilterError> {
     Ok(())
 }
 
-fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered, FilterError> {
+/// The filter of `t`'s heights less `trend` (if any), the input read row
+/// by row: the one map-sized buffer is the result's (and, with missing
+/// points, the denominator's).
+fn filtered(t: &Topography, trend: Option<&Trend>, lambda: f64, method: Convolution) -> Result<Filtered, FilterError> {
     check(t, lambda)?;
     let (nx, ny) = (t.nx(), t.ny());
     let z = t.heights();
+    let mut buffer = Vec::new();
     // Filter (z − offset)/scale: the offset (mid-range) makes a constant
     // surface exactly constant and keeps FFT rounding relative to the
     // roughness, not to the mean height; the power-of-two scale (exact)
@@ -201,10 +255,12 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     // One pass for the range and the missing points (comparisons with
     // NaN are false: missing points drop out by themselves).
     let (mut lo, mut hi, mut missing) = (f64::INFINITY, f64::NEG_INFINITY, false);
-    for &h in z {
-        lo = if h < lo { h } else { lo };
-        hi = if h > hi { h } else { hi };
-        missing |= h.is_nan();
+    for (j, row) in z.chunks_exact(nx).enumerate() {
+        for &h in source_row(trend, j, row, &mut buffer) {
+            lo = if h < lo { h } else { lo };
+            hi = if h > hi { h } else { hi };
+            missing |= h.is_nan();
+        }
     }
     if lo > hi {
         // Every point missing.
@@ -220,10 +276,17 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     let scale = 2f64.powi((spread.log2().ceil() as i32).clamp(-1022, 1023));
     let inverse = 1.0 / scale;
 
-    let mut num: Vec<f64> = z
-        .iter()
-        .map(|&h| if h.is_nan() { 0.0 } else { (h - offset) * inverse })
-        .collect();
+    let mut num: Vec<f64> = Vec::with_capacity(z.len());
+    for (j, row) in z.chunks_exact(nx).enumerate() {
+        num.extend(source_row(trend, j, row, &mut buffer).iter().map(|&h| {
+            if h.is_nan() {
+                0.0
+            } else {
+                (h - offset) * inverse
+            }
+        }));
+    }
+    drop(buffer);
     let mut den: Vec<f64> = if missing {
         z.iter().map(|h| if h.is_nan() { 0.0 } else { 1.0 }).collect()
     } else {
@@ -252,10 +315,12 @@ fn filtered(t: &Topography, lambda: f64, method: Convolution) -> Result<Filtered
     }
 
     let residual = if missing {
-        z.iter()
-            .zip(num.iter().zip(&den))
-            .map(|(h, (n, d))| if h.is_nan() { f64::NAN } else { n / d })
-            .collect()
+        // In place: a point is missing in the input less the trend iff
+        // it is in the heights (the trend is finite).
+        for (n, (h, d)) in num.iter_mut().zip(z.iter().zip(&den)) {
+            *n = if h.is_nan() { f64::NAN } else { *n / d };
+        }
+        num
     } else {
         for d in &mut den_x {
             *d = 1.0 / *d;

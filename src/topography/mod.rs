@@ -35,13 +35,15 @@ pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
-pub use scan::{scan, ScanError, ScanRange, ScanRow};
+pub use scan::{scan, ScanError, ScanRange, ScanRow, SCAN_ROWS_MAX};
 pub use sensitivity::{band_ends, BandEnd, Outcome, Sensitivity, SENSITIVITY_FAMILIES};
 pub use stats::{
     combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
 };
 pub use surface::Surface;
 pub use write::write_x3p;
+
+use std::sync::Arc;
 
 /// A measured height map (or profile) on a regular grid, in SI units.
 ///
@@ -52,9 +54,12 @@ pub use write::write_x3p;
 ///
 /// Two topographies are equal when their grids and heights are (the
 /// [`Metadata`] describes, it is not compared).
+///
+/// A clone shares the heights (they are immutable, behind an [`Arc`]): a
+/// scan's rows and a surface's parts hold no copy of them.
 #[derive(Debug, Clone)]
 pub struct Topography {
-    heights: Vec<f64>,
+    heights: Arc<Vec<f64>>,
     nx: usize,
     ny: usize,
     dx: f64,
@@ -143,7 +148,7 @@ impl Topography {
             return Err(TopographyError::Infinite { index });
         }
         Ok(Topography {
-            heights,
+            heights: Arc::new(heights),
             nx,
             ny,
             dx,

@@ -131,7 +131,10 @@ pub fn psd_all(t: &Topography, window: Window) -> Result<Vec<(&'static str, Psd)
 pub fn psd_profile_x(t: &Topography, window: Window) -> Result<Psd, PsdError> {
     complete(t)?;
     along("nx", t.nx)?;
-    Ok(lines_psd(t.heights.chunks_exact(t.nx), t.nx, t.dx, window))
+    let rows: Vec<&[f64]> = t.heights.chunks_exact(t.nx).collect();
+    Ok(lines_psd_with(t.ny, t.nx, t.dx, window, |j, line| {
+        line.copy_from_slice(rows[j])
+    }))
 }
 
 /// The 1-D PSD along y of a map: the mean of the PSDs of its columns, as
@@ -144,14 +147,25 @@ pub fn psd_profile_y(t: &Topography, window: Window) -> Result<Psd, PsdError> {
     complete(t)?;
     along("ny", t.ny)?;
     let (nx, ny) = (t.nx, t.ny);
-    let mut columns = vec![0.0; nx * ny];
-    for (j, row) in t.heights.chunks_exact(nx).enumerate() {
-        for (i, &z) in row.iter().enumerate() {
-            columns[i * ny + j] = z;
+    // Blocks of COLUMN_BLOCK columns gathered at a time (whole cache
+    // lines of each row), not a transposed copy of the map.
+    let mut block = vec![0.0; COLUMN_BLOCK * ny];
+    Ok(lines_psd_with(nx, ny, dy, window, |i, line| {
+        let (i0, c) = (i - i % COLUMN_BLOCK, i % COLUMN_BLOCK);
+        if c == 0 {
+            let b = COLUMN_BLOCK.min(nx - i0);
+            for (j, row) in t.heights.chunks_exact(nx).enumerate() {
+                for (c, &z) in row[i0..i0 + b].iter().enumerate() {
+                    block[c * ny + j] = z;
+                }
+            }
         }
-    }
-    Ok(lines_psd(columns.chunks_exact(ny), ny, dy, window))
+        line.copy_from_slice(&block[c * ny..(c + 1) * ny]);
+    }))
 }
+
+/// Columns gathered at once for the PSD along y.
+const COLUMN_BLOCK: usize = 16;
 
 /// The radially averaged 2-D PSD of a map (SurfaceTopography's
 /// `power_spectrum_from_area`, its defaults: `collocation='log'`,
@@ -211,8 +225,9 @@ fn scale_to_unit_mean_square(w: &mut [f64]) {
     w.iter_mut().for_each(|v| *v *= s);
 }
 
-/// The mean 1-D PSD of `lines` of n points spaced h.
-fn lines_psd<'a>(lines: impl Iterator<Item = &'a [f64]>, n: usize, h: f64, window: Window) -> Psd {
+/// The mean 1-D PSD of `count` lines of n points spaced h, line k
+/// written by `fill(k, line)` (in the order k = 0, 1, …).
+fn lines_psd_with(count: usize, n: usize, h: f64, window: Window, mut fill: impl FnMut(usize, &mut [f64])) -> Psd {
     let w = match window {
         Window::None => None,
         Window::Hann => Some(hann(n)),
@@ -223,9 +238,8 @@ fn lines_psd<'a>(lines: impl Iterator<Item = &'a [f64]>, n: usize, h: f64, windo
     let mut scratch = fft.make_scratch_vec();
     let kept = n / 2;
     let mut sums = vec![0.0; kept];
-    let mut count = 0usize;
-    for line in lines {
-        input.copy_from_slice(line);
+    for k in 0..count {
+        fill(k, &mut input);
         if let Some(w) = &w {
             input.iter_mut().zip(w).for_each(|(z, w)| *z *= w);
         }
@@ -234,7 +248,6 @@ fn lines_psd<'a>(lines: impl Iterator<Item = &'a [f64]>, n: usize, h: f64, windo
         for (s, x) in sums.iter_mut().zip(&spectrum) {
             *s += x.norm_sqr();
         }
-        count += 1;
     }
     let length = n as f64 * h;
     let step = length / n as f64;
@@ -257,8 +270,9 @@ struct AreaSpectrum {
     ly: f64,
     /// Columns of the half grid: k_x = 0 … Nx/2.
     half: usize,
-    /// C²ᴰ at (k_x, l), index l·half + k_x, l = 0 … Ny − 1 (m⁴).
-    c: Vec<f64>,
+    /// C²ᴰ at (k_x, l) in the real part, index l·half + k_x, l = 0 … Ny
+    /// − 1 (m⁴): the DFT's own grid, reused (one map-sized buffer).
+    c: Vec<Complex<f64>>,
 }
 
 impl AreaSpectrum {
@@ -268,8 +282,9 @@ impl AreaSpectrum {
         let (lx, ly) = (nx as f64 * t.dx, ny as f64 * dy);
         let w = match window {
             Window::None => None,
-            Window::Hann => Some(hann_radial(nx, ny, lx, ly)),
+            Window::Hann => Some(HannRadial::new(nx, ny, lx, ly)),
         };
+        let mut w_row = vec![0.0; nx];
         // Rows: real to complex along x.
         let rfft = RealFftPlanner::<f64>::new().plan_fft_forward(nx);
         let half = nx / 2 + 1;
@@ -279,10 +294,8 @@ impl AreaSpectrum {
         for (j, (row, out)) in t.heights.chunks_exact(nx).zip(grid.chunks_exact_mut(half)).enumerate() {
             input.copy_from_slice(row);
             if let Some(w) = &w {
-                input
-                    .iter_mut()
-                    .zip(&w[j * nx..(j + 1) * nx])
-                    .for_each(|(z, w)| *z *= w);
+                w.row(j, &mut w_row);
+                input.iter_mut().zip(&w_row).for_each(|(z, w)| *z *= w);
             }
             rfft.process_with_scratch(&mut input, out, &mut scratch)
                 .expect("buffers of the plan's lengths");
@@ -291,7 +304,6 @@ impl AreaSpectrum {
         let cfft = FftPlanner::<f64>::new().plan_fft_forward(ny);
         let mut column = vec![Complex::new(0.0, 0.0); ny];
         let mut scratch = vec![Complex::new(0.0, 0.0); cfft.get_inplace_scratch_len()];
-        let mut c = vec![0.0; half * ny];
         let area_per_point = (lx / nx as f64) * (ly / ny as f64);
         let scale = area_per_point * area_per_point / (lx * ly);
         for k in 0..half {
@@ -299,10 +311,12 @@ impl AreaSpectrum {
                 *v = grid[l * half + k];
             }
             cfft.process_with_scratch(&mut column, &mut scratch);
+            // Column k of the grid is read: C²ᴰ takes its place.
             for (l, v) in column.iter().enumerate() {
-                c[l * half + k] = v.norm_sqr() * scale;
+                grid[l * half + k] = Complex::new(v.norm_sqr() * scale, 0.0);
             }
         }
+        let c = grid;
         AreaSpectrum {
             nx,
             ny,
@@ -359,7 +373,7 @@ impl AreaSpectrum {
                 let w = self.weight(kx);
                 weight[index - 1] += w;
                 q_sum[index - 1] += w * q;
-                c_sum[index - 1] += w * self.c[l * self.half + kx];
+                c_sum[index - 1] += w * self.c[l * self.half + kx].re;
             }
         }
         let mut psd = Psd {
@@ -392,25 +406,63 @@ fn log_edges(q_min: f64, q_max: f64) -> Vec<f64> {
 }
 
 /// The radial Hann window of SurfaceTopography's `get_window_2D`, scaled
-/// to a mean square of 1, row-major (index j·nx + i).
-fn hann_radial(nx: usize, ny: usize, lx: f64, ly: f64) -> Vec<f64> {
-    let r_max = lx.min(ly) / 2.0;
-    let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
-    let mut w = Vec::with_capacity(nx * ny);
-    for j in 0..ny {
+/// to a mean square of 1, computed a row at a time (row j, column i).
+struct HannRadial {
+    nx: usize,
+    lx: f64,
+    ly: f64,
+    ny: usize,
+    r_max: f64,
+    /// The scale to a mean square of 1.
+    scale: f64,
+}
+
+impl HannRadial {
+    fn new(nx: usize, ny: usize, lx: f64, ly: f64) -> HannRadial {
+        let mut w = HannRadial {
+            nx,
+            lx,
+            ly,
+            ny,
+            r_max: lx.min(ly) / 2.0,
+            scale: 1.0,
+        };
+        // Σw² in the order scale_to_unit_mean_square sums (row-major), a
+        // row at a time: the same scale to the bit, no map-sized window.
+        let (mut row, mut sum) = (vec![0.0; nx], 0.0);
+        for j in 0..ny {
+            w.row(j, &mut row);
+            for v in &row {
+                sum += v * v;
+            }
+        }
+        w.scale = ((nx * ny) as f64 / sum).sqrt();
+        w
+    }
+
+    /// Row j of the window.
+    fn row(&self, j: usize, out: &mut [f64]) {
+        let HannRadial {
+            nx,
+            lx,
+            ly,
+            ny,
+            r_max,
+            scale,
+        } = *self;
+        let (cx, cy) = ((nx / 2) as f64, (ny / 2) as f64);
         let y = ly * (j as f64 - cy) / ny as f64;
-        for i in 0..nx {
+        for (i, o) in out.iter_mut().enumerate() {
             let x = lx * (i as f64 - cx) / nx as f64;
             let r = (x * x + y * y).sqrt();
-            w.push(if r > r_max {
+            let w = if r > r_max {
                 0.0
             } else {
                 0.5 + 0.5 * (PI * r / r_max).cos()
-            });
+            };
+            *o = w * scale;
         }
     }
-    scale_to_unit_mean_square(&mut w);
-    w
 }
 
 #[cfg(test)]
@@ -471,7 +523,7 @@ mod tests {
                         continue;
                     }
                     let qx = dqx * kx as f64;
-                    let v = s.weight(kx) * s.c[l * s.half + kx] * cell;
+                    let v = s.weight(kx) * s.c[l * s.half + kx].re * cell;
                     m[0] += v;
                     if 2 * kx != nx {
                         m[1] += qx.powi(2) * v;

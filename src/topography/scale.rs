@@ -51,6 +51,24 @@ pub enum ScaleError {
         /// The value given.
         value: f64,
     },
+    /// Too few points along a direction for any stencil to keep the 4
+    /// derivative values a statistic needs (every row would be NaN).
+    #[error(
+        "{name} = {count} is out of range: at least {min} points are needed along {direction} \
+         for the scale-dependent {what}"
+    )]
+    TooFewPoints {
+        /// `"nx"` or `"ny"`.
+        name: &'static str,
+        /// `"x"` or `"y"`.
+        direction: &'static str,
+        /// Points along that direction.
+        count: usize,
+        /// The fewest: 4 + the order of the derivative.
+        min: usize,
+        /// `"slope"` or `"curvature"`.
+        what: &'static str,
+    },
     /// Brent's method did not converge (not expected: the bracket holds a
     /// sign change and the iteration count is capped at 100).
     #[error("the reliability cut-off did not converge in {iterations} iterations")]
@@ -219,6 +237,7 @@ pub fn default_distances(t: &Topography, order: u32) -> Vec<f64> {
 /// ```
 pub fn tip_reliability_cutoff(t: &Topography, tip_radius: f64, safety_factor: f64) -> Result<Option<f64>, ScaleError> {
     complete(t)?;
+    enough_points(t, Order::Curvature)?;
     if !(tip_radius.is_finite() && tip_radius > 0.0) {
         return Err(ScaleError::TipRadius { value: tip_radius });
     }
@@ -282,6 +301,7 @@ enum Direction {
 
 fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Vec<ScaleRow>, ScaleError> {
     complete(t)?;
+    enough_points(t, order)?;
     if let Some(&value) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
         return Err(ScaleError::Distance { value });
     }
@@ -312,6 +332,30 @@ fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Ve
             ScaleRow { distance: d, x, y }
         })
         .collect())
+}
+
+/// A direction with fewer than `THRESHOLD` + the order points keeps fewer
+/// than `THRESHOLD` derivative values even at the shortest stencil (one
+/// step): refused, rather than rows of NaN.
+fn enough_points(t: &Topography, order: Order) -> Result<(), ScaleError> {
+    let (order, what) = match order {
+        Order::Slope => (1, "slope"),
+        Order::Curvature => (2, "curvature"),
+    };
+    let min = THRESHOLD + order;
+    let along = [("nx", "x", t.nx)].into_iter().chain(t.dy.map(|_| ("ny", "y", t.ny)));
+    for (name, direction, count) in along {
+        if count < min {
+            return Err(ScaleError::TooFewPoints {
+                name,
+                direction,
+                count,
+                min,
+                what,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Missing points are refused.

@@ -6,6 +6,10 @@
 
 use super::{StatsError, StatsOptions, Surface, Topography};
 
+/// The most rows a scan may have: 1,000 (10 decades at 100 a decade, 200
+/// at 5). Each row filters the whole surface, so the count is bounded.
+pub const SCAN_ROWS_MAX: usize = 1000;
+
 /// The λs of a scan: from `from` to `to` (metres), `per_decade` a decade.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ScanRange {
@@ -35,6 +39,24 @@ pub enum ScanError {
         /// The values a decade asked for.
         per_decade: usize,
     },
+    /// More rows than [`SCAN_ROWS_MAX`]: `from` to `to` spans too many
+    /// decades at `per_decade` a decade.
+    #[error(
+        "the scan from {from:e} m to {to:e} m spans {decades:.3} decades, out of range: at {per_decade} a decade \
+         from and to must span at most {:.3} decades (a scan has at most {max} rows)",
+        (SCAN_ROWS_MAX - 1) as f64 / *per_decade as f64,
+        max = SCAN_ROWS_MAX
+    )]
+    TooManyRows {
+        /// The smallest λs.
+        from: f64,
+        /// The largest λs.
+        to: f64,
+        /// log10(to/from) (may be infinite when the ratio overflows).
+        decades: f64,
+        /// The values a decade asked for.
+        per_decade: usize,
+    },
 }
 
 /// A bad range is the caller's argument.
@@ -42,7 +64,7 @@ impl crate::Classify for ScanError {
     fn kind(&self) -> crate::ErrorKind {
         match self {
             ScanError::Range { from, to } => crate::ErrorKind::of_value(from + to),
-            ScanError::PerDecade { .. } => crate::ErrorKind::Domain,
+            ScanError::PerDecade { .. } | ScanError::TooManyRows { .. } => crate::ErrorKind::Domain,
         }
     }
 }
@@ -74,8 +96,20 @@ impl ScanRange {
         if !(1..=100).contains(&per_decade) {
             return Err(ScanError::PerDecade { per_decade });
         }
-        let decades = (to / from).log10();
-        let steps = (decades * per_decade as f64 - 1e-9).ceil().max(0.0) as usize;
+        // to/from may overflow to ∞ (from 4.9e-324): log10 of the two
+        // separately stays finite.
+        let decades = to.log10() - from.log10();
+        let steps = (decades * per_decade as f64 - 1e-9).ceil().max(0.0);
+        // steps + 1 values (the last is `to`).
+        if steps.is_nan() || steps >= SCAN_ROWS_MAX as f64 {
+            return Err(ScanError::TooManyRows {
+                from,
+                to,
+                decades,
+                per_decade,
+            });
+        }
+        let steps = steps as usize;
         let mut values: Vec<f64> = (0..steps)
             .map(|k| from * 10f64.powf(k as f64 / per_decade as f64))
             .collect();

@@ -24,5 +24,6 @@ mod corrupted_tables;
 mod figures;
 mod hardening_build;
 mod hardening_cli;
+mod hostile_numerics;
 mod untrusted;
 mod validation_doc;

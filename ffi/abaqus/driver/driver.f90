@@ -8,6 +8,8 @@
 !   1e-6*p; inside the pressure range), to 1e-5 relative;
 ! - open nodes (p <= 0): mu at p_min, derivative 0; the other derivative
 !   columns 0;
+! - p = +inf: mu at p_max (clamped as 1e300 is), derivative 0; a NaN
+!   pressure: mu NaN (issue 46);
 ! - one shared law per props list (kef_law_from_props gives one pointer).
 ! With the argument "bad": props of a wrong length, which must stop the
 ! analysis through XIT (this stand-in: exit status 3) with the message.
@@ -15,6 +17,7 @@ program fric_coef_driver
   use ke_friction
   use, intrinsic :: iso_c_binding, only: c_null_ptr
   use omp_lib, only: omp_get_max_threads, omp_get_thread_num
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, ieee_is_nan
   implicit none
   integer, parameter :: n_block = 37, n_blocks = 96
   real(c_double), parameter :: value_tol = 1d-12, slope_tol = 1d-5, step = 1d-6
@@ -101,7 +104,7 @@ contains
     integer, intent(inout) :: n_bad
     real(c_double) :: p(n_block), up(n_block), down(n_block)
     real(c_double) :: mu(n_block, 2), d(n_block, 20, 2), mu_up(n_block, 2), mu_down(n_block, 2), scratch(n_block, 20, 2)
-    real(c_double) :: want_mu, want_d, lo, hi, hard, mu_lo, fd
+    real(c_double) :: want_mu, want_d, lo, hi, hard, mu_lo, mu_hi, fd
     integer :: k
     integer(c_int) :: code
     code = kef_law_range(law, lo, hi, hard)
@@ -111,6 +114,8 @@ contains
     end do
     p(5) = 0
     p(n_block - 3) = -1d3
+    p(n_block - 1) = ieee_value(1d0, ieee_positive_inf)
+    p(n_block) = ieee_value(1d0, ieee_quiet_nan)
     up = p * (1 + step)
     down = p * (1 - step)
     d = -7
@@ -118,8 +123,17 @@ contains
     call call_fric_coef(props, up, mu_up, scratch)
     call call_fric_coef(props, down, mu_down, scratch)
     code = kef_law_mu(law, lo, mu_lo)
+    code = kef_law_mu(law, hi, mu_hi)
     do k = 1, n_block
       if (d(k, 1, 1) /= 0 .or. d(k, 3, 1) /= 0) n_bad = n_bad + 1
+      if (ieee_is_nan(p(k))) then
+        if (.not. ieee_is_nan(mu(k, 1))) n_bad = n_bad + 1
+        cycle
+      end if
+      if (p(k) > huge(p(k))) then
+        if (mu(k, 1) /= mu_hi .or. d(k, 2, 1) /= 0) n_bad = n_bad + 1
+        cycle
+      end if
       if (p(k) <= 0) then
         if (mu(k, 1) /= mu_lo .or. d(k, 2, 1) /= 0) n_bad = n_bad + 1
         cycle

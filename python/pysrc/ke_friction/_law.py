@@ -35,12 +35,13 @@ class FrictionLaw:
     default 1e-5 H to 0.1 H), within :attr:`max_error` (at most
     CURVE_ACCURACY, 1e-6 relative) of the model.
 
-    Outside the range, a positive pressure is clamped (``out_of_range=
-    "clamp"``: mu at the nearest end, dmu/dp = 0, each such evaluation
-    counted in :attr:`clamped`) or refused (``"error"``: ValueError, or
-    NaN with ``out_of_domain="nan"``). p <= 0 (an open contact), NaN or
-    infinity is never a number: ValueError, or NaN with
-    ``out_of_domain="nan"``.
+    Outside the range, a positive pressure (+infinity too) is clamped
+    (``out_of_range="clamp"``: mu at the nearest end, dmu/dp = 0, each
+    such evaluation counted in :attr:`clamped`) or refused (``"error"``:
+    ValueError, or NaN with ``out_of_domain="nan"``). p <= 0 (an open
+    contact, -infinity too) or NaN is never a number: ValueError, or NaN
+    with ``out_of_domain="nan"``. A NumPy masked array gives a masked
+    array with its mask.
 
     Lookups take a Python float (and return a float) or an array-like of
     any shape (and return float64 arrays of that shape). A law pickles as
@@ -178,12 +179,18 @@ class FrictionLaw:
 
     def mu(self, pressure: ArrayLike, *, out_of_domain: OutOfDomain = "raise", threads: Optional[int] = 1) -> Any:
         """mu at the contact pressure (Pa): a float for a Python number, a
-        float64 array of the same shape for an array-like. p <= 0, NaN or
-        infinity (and, with ``out_of_range="error"``, a pressure outside the
-        range): ValueError naming the pressure (and its index), or NaN with
-        ``out_of_domain="nan"``. ``threads``: as :meth:`Table.mu`."""
+        float64 array of the same shape for an array-like. p <= 0 or NaN
+        (and, with ``out_of_range="error"``, a pressure outside the range,
+        +infinity too): ValueError naming the pressure (and its index), or NaN with
+        ``out_of_domain="nan"``. ``threads``: as :meth:`Table.mu`. A NumPy
+        masked array gives a masked array with the same mask (the masked
+        pressures are not evaluated: no error, no clamped count)."""
         if type(pressure) is float and out_of_domain == "raise":
             return self._core.mu_scalar(pressure)  # the fast path of a call in a loop
+        masked = self._unmasked(pressure)
+        if masked is not None:
+            data, mask = masked
+            return np.ma.masked_array(self.mu(data, out_of_domain=out_of_domain, threads=threads), mask=mask)
         nan = _mode(out_of_domain)
         if _is_scalar(pressure):
             try:
@@ -211,9 +218,15 @@ class FrictionLaw:
     def mu_and_derivative(self, pressure: ArrayLike, *, out_of_domain: OutOfDomain = "raise",
                           threads: Optional[int] = 1) -> Tuple[Any, Any]:
         """(mu, dmu/dp) at the contact pressure, dmu/dp in 1/Pa (0 where
-        clamped); as :meth:`mu`."""
+        clamped); as :meth:`mu` (a masked array gives two, both with its
+        mask)."""
         if type(pressure) is float and out_of_domain == "raise":
             return self._core.mu_and_derivative_scalar(pressure)
+        masked = self._unmasked(pressure)
+        if masked is not None:
+            data, mask = masked
+            mu, dmu = self.mu_and_derivative(data, out_of_domain=out_of_domain, threads=threads)
+            return np.ma.masked_array(mu, mask=mask), np.ma.masked_array(dmu, mask=mask.copy())
         nan = _mode(out_of_domain)
         if _is_scalar(pressure):
             try:
@@ -230,6 +243,21 @@ class FrictionLaw:
         except Exception as e:
             raise _located(e, shape) from None
         return mu.reshape(shape)[()], dmu.reshape(shape)[()]
+
+    def _unmasked(self, pressure: Any) -> Optional[Tuple[Any, Any]]:
+        """For a NumPy masked array of real numbers: its data as float64 with
+        the masked pressures replaced by p_min (in range: neither an error
+        nor a clamp), and its mask; None for anything else (a masked array
+        of other values is refused as its data would be)."""
+        if not isinstance(pressure, np.ma.MaskedArray):
+            return None
+        data = np.ma.getdata(pressure)
+        if data.dtype.kind not in "iuf":
+            return None
+        mask = np.ma.getmaskarray(pressure)
+        data = np.array(data, dtype=np.float64)
+        data[mask] = self.range[0]
+        return data, mask
 
     def table(self, pressure_min: Optional[float] = None, pressure_max: Optional[float] = None, *,
               rows: Optional[int] = None, tolerance: float = 1e-3) -> Dict[str, Any]:

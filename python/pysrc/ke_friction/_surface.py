@@ -693,7 +693,8 @@ class Surface:
         """The surface against the scale it is looked at (``kefric surface
         --scan``): the statistics at S-filter nesting indices lambda_s
         log-spaced from ``from_`` (default 2 max(dx, dy)) to ``to`` (default
-        a tenth of the scan size), ``per_decade`` a decade (1 to 100), the
+        a tenth of the scan size), ``per_decade`` a decade (1 to 100; at
+        most 1000 rows, ValueError beyond: 999/per_decade decades), the
         other options (detrending, derivative, lambda_c) this surface's.
         Each row equals ``filtered(lambda_s=...)`` at its lambda_s. With the
         seven materials keywords (all or none) also psi and theta of

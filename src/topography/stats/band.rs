@@ -2,7 +2,8 @@
 //! F-operation, L-filter.
 
 use super::{Detrend, StatsError, StatsOptions};
-use crate::topography::{l_filter, s_filter, Topography};
+use crate::topography::filter::l_filter_of;
+use crate::topography::{s_filter, Topography};
 
 impl Topography {
     /// The surface in the band `options` states, and the detrending left
@@ -13,17 +14,18 @@ impl Topography {
         if options.lambda_s.is_none() && options.lambda_c.is_none() {
             return Ok(None);
         }
-        let s = match options.lambda_s {
-            Some(lambda) => s_filter(self, lambda)?,
-            None => self.clone(),
-        };
+        options.check()?;
+        // One map-sized buffer at a time besides `self`: the S-filter's
+        // result, the L-filter's (from the S-filtered or the given
+        // heights less their plane, taken off row by row).
+        let s = options.lambda_s.map(|lambda| s_filter(self, lambda)).transpose()?;
         let Some(lambda) = options.lambda_c else {
-            return Ok(Some((s, options.detrend)));
+            // A clone shares the heights.
+            return Ok(Some((s.unwrap_or_else(|| self.clone()), options.detrend)));
         };
-        Ok(Some((
-            l_filter(&s.detrended_topography(options.detrend)?, lambda)?,
-            Detrend::Mean,
-        )))
+        let source = s.as_ref().unwrap_or(self);
+        let trend = source.trend(options.detrend)?;
+        Ok(Some((l_filter_of(source, Some(&trend), lambda)?, Detrend::Mean)))
     }
 
     /// The surface detrended as `detrend` says (missing points stay

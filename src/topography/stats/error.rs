@@ -14,6 +14,18 @@ pub enum StatsError {
     /// The filtered heights do not make a topography.
     #[error(transparent)]
     Topography(#[from] crate::topography::TopographyError),
+    /// The L-filter's nesting index λc is not longer than the S-filter's
+    /// λs: the band between them would be empty.
+    #[error(
+        "lambda_c = {lambda_c:e} m with lambda_s = {lambda_s:e} m is out of range: \
+         lambda_c must be > lambda_s (the band from lambda_s to lambda_c is empty)"
+    )]
+    EmptyBand {
+        /// The S-filter's nesting index (m).
+        lambda_s: f64,
+        /// The L-filter's nesting index (m).
+        lambda_c: f64,
+    },
     /// Fewer than 16 points along a direction.
     #[error("{name} = {count} is out of range: at least 16 points are needed along {direction}")]
     TooFewPoints {
@@ -43,7 +55,7 @@ pub enum StatsError {
     },
     /// The valid points lie on one line, so the plane (or line) fit is
     /// undetermined.
-    #[error("the valid points lie on one line: the {detrend:?} fit is undetermined (use Detrend::Mean)")]
+    #[error("the valid points lie on one line: the detrend {detrend} fit is undetermined (use detrend mean)")]
     Undetermined {
         /// The detrending asked for.
         detrend: Detrend,
@@ -67,7 +79,7 @@ pub enum StatsError {
         beta: f64,
     },
     /// Spectral moments of a surface with missing points.
-    #[error("{missing} missing points: the spectral estimate needs every point (use Derivative::FiniteDifference)")]
+    #[error("{missing} missing points: the spectral estimate needs every point (use derivative fd)")]
     MissingPoints {
         /// Missing points.
         missing: usize,

@@ -134,6 +134,21 @@ pub struct StatsOptions {
     pub lambda_c: Option<f64>,
 }
 
+impl StatsOptions {
+    /// Whether the options make a band: with both filters, λc must be
+    /// longer than λs ([`StatsError::EmptyBand`] otherwise). Each filter's
+    /// own range is checked against the surface when it is applied.
+    pub fn check(&self) -> Result<(), StatsError> {
+        match (self.lambda_s, self.lambda_c) {
+            // NaN fails the filter's own check, naming it.
+            (Some(lambda_s), Some(lambda_c)) if lambda_c <= lambda_s => {
+                Err(StatsError::EmptyBand { lambda_s, lambda_c })
+            }
+            _ => Ok(()),
+        }
+    }
+}
+
 /// The statistics of a surface and the model's inputs derived from them
 /// (MODEL.md §10), in SI units. The field names are the JSON record's.
 ///

@@ -3,6 +3,7 @@
 //! differences (pass 2), and their dispatch to AVX2 or portable code.
 
 use super::{finite, positive, Detrend, StatsError, MIN_DIFFERENCES};
+use crate::topography::filter::Trend;
 use crate::topography::Topography;
 
 // ---------------------------------------------------------------------------
@@ -381,6 +382,17 @@ impl Topography {
     /// its line), row-major, missing points still NaN: the heights whose
     /// moments [`Topography::stats`] takes, for an empirical density.
     pub fn detrended(&self, detrend: Detrend) -> Result<Vec<f64>, StatsError> {
+        let trend = self.trend(detrend)?;
+        let (mut out, mut row_buffer) = (Vec::with_capacity(self.heights.len()), Vec::new());
+        for (j, row) in self.heights.chunks_exact(self.nx).enumerate() {
+            out.extend_from_slice(trend.row(j, row, &mut row_buffer));
+        }
+        Ok(out)
+    }
+
+    /// The least-squares plane, line or mean of [`Topography::detrended`]
+    /// (fitted over the valid points), to take off row by row.
+    pub(crate) fn trend(&self, detrend: Detrend) -> Result<Trend, StatsError> {
         let Some(z0) = self.heights.iter().copied().find(|h| !h.is_nan()) else {
             return Err(StatsError::TooFewValid {
                 valid: 0,
@@ -393,12 +405,10 @@ impl Topography {
         };
         let plane = dispatch::fit_sums(self, z0).solve(detrend)?;
         let (u_of, v_of) = (centred(self.nx), centred(self.ny));
-        let lin: Vec<f64> = (0..self.nx).map(|i| plane.b * u_of(i)).collect();
-        let mut out = Vec::with_capacity(self.heights.len());
-        for (j, row) in self.heights.chunks_exact(self.nx).enumerate() {
-            let p = plane.a + plane.c * v_of(j);
-            out.extend(row.iter().zip(&lin).map(|(&z, &l)| (z - z0) - (p + l)));
-        }
-        Ok(out)
+        Ok(Trend {
+            z0,
+            rows: (0..self.ny).map(|j| plane.a + plane.c * v_of(j)).collect(),
+            columns: (0..self.nx).map(|i| plane.b * u_of(i)).collect(),
+        })
     }
 }
