@@ -1,0 +1,48 @@
+//! A contact.engineering container's measurements, their reliable 1-D
+//! spectra and the combined spectrum as JSON, for tools/container_check.py
+//! (the cross-check against SurfaceTopography) and the timing of a read.
+//!
+//! `cargo run --release --example container_dump --features topography -- CONTAINER.zip`
+
+use ke_friction::topography::container::{
+    combined_psd, measurement_psd, read_container, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
+};
+use serde_json::json;
+
+fn main() {
+    let path = std::env::args().nth(1).expect("usage: container_dump CONTAINER.zip");
+    let start = std::time::Instant::now();
+    let surfaces = match read_container(path.as_ref(), &ContainerOptions::default()) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            std::process::exit(2);
+        }
+    };
+    let mut out = Vec::new();
+    for s in &surfaces {
+        let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+        let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE);
+        let measurements: Vec<_> = s
+            .measurements
+            .iter()
+            .zip(&spectra)
+            .map(|(m, p)| {
+                let (nx, ny) = m.grid();
+                let (sx, sy) = m.size();
+                json!({
+                    "name": m.name, "data_file": m.data_file, "unit": m.unit, "nx": nx, "ny": ny,
+                    "size": [sx, sy], "uniform": matches!(m.heights, Heights::Uniform(_)),
+                    "q": p.psd.as_ref().map(|p| p.q.clone()), "c": p.psd.as_ref().map(|p| p.c.clone()),
+                    "reason": p.reason,
+                })
+            })
+            .collect();
+        out.push(json!({
+            "measurements": measurements,
+            "combined": combined.map(|c| json!({"q": c.psd.q, "c": c.psd.c, "contributors": c.contributors})),
+        }));
+    }
+    let seconds = start.elapsed().as_secs_f64();
+    println!("{}", json!({"surfaces": out, "seconds": seconds}));
+}
