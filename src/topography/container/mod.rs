@@ -27,8 +27,8 @@ mod spectrum;
 mod yaml;
 
 pub use spectrum::{
-    combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd,
-    Moments, Roughness, COMBINED_POINTS_PER_DECADE,
+    combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd, Moments,
+    Roughness, COMBINED_POINTS_PER_DECADE,
 };
 
 use std::io::{Cursor, Read, Seek};
@@ -215,7 +215,10 @@ pub fn read_container(path: &Path, options: &ContainerOptions) -> Result<Vec<Con
     if len > options.read.max_bytes {
         return Err(ContainerError::Archive {
             path: name,
-            detail: format!("the file is {len} bytes, over the limit of {} bytes", options.read.max_bytes),
+            detail: format!(
+                "the file is {len} bytes, over the limit of {} bytes",
+                options.read.max_bytes
+            ),
         });
     }
     let bytes = std::fs::read(path).map_err(io)?;
@@ -237,8 +240,8 @@ pub fn read_container_bytes(
             options.read.max_bytes
         )));
     }
-    let mut zip = zip::ZipArchive::new(Cursor::new(bytes))
-        .map_err(|e| cx.archive(format!("not a readable zip archive: {e}")))?;
+    let mut zip =
+        zip::ZipArchive::new(Cursor::new(bytes)).map_err(|e| cx.archive(format!("not a readable zip archive: {e}")))?;
     let (file, meta) = if zip.index_for_name("index.json").is_some() {
         ("index.json", member(&cx, &mut zip, "index.json", META_MAX_BYTES)?)
     } else if zip.index_for_name("meta.yml").is_some() {
@@ -377,7 +380,9 @@ fn parameter(node: &yaml::Node, field: &str, unit: Option<f64>) -> Result<f64, S
     };
     let v = value * metres;
     if !(v.is_finite() && v > 0.0) {
-        return Err(format!("{field}.value = {value} is out of range: must be > 0 and finite"));
+        return Err(format!(
+            "{field}.value = {value} is out of range: must be > 0 and finite"
+        ));
     }
     Ok(v)
 }
@@ -412,7 +417,10 @@ impl Spec {
                 };
                 let values = values.ok_or("size: not a list of numbers")?;
                 if values.is_empty() || values.len() > 2 {
-                    return Err(format!("size: {} values; 1 (profile) or 2 (map) expected", values.len()));
+                    return Err(format!(
+                        "size: {} values; 1 (profile) or 2 (map) expected",
+                        values.len()
+                    ));
                 }
                 if let Some(bad) = values.iter().find(|v| !(v.is_finite() && **v > 0.0)) {
                     return Err(format!("size = {bad} is out of range: must be > 0 and finite"));
@@ -425,7 +433,9 @@ impl Spec {
             Some(n) => {
                 let v = n.number().ok_or("height_scale: not a number")?;
                 if !(v.is_finite() && v != 0.0) {
-                    return Err(format!("height_scale = {v} is out of range: must be finite and non-zero"));
+                    return Err(format!(
+                        "height_scale = {v} is out of range: must be finite and non-zero"
+                    ));
                 }
                 v
             }
@@ -443,7 +453,9 @@ impl Spec {
         };
         if let Some(mode) = entry.get("fill_undefined_data_mode").and_then(|d| d.text()) {
             if mode != "do-not-fill" {
-                return Err(format!("fill_undefined_data_mode = {mode:?} is not supported: do-not-fill"));
+                return Err(format!(
+                    "fill_undefined_data_mode = {mode:?} is not supported: do-not-fill"
+                ));
             }
         }
         let is_periodic = match entry.get("is_periodic").filter(|s| !s.is_null()) {
@@ -468,7 +480,14 @@ impl Spec {
             _ => None,
         };
         let (tip_radius, resolution) = if tip_radius.is_none() && resolution.is_none() {
-            (options.tip_radius, if options.tip_radius.is_none() { options.resolution } else { None })
+            (
+                options.tip_radius,
+                if options.tip_radius.is_none() {
+                    options.resolution
+                } else {
+                    None
+                },
+            )
         } else {
             (tip_radius, resolution)
         };
@@ -533,9 +552,8 @@ impl Spec {
             let m = read_bytes(&bytes, &self.data_file, &matrix).map_err(member_err)?;
             if m.nx() == 2 && m.ny() > 1 {
                 let unit = unit.ok_or_else(|| Failure::Meta("unit: missing (the data file gives none)".into()))?;
-                xz_profile(m.heights(), unit).map_err(|d| {
-                    Failure::Other(cx.archive(format!("{at}: data file {}: {d}", self.data_file)))
-                })?
+                xz_profile(m.heights(), unit)
+                    .map_err(|d| Failure::Other(cx.archive(format!("{at}: data file {}: {d}", self.data_file))))?
             } else {
                 Heights::Uniform(self.read_sized(&bytes, &base, cx)?)
             }
@@ -678,7 +696,8 @@ fn rebuilt(t: &Topography, heights: Vec<f64>) -> Topography {
         Some(dy) => Topography::map(heights, t.nx(), t.ny(), t.dx(), dy),
         None => Topography::profile(heights, t.dx()),
     };
-    r.expect("finite heights on a valid grid").with_metadata(t.metadata().clone())
+    r.expect("finite heights on a valid grid")
+        .with_metadata(t.metadata().clone())
 }
 
 /// Removes the polynomial of `mode` as SurfaceTopography's `detrend` does

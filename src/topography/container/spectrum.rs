@@ -151,7 +151,11 @@ fn resample(x: &[f64], y: &[f64], lo: i32, hi: i32, per: u32) -> Vec<Option<(f64
     let step = (stop - start) / (edges_n - 1) as f64;
     let edges: Vec<f64> = (0..edges_n)
         .map(|i| {
-            let e = if i == edges_n - 1 { stop } else { i as f64 * step + start };
+            let e = if i == edges_n - 1 {
+                stop
+            } else {
+                i as f64 * step + start
+            };
             10f64.powf(e)
         })
         .collect();
@@ -209,7 +213,10 @@ pub fn combined_psd(spectra: &[MeasurementPsd], per_decade: u32) -> Option<Combi
         return None;
     }
     let mut out = CombinedPsd {
-        psd: Psd { q: Vec::new(), c: Vec::new() },
+        psd: Psd {
+            q: Vec::new(),
+            c: Vec::new(),
+        },
         contributors: Vec::new(),
     };
     for vals in bins.values() {

@@ -104,7 +104,15 @@ pub(crate) fn parse(text: &str) -> Result<Node, String> {
     let mut stack: Vec<Open> = Vec::new();
     let mut root: Option<Node> = None;
     loop {
-        let (event, mark) = parser.next_token().map_err(|e| e.to_string())?;
+        let (event, mark) = parser.next_token().map_err(|e| {
+            // The scanner's own bound on flow nesting (it reads ahead of
+            // the events) says the same as ours.
+            if e.info().contains("recursion limit") {
+                format!("line {}: nested deeper than {MAX_DEPTH} levels", e.marker().line())
+            } else {
+                e.to_string()
+            }
+        })?;
         let node = match event {
             Event::StreamEnd => break,
             Event::Nothing | Event::StreamStart | Event::DocumentStart | Event::DocumentEnd => continue,
@@ -114,10 +122,7 @@ pub(crate) fn parse(text: &str) -> Result<Node, String> {
             Event::Scalar(text, style, _, _) => Node::Scalar(text, style == TScalarStyle::Plain),
             Event::SequenceStart(..) | Event::MappingStart(..) => {
                 if stack.len() >= MAX_DEPTH {
-                    return Err(format!(
-                        "line {}: nested deeper than {MAX_DEPTH} levels",
-                        mark.line()
-                    ));
+                    return Err(format!("line {}: nested deeper than {MAX_DEPTH} levels", mark.line()));
                 }
                 stack.push(match event {
                     Event::SequenceStart(..) => Open::Seq(Vec::new()),
@@ -159,7 +164,14 @@ mod tests {
     fn tags_are_read_as_the_node_they_tag() {
         let doc = "size: !!python/tuple\n- 1.5\n- 2\nunit: nm\nq: 'x'\nn: ~\n";
         let n = parse(doc).unwrap();
-        let size: Vec<f64> = n.get("size").unwrap().items().unwrap().iter().map(|v| v.number().unwrap()).collect();
+        let size: Vec<f64> = n
+            .get("size")
+            .unwrap()
+            .items()
+            .unwrap()
+            .iter()
+            .map(|v| v.number().unwrap())
+            .collect();
         assert_eq!(size, [1.5, 2.0]);
         assert_eq!(n.get("unit").unwrap().text(), Some("nm"));
         assert_eq!(n.get("q").unwrap().number(), None);
