@@ -204,6 +204,23 @@ pub fn looks_like_zip(bytes: &[u8]) -> bool {
     bytes.starts_with(b"PK\x03\x04")
 }
 
+/// Whether the file at `path` is a container: a zip archive holding
+/// `meta.yml` or `index.json` (only its central directory is read). An
+/// X3P, also a zip, is not one.
+pub fn is_container_file(path: &Path) -> bool {
+    let Ok(mut file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut head = [0u8; 4];
+    if file.read_exact(&mut head).is_err() || !looks_like_zip(&head) {
+        return false;
+    }
+    match zip::ZipArchive::new(std::io::BufReader::new(file)) {
+        Ok(zip) => zip.index_for_name("meta.yml").is_some() || zip.index_for_name("index.json").is_some(),
+        Err(_) => false,
+    }
+}
+
 /// Reads the container at `path` (see the module docs).
 pub fn read_container(path: &Path, options: &ContainerOptions) -> Result<Vec<ContainerSurface>, ContainerError> {
     let name = path.display().to_string();
