@@ -5,7 +5,8 @@
 //! `cargo run --release --example container_dump --features topography -- CONTAINER.zip`
 
 use ke_friction::topography::container::{
-    combined_psd, measurement_psd, read_container, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
+    combined_psd, measurement_psd, read_container, spectral_moments, ContainerOptions, Heights,
+    COMBINED_POINTS_PER_DECADE,
 };
 use serde_json::json;
 
@@ -38,9 +39,16 @@ fn main() {
                 })
             })
             .collect();
+        // The moments over the whole combined band (SurfaceTopography's
+        // container c1d_moment).
+        let moments = combined.as_ref().and_then(|c| {
+            let tau = 2.0 * std::f64::consts::PI;
+            spectral_moments(&c.psd, tau / c.psd.q[c.psd.q.len() - 1], tau / c.psd.q[0])
+        });
         out.push(json!({
             "measurements": measurements,
             "combined": combined.map(|c| json!({"q": c.psd.q, "c": c.psd.c, "contributors": c.contributors})),
+            "moments": moments.map(|m| [m.m0, m.m2, m.m4]),
         }));
     }
     let seconds = start.elapsed().as_secs_f64();

@@ -8,6 +8,8 @@ resolutions, a map as .npy, a profile as x z text, a nonuniform x z text
 profile with a tip radius), compares
 
 * the measurements: count, grid points, physical sizes (metres);
+* the moments m0, m2, m4 of the whole combined spectrum (the container's
+  `c1d_moment(n)`: trapezoids of qⁿ·C over its bins, divided by π);
 * the combined 1-D PSD, SurfaceTopography's container
   `power_spectrum(unit='m', nb_points_per_decade=10)`: the same bins, q and
   C within 1e-9 relative at every bin;
@@ -103,7 +105,8 @@ def reference(path):
                              'physical_sizes': [float(v) for v in t.physical_sizes]})
     q, C = c.power_spectrum(unit='m', nb_points_per_decade=10)
     keep = ~np.ma.getmaskarray(q)
-    return {'measurements': measurements,
+    moments = [float(c.c1d_moment(n, unit='m', nb_points_per_decade=10)) for n in (0, 2, 4)]
+    return {'measurements': measurements, 'moments': moments,
             'combined': {'q': [float(v) for v in np.asarray(q)[keep]],
                          'c': [float(v) for v in np.asarray(C)[keep]]}}
 
@@ -144,8 +147,10 @@ def compare(name, ref, got):
         print(f'{name}: {len(q)} combined bins, SurfaceTopography {len(rq)}')
         return False
     eq, ec = rel(q, rq), rel(c, rc)
-    print(f'{name}: {len(q)} bins, max relative difference q {eq:.2e}, C {ec:.2e}; read + PSD {got["seconds"]:.3f} s')
-    return ok and eq <= TOL and ec <= TOL
+    em = rel(s['moments'], ref['moments'])
+    print(f'{name}: {len(q)} bins, max relative difference q {eq:.2e}, C {ec:.2e}, '
+          f'm0 m2 m4 (c1d_moment) {em:.2e}; read + PSD {got["seconds"]:.3f} s')
+    return ok and eq <= TOL and ec <= TOL and em <= TOL
 
 
 def main():

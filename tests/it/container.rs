@@ -66,6 +66,15 @@ fn check_against_reference(path: &std::path::Path, name: &str) {
         );
         assert!(!combined.contributors[k].is_empty());
     }
+    // The moments of the whole combined band: SurfaceTopography's
+    // container c1d_moment(0, 2, 4).
+    let tau = 2.0 * std::f64::consts::PI;
+    let q = &combined.psd.q;
+    let m = spectral_moments(&combined.psd, tau / q[q.len() - 1], tau / q[0]).unwrap();
+    let rm = floats(&r["moments"]);
+    for (got, want) in [m.m0, m.m2, m.m4].into_iter().zip(rm) {
+        assert!((got / want - 1.0).abs() <= 1e-9, "{got} vs {want}");
+    }
 }
 
 #[test]
