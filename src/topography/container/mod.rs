@@ -20,7 +20,7 @@
 //! Untrusted input: the archive is bounded like an X3P
 //! ([`ReadOptions::max_bytes`] for the archive and for each member once
 //! inflated, whatever its header says), `meta.yml` to [`META_MAX_BYTES`]
-//! and [`yaml::MAX_DEPTH`] levels (no aliases), at most
+//! and 64 levels of nesting (no aliases), at most
 //! [`MAX_MEASUREMENTS`] measurements.
 
 mod spectrum;
@@ -721,6 +721,8 @@ fn rebuilt(t: &Topography, heights: Vec<f64>) -> Topography {
 /// (least squares over the defined points; nonuniform: over the piecewise
 /// linear profile). Own code: the fits are of 1 to 6 terms, and the
 /// library's plane fit (stats) has no quadric and no nonuniform profile.
+// Index loops: the normal equations read as the formulas they are.
+#[allow(clippy::needless_range_loop)]
 fn detrend(h: &mut Heights, mode: DetrendMode) {
     let deg = match mode {
         DetrendMode::None => return,
@@ -833,6 +835,7 @@ fn detrend(h: &mut Heights, mode: DetrendMode) {
 
 /// Solves the k × k system by Gaussian elimination with partial pivoting;
 /// `None` if singular.
+#[allow(clippy::needless_range_loop)]
 fn solve(a: &mut [[f64; 6]; 6], b: &mut [f64; 6], k: usize) -> Option<[f64; 6]> {
     for col in 0..k {
         let p = (col..k).max_by(|&r, &s| a[r][col].abs().total_cmp(&a[s][col].abs()))?;
