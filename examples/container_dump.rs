@@ -5,8 +5,8 @@
 //! `cargo run --release --example container_dump --features topography -- CONTAINER.zip`
 
 use ke_friction::topography::container::{
-    combined_psd, measurement_psd, read_container, spectral_moments, ContainerOptions, Heights,
-    COMBINED_POINTS_PER_DECADE,
+    combined_psd, combined_scale_dependent, measurement_psd, read_container, spectral_moments, ContainerOptions,
+    Heights, COMBINED_POINTS_PER_DECADE,
 };
 use serde_json::json;
 
@@ -49,6 +49,8 @@ fn main() {
             "measurements": measurements,
             "combined": combined.map(|c| json!({"q": c.psd.q, "c": c.psd.c, "contributors": c.contributors})),
             "moments": moments.map(|m| [m.m0, m.m2, m.m4]),
+            "slope": combined_scale_dependent(&s.measurements, 1, 10).map(|c| json!({"d": c.distance, "v": c.mean_square})),
+            "curvature": combined_scale_dependent(&s.measurements, 2, 10).map(|c| json!({"d": c.distance, "v": c.mean_square})),
         }));
     }
     let seconds = start.elapsed().as_secs_f64();

@@ -10,8 +10,8 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use ke_friction::topography::container::{
-    combined_psd, measurement_psd, read_container, read_container_bytes, roughness_from_moments, spectral_moments,
-    ContainerError, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
+    combined_psd, combined_scale_dependent, measurement_psd, read_container, read_container_bytes,
+    roughness_from_moments, spectral_moments, ContainerError, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
 };
 use ke_friction::topography::{Psd, ReadOptions};
 
@@ -91,6 +91,43 @@ fn synthetic_container_matches_surface_topography() {
     // The .npy map is indexed [x, y] in a container: 64 x 64 either way,
     // its height scale 2 applied.
     assert_eq!(s[0].measurements[1].height_scale, 2.0);
+}
+
+/// The synthetic container without its nonuniform profile: the combined
+/// PSD, and the combined scale-dependent slope and curvature (mean
+/// squares) against SurfaceTopography's container
+/// `scale_dependent_statistical_property`, 1e-9 relative (NaN where it
+/// has NaN).
+#[test]
+fn uniform_container_scale_dependent_matches_surface_topography() {
+    let path = PathBuf::from(format!("{DATA}/uniform.zip"));
+    check_against_reference(&path, "uniform");
+    let s = read_container(&path, &ContainerOptions::default()).unwrap();
+    let r = reference("uniform");
+    for (kind, order) in [("slope", 1), ("curvature", 2)] {
+        let got = combined_scale_dependent(&s[0].measurements, order, 10).unwrap();
+        let d = floats(&r[kind]["d"]);
+        let v: Vec<f64> = r[kind]["v"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap_or(f64::NAN))
+            .collect();
+        assert_eq!(got.distance.len(), d.len(), "{kind}");
+        for k in 0..d.len() {
+            assert!((got.distance[k] / d[k] - 1.0).abs() <= 1e-9, "{kind} d[{k}]");
+            if v[k].is_nan() {
+                assert!(got.mean_square[k].is_nan(), "{kind} v[{k}]");
+            } else {
+                assert!(
+                    (got.mean_square[k] / v[k] - 1.0).abs() <= 1e-9,
+                    "{kind} v[{k}]: {} vs {}",
+                    got.mean_square[k],
+                    v[k]
+                );
+            }
+        }
+    }
 }
 
 #[test]

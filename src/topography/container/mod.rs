@@ -27,8 +27,8 @@ mod spectrum;
 mod yaml;
 
 pub use spectrum::{
-    combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd, Moments,
-    Roughness, COMBINED_POINTS_PER_DECADE,
+    combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,
+    CombinedScale, MeasurementPsd, Moments, Roughness, COMBINED_POINTS_PER_DECADE,
 };
 
 use std::io::{Cursor, Read, Seek};
