@@ -273,6 +273,17 @@ fn hostile_containers_give_clear_errors() {
         e.to_string().contains("p.txt") && e.to_string().contains("over the limit"),
         "{e}"
     );
+    // An x z profile with a missing x.
+    let m = meta("    unit: um\n");
+    let e = read(&zip_of(&[
+        ("meta.yml", m.as_bytes()),
+        ("p.txt", b"0 1\nnan 2\n2 3\n3 1\n"),
+    ]))
+    .unwrap_err();
+    assert!(e.contains("missing (NaN) x"), "{e}");
+    // index.json (JSON is YAML) is read like meta.yml.
+    let j = br#"{"surfaces": [{"topographies": [{"datafile": {"original": "p.txt"}, "unit": "um", "size": [8.0]}]}]}"#;
+    assert_eq!(read(&zip_of(&[("index.json", j), ("p.txt", PROFILE)])), Ok(1));
     // Not a zip, a zip without metadata.
     assert!(read(b"hello").unwrap_err().contains("not a readable zip"));
     assert!(read(&zip_of(&[("p.txt", PROFILE)]))

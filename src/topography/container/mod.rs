@@ -338,7 +338,8 @@ fn member<R: Read + Seek>(
             "member {name} is {declared} bytes once inflated, over the limit of {limit} bytes"
         )));
     }
-    let mut bytes = Vec::with_capacity(declared as usize);
+    // The header's size is not trusted for the allocation either.
+    let mut bytes = Vec::with_capacity(declared.min(1 << 24) as usize);
     file.take(limit + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| cx.archive(format!("member {name}: {e}")))?;
@@ -655,6 +656,9 @@ impl Spec {
 /// with the size `n` times that step; else nonuniform (x must increase).
 fn xz_profile(rows: &[f64], unit: f64) -> Result<Heights, String> {
     let n = rows.len() / 2;
+    if rows.chunks_exact(2).any(|r| r[0].is_nan()) {
+        return Err("missing (NaN) x in an x z profile".into());
+    }
     let min = rows.chunks_exact(2).map(|r| r[0]).fold(f64::INFINITY, f64::min);
     let x: Vec<f64> = rows.chunks_exact(2).map(|r| r[0] - min).collect();
     let z: Vec<f64> = rows.chunks_exact(2).map(|r| r[1] * unit).collect();
