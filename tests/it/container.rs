@@ -290,3 +290,71 @@ fn hostile_containers_give_clear_errors() {
         .unwrap_err()
         .contains("neither meta.yml nor index.json"));
 }
+
+/// Mutated containers (bytes of the archive flipped or cut; lines of its
+/// meta.yml dropped, duplicated or garbled) give a container or an error,
+/// never a panic; a spectrum taken of what reads is finite.
+#[test]
+fn mutated_containers_do_not_panic() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(50);
+    let zip = std::fs::read(format!("{DATA}/synthetic.zip")).unwrap();
+    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(&zip[..])).unwrap();
+    let mut members = Vec::new();
+    for i in 0..archive.len() {
+        let mut f = archive.by_index(i).unwrap();
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut f, &mut bytes).unwrap();
+        members.push((f.name().to_string(), bytes));
+    }
+    let check = |bytes: &[u8]| {
+        if let Ok(surfaces) = read_container_bytes(bytes, "m.zip", &ContainerOptions::default()) {
+            for s in &surfaces {
+                let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+                if let Some(c) = combined_psd(&spectra, 10) {
+                    assert!(c.psd.q.iter().all(|q| q.is_finite() && *q > 0.0));
+                }
+            }
+        }
+    };
+    for _ in 0..40 {
+        let mut bytes = zip.clone();
+        match rng.gen_range(0..3) {
+            0 => bytes.truncate(rng.gen_range(0..zip.len())),
+            _ => {
+                for _ in 0..rng.gen_range(1..8) {
+                    let k = rng.gen_range(0..bytes.len());
+                    bytes[k] = rng.gen();
+                }
+            }
+        }
+        check(&bytes);
+    }
+    let meta = &members.iter().find(|(n, _)| n == "meta.yml").unwrap().1;
+    let lines: Vec<&str> = std::str::from_utf8(meta).unwrap().lines().collect();
+    for _ in 0..80 {
+        let mut l: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        for _ in 0..rng.gen_range(1..4) {
+            let k = rng.gen_range(0..l.len());
+            match rng.gen_range(0..4) {
+                0 => {
+                    l.remove(k);
+                }
+                1 => l.insert(k, l[k].clone()),
+                2 => l[k] = l[k].replace(['1', '2', '5'], ["-1", "0", "1e400"][rng.gen_range(0..3)]),
+                _ => l[k] = l[k].replace(':', ["", " [", " {", ": &a x\n*a"][rng.gen_range(0..4)]),
+            }
+            if l.is_empty() {
+                break;
+            }
+        }
+        let text = l.join("\n");
+        let mut entries: Vec<(&str, &[u8])> = members
+            .iter()
+            .filter(|(n, _)| n != "meta.yml")
+            .map(|(n, b)| (n.as_str(), &b[..]))
+            .collect();
+        entries.push(("meta.yml", text.as_bytes()));
+        check(&zip_of(&entries));
+    }
+}
