@@ -5,7 +5,8 @@
 # - table_bytes, table_spec (table files): FUZZ_SECONDS each (default 20);
 # - surface_x3p, surface_npy, surface_text (the measured-surface readers,
 #   read_bytes), surface_instruments_a (.sur, .plu, .opd, .al3d) and
-#   surface_instrument_b (MetroPro, Nanoscope, .nid): READER_SECONDS each
+#   surface_instrument_b (MetroPro, Nanoscope, .nid), surface_container
+#   (contact.engineering containers): READER_SECONDS each
 #   (default 20).
 # About 2.5 minutes of fuzzing plus the build: the stage stays under ~5
 # minutes on 2 cores. A crash, a panic, a broken invariant or an
@@ -21,7 +22,7 @@ if ! command -v cargo-fuzz > /dev/null; then
   cargo install --quiet --locked cargo-fuzz
 fi
 cargo +nightly fuzz build -O 2>&1 | tail -3
-for target in table_bytes table_spec surface_x3p surface_npy surface_text surface_instruments_a surface_instrument_b; do
+for target in table_bytes table_spec surface_x3p surface_npy surface_text surface_instruments_a surface_instrument_b surface_container; do
   case $target in
     table_*) secs=$table_secs ;;
     *) secs=$reader_secs ;;

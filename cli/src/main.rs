@@ -24,6 +24,7 @@ macro_rules! errln {
 
 mod args;
 mod build;
+mod container;
 mod eval;
 mod export;
 mod heights;

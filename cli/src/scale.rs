@@ -195,6 +195,9 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 /// `surface --psd`: the power spectral densities of the detrended heights.
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
+    if crate::container::is_container(path) {
+        return crate::container::run_psd(args, path);
+    }
     // The heights as read are dropped once detrended: one map held
     // while the spectra are taken.
     let detrended = args

@@ -7,6 +7,7 @@
 //! Feature `topography` (the CLI and the Python package enable it; the
 //! light runtime does not).
 
+pub mod container;
 mod evaluate;
 mod filter;
 mod metadata;

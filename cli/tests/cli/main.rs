@@ -12,6 +12,7 @@ mod forge;
 #[path = "../../../tests/npy.rs"]
 mod npy;
 
+mod cli_container;
 mod cli_eval;
 mod cli_export;
 mod cli_law;

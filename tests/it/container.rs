@@ -1,0 +1,360 @@
+//! contact.engineering containers (issue 50): reading, the combined 1-D
+//! PSD against SurfaceTopography's (references from
+//! `tools/container_check.py --write` in tests/data/container/), the
+//! spectral moments, and hostile containers.
+//!
+//! container-2.zip: `$KEF_CONTAINERS`, else `../shared/containers` beside
+//! the repository (skipped if absent).
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use ke_friction::topography::container::{
+    combined_psd, combined_scale_dependent, measurement_psd, read_container, read_container_bytes,
+    roughness_from_moments, spectral_moments, ContainerError, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
+};
+use ke_friction::topography::{Psd, ReadOptions};
+
+const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/container");
+
+fn reference(name: &str) -> serde_json::Value {
+    let text = std::fs::read_to_string(format!("{DATA}/{name}.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+fn floats(v: &serde_json::Value) -> Vec<f64> {
+    v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+}
+
+/// Reads `path` and checks its measurements' grids and sizes and the
+/// combined PSD against SurfaceTopography's, 1e-9 relative.
+fn check_against_reference(path: &std::path::Path, name: &str) {
+    let surfaces = read_container(path, &ContainerOptions::default()).unwrap();
+    assert_eq!(surfaces.len(), 1);
+    let r = reference(name);
+    let ms = &surfaces[0].measurements;
+    let rm = r["measurements"].as_array().unwrap();
+    assert_eq!(ms.len(), rm.len());
+    for (m, r) in ms.iter().zip(rm) {
+        let grid: Vec<usize> = r["nb_grid_pts"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_u64().unwrap() as usize)
+            .collect();
+        let (nx, ny) = m.grid();
+        assert_eq!(nx, grid[0], "{}", m.name);
+        assert_eq!(ny, grid.get(1).copied().unwrap_or(1), "{}", m.name);
+        let sizes = floats(&r["physical_sizes"]);
+        let (sx, sy) = m.size();
+        assert!((sx / sizes[0] - 1.0).abs() < 1e-9, "{}: {sx} vs {}", m.name, sizes[0]);
+        if let Some(sy) = sy {
+            assert!((sy / sizes[1] - 1.0).abs() < 1e-9);
+        }
+    }
+    let spectra: Vec<_> = ms.iter().map(measurement_psd).collect();
+    let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE).unwrap();
+    let (rq, rc) = (floats(&r["combined"]["q"]), floats(&r["combined"]["c"]));
+    assert_eq!(combined.psd.q.len(), rq.len(), "bins");
+    for k in 0..rq.len() {
+        assert!((combined.psd.q[k] / rq[k] - 1.0).abs() <= 1e-9, "q[{k}]");
+        assert!(
+            (combined.psd.c[k] / rc[k] - 1.0).abs() <= 1e-9,
+            "C[{k}]: {} vs {}",
+            combined.psd.c[k],
+            rc[k]
+        );
+        assert!(!combined.contributors[k].is_empty());
+    }
+    // The moments of the whole combined band: SurfaceTopography's
+    // container c1d_moment(0, 2, 4).
+    let tau = 2.0 * std::f64::consts::PI;
+    let q = &combined.psd.q;
+    let m = spectral_moments(&combined.psd, tau / q[q.len() - 1], tau / q[0]).unwrap();
+    let rm = floats(&r["moments"]);
+    for (got, want) in [m.m0, m.m2, m.m4].into_iter().zip(rm) {
+        assert!((got / want - 1.0).abs() <= 1e-9, "{got} vs {want}");
+    }
+}
+
+#[test]
+fn synthetic_container_matches_surface_topography() {
+    check_against_reference(&PathBuf::from(format!("{DATA}/synthetic.zip")), "synthetic");
+    // Its third measurement is a nonuniform x z profile cut by its tip
+    // radius (40 nm): fewer reliable wavevectors than the full spectrum.
+    let s = read_container(format!("{DATA}/synthetic.zip").as_ref(), &ContainerOptions::default()).unwrap();
+    let m = &s[0].measurements[2];
+    assert!(matches!(m.heights, Heights::Nonuniform { .. }));
+    assert_eq!(m.tip_radius, Some(40e-9));
+    let p = measurement_psd(m);
+    assert!(p.cutoff.is_some());
+    // The .npy map is indexed [x, y] in a container: 64 x 64 either way,
+    // its height scale 2 applied.
+    assert_eq!(s[0].measurements[1].height_scale, 2.0);
+}
+
+/// The synthetic container without its nonuniform profile: the combined
+/// PSD, and the combined scale-dependent slope and curvature (mean
+/// squares) against SurfaceTopography's container
+/// `scale_dependent_statistical_property`, 1e-9 relative (NaN where it
+/// has NaN).
+#[test]
+fn uniform_container_scale_dependent_matches_surface_topography() {
+    let path = PathBuf::from(format!("{DATA}/uniform.zip"));
+    check_against_reference(&path, "uniform");
+    let s = read_container(&path, &ContainerOptions::default()).unwrap();
+    let r = reference("uniform");
+    for (kind, order) in [("slope", 1), ("curvature", 2)] {
+        let got = combined_scale_dependent(&s[0].measurements, order, 10).unwrap();
+        let d = floats(&r[kind]["d"]);
+        let v: Vec<f64> = r[kind]["v"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap_or(f64::NAN))
+            .collect();
+        assert_eq!(got.distance.len(), d.len(), "{kind}");
+        for k in 0..d.len() {
+            assert!((got.distance[k] / d[k] - 1.0).abs() <= 1e-9, "{kind} d[{k}]");
+            if v[k].is_nan() {
+                assert!(got.mean_square[k].is_nan(), "{kind} v[{k}]");
+            } else {
+                assert!(
+                    (got.mean_square[k] / v[k] - 1.0).abs() <= 1e-9,
+                    "{kind} v[{k}]: {} vs {}",
+                    got.mean_square[k],
+                    v[k]
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn container_2_matches_surface_topography() {
+    let dir = std::env::var_os("KEF_CONTAINERS")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
+    let path = dir.join("container-2.zip");
+    if !path.is_file() {
+        println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
+        return;
+    }
+    check_against_reference(&path, "container-2");
+    let s = read_container(&path, &ContainerOptions::default()).unwrap();
+    let ms = &s[0].measurements;
+    assert_eq!(ms[0].unit.as_deref(), Some("nm"));
+    assert!(matches!(ms[0].heights, Heights::Nonuniform { .. }));
+    assert_eq!(ms[1].grid(), (512, 512));
+    assert_eq!(ms[2].grid(), (3001, 1));
+    assert_eq!(ms[2].measurement_date.as_deref(), Some("2016-03-05"));
+}
+
+/// A power law C = q^-3 (H = 1) sampled densely: the moments of a band
+/// against the closed forms (1/π)∫qⁿ q⁻³ dq.
+#[test]
+fn spectral_moments_of_a_power_law() {
+    let q: Vec<f64> = (0..4001).map(|i| 10f64.powf(3.0 + i as f64 / 1000.0)).collect();
+    let c: Vec<f64> = q.iter().map(|q| q.powi(-3)).collect();
+    let psd = Psd { q, c };
+    let (ls, lc) = (2.0 * std::f64::consts::PI / 1e6, 2.0 * std::f64::consts::PI / 1e4);
+    let m = spectral_moments(&psd, ls, lc).unwrap();
+    let pi = std::f64::consts::PI;
+    let m0 = (1e-8 - 1e-12) / 2.0 / pi;
+    let m2 = (1e6f64 / 1e4).ln() / pi;
+    let m4 = (1e12 - 1e8) / 2.0 / pi;
+    assert!((m.m0 / m0 - 1.0).abs() < 1e-5, "{} vs {m0}", m.m0);
+    assert!((m.m2 / m2 - 1.0).abs() < 1e-5, "{} vs {m2}", m.m2);
+    assert!((m.m4 / m4 - 1.0).abs() < 1e-5, "{} vs {m4}", m.m4);
+    let r = roughness_from_moments(&m).unwrap();
+    assert!((r.sigma - m.m0.sqrt()).abs() < 1e-20);
+    assert!((r.alpha - m.m0 * m.m4 / (m.m2 * m.m2)).abs() < 1e-9 * r.alpha);
+    assert!(r.eta > 0.0 && r.radius > 0.0 && r.beta > 0.0);
+    // A band outside the spectrum, or inverted: none.
+    assert!(spectral_moments(&psd, 1.0, 2.0).is_none());
+    assert!(spectral_moments(&psd, lc, ls).is_none());
+}
+
+fn zip_of(members: &[(&str, &[u8])]) -> Vec<u8> {
+    let mut w = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    let opts = zip::write::SimpleFileOptions::default().compression_method(zip::CompressionMethod::Deflated);
+    for (name, bytes) in members {
+        w.start_file(*name, opts).unwrap();
+        w.write_all(bytes).unwrap();
+    }
+    w.finish().unwrap().into_inner()
+}
+
+const PROFILE: &[u8] = b"1\n2\n3\n2\n1\n0\n1\n2\n";
+
+fn meta(entry: &str) -> String {
+    format!("surfaces:\n- topographies:\n  - datafile:\n      original: p.txt\n{entry}")
+}
+
+fn read(bytes: &[u8]) -> Result<usize, String> {
+    read_container_bytes(bytes, "c.zip", &ContainerOptions::default())
+        .map(|s| s[0].measurements.len())
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn a_plain_container_reads() {
+    let m = meta("    unit: um\n    size: [8.0]\n    detrend_mode: center\n");
+    let z = zip_of(&[("meta.yml", m.as_bytes()), ("p.txt", PROFILE)]);
+    let s = read_container_bytes(&z, "c.zip", &ContainerOptions::default()).unwrap();
+    let Heights::Uniform(t) = &s[0].measurements[0].heights else {
+        panic!()
+    };
+    assert!((t.dx() - 1e-6).abs() < 1e-18);
+    let mean: f64 = t.heights().iter().sum::<f64>() / 8.0;
+    assert!(mean.abs() < 1e-18);
+    assert!((t.heights()[0] - (1.0 - 1.5) * 1e-6).abs() < 1e-18);
+}
+
+#[test]
+fn hostile_containers_give_clear_errors() {
+    // A missing data file.
+    let m = meta("    unit: um\n    size: [8.0]\n");
+    let e = read(&zip_of(&[("meta.yml", m.as_bytes())])).unwrap_err();
+    assert!(
+        e.contains("p.txt is not in the archive") && e.contains("topographies[0]"),
+        "{e}"
+    );
+    // Lying meta.yml: no size for a file that gives none; a map's two
+    // sizes for a profile; an unknown unit; a bad detrend mode; no
+    // `surfaces`.
+    for (entry, says) in [
+        ("    unit: um\n", "size: missing"),
+        ("    unit: um\n    size: [8.0, 8.0]\n", "2 values for a profile"),
+        ("    unit: furlong\n    size: [8.0]\n", "unit = \"furlong\""),
+        (
+            "    unit: um\n    size: [8.0]\n    detrend_mode: wobble\n",
+            "detrend_mode",
+        ),
+        ("    unit: um\n    size: [-8.0]\n", "size = -8"),
+        (
+            "    unit: um\n    size: [8.0]\n    height_scale: .inf\n",
+            "height_scale",
+        ),
+    ] {
+        let m = meta(entry);
+        let e = read(&zip_of(&[("meta.yml", m.as_bytes()), ("p.txt", PROFILE)])).unwrap_err();
+        assert!(e.contains(says), "{entry}: {e}");
+    }
+    let e = read(&zip_of(&[("meta.yml", b"versions: 1\n")])).unwrap_err();
+    assert!(e.contains("no `surfaces` list"), "{e}");
+    // Only a squeezed NetCDF file: refused, naming it.
+    let m = "surfaces:\n- topographies:\n  - datafile:\n      squeezed-netcdf: s.nc\n";
+    let e = read(&zip_of(&[("meta.yml", m.as_bytes())])).unwrap_err();
+    assert!(e.contains("squeezed-netcdf") && e.contains("s.nc"), "{e}");
+    // Deep YAML, and aliases.
+    let deep = format!("surfaces: {}{}\n", "[".repeat(10_000), "]".repeat(10_000));
+    let e = read(&zip_of(&[("meta.yml", deep.as_bytes())])).unwrap_err();
+    assert!(e.contains("nested deeper"), "{e}");
+    let alias = "a: &x [1]\nsurfaces: *x\n";
+    assert!(read(&zip_of(&[("meta.yml", alias.as_bytes())]))
+        .unwrap_err()
+        .contains("aliases"));
+    // A zip bomb member: 8 MiB of zeros, over a 1 MiB bound.
+    let zeros = vec![b'0'; 8 << 20];
+    let m = meta("    unit: um\n    size: [8.0]\n");
+    let z = zip_of(&[("meta.yml", m.as_bytes()), ("p.txt", &zeros)]);
+    assert!(z.len() < 1 << 20);
+    let options = ContainerOptions {
+        read: ReadOptions {
+            max_bytes: 1 << 20,
+            ..ReadOptions::default()
+        },
+        ..ContainerOptions::default()
+    };
+    let e = read_container_bytes(&z, "c.zip", &options).unwrap_err();
+    assert!(matches!(e, ContainerError::Archive { .. }));
+    assert!(
+        e.to_string().contains("p.txt") && e.to_string().contains("over the limit"),
+        "{e}"
+    );
+    // An x z profile with a missing x.
+    let m = meta("    unit: um\n");
+    let e = read(&zip_of(&[
+        ("meta.yml", m.as_bytes()),
+        ("p.txt", b"0 1\nnan 2\n2 3\n3 1\n"),
+    ]))
+    .unwrap_err();
+    assert!(e.contains("missing (NaN) x"), "{e}");
+    // index.json (JSON is YAML) is read like meta.yml.
+    let j = br#"{"surfaces": [{"topographies": [{"datafile": {"original": "p.txt"}, "unit": "um", "size": [8.0]}]}]}"#;
+    assert_eq!(read(&zip_of(&[("index.json", j), ("p.txt", PROFILE)])), Ok(1));
+    // Not a zip, a zip without metadata.
+    assert!(read(b"hello").unwrap_err().contains("not a readable zip"));
+    assert!(read(&zip_of(&[("p.txt", PROFILE)]))
+        .unwrap_err()
+        .contains("neither meta.yml nor index.json"));
+}
+
+/// Mutated containers (bytes of the archive flipped or cut; lines of its
+/// meta.yml dropped, duplicated or garbled) give a container or an error,
+/// never a panic; a spectrum taken of what reads is finite.
+#[test]
+fn mutated_containers_do_not_panic() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(50);
+    let zip = std::fs::read(format!("{DATA}/synthetic.zip")).unwrap();
+    let mut archive = zip::ZipArchive::new(std::io::Cursor::new(&zip[..])).unwrap();
+    let mut members = Vec::new();
+    for i in 0..archive.len() {
+        let mut f = archive.by_index(i).unwrap();
+        let mut bytes = Vec::new();
+        std::io::Read::read_to_end(&mut f, &mut bytes).unwrap();
+        members.push((f.name().to_string(), bytes));
+    }
+    let check = |bytes: &[u8]| {
+        if let Ok(surfaces) = read_container_bytes(bytes, "m.zip", &ContainerOptions::default()) {
+            for s in &surfaces {
+                let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+                if let Some(c) = combined_psd(&spectra, 10) {
+                    assert!(c.psd.q.iter().all(|q| q.is_finite() && *q > 0.0));
+                }
+            }
+        }
+    };
+    for _ in 0..40 {
+        let mut bytes = zip.clone();
+        match rng.gen_range(0..3) {
+            0 => bytes.truncate(rng.gen_range(0..zip.len())),
+            _ => {
+                for _ in 0..rng.gen_range(1..8) {
+                    let k = rng.gen_range(0..bytes.len());
+                    bytes[k] = rng.gen();
+                }
+            }
+        }
+        check(&bytes);
+    }
+    let meta = &members.iter().find(|(n, _)| n == "meta.yml").unwrap().1;
+    let lines: Vec<&str> = std::str::from_utf8(meta).unwrap().lines().collect();
+    for _ in 0..80 {
+        let mut l: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        for _ in 0..rng.gen_range(1..4) {
+            let k = rng.gen_range(0..l.len());
+            match rng.gen_range(0..4) {
+                0 => {
+                    l.remove(k);
+                }
+                1 => l.insert(k, l[k].clone()),
+                2 => l[k] = l[k].replace(['1', '2', '5'], ["-1", "0", "1e400"][rng.gen_range(0..3)]),
+                _ => l[k] = l[k].replace(':', ["", " [", " {", ": &a x\n*a"][rng.gen_range(0..4)]),
+            }
+            if l.is_empty() {
+                break;
+            }
+        }
+        let text = l.join("\n");
+        let mut entries: Vec<(&str, &[u8])> = members
+            .iter()
+            .filter(|(n, _)| n != "meta.yml")
+            .map(|(n, b)| (n.as_str(), &b[..]))
+            .collect();
+        entries.push(("meta.yml", text.as_bytes()));
+        check(&zip_of(&entries));
+    }
+}
