@@ -50,9 +50,20 @@ struct Channel {
 
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
-    let (bytes, _) = instrument::head(cx, source, len, MAX_HEADER, b"\n#!")?;
+    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, b"\n#!")?;
     if !sniff(&bytes) {
         return Err(bad("no \"[DataSet]\" line at the start".into()));
+    }
+    // `head` stops right after the marker, if it found one.
+    if !bytes.ends_with(b"\n#!") {
+        return Err(bad(if whole {
+            format!(
+                "the file ends within its text header, after {} bytes and before \"#!\" (the start of the data): it is truncated",
+                bytes.len()
+            )
+        } else {
+            format!("no \"#!\" (the start of the data) in the first {MAX_HEADER} bytes")
+        }));
     }
     // The header's lines up to one that starts with `#!`, where the data
     // begin (right after the two bytes).
@@ -120,9 +131,17 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         }
     }
     listed.sort_unstable();
-    for (_, _, name) in listed {
-        let Some(s) = sections.get(name) else { continue };
+    for (g, c, name) in listed {
         let what = format!("[{}]", clip(name, 40));
+        // A channel listed without its section: its size, and so where
+        // every later channel's data start, is unknown (SurfaceTopography
+        // skips it and reads the later channels at the wrong offsets).
+        let Some(s) = sections.get(name) else {
+            return Err(bad(format!(
+                "[DataSet] lists the channel Gr{g}-Ch{c} = {}, but the header has no section {what}",
+                clip(name, 40)
+            )));
+        };
         if s.get("SaveMode").map(String::as_str) != Some("Binary") {
             return Err(cx.unsupported(format!("{what}: SaveMode other than Binary")));
         }
@@ -166,7 +185,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             path: cx.path(),
             detail: format!(
                 "channel {index} ({}) holds no heights: its unit is \"{}\", not a length",
-                c.name,
+                clip(&c.name, 40),
                 clip(unit, 20)
             ),
             available: names,
@@ -219,13 +238,22 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     } else {
         0.0
     };
+    // Checked: an earlier channel can declare ~2^64 bytes (a wrapped
+    // offset would read the header's text as heights).
+    let offset = data_start.checked_add(c.offset).ok_or_else(|| {
+        bad(format!(
+            "channel {index} ({}): its data start {} bytes after byte {data_start}, beyond any file (the earlier channels' sizes are wrong)",
+            clip(&c.name, 40),
+            c.offset
+        ))
+    })?;
     let heights = instrument::grid(
         cx,
         source,
         len,
         DESCRIPTION,
-        &format!("channel {index} ({})", c.name),
-        data_start + c.offset,
+        &format!("channel {index} ({})", clip(&c.name, 40)),
+        offset,
         (c.nx, c.ny),
         c.int,
         true,

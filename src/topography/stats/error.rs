@@ -43,7 +43,7 @@ pub enum StatsError {
     },
     /// The valid points lie on one line, so the plane (or line) fit is
     /// undetermined.
-    #[error("the valid points lie on one line: the {detrend:?} fit is undetermined (use Detrend::Mean)")]
+    #[error("the valid points lie on one line: the {detrend} detrend's fit is undetermined (choose the detrend mean)")]
     Undetermined {
         /// The detrending asked for.
         detrend: Detrend,
