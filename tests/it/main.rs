@@ -12,6 +12,7 @@ mod curve;
 #[path = "../forge.rs"]
 mod forge;
 mod hardening_numerics;
+mod hostile_readers;
 mod hostile_surfaces;
 mod nongaussian;
 #[path = "../npy.rs"]

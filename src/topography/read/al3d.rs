@@ -83,8 +83,12 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         if failed.is_none() {
             if raw.get(TAG - 2..TAG) != Some(b"\r\n") {
                 failed = Some(i);
-            } else if let Some(&key) = KEYS.iter().find(|&&k| k == text(&raw[..KEY])) {
-                tags.insert(key, text(&raw[KEY..TAG - 2]));
+            } else {
+                // By bytes: no text made of the tags skipped.
+                let name = trim(&raw[..KEY]);
+                if let Some(&key) = KEYS.iter().find(|k| k.as_bytes() == name) {
+                    tags.insert(key, text(&raw[KEY..TAG - 2]));
+                }
             }
         }
         i += 1;
@@ -172,4 +176,25 @@ fn tag(bin: &Binary, raw: &[u8], i: usize) -> Result<(String, String), ReadError
         return Err(bin.err(format!("tag {i} does not end in CR LF")));
     }
     Ok((text(&raw[..KEY]), text(&raw[KEY..TAG - 2])))
+}
+
+/// A fixed-size field's bytes trimmed as [`text`] trims them: NULs at
+/// both ends, then spaces.
+fn trim(bytes: &[u8]) -> &[u8] {
+    fn strip(mut bytes: &[u8], c: u8) -> &[u8] {
+        while let [first, rest @ ..] = bytes {
+            if *first != c {
+                break;
+            }
+            bytes = rest;
+        }
+        while let [rest @ .., last] = bytes {
+            if *last != c {
+                break;
+            }
+            bytes = rest;
+        }
+        bytes
+    }
+    strip(strip(bytes, 0), b' ')
 }

@@ -170,7 +170,11 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             offset,
             section: name.clone(),
         });
-        offset = offset.checked_add(bytes).ok_or_else(too_big)?;
+        offset = offset.checked_add(bytes).ok_or_else(|| {
+            bad(format!(
+                "{what}: the channels up to this one declare more than 2^64 bytes of data (Points x Lines x SaveBits)"
+            ))
+        })?;
     }
     // A length unit (`A` is the ampere of a current here, not ångström).
     let length = |s: &HashMap<String, String>| s.get("Dim2Unit").and_then(|u| instrument::length_unit(u, false));
