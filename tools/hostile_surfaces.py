@@ -7,7 +7,8 @@ The files are made here (nothing multi-MB is committed): an X3P whose
 main.xml nests 20,000 elements; a 2 MB zip bomb declaring 32768 x 32768
 16-bit points (2 GiB of data); a 100 MB one-column text file; a 4096 x 4096
 16-bit X3P read in full; a CR-only text matrix; an archive with two
-main.xml; a truncated archive. And the instruments' files of
+main.xml; a truncated archive; an .al3d with 2 million tags and an .opd
+with 2 million directory entries (header tables streamed, issue 46). And the instruments' files of
 ../shared/topographies (--topographies) with their grid size inflated:
 every field of the header that holds nx or ny (16/32-bit, either byte
 order, or decimal text) set, one at a time, to a size of billions of
@@ -135,6 +136,56 @@ def make_files(d):
     with open(p, "r+b") as f:
         f.truncate(os.path.getsize(p) // 2)
     files["cut"] = p
+    files.update(header_tables(d))
+    return files
+
+
+def header_tables(d):
+    """Instrument files whose header tables hold 2 million entries (issue
+    46): an Alicona .al3d with 2,000,000 tags before a 200 x 296 map
+    (104 MB) and a Bruker .opd with 2,000,000 directory entries of float
+    blocks before a 640 x 480 raster (56 MB), each of its own name.
+    Written in pieces."""
+    files = {}
+    junk = 2_000_000
+    # AL3D: 52-byte tags (20-byte key, 30-byte value, CR LF).
+    def tag(key, value):
+        return key.encode().ljust(20, b"\0") + value.encode().ljust(30, b"\0") + b"\r\n"
+    nx, ny = 200, 296
+    count = junk + 6
+    header = 17 + 52 * (2 + count) + 256
+    p = os.path.join(d, "tags.al3d")
+    with open(p, "wb") as f:
+        f.write(b"AliconaImaging\x00\r\n" + tag("Version", "1") + tag("TagCount", str(count)))
+        # Each of its own name (a table of all would hold them all).
+        for k in range(0, junk, 10000):
+            f.write(b"".join(tag(f"Tag{i}", str(i)) for i in range(k, k + 10000)))
+        for k, v in [("Cols", nx), ("Rows", ny), ("PixelSizeXMeter", "1e-6"), ("PixelSizeYMeter", "1e-6"),
+                     ("DepthImageOffset", header), ("InvalidPixelValue", "nan")]:
+            f.write(tag(k, str(v)))
+        f.write(b"\0" * 256)
+        for j in range(ny):
+            f.write(struct.pack(f"<{nx}f", *[((i * 37 + j * 53) % 101) * 1e-8 for i in range(nx)]))
+    files["tags_al3d"] = (p, nx * ny)
+    # OPD: 24-byte directory entries (16-byte name, type, length, attributes).
+    def entry(name, kind, length):
+        return name.encode().ljust(16, b"\0") + struct.pack("<hiH", kind, length, 0)
+    nx, ny = 640, 480
+    entries = junk + 3
+    p = os.path.join(d, "directory.opd")
+    with open(p, "wb") as f:
+        f.write(b"\0\0" + entry("Directory", 3, 24 * (entries + 1)))
+        f.write(entry("Wavelength", 7, 4) + entry("Pixel_size", 7, 4))
+        # Each a 4-byte float block of its own name.
+        for k in range(0, junk, 10000):
+            f.write(b"".join(entry(f"Block{i}", 7, 4) for i in range(k, k + 10000)))
+        f.write(entry("RAW DATA", 3, 6 + 4 * nx * ny))
+        f.write(struct.pack("<ff", 600.0, 0.001))
+        f.write(struct.pack("<f", 1.5) * junk)
+        f.write(struct.pack("<HHH", nx, ny, 4))
+        for i in range(nx):
+            f.write(struct.pack(f"<{ny}f", *[((i * 37 + j * 53) % 101) * 0.01 for j in range(ny)]))
+    files["tags_opd"] = (p, nx * ny)
     return files
 
 
@@ -170,9 +221,10 @@ def cli(kefric, files, d):
     check(rc == 0, f"kefric cr.txt (48 x 64, CR line ends): exit {rc} {err.strip()[:200]}")
     out = subprocess.run([kefric, "surface", files["cr"], *base_args, "--json"], capture_output=True, text=True).stdout
     check('"nx":64' in out.replace(" ", "") and '"ny":48' in out.replace(" ", ""), "kefric cr.txt reads as 64 x 48")
-    for key in ["big_txt", "big_x3p"]:
+    for key in ["big_txt", "big_x3p", "tags_al3d", "tags_opd"]:
         path, points = files[key]
-        rc, err, secs, peak = run([kefric, "surface", path, *base_args])
+        args = base_args if key in ("big_txt", "big_x3p") else []
+        rc, err, secs, peak = run([kefric, "surface", path, *args])
         bound = 1.5 * 8 * points + 64 * MIB
         check(rc == 0, f"kefric {key}: exit {rc} {err.strip()[:200]}")
         check(

@@ -50,7 +50,10 @@ impl NidChannel<'_> {
 /// A `.nid` listing `listed` (section names) in group 0 and holding the
 /// sections of `channels`, then the data: `data` bytes.
 fn nid(listed: &[&str], channels: &[NidChannel], data: &[u8]) -> Vec<u8> {
-    let mut t = format!("[DataSet]\r\nVersion=2\r\nGroupCount=1\r\nGr0-Count={}\r\n", listed.len());
+    let mut t = format!(
+        "[DataSet]\r\nVersion=2\r\nGroupCount=1\r\nGr0-Count={}\r\n",
+        listed.len()
+    );
     for (j, name) in listed.iter().enumerate() {
         t += &format!("Gr0-Ch{j}={name}\r\n");
     }
@@ -133,7 +136,10 @@ fn a_nid_listing_a_channel_without_its_section_is_refused_naming_it() {
         &data16(),
     );
     let m = refused(&bytes, "missing.nid", &opts());
-    assert!(m.contains("Gr0-Ch0 = DataSet-0:0") && m.contains("no section [DataSet-0:0]"), "{m}");
+    assert!(
+        m.contains("Gr0-Ch0 = DataSet-0:0") && m.contains("no section [DataSet-0:0]"),
+        "{m}"
+    );
 }
 
 #[test]
@@ -141,7 +147,10 @@ fn a_nid_cut_in_its_header_says_truncated() {
     let bytes = nid(&["DataSet-0:1"], &[NidChannel::height("DataSet-0:1")], &data16());
     let at = bytes.windows(5).position(|w| w == b"Lines").unwrap() + 2;
     let m = refused(&bytes[..at], "cut.nid", &opts());
-    assert!(m.contains("ends within its text header") && m.contains("truncated"), "{m}");
+    assert!(
+        m.contains("ends within its text header") && m.contains("truncated"),
+        "{m}"
+    );
     assert!(!m.contains("key=value"), "{m}");
 }
 
@@ -209,7 +218,10 @@ fn a_blank_line_or_a_cut_header_says_so() {
     let bytes = nanoscope("", 1, "Height", "");
     let at = bytes.windows(8).position(|w| w == b"Z scale:").unwrap();
     let m = refused(&bytes[..at], "cut.spm", &opts());
-    assert!(m.contains("ends within its text header") && m.contains("truncated"), "{m}");
+    assert!(
+        m.contains("ends within its text header") && m.contains("truncated"),
+        "{m}"
+    );
 }
 
 #[test]

@@ -10,7 +10,12 @@
 //! channel whose unit is not a length (deflection in N, a signal in V)
 //! holds no heights and is read only if asked for, as an error saying so.
 //! Rows are stored top first: the first row here is the file's last (y
-//! up), as Gwyddion and SurfaceTopography show it.
+//! up), as Gwyddion and SurfaceTopography show it. A channel listed in
+//! `[DataSet]` whose section is missing is refused, naming it: its size,
+//! and so where every later channel's data start, is unknown
+//! (SurfaceTopography skips it and reads the later channels at the wrong
+//! offsets). Offsets are checked arithmetic: channels declaring 2⁶⁴ bytes
+//! or more are refused, never wrapped.
 
 use std::collections::HashMap;
 

@@ -6,7 +6,7 @@
 //! `Raw` or `SAMPLE_DATA`) is `nx`, `ny`, the item size (1, 2 or 4: u8,
 //! i16, f32) and the values stored column by column (x slowest), y running
 //! down; a value is in waves of the `Wavelength` block (nm), divided by
-//! `Mult`; values that are not finite or at least 32766 (i16) or 1e38 (f32)
+//! `Mult`; values that are not finite or at least 32766 (i16) or 1e38 (f32: as an f32, 9.99999968e37)
 //! are missing. The pixel size (`Pixel_size`, mm; `Aspect` the ratio dy/dx)
 //! gives the intervals. Each raster is a channel (by its block name), the
 //! first by default; intensity arrays are not read.
