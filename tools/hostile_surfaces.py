@@ -221,6 +221,23 @@ def cli(kefric, files, d):
     check(rc == 0, f"kefric cr.txt (48 x 64, CR line ends): exit {rc} {err.strip()[:200]}")
     out = subprocess.run([kefric, "surface", files["cr"], *base_args, "--json"], capture_output=True, text=True).stdout
     check('"nx":64' in out.replace(" ", "") and '"ny":48' in out.replace(" ", ""), "kefric cr.txt reads as 64 x 48")
+    # Text from a file is escaped in messages; a device is refused as one
+    # (issue 46).
+    esc = os.path.join(d, "esc.nid")
+    with open(esc, "wb") as f:
+        f.write(
+            b"[DataSet]\r\nGroupCount=1\r\nGr0-Count=1\r\nGr0-Ch0=DataSet-0:0\r\n[DataSet-0:0]\r\n"
+            b"Frame=\x1b[2J\x1b]0;pwned\x07\rforged\r\nPoints=4\r\nLines=4\r\nSaveMode=Binary\r\nSaveBits=16\r\n"
+            b"Dim0Range=1e-6\r\nDim1Range=1e-6\r\nDim2Range=1\r\nDim2Unit=V\r\nDim2Name=Z\r\n#!" + b"\0" * 32
+        )
+    rc, err, _, _ = run([kefric, "surface", esc, "--channel", "0"])
+    check(
+        rc == 2 and "\\u{1b}[2J" in err and not any(c in err for c in "\x1b\x07\r"),
+        f"kefric esc.nid: exit {rc}, control characters escaped: {err.strip()[:160]!r}",
+    )
+    if os.path.exists("/dev/zero"):
+        rc, err, secs, _ = run([kefric, "surface", "/dev/zero"])
+        check(rc in (1, 2) and "character device" in err and secs < 1.0, f"kefric /dev/zero: exit {rc}, {err.strip()[:160]!r}")
     for key in ["big_txt", "big_x3p", "tags_al3d", "tags_opd"]:
         path, points = files[key]
         args = base_args if key in ("big_txt", "big_x3p") else []
