@@ -330,11 +330,15 @@ def python(py, files):
         rc, err, secs, peak = run([py, "-c", PY_READ, files[key], "read"])
         check(rc == 3 and want in err, f"python {key}: exit {rc} (3 = ValueError), {err.strip()[-160:]!r}")
         check(peak - base < 100e6, f"python {key}: {secs:.2f} s, peak {peak / MIB:.0f} MiB - baseline (< 100 MB)")
-    path, points = files["big_txt"]
-    rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
-    bound = 1.5 * 8 * points + 64 * MIB
-    check(rc == 0, f"python big_txt: exit {rc} {err.strip()[-200:]}")
-    check(peak - base <= bound, f"python big_txt: {secs:.1f} s, peak {peak / MIB:.0f} MiB - baseline {base / MIB:.0f} <= {bound / MIB:.0f} MiB")
+    for key in ["big_txt", "tags_al3d", "tags_opd"]:
+        path, points = files[key]
+        rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
+        bound = 1.5 * 8 * points + 64 * MIB
+        check(rc == 0, f"python {key}: exit {rc} {err.strip()[-200:]}")
+        check(
+            peak - base <= bound,
+            f"python {key}: {secs:.1f} s, peak {peak / MIB:.0f} MiB - baseline {base / MIB:.0f} <= {bound / MIB:.0f} MiB",
+        )
 
 
 def main():

@@ -67,7 +67,7 @@ pub enum StatsError {
         beta: f64,
     },
     /// Spectral moments of a surface with missing points.
-    #[error("{missing} missing points: the spectral estimate needs every point (use Derivative::FiniteDifference)")]
+    #[error("{missing} missing points: the spectral estimate needs every point (choose the derivative fd, finite differences)")]
     MissingPoints {
         /// Missing points.
         missing: usize,
