@@ -38,6 +38,30 @@ pub(super) const ENTRY: Entry = Entry {
 /// The bound on the text header (bytes).
 const MAX_HEADER: u64 = 4 << 20;
 
+/// The keys read (of `[DataSet]` also its `GroupCount`, `Gr…` entries).
+const KEYS: [&str; 20] = [
+    "Frame",
+    "Points",
+    "Lines",
+    "SaveMode",
+    "SaveBits",
+    "SaveSign",
+    "SaveOrder",
+    "Dim0Range",
+    "Dim1Range",
+    "Dim2Range",
+    "Dim2Min",
+    "Dim0Unit",
+    "Dim1Unit",
+    "Dim2Unit",
+    "Dim2Name",
+    "Date",
+    "Time",
+    "Head type",
+    "Controller S/N",
+    "Version",
+];
+
 fn sniff(head: &[u8]) -> bool {
     head.starts_with(b"[DataSet]\r\n") || head.starts_with(b"[DataSet]\n")
 }
@@ -98,10 +122,15 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
                 let (key, value) = line
                     .split_once('=')
                     .ok_or_else(|| bad(format!("a header line is not key=value: \"{}\"", clip(line, 40))))?;
-                sections
-                    .entry(current.clone())
-                    .or_default()
-                    .insert(key.to_string(), value.trim().to_string());
+                // Only the keys read are kept (a 4 MiB header of other
+                // keys or sections costs no memory).
+                let key = key.trim();
+                if KEYS.contains(&key) || (current == "DataSet" && key.starts_with("Gr")) {
+                    sections
+                        .entry(current.clone())
+                        .or_default()
+                        .insert(key.to_string(), value.trim().to_string());
+                }
             }
         }
         at = end;
