@@ -7,8 +7,10 @@ The files are made here (nothing multi-MB is committed): an X3P whose
 main.xml nests 20,000 elements; a 2 MB zip bomb declaring 32768 x 32768
 16-bit points (2 GiB of data); a 100 MB one-column text file; a 4096 x 4096
 16-bit X3P read in full; a CR-only text matrix; an archive with two
-main.xml; a truncated archive; an .al3d with 2 million tags and an .opd
-with 2 million directory entries (header tables streamed, issue 46). And the instruments' files of
+main.xml; a truncated archive; an .al3d with 2 million tags, an .opd
+with 2 million directory entries, a .nid and a Nanoscope file with 4 MiB
+text headers of other sections (header tables streamed or bounded by
+what the surface needs, issue 46). And the instruments' files of
 ../shared/topographies (--topographies) with their grid size inflated:
 every field of the header that holds nx or ny (16/32-bit, either byte
 order, or decimal text) set, one at a time, to a size of billions of
@@ -186,6 +188,42 @@ def header_tables(d):
         for i in range(nx):
             f.write(struct.pack(f"<{ny}f", *[((i * 37 + j * 53) % 101) * 0.01 for j in range(ny)]))
     files["tags_opd"] = (p, nx * ny)
+    # Text headers of 4 MiB, of short sections nobody reads, before a
+    # 32 x 32 map: a .nid (each "[S1]", "Points=1", "K1=v") and a
+    # Nanoscope file (each "\\*S1", "\\K1: v").
+    n = 32
+    data = struct.pack(f"<{n * n}h", *[(i * 37 + i // n * 53) % 1001 - 500 for i in range(n * n)])
+    lines, size, i = [], 0, 0
+    while size < (4 << 20) - 4096:
+        lines.append(f"[S{i}]\r\nPoints={i}\r\nK{i}=v\r\n")
+        size += len(lines[-1])
+        i += 1
+    head = (
+        "[DataSet]\r\nGroupCount=1\r\nGr0-Count=1\r\nGr0-Ch0=DataSet-0:0\r\n" + "".join(lines)
+        + f"[DataSet-0:0]\r\nFrame=Scan forward\r\nPoints={n}\r\nLines={n}\r\nSaveMode=Binary\r\nSaveBits=16\r\n"
+        "SaveSign=Signed\r\nSaveOrder=Intel\r\nDim0Range=1e-6\r\nDim1Range=1e-6\r\nDim2Range=1e-7\r\nDim2Unit=m\r\n"
+        "Dim2Name=Z\r\n#!"
+    )
+    p = os.path.join(d, "sections.nid")
+    with open(p, "wb") as f:
+        f.write(head.encode() + data)
+    files["sections_nid"] = (p, n * n)
+    lines, size, i = [], 0, 0
+    while size < (4 << 20) - 8192:
+        lines.append(f"\\*S{i}\r\n\\K{i}: v\r\n")
+        size += len(lines[-1])
+        i += 1
+    head = (
+        "\\*File list\r\n\\Version: 0x05120000\r\n\\*Scanner list\r\n\\@Sens. Zsens: V 20 nm/V\r\n"
+        "\\*Ciao scan list\r\n\\Scan Size: 1 1 ~m\r\n" + "".join(lines)
+        + f"\\*Ciao image list\r\n\\Data offset: {4 << 20}\r\n\\Data length: {2 * n * n}\r\n\\Samps/line: {n}\r\n"
+        f"\\Number of lines: {n}\r\n\\Scan Size: 1 1 ~m\r\n\\@2:Image Data: S [Height] \"Height\"\r\n"
+        "\\@2:Z scale: V [Sens. Zsens] (0.006 V/LSB) 2 V\r\n\\*File list end\r\n"
+    ).encode("latin-1")
+    p = os.path.join(d, "sections.spm")
+    with open(p, "wb") as f:
+        f.write(head.ljust(4 << 20, b"\0") + data)
+    files["sections_spm"] = (p, n * n)
     return files
 
 
@@ -238,7 +276,7 @@ def cli(kefric, files, d):
     if os.path.exists("/dev/zero"):
         rc, err, secs, _ = run([kefric, "surface", "/dev/zero"])
         check(rc in (1, 2) and "character device" in err and secs < 1.0, f"kefric /dev/zero: exit {rc}, {err.strip()[:160]!r}")
-    for key in ["big_txt", "big_x3p", "tags_al3d", "tags_opd"]:
+    for key in ["big_txt", "big_x3p", "tags_al3d", "tags_opd", "sections_nid", "sections_spm"]:
         path, points = files[key]
         args = base_args if key in ("big_txt", "big_x3p") else []
         rc, err, secs, peak = run([kefric, "surface", path, *args])
@@ -330,7 +368,7 @@ def python(py, files):
         rc, err, secs, peak = run([py, "-c", PY_READ, files[key], "read"])
         check(rc == 3 and want in err, f"python {key}: exit {rc} (3 = ValueError), {err.strip()[-160:]!r}")
         check(peak - base < 100e6, f"python {key}: {secs:.2f} s, peak {peak / MIB:.0f} MiB - baseline (< 100 MB)")
-    for key in ["big_txt", "tags_al3d", "tags_opd"]:
+    for key in ["big_txt", "tags_al3d", "tags_opd", "sections_nid", "sections_spm"]:
         path, points = files[key]
         rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
         bound = 1.5 * 8 * points + 64 * MIB

@@ -16,6 +16,14 @@
 //! files' section names (`AFM image list`, `Microscope list`, ...), wrong
 //! per-channel sizes corrected by the scan list's, and version 9.2's
 //! 32-bit data are read as SurfaceTopography reads them.
+//!
+//! The header ends at a line `\*File list end` (text that only contains
+//! it is a value) or, as SurfaceTopography reads it, at a blank line after
+//! the image sections; a blank line before them is a damaged header, a
+//! file ending within its header a truncated one. Only the sections read
+//! are kept (the others' `Operating mode` alone), so a header's memory is
+//! bounded by what the surface needs; `Bytes/pixel` other than 2 or 4 is
+//! refused, never defaulted.
 
 use std::collections::HashMap;
 
@@ -95,13 +103,25 @@ fn sections(cx: &Ctx, text: &str, whole: bool) -> Result<Vec<Section>, ReadError
                     clip(&name, 40)
                 )));
             }
-            out.push((name, HashMap::new()));
+            // Sections not read are kept as one (their "operating mode"
+            // only): a 4 MiB header of other sections costs no memory.
+            let known = [&FILE_LIST[..], &SCANNER, &SCAN, &IMAGE, &["equipment list"]]
+                .iter()
+                .any(|names| names.contains(&name.as_str()));
+            if known {
+                out.push((name, HashMap::new()));
+            } else if out.last().is_none_or(|(n, _)| !n.is_empty()) {
+                out.push((String::new(), HashMap::new()));
+            }
         } else if let Some(entry) = line.strip_prefix('\\') {
-            let Some((_, section)) = out.last_mut() else {
+            let Some((name, section)) = out.last_mut() else {
                 return Err(bad("a key before the first section".into()));
             };
             let (key, value) = entry.split_once(": ").unwrap_or((entry, ""));
-            section.insert(key.to_lowercase(), value.trim().to_string());
+            let key = key.to_lowercase();
+            if !name.is_empty() || key == "operating mode" {
+                section.insert(key, value.trim().to_string());
+            }
         } else {
             return Err(bad(format!(
                 "a header line does not start with a backslash: \"{}\"",

@@ -17,7 +17,7 @@
 //! offsets). Offsets are checked arithmetic: channels declaring 2⁶⁴ bytes
 //! or more are refused, never wrapped.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::instrument::{self, Int};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
@@ -98,6 +98,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     // begin (right after the two bytes).
     let mut sections: HashMap<String, HashMap<String, String>> = HashMap::new();
     let mut current = String::from("DataSet");
+    let mut named: HashSet<String> = HashSet::new();
     let mut at = 0usize;
     let data_start = loop {
         if at >= bytes.len() {
@@ -122,14 +123,27 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
                 let (key, value) = line
                     .split_once('=')
                     .ok_or_else(|| bad(format!("a header line is not key=value: \"{}\"", clip(line, 40))))?;
-                // Only the keys read are kept (a 4 MiB header of other
+                // Only the keys read are kept, of the sections read:
+                // [DataSet] (the first), [DataSet-Info] and the channels
+                // [DataSet] lists before them (a 4 MiB header of other
                 // keys or sections costs no memory).
                 let key = key.trim();
-                if KEYS.contains(&key) || (current == "DataSet" && key.starts_with("Gr")) {
+                let value = value.trim();
+                let keep = match current.as_str() {
+                    "DataSet" if key.starts_with("Gr") => {
+                        if key.contains("-Ch") {
+                            named.insert(value.to_string());
+                        }
+                        true
+                    }
+                    "DataSet" | "DataSet-Info" => KEYS.contains(&key),
+                    name => KEYS.contains(&key) && named.contains(name),
+                };
+                if keep {
                     sections
                         .entry(current.clone())
                         .or_default()
-                        .insert(key.to_string(), value.trim().to_string());
+                        .insert(key.to_string(), value.to_string());
                 }
             }
         }
