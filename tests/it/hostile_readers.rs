@@ -308,7 +308,9 @@ fn an_opd_directory_of_many_entries_is_streamed_and_rasters_are_bounded() {
     let t0 = Instant::now();
     let t = read_bytes(&opd(4, 4, &values, 200_000, 1), "junk.opd", &opts()).unwrap();
     assert_eq!((t.nx(), t.ny()), (4, 4));
-    assert!(t0.elapsed().as_secs_f64() < 5.0);
+    // Generous: a debug build on a loaded machine (memory is the point,
+    // measured by tools/hostile_surfaces.py).
+    assert!(t0.elapsed().as_secs_f64() < 30.0);
     let m = refused(&opd(4, 4, &values, 0, 1025), "rasters.opd", &opts());
     assert!(m.contains("1025 height rasters: at most 1024 are read"), "{m}");
 }
@@ -358,7 +360,7 @@ fn al3d_tags_are_streamed() {
     let t0 = Instant::now();
     let t = read_bytes(&al3d(200_000), "junk.al3d", &opts()).unwrap();
     assert_eq!((t.nx(), t.ny()), (3, 2));
-    assert!(t0.elapsed().as_secs_f64() < 5.0);
+    assert!(t0.elapsed().as_secs_f64() < 30.0);
     // A tag without its CR LF is named.
     let mut bytes = al3d(10);
     let at = 17 + 52 * 7 + 50;

@@ -10,7 +10,7 @@
 
 use std::collections::HashMap;
 
-use super::binary::{text, Binary};
+use super::binary::{text, trim, Binary};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
 
@@ -176,25 +176,4 @@ fn tag(bin: &Binary, raw: &[u8], i: usize) -> Result<(String, String), ReadError
         return Err(bin.err(format!("tag {i} does not end in CR LF")));
     }
     Ok((text(&raw[..KEY]), text(&raw[KEY..TAG - 2])))
-}
-
-/// A fixed-size field's bytes trimmed as [`text`] trims them: NULs at
-/// both ends, then spaces.
-fn trim(bytes: &[u8]) -> &[u8] {
-    fn strip(mut bytes: &[u8], c: u8) -> &[u8] {
-        while let [first, rest @ ..] = bytes {
-            if *first != c {
-                break;
-            }
-            bytes = rest;
-        }
-        while let [rest @ .., last] = bytes {
-            if *last != c {
-                break;
-            }
-            bytes = rest;
-        }
-        bytes
-    }
-    strip(strip(bytes, 0), b' ')
 }

@@ -13,7 +13,7 @@
 
 use std::collections::HashMap;
 
-use super::binary::{text, Binary, Fields};
+use super::binary::{text, trim, Binary, Fields};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
 use crate::LengthUnit;
@@ -97,7 +97,11 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         if failed.is_some() {
             return;
         }
-        let (name, kind, length) = entry(raw);
+        // The name by its bytes: no text made of the entries skipped.
+        let mut f = Fields::new(raw);
+        f.skip(16);
+        let (kind, length) = (f.i16(), f.i32());
+        let name = trim(&raw[..16]);
         let Ok(length @ 1..) = u64::try_from(length) else {
             return;
         };
@@ -105,13 +109,13 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         match at.checked_add(length).filter(|&end| end <= len) {
             Some(end) => at = end,
             None => {
-                failed = Some((name, start, length));
+                failed = Some((text(name), start, length));
                 return;
             }
         }
         match kind {
             ARRAY => {
-                if let Some(&raster) = HEIGHT_ARRAYS.iter().find(|&&h| h == name) {
+                if let Some(&raster) = HEIGHT_ARRAYS.iter().find(|h| h.as_bytes() == name) {
                     if rasters.len() < MAX_RASTERS {
                         rasters.push((raster, start, length));
                     } else {
@@ -121,7 +125,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             }
             _ => {
                 // A later block of a name replaces an earlier one.
-                if let Some(i) = VALUES.iter().position(|&v| v == name) {
+                if let Some(i) = VALUES.iter().position(|v| v.as_bytes() == name) {
                     wanted.retain(|w| w.0 != i);
                     wanted.push((i, kind, start, length));
                 }
