@@ -7,7 +7,10 @@ The files are made here (nothing multi-MB is committed): an X3P whose
 main.xml nests 20,000 elements; a 2 MB zip bomb declaring 32768 x 32768
 16-bit points (2 GiB of data); a 100 MB one-column text file; a 4096 x 4096
 16-bit X3P read in full; a CR-only text matrix; an archive with two
-main.xml; a truncated archive. And the instruments' files of
+main.xml; a truncated archive; an .al3d with 2 million tags, an .opd
+with 2 million directory entries, a .nid and a Nanoscope file with 4 MiB
+text headers of other sections (header tables streamed or bounded by
+what the surface needs, issue 46). And the instruments' files of
 ../shared/topographies (--topographies) with their grid size inflated:
 every field of the header that holds nx or ny (16/32-bit, either byte
 order, or decimal text) set, one at a time, to a size of billions of
@@ -135,6 +138,92 @@ def make_files(d):
     with open(p, "r+b") as f:
         f.truncate(os.path.getsize(p) // 2)
     files["cut"] = p
+    files.update(header_tables(d))
+    return files
+
+
+def header_tables(d):
+    """Instrument files whose header tables hold 2 million entries (issue
+    46): an Alicona .al3d with 2,000,000 tags before a 200 x 296 map
+    (104 MB) and a Bruker .opd with 2,000,000 directory entries of float
+    blocks before a 640 x 480 raster (56 MB), each of its own name.
+    Written in pieces."""
+    files = {}
+    junk = 2_000_000
+    # AL3D: 52-byte tags (20-byte key, 30-byte value, CR LF).
+    def tag(key, value):
+        return key.encode().ljust(20, b"\0") + value.encode().ljust(30, b"\0") + b"\r\n"
+    nx, ny = 200, 296
+    count = junk + 6
+    header = 17 + 52 * (2 + count) + 256
+    p = os.path.join(d, "tags.al3d")
+    with open(p, "wb") as f:
+        f.write(b"AliconaImaging\x00\r\n" + tag("Version", "1") + tag("TagCount", str(count)))
+        # Each of its own name (a table of all would hold them all).
+        for k in range(0, junk, 10000):
+            f.write(b"".join(tag(f"Tag{i}", str(i)) for i in range(k, k + 10000)))
+        for k, v in [("Cols", nx), ("Rows", ny), ("PixelSizeXMeter", "1e-6"), ("PixelSizeYMeter", "1e-6"),
+                     ("DepthImageOffset", header), ("InvalidPixelValue", "nan")]:
+            f.write(tag(k, str(v)))
+        f.write(b"\0" * 256)
+        for j in range(ny):
+            f.write(struct.pack(f"<{nx}f", *[((i * 37 + j * 53) % 101) * 1e-8 for i in range(nx)]))
+    files["tags_al3d"] = (p, nx * ny)
+    # OPD: 24-byte directory entries (16-byte name, type, length, attributes).
+    def entry(name, kind, length):
+        return name.encode().ljust(16, b"\0") + struct.pack("<hiH", kind, length, 0)
+    nx, ny = 640, 480
+    entries = junk + 3
+    p = os.path.join(d, "directory.opd")
+    with open(p, "wb") as f:
+        f.write(b"\0\0" + entry("Directory", 3, 24 * (entries + 1)))
+        f.write(entry("Wavelength", 7, 4) + entry("Pixel_size", 7, 4))
+        # Each a 4-byte float block of its own name.
+        for k in range(0, junk, 10000):
+            f.write(b"".join(entry(f"Block{i}", 7, 4) for i in range(k, k + 10000)))
+        f.write(entry("RAW DATA", 3, 6 + 4 * nx * ny))
+        f.write(struct.pack("<ff", 600.0, 0.001))
+        f.write(struct.pack("<f", 1.5) * junk)
+        f.write(struct.pack("<HHH", nx, ny, 4))
+        for i in range(nx):
+            f.write(struct.pack(f"<{ny}f", *[((i * 37 + j * 53) % 101) * 0.01 for j in range(ny)]))
+    files["tags_opd"] = (p, nx * ny)
+    # Text headers of 4 MiB, of short sections nobody reads, before a
+    # 32 x 32 map: a .nid (each "[S1]", "Points=1", "K1=v") and a
+    # Nanoscope file (each "\\*S1", "\\K1: v").
+    n = 32
+    data = struct.pack(f"<{n * n}h", *[(i * 37 + i // n * 53) % 1001 - 500 for i in range(n * n)])
+    lines, size, i = [], 0, 0
+    while size < (4 << 20) - 4096:
+        lines.append(f"[S{i}]\r\nPoints={i}\r\nK{i}=v\r\n")
+        size += len(lines[-1])
+        i += 1
+    head = (
+        "[DataSet]\r\nGroupCount=1\r\nGr0-Count=1\r\nGr0-Ch0=DataSet-0:0\r\n" + "".join(lines)
+        + f"[DataSet-0:0]\r\nFrame=Scan forward\r\nPoints={n}\r\nLines={n}\r\nSaveMode=Binary\r\nSaveBits=16\r\n"
+        "SaveSign=Signed\r\nSaveOrder=Intel\r\nDim0Range=1e-6\r\nDim1Range=1e-6\r\nDim2Range=1e-7\r\nDim2Unit=m\r\n"
+        "Dim2Name=Z\r\n#!"
+    )
+    p = os.path.join(d, "sections.nid")
+    with open(p, "wb") as f:
+        f.write(head.encode() + data)
+    files["sections_nid"] = (p, n * n)
+    lines, size, i = [], 0, 0
+    while size < (4 << 20) - 8192:
+        lines.append(f"\\*S{i}\r\n\\K{i}: v\r\n")
+        size += len(lines[-1])
+        i += 1
+    head = (
+        "\\*File list\r\n\\Version: 0x05120000\r\n\\*Scanner list\r\n\\@Sens. Zsens: V 20 nm/V\r\n"
+        "\\*Ciao scan list\r\n\\Scan Size: 1 1 ~m\r\n" + "".join(lines)
+        + f"\\*Ciao image list\r\n\\Data offset: {4 << 20}\r\n\\Data length: {2 * n * n}\r\n\\Samps/line: {n}\r\n"
+        f"\\Number of lines: {n}\r\n\\Scan Size: 1 1 ~m\r\n\\@2:Image Data: S [Height] \"Height\"\r\n"
+        "\\@2:Z scale: V [Sens. Zsens] (0.006 V/LSB) 2 V\r\n\\*File list end\r\n"
+    ).encode("latin-1")
+    p = os.path.join(d, "sections.spm")
+    with open(p, "wb") as f:
+        f.write(head.ljust(4 << 20, b"\0") + data)
+    files["sections_spm"] = (p, n * n)
     return files
 
 
@@ -170,9 +259,27 @@ def cli(kefric, files, d):
     check(rc == 0, f"kefric cr.txt (48 x 64, CR line ends): exit {rc} {err.strip()[:200]}")
     out = subprocess.run([kefric, "surface", files["cr"], *base_args, "--json"], capture_output=True, text=True).stdout
     check('"nx":64' in out.replace(" ", "") and '"ny":48' in out.replace(" ", ""), "kefric cr.txt reads as 64 x 48")
-    for key in ["big_txt", "big_x3p"]:
+    # Text from a file is escaped in messages; a device is refused as one
+    # (issue 46).
+    esc = os.path.join(d, "esc.nid")
+    with open(esc, "wb") as f:
+        f.write(
+            b"[DataSet]\r\nGroupCount=1\r\nGr0-Count=1\r\nGr0-Ch0=DataSet-0:0\r\n[DataSet-0:0]\r\n"
+            b"Frame=\x1b[2J\x1b]0;pwned\x07\rforged\r\nPoints=4\r\nLines=4\r\nSaveMode=Binary\r\nSaveBits=16\r\n"
+            b"Dim0Range=1e-6\r\nDim1Range=1e-6\r\nDim2Range=1\r\nDim2Unit=V\r\nDim2Name=Z\r\n#!" + b"\0" * 32
+        )
+    rc, err, _, _ = run([kefric, "surface", esc, "--channel", "0"])
+    check(
+        rc == 2 and "\\u{1b}[2J" in err and not any(c in err for c in "\x1b\x07\r"),
+        f"kefric esc.nid: exit {rc}, control characters escaped: {err.strip()[:160]!r}",
+    )
+    if os.path.exists("/dev/zero"):
+        rc, err, secs, _ = run([kefric, "surface", "/dev/zero"])
+        check(rc in (1, 2) and "character device" in err and secs < 1.0, f"kefric /dev/zero: exit {rc}, {err.strip()[:160]!r}")
+    for key in ["big_txt", "big_x3p", "tags_al3d", "tags_opd", "sections_nid", "sections_spm"]:
         path, points = files[key]
-        rc, err, secs, peak = run([kefric, "surface", path, *base_args])
+        args = base_args if key in ("big_txt", "big_x3p") else []
+        rc, err, secs, peak = run([kefric, "surface", path, *args])
         bound = 1.5 * 8 * points + 64 * MIB
         check(rc == 0, f"kefric {key}: exit {rc} {err.strip()[:200]}")
         check(
@@ -261,11 +368,15 @@ def python(py, files):
         rc, err, secs, peak = run([py, "-c", PY_READ, files[key], "read"])
         check(rc == 3 and want in err, f"python {key}: exit {rc} (3 = ValueError), {err.strip()[-160:]!r}")
         check(peak - base < 100e6, f"python {key}: {secs:.2f} s, peak {peak / MIB:.0f} MiB - baseline (< 100 MB)")
-    path, points = files["big_txt"]
-    rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
-    bound = 1.5 * 8 * points + 64 * MIB
-    check(rc == 0, f"python big_txt: exit {rc} {err.strip()[-200:]}")
-    check(peak - base <= bound, f"python big_txt: {secs:.1f} s, peak {peak / MIB:.0f} MiB - baseline {base / MIB:.0f} <= {bound / MIB:.0f} MiB")
+    for key in ["big_txt", "tags_al3d", "tags_opd", "sections_nid", "sections_spm"]:
+        path, points = files[key]
+        rc, err, secs, peak = run([py, "-c", PY_READ, path, "read"])
+        bound = 1.5 * 8 * points + 64 * MIB
+        check(rc == 0, f"python {key}: exit {rc} {err.strip()[-200:]}")
+        check(
+            peak - base <= bound,
+            f"python {key}: {secs:.1f} s, peak {peak / MIB:.0f} MiB - baseline {base / MIB:.0f} <= {bound / MIB:.0f} MiB",
+        )
 
 
 def main():

@@ -32,7 +32,9 @@ enum Dim {
 
 impl Dim {
     fn get(self) -> u64 {
-        const EDGE: [u64; 7] = [0, 1, 65535, 65536, 1 << 31, u32::MAX as u64, u64::MAX];
+        // 64 x (2^58 - 1) bytes of an earlier .nid channel put a later
+        // one's data at 2^64 - 64 (issue 46: the offset must not wrap).
+        const EDGE: [u64; 9] = [0, 1, 65535, 65536, 1 << 31, u32::MAX as u64, u64::MAX, 64, (1 << 58) - 1];
         match self {
             Dim::Small(k) => u64::from(k % 32),
             Dim::Edge(k) => EDGE[k as usize % EDGE.len()],

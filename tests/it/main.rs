@@ -14,6 +14,7 @@ mod curve;
 mod forge;
 mod hardening_numerics;
 mod hostile_numerics;
+mod hostile_readers;
 mod hostile_surfaces;
 mod nongaussian;
 #[path = "../npy.rs"]

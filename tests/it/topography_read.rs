@@ -569,7 +569,9 @@ fn npy_orders_and_types() {
     // No interval: the error names the option.
     match read_err(&path, &opts()) {
         ReadError::NeedInterval { name: "dx", .. } => {
-            assert!(read_err(&path, &opts()).to_string().contains("ReadOptions::dx"))
+            assert!(read_err(&path, &opts())
+                .to_string()
+                .contains("the sampling interval dx"))
         }
         e => panic!("{e}"),
     }

@@ -10,8 +10,8 @@
 
 use std::collections::HashMap;
 
-use super::binary::{text, Binary};
-use super::{Ctx, Entry, ReadError, ReadOptions, Source};
+use super::binary::{text, trim, Binary};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
 
 /// The registry's entry.
@@ -31,6 +31,16 @@ const TAG: usize = 52;
 const KEY: usize = 20;
 /// The comment after the tags (bytes).
 const COMMENT: u64 = 256;
+/// The tags read (the others are skipped).
+const KEYS: [&str; 7] = [
+    "Cols",
+    "Rows",
+    "PixelSizeXMeter",
+    "PixelSizeYMeter",
+    "DepthImageOffset",
+    "InvalidPixelValue",
+    "CreatingApplication",
+];
 /// A value within this fraction of the `InvalidPixelValue` is missing.
 const INVALID_RELTOL: f64 = 1.5e-7;
 
@@ -50,21 +60,41 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         let at = MAGIC.len() + i * TAG;
         let (k, v) = tag(bin, &head[at..at + TAG], i)?;
         if k != key {
-            return Err(bin.err(format!("tag {i} is {k:?}, not {key}")));
+            return Err(bin.err(format!("tag {i} is \"{}\", not {key}", clip(&k, KEY))));
         }
-        v.trim()
-            .parse::<u64>()
-            .map_err(|_| bin.err(format!("the {key} tag's value {v:?} is not a whole number")))
+        v.trim().parse::<u64>().map_err(|_| {
+            bin.err(format!(
+                "the {key} tag's value \"{}\" is not a whole number",
+                clip(&v, 30)
+            ))
+        })
     };
     let _version = first(&bin, 0, "Version")?;
     let count = first(&bin, 1, "TagCount")?;
     let start = (MAGIC.len() + 2 * TAG) as u64;
     let end = bin.check_within("the tags", start, count, TAG as u64)?;
-    let raw = bin.block("the tags", start, (end - start) as usize)?;
-    let mut tags = HashMap::new();
-    for (i, raw) in raw.chunks_exact(TAG).enumerate() {
-        let (k, v) = tag(&bin, raw, i + 2)?;
-        tags.insert(k, v);
+    // The tags, streamed (a file can declare millions): only those the
+    // surface needs (KEYS) are kept; a later tag of a key replaces an
+    // earlier one.
+    let mut tags: HashMap<&'static str, String> = HashMap::new();
+    let mut i = 2u64;
+    let mut failed = None;
+    bin.stream("the tags", start, count, TAG, |raw| {
+        if failed.is_none() {
+            if raw.get(TAG - 2..TAG) != Some(b"\r\n") {
+                failed = Some(i);
+            } else {
+                // By bytes: no text made of the tags skipped.
+                let name = trim(&raw[..KEY]);
+                if let Some(&key) = KEYS.iter().find(|k| k.as_bytes() == name) {
+                    tags.insert(key, text(&raw[KEY..TAG - 2]));
+                }
+            }
+        }
+        i += 1;
+    })?;
+    if let Some(i) = failed {
+        return Err(bin.err(format!("tag {i} does not end in CR LF")));
     }
     bin.check_within("the comment", end, COMMENT, 1)?;
     let get = |key: &str| {
@@ -74,13 +104,17 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     };
     let whole = |key: &str| {
         let v = get(key)?;
-        v.parse::<u64>()
-            .map_err(|_| bin.err(format!("the {key} tag's value {v:?} is not a whole number")))
+        v.parse::<u64>().map_err(|_| {
+            bin.err(format!(
+                "the {key} tag's value \"{}\" is not a whole number",
+                clip(v, 30)
+            ))
+        })
     };
     let real = |key: &str| {
         let v = get(key)?;
         v.parse::<f64>()
-            .map_err(|_| bin.err(format!("the {key} tag's value {v:?} is not a number")))
+            .map_err(|_| bin.err(format!("the {key} tag's value \"{}\" is not a number", clip(v, 30))))
     };
     let (nx, ny) = (whole("Cols")?, whole("Rows")?);
     if nx == 0 || ny == 0 {
@@ -97,7 +131,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let stride = nx.saturating_add(nx % 2);
     let stored = stride.saturating_mul(ny);
     bin.check_within("the depth image", offset, stored, 4)?;
-    let points = nx * ny;
+    let points = nx.checked_mul(ny).ok_or_else(|| bin.err(format!("Cols x Rows = {nx} x {ny} overflows")))?;
     let declared = || format!("the tags' Cols x Rows = {nx} x {ny}");
     let mut heights = cx.heights(declared, points, options)?;
     let mut column = 0;

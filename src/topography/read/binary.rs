@@ -168,6 +168,27 @@ pub(super) fn text(bytes: &[u8]) -> String {
     s.trim_matches('\0').trim_matches(' ').to_string()
 }
 
+/// A fixed-size field's bytes trimmed as [`text`] trims them: NULs at
+/// both ends, then spaces.
+pub(super) fn trim(bytes: &[u8]) -> &[u8] {
+    fn strip(mut bytes: &[u8], c: u8) -> &[u8] {
+        while let [first, rest @ ..] = bytes {
+            if *first != c {
+                break;
+            }
+            bytes = rest;
+        }
+        while let [rest @ .., last] = bytes {
+            if *last != c {
+                break;
+            }
+            bytes = rest;
+        }
+        bytes
+    }
+    strip(strip(bytes, 0), b' ')
+}
+
 /// Metres per unit of a length unit as instruments write it (`"mm"`,
 /// `"µm"` with either micro sign, `"um"`, `"nm"`, `"Å"`, ...), by
 /// [`LengthUnit::from_symbol`].

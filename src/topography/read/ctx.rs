@@ -88,7 +88,7 @@ impl Ctx<'_> {
                     .collect();
                 match found[..] {
                     [i] => Ok(i),
-                    [] => Err(error(format!("no channel is called \"{name}\""))),
+                    [] => Err(error(format!("no channel is called \"{}\"", clip(name, 40)))),
                     _ => Err(error(format!("several channels are called \"{name}\": give its index"))),
                 }
             }

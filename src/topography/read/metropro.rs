@@ -99,9 +99,22 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             "the height scale (intf_scale_factor {scale_factor:e} x obliquity {obliquity:e} x wavelength {wavelength:e} m) is not finite"
         )));
     }
+    // 0: the file gives no interval; negative or not a number: damaged.
     let lateral = h.f32(184);
+    if lateral < 0.0 || lateral.is_nan() {
+        return Err(bad(format!(
+            "lateral_res = {lateral:e} m is {}: the sampling interval must be > 0 (or 0 where the file gives none)",
+            if lateral.is_nan() { "not a number" } else { "negative" }
+        )));
+    }
     let dx = (lateral > 0.0).then_some(lateral);
-    let intensity = 2 * u64::from(buckets) * u64::from(ac_height) * u64::from(ac_width);
+    // At most 2 x 65535^3 bytes and a 32-bit header size: no overflow in
+    // u64, but checked all the same (every reader's offsets are).
+    let intensity = [u64::from(buckets), u64::from(ac_height), u64::from(ac_width)]
+        .iter()
+        .try_fold(2u64, |a, &b| a.checked_mul(b))
+        .and_then(|i| i.checked_add(header_size))
+        .ok_or_else(|| bad("the intensity data's size overflows".into()))?;
     let int = Int {
         size: 4,
         signed: true,
@@ -113,7 +126,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         len,
         DESCRIPTION,
         "the phase data",
-        header_size + intensity,
+        intensity,
         (nx, ny),
         int,
         false,

@@ -34,6 +34,7 @@ use std::io::{self, BufReader, Cursor, Read, Seek};
 use std::path::{Path, PathBuf};
 
 use super::{Topography, TopographyError};
+use crate::table::format::escape_text;
 
 /// The default bound on the bytes read: a file, or an X3P member once
 /// uncompressed, larger than this is refused (2 GiB).
@@ -283,13 +284,38 @@ impl std::fmt::Display for Channel {
     }
 }
 
-/// `0 Height, 1 Phase, ...` for an error message.
+/// How many channels an error message lists (the rest are counted).
+const LISTED_CHANNELS: usize = 20;
+
+/// `0 Height, 1 Phase, ...` for an error message: the names escaped and
+/// cut ([`clip`]), the first [`LISTED_CHANNELS`] and a count of the rest.
 fn list_channels(names: &[String]) -> String {
     if names.is_empty() {
         return "none".into();
     }
-    let listed: Vec<String> = names.iter().enumerate().map(|(i, n)| format!("{i} {n}")).collect();
-    listed.join(", ")
+    let listed: Vec<String> = names
+        .iter()
+        .take(LISTED_CHANNELS)
+        .enumerate()
+        .map(|(i, n)| format!("{i} {}", clip(n, 40)))
+        .collect();
+    match names.len().checked_sub(LISTED_CHANNELS) {
+        Some(more @ 1..) => format!("{} … and {} more", listed.join(", "), thousands(more)),
+        _ => listed.join(", "),
+    }
+}
+
+/// `4389` as `4,389`.
+fn thousands(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
 }
 
 impl Default for ReadOptions {
@@ -429,7 +455,7 @@ pub enum ReadError {
         detail: String,
     },
     /// Neither the file nor the options give a sampling interval.
-    #[error("{}: the file gives no sampling interval {name}: set ReadOptions::{name} (metres)", path.display())]
+    #[error("{}: the file gives no sampling interval {name}: give the sampling interval {name} (metres)", path.display())]
     NeedInterval {
         /// The file.
         path: PathBuf,
@@ -450,7 +476,7 @@ pub enum ReadError {
     },
     /// A unit in the options (`z_unit`, `xy_unit`) is not finite and
     /// positive.
-    #[error("{}: ReadOptions::{name} = {value} is out of range: must be finite and > 0", path.display())]
+    #[error("{}: the unit {name} = {value} is out of range: must be finite and > 0", path.display())]
     Options {
         /// The file.
         path: PathBuf,
@@ -554,14 +580,58 @@ impl crate::Classify for ReadError {
 pub fn read_file(path: &Path, options: &ReadOptions) -> Result<Topography, ReadError> {
     let cx = Ctx { path };
     check_options(&cx, options)?;
+    // A device, pipe or directory is refused before it is opened (opening
+    // a pipe waits for a writer; /dev/zero would read as 0 bytes).
+    regular(&cx, &std::fs::metadata(path).map_err(|e| cx.io(e))?)?;
     let file = File::open(path).map_err(|e| cx.io(e))?;
-    let len = file.metadata().map_err(|e| cx.io(e))?.len();
+    let metadata = file.metadata().map_err(|e| cx.io(e))?;
+    regular(&cx, &metadata)?;
+    let len = metadata.len();
     if len > options.max_bytes {
         return Err(cx.too_large("the file", len, options.max_bytes));
     }
     // Streamed: the file is never held whole, only the heights it makes.
     let mut source = BufReader::with_capacity(CHUNK, file);
     read_from(&cx, &mut source, len, options)
+}
+
+/// A regular file, else an I/O error saying what it is.
+fn regular(cx: &Ctx, metadata: &std::fs::Metadata) -> Result<(), ReadError> {
+    let kind = metadata.file_type();
+    if kind.is_file() {
+        return Ok(());
+    }
+    let what = if kind.is_dir() {
+        "a directory"
+    } else {
+        special_kind(&kind).unwrap_or("not a regular file")
+    };
+    Err(cx.io(io::Error::other(format!(
+        "it is {what}, not a regular file: only files are read"
+    ))))
+}
+
+/// What a special file is: a device, a pipe, a socket.
+#[cfg(unix)]
+fn special_kind(kind: &std::fs::FileType) -> Option<&'static str> {
+    use std::os::unix::fs::FileTypeExt;
+    if kind.is_char_device() {
+        Some("a character device")
+    } else if kind.is_block_device() {
+        Some("a block device")
+    } else if kind.is_fifo() {
+        Some("a pipe (FIFO)")
+    } else if kind.is_socket() {
+        Some("a socket")
+    } else {
+        None
+    }
+}
+
+/// What a special file is (only Unix tells).
+#[cfg(not(unix))]
+fn special_kind(_: &std::fs::FileType) -> Option<&'static str> {
+    None
 }
 
 /// Reads a height map or profile from `bytes`, the content of a file
@@ -644,11 +714,15 @@ fn read_from(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions)
     Ok(topography.with_metadata(metadata))
 }
 
-/// `text`, cut to at most `max` characters for an error message.
+/// Text from a file for an error message: cut to at most `max`
+/// characters, then escaped ([`escape_text`]: control characters such as
+/// ESC, CR or \x1c as `\u{…}`, so that a file cannot clear or forge the
+/// terminal's output). Every reader puts every string it takes from a
+/// file (a name, a value, a line) into its messages through this.
 fn clip(text: &str, max: usize) -> String {
     match text.char_indices().nth(max) {
-        Some((i, _)) => format!("{}…", &text[..i]),
-        None => text.to_string(),
+        Some((i, _)) => format!("{}…", escape_text(&text[..i])),
+        None => escape_text(text),
     }
 }
 

@@ -16,6 +16,14 @@
 //! files' section names (`AFM image list`, `Microscope list`, ...), wrong
 //! per-channel sizes corrected by the scan list's, and version 9.2's
 //! 32-bit data are read as SurfaceTopography reads them.
+//!
+//! The header ends at a line `\*File list end` (text that only contains
+//! it is a value) or, as SurfaceTopography reads it, at a blank line after
+//! the image sections; a blank line before them is a damaged header, a
+//! file ending within its header a truncated one. Only the sections read
+//! are kept (the others' `Operating mode` alone), so a header's memory is
+//! bounded by what the surface needs; `Bytes/pixel` other than 2 or 4 is
+//! refused, never defaulted.
 
 use std::collections::HashMap;
 
@@ -70,8 +78,20 @@ fn sections(cx: &Ctx, text: &str, whole: bool) -> Result<Vec<Section>, ReadError
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
     let mut out: Vec<Section> = Vec::new();
     let mut ended = false;
-    for line in text.split('\n').map(str::trim) {
-        if line.is_empty() || line.eq_ignore_ascii_case("\\*file list end") {
+    for (number, line) in text.split('\n').map(str::trim).enumerate() {
+        if line.eq_ignore_ascii_case("\\*file list end") {
+            ended = true;
+            break;
+        }
+        if line.is_empty() {
+            // A blank line ends the header as SurfaceTopography reads it;
+            // one before any image section is a damaged header.
+            if !out.iter().any(|(n, _)| IMAGE.contains(&n.as_str())) {
+                return Err(bad(format!(
+                    "line {} of the header is blank, before any image section (\\*Ciao image list): the header is damaged",
+                    number + 1
+                )));
+            }
             ended = true;
             break;
         }
@@ -83,13 +103,25 @@ fn sections(cx: &Ctx, text: &str, whole: bool) -> Result<Vec<Section>, ReadError
                     clip(&name, 40)
                 )));
             }
-            out.push((name, HashMap::new()));
+            // Sections not read are kept as one (their "operating mode"
+            // only): a 4 MiB header of other sections costs no memory.
+            let known = [&FILE_LIST[..], &SCANNER, &SCAN, &IMAGE, &["equipment list"]]
+                .iter()
+                .any(|names| names.contains(&name.as_str()));
+            if known {
+                out.push((name, HashMap::new()));
+            } else if out.last().is_none_or(|(n, _)| !n.is_empty()) {
+                out.push((String::new(), HashMap::new()));
+            }
         } else if let Some(entry) = line.strip_prefix('\\') {
-            let Some((_, section)) = out.last_mut() else {
+            let Some((name, section)) = out.last_mut() else {
                 return Err(bad("a key before the first section".into()));
             };
             let (key, value) = entry.split_once(": ").unwrap_or((entry, ""));
-            section.insert(key.to_lowercase(), value.trim().to_string());
+            let key = key.to_lowercase();
+            if !name.is_empty() || key == "operating mode" {
+                section.insert(key, value.trim().to_string());
+            }
         } else {
             return Err(bad(format!(
                 "a header line does not start with a backslash: \"{}\"",
@@ -97,7 +129,13 @@ fn sections(cx: &Ctx, text: &str, whole: bool) -> Result<Vec<Section>, ReadError
             )));
         }
     }
-    if !ended && !whole {
+    if !ended && whole {
+        return Err(bad(format!(
+            "the file ends within its text header, after {} bytes and before \"\\*File list end\": it is truncated",
+            text.len()
+        )));
+    }
+    if !ended {
         return Err(bad(format!("no \"\\*File list end\" in the first {MAX_HEADER} bytes")));
     }
     if out.is_empty() {
@@ -206,7 +244,8 @@ fn int(section: &HashMap<String, String>, key: &str) -> Option<u64> {
 
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
-    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, b"\\*File list end")?;
+    // The marker at the start of a line (a value may contain its text).
+    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, b"\n\\*File list end")?;
     if bytes.starts_with(b"?*") {
         return Err(cx.unsupported("a Nanoscope file with its data stored as text (only binary data are read)"));
     }
@@ -263,7 +302,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let c = &channels[index];
     let (per_lsb, height_unit) = c.height.clone().map_err(|why| ReadError::Channel {
         path: cx.path(),
-        detail: format!("channel {index} ({}) holds no heights: {why}", c.name),
+        detail: format!("channel {index} ({}) holds no heights: {why}", clip(&c.name, 40)),
         available: names.clone(),
     })?;
     let metres = instrument::length_unit(&height_unit, true).unwrap_or(f64::NAN);
@@ -292,7 +331,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         source,
         len,
         DESCRIPTION,
-        &format!("channel {index} ({})", c.name),
+        &format!("channel {index} ({})", clip(&c.name, 40)),
         c.offset,
         (c.nx, c.ny),
         int,
@@ -357,10 +396,13 @@ fn channel(
     }
     let offset = need("data offset")?;
     let length = need("data length")?;
-    let bpp = int(p, "bytes/pixel").unwrap_or(2);
-    if bpp != 2 && bpp != 4 {
-        return Err(format!("{bpp} bytes a pixel (2 or 4 are read)"));
-    }
+    let bpp = match p.get("bytes/pixel").map(|v| v.trim()) {
+        None => 2,
+        Some(v) => match v.parse::<u64>() {
+            Ok(b @ (2 | 4)) => b,
+            _ => return Err(format!("Bytes/pixel = \"{}\": must be 2 or 4", clip(v, 20))),
+        },
+    };
     let points = |nx: u64, ny: u64| nx.checked_mul(ny).ok_or_else(|| format!("{nx} x {ny} points"));
     let mut elsize = bpp;
     if version >= VERSION_32BIT && length / 4 >= points(nx, ny)? {

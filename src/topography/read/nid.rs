@@ -10,9 +10,14 @@
 //! channel whose unit is not a length (deflection in N, a signal in V)
 //! holds no heights and is read only if asked for, as an error saying so.
 //! Rows are stored top first: the first row here is the file's last (y
-//! up), as Gwyddion and SurfaceTopography show it.
+//! up), as Gwyddion and SurfaceTopography show it. A channel listed in
+//! `[DataSet]` whose section is missing is refused, naming it: its size,
+//! and so where every later channel's data start, is unknown
+//! (SurfaceTopography skips it and reads the later channels at the wrong
+//! offsets). Offsets are checked arithmetic: channels declaring 2⁶⁴ bytes
+//! or more are refused, never wrapped.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::instrument::{self, Int};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
@@ -33,6 +38,30 @@ pub(super) const ENTRY: Entry = Entry {
 /// The bound on the text header (bytes).
 const MAX_HEADER: u64 = 4 << 20;
 
+/// The keys read (of `[DataSet]` also its `GroupCount`, `Gr…` entries).
+const KEYS: [&str; 20] = [
+    "Frame",
+    "Points",
+    "Lines",
+    "SaveMode",
+    "SaveBits",
+    "SaveSign",
+    "SaveOrder",
+    "Dim0Range",
+    "Dim1Range",
+    "Dim2Range",
+    "Dim2Min",
+    "Dim0Unit",
+    "Dim1Unit",
+    "Dim2Unit",
+    "Dim2Name",
+    "Date",
+    "Time",
+    "Head type",
+    "Controller S/N",
+    "Version",
+];
+
 fn sniff(head: &[u8]) -> bool {
     head.starts_with(b"[DataSet]\r\n") || head.starts_with(b"[DataSet]\n")
 }
@@ -50,14 +79,26 @@ struct Channel {
 
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
     let bad = |detail: String| cx.format(DESCRIPTION, detail);
-    let (bytes, _) = instrument::head(cx, source, len, MAX_HEADER, b"\n#!")?;
+    let (bytes, whole) = instrument::head(cx, source, len, MAX_HEADER, b"\n#!")?;
     if !sniff(&bytes) {
         return Err(bad("no \"[DataSet]\" line at the start".into()));
+    }
+    // `head` stops right after the marker, if it found one.
+    if !bytes.ends_with(b"\n#!") {
+        return Err(bad(if whole {
+            format!(
+                "the file ends within its text header, after {} bytes and before \"#!\" (the start of the data): it is truncated",
+                bytes.len()
+            )
+        } else {
+            format!("no \"#!\" (the start of the data) in the first {MAX_HEADER} bytes")
+        }));
     }
     // The header's lines up to one that starts with `#!`, where the data
     // begin (right after the two bytes).
     let mut sections: HashMap<String, HashMap<String, String>> = HashMap::new();
     let mut current = String::from("DataSet");
+    let mut named: HashSet<String> = HashSet::new();
     let mut at = 0usize;
     let data_start = loop {
         if at >= bytes.len() {
@@ -82,10 +123,28 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
                 let (key, value) = line
                     .split_once('=')
                     .ok_or_else(|| bad(format!("a header line is not key=value: \"{}\"", clip(line, 40))))?;
-                sections
-                    .entry(current.clone())
-                    .or_default()
-                    .insert(key.to_string(), value.trim().to_string());
+                // Only the keys read are kept, of the sections read:
+                // [DataSet] (the first), [DataSet-Info] and the channels
+                // [DataSet] lists before them (a 4 MiB header of other
+                // keys or sections costs no memory).
+                let key = key.trim();
+                let value = value.trim();
+                let keep = match current.as_str() {
+                    "DataSet" if key.starts_with("Gr") => {
+                        if key.contains("-Ch") {
+                            named.insert(value.to_string());
+                        }
+                        true
+                    }
+                    "DataSet" | "DataSet-Info" => KEYS.contains(&key),
+                    name => KEYS.contains(&key) && named.contains(name),
+                };
+                if keep {
+                    sections
+                        .entry(current.clone())
+                        .or_default()
+                        .insert(key.to_string(), value.to_string());
+                }
             }
         }
         at = end;
@@ -120,9 +179,17 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         }
     }
     listed.sort_unstable();
-    for (_, _, name) in listed {
-        let Some(s) = sections.get(name) else { continue };
+    for (g, c, name) in listed {
         let what = format!("[{}]", clip(name, 40));
+        // A channel listed without its section: its size, and so where
+        // every later channel's data start, is unknown (SurfaceTopography
+        // skips it and reads the later channels at the wrong offsets).
+        let Some(s) = sections.get(name) else {
+            return Err(bad(format!(
+                "[DataSet] lists the channel Gr{g}-Ch{c} = {}, but the header has no section {what}",
+                clip(name, 40)
+            )));
+        };
         if s.get("SaveMode").map(String::as_str) != Some("Binary") {
             return Err(cx.unsupported(format!("{what}: SaveMode other than Binary")));
         }
@@ -151,7 +218,11 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             offset,
             section: name.clone(),
         });
-        offset = offset.checked_add(bytes).ok_or_else(too_big)?;
+        offset = offset.checked_add(bytes).ok_or_else(|| {
+            bad(format!(
+                "{what}: the channels up to this one declare more than 2^64 bytes of data (Points x Lines x SaveBits)"
+            ))
+        })?;
     }
     // A length unit (`A` is the ampere of a current here, not ångström).
     let length = |s: &HashMap<String, String>| s.get("Dim2Unit").and_then(|u| instrument::length_unit(u, false));
@@ -166,7 +237,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             path: cx.path(),
             detail: format!(
                 "channel {index} ({}) holds no heights: its unit is \"{}\", not a length",
-                c.name,
+                clip(&c.name, 40),
                 clip(unit, 20)
             ),
             available: names,
@@ -219,13 +290,22 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     } else {
         0.0
     };
+    // Checked: an earlier channel can declare ~2^64 bytes (a wrapped
+    // offset would read the header's text as heights).
+    let offset = data_start.checked_add(c.offset).ok_or_else(|| {
+        bad(format!(
+            "channel {index} ({}): its data start {} bytes after byte {data_start}, beyond any file (the earlier channels' sizes are wrong)",
+            clip(&c.name, 40),
+            c.offset
+        ))
+    })?;
     let heights = instrument::grid(
         cx,
         source,
         len,
         DESCRIPTION,
-        &format!("channel {index} ({})", c.name),
-        data_start + c.offset,
+        &format!("channel {index} ({})", clip(&c.name, 40)),
+        offset,
         (c.nx, c.ny),
         c.int,
         true,

@@ -6,15 +6,15 @@
 //! `Raw` or `SAMPLE_DATA`) is `nx`, `ny`, the item size (1, 2 or 4: u8,
 //! i16, f32) and the values stored column by column (x slowest), y running
 //! down; a value is in waves of the `Wavelength` block (nm), divided by
-//! `Mult`; values that are not finite or at least 32766 (i16) or 1e38 (f32)
+//! `Mult`; values that are not finite or at least 32766 (i16) or 1e38 (f32: as an f32, 9.99999968e37)
 //! are missing. The pixel size (`Pixel_size`, mm; `Aspect` the ratio dy/dx)
 //! gives the intervals. Each raster is a channel (by its block name), the
 //! first by default; intensity arrays are not read.
 
 use std::collections::HashMap;
 
-use super::binary::{text, Binary, Fields};
-use super::{Ctx, Entry, ReadError, ReadOptions, Source};
+use super::binary::{text, trim, Binary, Fields};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
 use crate::LengthUnit;
 
@@ -47,6 +47,11 @@ const MAX_TEXT: i32 = 256;
 const HEIGHT_ARRAYS: [&str; 5] = ["RAW DATA", "RAW_DATA", "OPD", "Raw", "SAMPLE_DATA"];
 /// A raster's header: nx, ny, item size (u16 each).
 const RASTER_HEADER: u64 = 6;
+/// The most height rasters (channels) a file may have: a directory of
+/// millions is refused rather than listed.
+const MAX_RASTERS: usize = 1024;
+/// The scalar and text blocks read (the others are skipped).
+const VALUES: [&str; 6] = ["Wavelength", "Mult", "Aspect", "Pixel_size", "Date", "Time"];
 
 /// A scalar or text block's value.
 #[derive(Debug, Clone)]
@@ -75,29 +80,72 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         )));
     }
     let count = length / ENTRY_SIZE - 1;
-    bin.check_within("the directory", PRELUDE + ENTRY_SIZE, count, ENTRY_SIZE)?;
-    let directory = bin.block("the directory", PRELUDE + ENTRY_SIZE, (count * ENTRY_SIZE) as usize)?;
+    let first = PRELUDE + ENTRY_SIZE;
+    bin.check_within("the directory", first, count, ENTRY_SIZE)?;
 
-    // The blocks: scalars and texts read at once, rasters noted.
-    let mut values: HashMap<String, Value> = HashMap::new();
-    let mut rasters: Vec<(String, u64, u64)> = Vec::new();
-    let mut at = PRELUDE + length;
-    for raw in directory.chunks_exact(ENTRY_SIZE as usize) {
-        let (name, kind, length) = entry(raw);
+    // The directory, streamed: the entries are read a piece at a time
+    // (a file can declare millions), and only what the surface needs is
+    // kept: the blocks' positions (the sum of the lengths before them),
+    // the values of the blocks named in VALUES, and the rasters (at most
+    // MAX_RASTERS). Then the values are read at their positions.
+    let mut wanted: Vec<(usize, i16, u64, u64)> = Vec::new();
+    let mut rasters: Vec<(&'static str, u64, u64)> = Vec::new();
+    let mut at = PRELUDE.checked_add(length).ok_or_else(|| bin.err("the directory's length overflows"))?;
+    let mut failed = None;
+    let mut too_many = 0u64;
+    bin.stream("the directory", first, count, ENTRY_SIZE as usize, |raw| {
+        if failed.is_some() {
+            return;
+        }
+        // The name by its bytes: no text made of the entries skipped.
+        let mut f = Fields::new(raw);
+        f.skip(16);
+        let (kind, length) = (f.i16(), f.i32());
+        let name = trim(&raw[..16]);
         let Ok(length @ 1..) = u64::try_from(length) else {
-            continue;
+            return;
         };
-        let end = bin.check_within(&format!("the block {name}"), at, length, 1)?;
+        let start = at;
+        match at.checked_add(length).filter(|&end| end <= len) {
+            Some(end) => at = end,
+            None => {
+                failed = Some((text(name), start, length));
+                return;
+            }
+        }
         match kind {
-            ARRAY if HEIGHT_ARRAYS.contains(&name.as_str()) => rasters.push((name, at, length)),
-            ARRAY => {}
+            ARRAY => {
+                if let Some(&raster) = HEIGHT_ARRAYS.iter().find(|h| h.as_bytes() == name) {
+                    if rasters.len() < MAX_RASTERS {
+                        rasters.push((raster, start, length));
+                    } else {
+                        too_many += 1;
+                    }
+                }
+            }
             _ => {
-                if let Some(value) = scalar(&mut bin, kind, at, length)? {
-                    values.insert(name, value);
+                // A later block of a name replaces an earlier one.
+                if let Some(i) = VALUES.iter().position(|v| v.as_bytes() == name) {
+                    wanted.retain(|w| w.0 != i);
+                    wanted.push((i, kind, start, length));
                 }
             }
         }
-        at = end;
+    })?;
+    if let Some((name, start, length)) = failed {
+        bin.check_within(&format!("the block {}", clip(&name, 16)), start, length, 1)?;
+    }
+    if too_many > 0 {
+        return Err(bin.err(format!(
+            "{} height rasters: at most {MAX_RASTERS} are read",
+            too_many + MAX_RASTERS as u64
+        )));
+    }
+    let mut values: HashMap<&'static str, Value> = HashMap::new();
+    for (i, kind, start, length) in wanted {
+        if let Some(value) = scalar(&mut bin, kind, start, length)? {
+            values.insert(VALUES[i], value);
+        }
     }
     let number = |name: &str| match values.get(name) {
         Some(Value::Number(v)) => Some(*v),
@@ -121,9 +169,9 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let pixel = number("Pixel_size");
     let (dx, dy) = (pixel.map(|p| p * mm), pixel.map(|p| p * aspect * mm));
 
-    let names: Vec<String> = rasters.iter().map(|(name, ..)| name.clone()).collect();
+    let names: Vec<String> = rasters.iter().map(|(name, ..)| name.to_string()).collect();
     let chosen = cx.channel(&names, Some(0), options)?;
-    let (_, at, length) = rasters[chosen].clone();
+    let (_, at, length) = rasters[chosen];
     let header = bin.block("a raster's header", at, RASTER_HEADER as usize)?;
     let mut f = Fields::new(&header);
     let (nx, ny, item) = (f.u16(), f.u16(), f.u16());
@@ -133,14 +181,16 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             names[chosen]
         )));
     }
+    // SurfaceTopography compares the f32 values with 1e38 as an f32
+    // (9.99999968e37): a value of f32 1e38 is missing too.
     let limit = match item {
         1 => f64::INFINITY,
         2 => 32766.0,
-        4 => 1e38,
+        4 => f64::from(1e38_f32),
         other => return Err(cx.unsupported(format!("{FORMAT}: {other}-byte raster values (1, 2 and 4 are read)"))),
     };
     let (nx, ny) = (usize::from(nx), usize::from(ny));
-    let points = (nx * ny) as u64;
+    let points = (nx as u64) * (ny as u64);
     if RASTER_HEADER + points * u64::from(item) > length {
         return Err(bin.err(format!(
             "the raster {} ({nx} x {ny} of {item} bytes) is longer than its block ({length} bytes)",

@@ -135,13 +135,8 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
     let points = u64::from(nx) * u64::from(ny);
     // The whole layer (its heights, minimum and maximum, and images) is
     // in the file: a file cut short in its images is truncated too.
-    bin.check_within("the layer", at, points, 4 + 3 * u64::from(images))?;
-    bin.check_within(
-        "the layer's minimum and maximum",
-        at + points * (4 + 3 * u64::from(images)),
-        8,
-        1,
-    )?;
+    let end = bin.check_within("the layer", at, points, 4 + 3 * u64::from(images))?;
+    bin.check_within("the layer's minimum and maximum", end, 8, 1)?;
     let mut heights = cx.heights(|| format!("layer {chosen}'s {nx} x {ny} points"), points, options)?;
     bin.stream("the heights", at, points, 4, |raw| {
         let v = match *raw {

@@ -9,7 +9,7 @@
 //! (as SurfaceTopography and Gwyddion's `surffile.c` do).
 
 use super::binary::{metres_per, Binary, Fields};
-use super::{Ctx, Entry, ReadError, ReadOptions, Source};
+use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
 
 /// The registry's entry.
@@ -84,7 +84,7 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         other => return Err(cx.unsupported(format!("{FORMAT}: {other}-bit heights (16 and 32 are read)"))),
     };
     let unit = |name: &str, unit: &str| {
-        metres_per(unit).ok_or_else(|| cx.unsupported(format!("{FORMAT}: the {name} unit \"{unit}\" is not a length")))
+        metres_per(unit).ok_or_else(|| cx.unsupported(format!("{FORMAT}: the {name} unit \"{}\" is not a length", clip(unit, 20))))
     };
     let (mx, my, mz) = (unit("x", &unit_x)?, unit("y", &unit_y)?, unit("height", &unit_z)?);
     let interval = |name: &str, v: f32, m: f64| {

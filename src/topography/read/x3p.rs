@@ -137,7 +137,7 @@ pub(super) fn read(cx: &Ctx, source: &mut dyn Source, options: &ReadOptions) -> 
     if root.tag_name().name() != "ISO5436_2" {
         return Err(xml_err(
             cx,
-            format!("the root element is {}, not ISO5436_2", root.tag_name().name()),
+            format!("the root element is {}, not ISO5436_2", clip(root.tag_name().name(), 40)),
         ));
     }
     let x = Xml { cx };
@@ -288,7 +288,7 @@ fn data_list(
             xml_err(
                 cx,
                 format!(
-                    "Datum {i} is {:?}: not a number of data type {}",
+                    "Datum {i} is \"{}\": not a number of data type {}",
                     clip(text, 40),
                     z_type.letter()
                 ),
@@ -296,7 +296,7 @@ fn data_list(
         };
         if text.contains(';') {
             return Err(cx.unsupported(format!(
-                "Datum {i} is {:?}: coordinate lists (x;y;z) are not read",
+                "Datum {i} is \"{}\": coordinate lists (x;y;z) are not read",
                 clip(text, 40)
             )));
         }
@@ -534,7 +534,7 @@ impl Xml<'_, '_> {
 
     fn child<'a, 'i>(&self, node: Node<'a, 'i>, name: &str) -> Result<Node<'a, 'i>, ReadError> {
         self.opt_child(node, name)
-            .ok_or_else(|| xml_err(self.cx, format!("no {name} in {}", node.tag_name().name())))
+            .ok_or_else(|| xml_err(self.cx, format!("no {name} in {}", clip(node.tag_name().name(), 40))))
     }
 
     /// The trimmed text of the child `name`, if there is one and it is

@@ -55,7 +55,7 @@ pub enum StatsError {
     },
     /// The valid points lie on one line, so the plane (or line) fit is
     /// undetermined.
-    #[error("the valid points lie on one line: the detrend {detrend} fit is undetermined (use detrend mean)")]
+    #[error("the valid points lie on one line: the {detrend} detrend's fit is undetermined (choose the detrend mean)")]
     Undetermined {
         /// The detrending asked for.
         detrend: Detrend,
@@ -79,7 +79,7 @@ pub enum StatsError {
         beta: f64,
     },
     /// Spectral moments of a surface with missing points.
-    #[error("{missing} missing points: the spectral estimate needs every point (use derivative fd)")]
+    #[error("{missing} missing points: the spectral estimate needs every point (choose the derivative fd, finite differences)")]
     MissingPoints {
         /// Missing points.
         missing: usize,
