@@ -295,4 +295,219 @@ mod tests {
         }
         assert_eq!(ls_dyna_number(0.5252108573913574), "0.5252108573913574");
     }
+    // Readers written from each solver's documented grammar (not from the
+    // emitter): they take what the solver takes and nothing else.
+
+    fn table() -> (FrictionLaw, LawTable) {
+        let law = FrictionLaw::new(crate::Params::new(1.0, 0.001), 1e9, Some((1e4, 1e8)), crate::OutOfRange::Error)
+            .unwrap();
+        let t = LawTable::for_tolerance(&law, 1e4, 1e8, 1e-3).unwrap();
+        (law, t)
+    }
+
+    fn notes(law: &FrictionLaw, t: &LawTable, unit: StressUnit) -> Vec<String> {
+        law_notes(law, t, unit, Some(1e-3), &["psi = 1, theta = 0.001".into()])
+    }
+
+    /// Abaqus input: `**` starts a comment line, `*` a keyword line
+    /// (`*NAME, PARAM=VALUE, …`, case-insensitive), any other line is a
+    /// data line of comma-separated values (an empty field is 0). The
+    /// `*FRICTION` data lines for isotropic friction: μ, slip rate,
+    /// contact pressure, temperature, field variables.
+    fn read_abaqus(text: &str) -> Vec<(f64, f64, f64)> {
+        let mut in_friction = false;
+        let mut rows = vec![];
+        for line in text.lines() {
+            if line.starts_with("**") {
+                continue;
+            }
+            if let Some(keyword) = line.strip_prefix('*') {
+                let name = keyword.split(',').next().unwrap().trim().to_ascii_uppercase();
+                assert!(!in_friction || name != "FRICTION", "a second *FRICTION");
+                in_friction = name == "FRICTION";
+                assert!(!keyword.contains(','), "*FRICTION takes no parameter here: {line}");
+                continue;
+            }
+            assert!(in_friction, "a data line outside *FRICTION: {line}");
+            assert!(line.len() <= 256, "Abaqus reads 256 characters a line");
+            let f: Vec<f64> = line
+                .split(',')
+                .map(|v| if v.trim().is_empty() { 0.0 } else { v.trim().parse().unwrap() })
+                .collect();
+            assert!(f.len() >= 3, "{line}");
+            rows.push((f[0], f[1], f[2]));
+        }
+        rows
+    }
+
+    /// LS-DYNA keyword input: `$` starts a comment, `*` a keyword; cards
+    /// are fixed fields. `*DEFINE_TABLE`: card 1 TBID, SFA, OFFA (I10,
+    /// 2E10.0); then one VALUE a card (E20.0) until the next keyword, the
+    /// curves following in the values' order. `*DEFINE_CURVE`: card 1
+    /// LCID, SIDR, SFA, SFO, … (I10, I10, E10.0, E10.0, …); then points
+    /// A, O (2E20.0).
+    fn read_ls_dyna(text: &str) -> (u32, Vec<f64>, Vec<(u32, Vec<(f64, f64)>)>) {
+        let field = |line: &str, at: usize, width: usize| -> String {
+            assert!(line.len() <= 80, "a card is 80 columns: {line}");
+            line.get(at..(at + width).min(line.len())).unwrap_or("").trim().to_string()
+        };
+        let (mut table, mut values, mut curves) = (0u32, vec![], vec![]);
+        let mut keyword = String::new();
+        let mut first = false;
+        for line in text.lines() {
+            if line.starts_with('$') {
+                continue;
+            }
+            if let Some(k) = line.strip_prefix('*') {
+                keyword = k.trim().to_string();
+                first = true;
+                continue;
+            }
+            match (keyword.as_str(), first) {
+                ("DEFINE_TABLE", true) => {
+                    table = field(line, 0, 10).parse().unwrap();
+                    assert_eq!(field(line, 10, 10).parse::<f64>().unwrap(), 1.0);
+                    assert_eq!(field(line, 20, 10).parse::<f64>().unwrap(), 0.0);
+                }
+                ("DEFINE_TABLE", false) => values.push(field(line, 0, 20).parse().unwrap()),
+                ("DEFINE_CURVE", true) => {
+                    let id = field(line, 0, 10).parse().unwrap();
+                    assert_eq!(field(line, 20, 10).parse::<f64>().unwrap(), 1.0, "SFA");
+                    assert_eq!(field(line, 30, 10).parse::<f64>().unwrap(), 1.0, "SFO");
+                    curves.push((id, vec![]));
+                }
+                ("DEFINE_CURVE", false) => {
+                    let (a, o) = (field(line, 0, 20), field(line, 20, 20));
+                    curves.last_mut().unwrap().1.push((a.parse().unwrap(), o.parse().unwrap()));
+                }
+                (k, _) => panic!("unexpected keyword {k}"),
+            }
+            first = false;
+        }
+        (table, values, curves)
+    }
+
+    /// MOOSE input (HIT): `#` starts a comment; `[name]` opens a block,
+    /// `[]` closes it; `key = value`, a value with spaces in single
+    /// quotes. Returns the `[Functions]` sub-blocks' parameters.
+    fn read_moose(text: &str) -> Vec<(String, Vec<(String, String)>)> {
+        let mut path: Vec<String> = vec![];
+        let mut functions = vec![];
+        for line in text.lines() {
+            let line = line.split('#').next().unwrap().trim();
+            if line.is_empty() {
+                continue;
+            }
+            if line == "[]" {
+                path.pop().expect("a [] closes no block");
+            } else if let Some(name) = line.strip_prefix('[').and_then(|l| l.strip_suffix(']')) {
+                path.push(name.to_string());
+                if path.len() == 2 && path[0] == "Functions" {
+                    functions.push((name.to_string(), vec![]));
+                }
+            } else {
+                let (k, v) = line.split_once('=').expect("key = value");
+                let v = v.trim();
+                let v = v.strip_prefix('\'').and_then(|v| v.strip_suffix('\'')).unwrap_or(v);
+                assert!(path.len() == 2, "a parameter outside a function block");
+                functions.last_mut().unwrap().1.push((k.trim().to_string(), v.to_string()));
+            }
+        }
+        assert!(path.is_empty(), "an unclosed block");
+        functions
+    }
+
+    /// COMSOL spreadsheet data: a `%` line is a comment; each other row
+    /// is the arguments then the function values, separated by spaces or
+    /// tabs.
+    fn read_comsol(text: &str) -> Vec<Vec<f64>> {
+        text.lines()
+            .filter(|l| !l.trim_start().starts_with('%') && !l.trim().is_empty())
+            .map(|l| l.split_whitespace().map(|v| v.parse().unwrap()).collect())
+            .collect()
+    }
+
+    /// CSV (RFC 4180 without quotes): a names line, then rows of numbers.
+    fn read_csv(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
+        let mut lines = text.lines();
+        let names = lines.next().unwrap().split(',').map(String::from).collect();
+        let rows = lines.map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+        (names, rows)
+    }
+
+    #[test]
+    fn every_format_reads_back_to_the_rows() {
+        let (law, t) = table();
+        for unit in StressUnit::ALL {
+            let want: Vec<LawRow> = t.rows.iter().map(|r| unit.row(r)).collect();
+            let notes = notes(&law, &t, unit);
+            let u = unit.name();
+
+            let (names, rows) = read_csv(&t.to_format(LawFormat::Csv, unit, &notes));
+            assert_eq!(names, [format!("pressure_{u}"), "mu".into(), format!("dmu_dp_per_{u}")]);
+            let got: Vec<LawRow> = rows
+                .iter()
+                .map(|r| LawRow { pressure: r[0], mu: r[1], dmu_dp: r[2] })
+                .collect();
+            assert_eq!(got, want, "csv {u}");
+
+            let text = t.to_format(LawFormat::Abaqus, unit, &notes);
+            assert!(text.contains(&format!("** units: pressure {u}")), "{text}");
+            let rows = read_abaqus(&text);
+            assert_eq!(rows, want.iter().map(|r| (r.mu, 0.0, r.pressure)).collect::<Vec<_>>(), "abaqus {u}");
+
+            let text = t.to_format(LawFormat::LsDyna, unit, &notes);
+            let (id, values, curves) = read_ls_dyna(&text);
+            assert_eq!((id, values), (LS_DYNA_TABLE_ID, LS_DYNA_VELOCITIES.to_vec()));
+            assert_eq!(curves.len(), 2);
+            for (i, (lcid, points)) in curves.iter().enumerate() {
+                assert_eq!(*lcid, LS_DYNA_TABLE_ID + 1 + i as u32);
+                assert_eq!(points.len(), want.len());
+                for (&(p, mu), r) in points.iter().zip(&want) {
+                    // Exact where the shortest form fits E20.0, else to
+                    // the 15 or 16 digits that do.
+                    assert_eq!(p, ls_dyna_number(r.pressure).parse::<f64>().unwrap());
+                    assert_eq!(mu, ls_dyna_number(r.mu).parse::<f64>().unwrap());
+                    assert!((p / r.pressure - 1.0).abs() <= 5e-15 && (mu / r.mu - 1.0).abs() <= 5e-15);
+                }
+            }
+
+            let text = t.to_format(LawFormat::Moose, unit, &notes);
+            assert!(text.contains(&format!("function_friction = {MOOSE_FUNCTION}")), "{text}");
+            let functions = read_moose(&text);
+            assert_eq!(functions.len(), 1);
+            let (name, params) = &functions[0];
+            assert_eq!(name, MOOSE_FUNCTION);
+            let get = |k: &str| params.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone()).unwrap();
+            assert_eq!((get("type"), get("axis")), ("PiecewiseLinear".into(), "x".into()));
+            let nums = |v: String| v.split_whitespace().map(|x| x.parse().unwrap()).collect::<Vec<f64>>();
+            assert_eq!(nums(get("x")), want.iter().map(|r| r.pressure).collect::<Vec<_>>(), "moose {u}");
+            assert_eq!(nums(get("y")), want.iter().map(|r| r.mu).collect::<Vec<_>>());
+
+            let rows = read_comsol(&t.to_format(LawFormat::Comsol, unit, &notes));
+            assert_eq!(rows, want.iter().map(|r| vec![r.pressure, r.mu]).collect::<Vec<_>>(), "comsol {u}");
+        }
+    }
+
+    #[test]
+    fn a_stress_unit_scales_pressure_and_slope_together() {
+        let (law, t) = table();
+        let pa = t.rows[3];
+        let mpa = StressUnit::MPa.row(&pa);
+        assert_eq!((mpa.pressure, mpa.mu, mpa.dmu_dp), (pa.pressure / 1e6, pa.mu, pa.dmu_dp * 1e6));
+        // μ(p) over a step is the same in any unit: dμ = dμ/dp · dp.
+        let psi = StressUnit::Psi.row(&pa);
+        assert!((psi.dmu_dp * psi.pressure / (pa.dmu_dp * pa.pressure) - 1.0).abs() < 1e-15);
+        let notes = notes(&law, &t, StressUnit::MPa).join("\n");
+        assert!(notes.contains("hardness H = 1000 MPa; pressure from 0.01 to 100 MPa"), "{notes}");
+        assert!(notes.contains("dmu_dp 1/MPa"), "{notes}");
+    }
+
+    #[test]
+    fn a_note_stays_one_comment_line() {
+        let (_, t) = table();
+        let text = t.to_format(LawFormat::Abaqus, StressUnit::Pa, &["two\n*lines".into()]);
+        assert!(text.starts_with("** two *lines\n"), "{text}");
+        assert_eq!(read_abaqus(&text).len(), t.rows.len());
+    }
 }
