@@ -167,6 +167,22 @@ pub fn law_notes(
     notes
 }
 
+/// `text` in lines of at most `width` characters, broken at spaces (a
+/// longer word stays whole on its own line).
+fn wrap(text: &str, width: usize) -> Vec<String> {
+    let mut lines: Vec<String> = vec![];
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        match lines.last_mut() {
+            Some(line) if line.chars().count() + 1 + word.chars().count() <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_string()),
+        }
+    }
+    lines
+}
+
 impl LawTable {
     /// The table in `format`, pressures in `unit`, with `notes` (e.g.
     /// [`law_notes`]) as the format's comments (CSV leaves them out: see
@@ -178,8 +194,16 @@ impl LawTable {
         let mut s = String::new();
         let comments = |s: &mut String, mark: &str| {
             for n in notes {
-                // A note never ends a comment early: one line each.
-                let _ = writeln!(s, "{mark} {}", n.replace(['\n', '\r'], " "));
+                // A note never ends a comment early: one line each
+                // (LS-DYNA: lines of at most 80 columns, its card width).
+                let n = n.replace(['\n', '\r'], " ");
+                if mark == "$" {
+                    for line in wrap(&n, 80 - 2) {
+                        let _ = writeln!(s, "$ {line}");
+                    }
+                } else {
+                    let _ = writeln!(s, "{mark} {n}");
+                }
             }
         };
         // `write!` to a String cannot fail.
@@ -205,12 +229,14 @@ impl LawTable {
             LawFormat::LsDyna => {
                 comments(&mut s, "$");
                 let table = LS_DYNA_TABLE_ID;
-                let _ = writeln!(
-                    s,
-                    "$ For *CONTACT_... with FS = -2 and FD = {table}: mu against the contact pressure ({u}: the model's stress unit), the same curve at relative velocities {} and {}",
+                let usage = format!(
+                    "For *CONTACT_... with FS = -2 and FD = {table}: mu against the contact pressure ({u}: the model's stress unit), the same curve at relative velocities {} and {}",
                     Shortest(LS_DYNA_VELOCITIES[0]),
                     Shortest(LS_DYNA_VELOCITIES[1])
                 );
+                for line in wrap(&usage, 80 - 2) {
+                    let _ = writeln!(s, "$ {line}");
+                }
                 let _ = writeln!(s, "*DEFINE_TABLE");
                 let _ = writeln!(s, "$     TBID       SFA      OFFA");
                 let _ = writeln!(s, "{table:>10}{:>10}{:>10}", "1.0", "0.0");
@@ -355,6 +381,7 @@ mod tests {
         let mut keyword = String::new();
         let mut first = false;
         for line in text.lines() {
+            assert!(line.chars().count() <= 80, "LS-DYNA reads 80 columns: {line}");
             if line.starts_with('$') {
                 continue;
             }
