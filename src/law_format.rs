@@ -51,7 +51,13 @@ pub enum LawFormat {
 crate::named!(
     LawFormat,
     "format",
-    [Csv = "csv", Abaqus = "abaqus", LsDyna = "ls-dyna", Moose = "moose", Comsol = "comsol"]
+    [
+        Csv = "csv",
+        Abaqus = "abaqus",
+        LsDyna = "ls-dyna",
+        Moose = "moose",
+        Comsol = "comsol"
+    ]
 );
 
 /// The stress unit a table's pressures are written in (dμ/dp in its
@@ -313,7 +319,13 @@ mod tests {
 
     #[test]
     fn ls_dyna_numbers_fit_their_field() {
-        for x in [1e4, 0.5252108573913574, 1.2345678901234567e-4, 31622.776601683792, 9.87654321987654e-11] {
+        for x in [
+            1e4,
+            0.5252108573913574,
+            1.2345678901234567e-4,
+            31622.776601683792,
+            9.87654321987654e-11,
+        ] {
             let s = ls_dyna_number(x);
             assert!(s.len() <= LS_DYNA_FIELD, "{s}");
             let back: f64 = s.parse().unwrap();
@@ -325,8 +337,13 @@ mod tests {
     // emitter): they take what the solver takes and nothing else.
 
     fn table() -> (FrictionLaw, LawTable) {
-        let law = FrictionLaw::new(crate::Params::new(1.0, 0.001), 1e9, Some((1e4, 1e8)), crate::OutOfRange::Error)
-            .unwrap();
+        let law = FrictionLaw::new(
+            crate::Params::new(1.0, 0.001),
+            1e9,
+            Some((1e4, 1e8)),
+            crate::OutOfRange::Error,
+        )
+        .unwrap();
         let t = LawTable::for_tolerance(&law, 1e4, 1e8, 1e-3).unwrap();
         (law, t)
     }
@@ -358,7 +375,13 @@ mod tests {
             assert!(line.len() <= 256, "Abaqus reads 256 characters a line");
             let f: Vec<f64> = line
                 .split(',')
-                .map(|v| if v.trim().is_empty() { 0.0 } else { v.trim().parse().unwrap() })
+                .map(|v| {
+                    if v.trim().is_empty() {
+                        0.0
+                    } else {
+                        v.trim().parse().unwrap()
+                    }
+                })
                 .collect();
             assert!(f.len() >= 3, "{line}");
             rows.push((f[0], f[1], f[2]));
@@ -375,7 +398,10 @@ mod tests {
     fn read_ls_dyna(text: &str) -> (u32, Vec<f64>, Vec<(u32, Vec<(f64, f64)>)>) {
         let field = |line: &str, at: usize, width: usize| -> String {
             assert!(line.len() <= 80, "a card is 80 columns: {line}");
-            line.get(at..(at + width).min(line.len())).unwrap_or("").trim().to_string()
+            line.get(at..(at + width).min(line.len()))
+                .unwrap_or("")
+                .trim()
+                .to_string()
         };
         let (mut table, mut values, mut curves) = (0u32, vec![], vec![]);
         let mut keyword = String::new();
@@ -405,7 +431,11 @@ mod tests {
                 }
                 ("DEFINE_CURVE", false) => {
                     let (a, o) = (field(line, 0, 20), field(line, 20, 20));
-                    curves.last_mut().unwrap().1.push((a.parse().unwrap(), o.parse().unwrap()));
+                    curves
+                        .last_mut()
+                        .unwrap()
+                        .1
+                        .push((a.parse().unwrap(), o.parse().unwrap()));
                 }
                 (k, _) => panic!("unexpected keyword {k}"),
             }
@@ -437,7 +467,11 @@ mod tests {
                 let v = v.trim();
                 let v = v.strip_prefix('\'').and_then(|v| v.strip_suffix('\'')).unwrap_or(v);
                 assert!(path.len() == 2, "a parameter outside a function block");
-                functions.last_mut().unwrap().1.push((k.trim().to_string(), v.to_string()));
+                functions
+                    .last_mut()
+                    .unwrap()
+                    .1
+                    .push((k.trim().to_string(), v.to_string()));
             }
         }
         assert!(path.is_empty(), "an unclosed block");
@@ -458,7 +492,9 @@ mod tests {
     fn read_csv(text: &str) -> (Vec<String>, Vec<Vec<f64>>) {
         let mut lines = text.lines();
         let names = lines.next().unwrap().split(',').map(String::from).collect();
-        let rows = lines.map(|l| l.split(',').map(|v| v.parse().unwrap()).collect()).collect();
+        let rows = lines
+            .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+            .collect();
         (names, rows)
     }
 
@@ -474,14 +510,22 @@ mod tests {
             assert_eq!(names, [format!("pressure_{u}"), "mu".into(), format!("dmu_dp_per_{u}")]);
             let got: Vec<LawRow> = rows
                 .iter()
-                .map(|r| LawRow { pressure: r[0], mu: r[1], dmu_dp: r[2] })
+                .map(|r| LawRow {
+                    pressure: r[0],
+                    mu: r[1],
+                    dmu_dp: r[2],
+                })
                 .collect();
             assert_eq!(got, want, "csv {u}");
 
             let text = t.to_format(LawFormat::Abaqus, unit, &notes);
             assert!(text.contains(&format!("** units: pressure {u}")), "{text}");
             let rows = read_abaqus(&text);
-            assert_eq!(rows, want.iter().map(|r| (r.mu, 0.0, r.pressure)).collect::<Vec<_>>(), "abaqus {u}");
+            assert_eq!(
+                rows,
+                want.iter().map(|r| (r.mu, 0.0, r.pressure)).collect::<Vec<_>>(),
+                "abaqus {u}"
+            );
 
             let text = t.to_format(LawFormat::LsDyna, unit, &notes);
             let (id, values, curves) = read_ls_dyna(&text);
@@ -500,7 +544,10 @@ mod tests {
             }
 
             let text = t.to_format(LawFormat::Moose, unit, &notes);
-            assert!(text.contains(&format!("function_friction = {MOOSE_FUNCTION}")), "{text}");
+            assert!(
+                text.contains(&format!("function_friction = {MOOSE_FUNCTION}")),
+                "{text}"
+            );
             let functions = read_moose(&text);
             assert_eq!(functions.len(), 1);
             let (name, params) = &functions[0];
@@ -508,11 +555,19 @@ mod tests {
             let get = |k: &str| params.iter().find(|(n, _)| n == k).map(|(_, v)| v.clone()).unwrap();
             assert_eq!((get("type"), get("axis")), ("PiecewiseLinear".into(), "x".into()));
             let nums = |v: String| v.split_whitespace().map(|x| x.parse().unwrap()).collect::<Vec<f64>>();
-            assert_eq!(nums(get("x")), want.iter().map(|r| r.pressure).collect::<Vec<_>>(), "moose {u}");
+            assert_eq!(
+                nums(get("x")),
+                want.iter().map(|r| r.pressure).collect::<Vec<_>>(),
+                "moose {u}"
+            );
             assert_eq!(nums(get("y")), want.iter().map(|r| r.mu).collect::<Vec<_>>());
 
             let rows = read_comsol(&t.to_format(LawFormat::Comsol, unit, &notes));
-            assert_eq!(rows, want.iter().map(|r| vec![r.pressure, r.mu]).collect::<Vec<_>>(), "comsol {u}");
+            assert_eq!(
+                rows,
+                want.iter().map(|r| vec![r.pressure, r.mu]).collect::<Vec<_>>(),
+                "comsol {u}"
+            );
         }
     }
 
@@ -521,12 +576,18 @@ mod tests {
         let (law, t) = table();
         let pa = t.rows[3];
         let mpa = StressUnit::MPa.row(&pa);
-        assert_eq!((mpa.pressure, mpa.mu, mpa.dmu_dp), (pa.pressure / 1e6, pa.mu, pa.dmu_dp * 1e6));
+        assert_eq!(
+            (mpa.pressure, mpa.mu, mpa.dmu_dp),
+            (pa.pressure / 1e6, pa.mu, pa.dmu_dp * 1e6)
+        );
         // μ(p) over a step is the same in any unit: dμ = dμ/dp · dp.
         let psi = StressUnit::Psi.row(&pa);
         assert!((psi.dmu_dp * psi.pressure / (pa.dmu_dp * pa.pressure) - 1.0).abs() < 1e-15);
         let notes = notes(&law, &t, StressUnit::MPa).join("\n");
-        assert!(notes.contains("hardness H = 1000 MPa; pressure from 0.01 to 100 MPa"), "{notes}");
+        assert!(
+            notes.contains("hardness H = 1000 MPa; pressure from 0.01 to 100 MPa"),
+            "{notes}"
+        );
         assert!(notes.contains("dmu_dp 1/MPa"), "{notes}");
     }
 

@@ -14,7 +14,9 @@ use std::time::Instant;
 const BLOCK: usize = 37;
 
 fn main() {
-    let calls: usize = std::env::args().nth(1).map_or(200_000, |a| a.parse().expect("CALLS: a whole number"));
+    let calls: usize = std::env::args()
+        .nth(1)
+        .map_or(200_000, |a| a.parse().expect("CALLS: a whole number"));
     let props = [vec![1.0, 1e-3, 1e9], vec![2.5, 3e-3, 2e9, 1e5, 1e8, 0.05, 0.33, 6e-3]];
     let p: Vec<f64> = (0..BLOCK).map(|k| 1e5 * 1.2f64.powi(k as i32)).collect();
     // Built once, outside the timing.
@@ -56,7 +58,11 @@ fn main() {
             let ns = start.elapsed().as_secs_f64() * 1e9 / calls as f64;
             println!(
                 "{threads} thread(s), {}: {ns:.0} ns of wall time per call per thread ({:.1} M calls/s in all)",
-                if with_block { "lookup + a block of 37 nodes" } else { "lookup only" },
+                if with_block {
+                    "lookup + a block of 37 nodes"
+                } else {
+                    "lookup only"
+                },
                 threads as f64 * 1e3 / ns
             );
         }
