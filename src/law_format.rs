@@ -389,13 +389,16 @@ mod tests {
         rows
     }
 
+    /// An LS-DYNA curve: its id and its points (abscissa, ordinate).
+    type Curve = (u32, Vec<(f64, f64)>);
+
     /// LS-DYNA keyword input: `$` starts a comment, `*` a keyword; cards
     /// are fixed fields. `*DEFINE_TABLE`: card 1 TBID, SFA, OFFA (I10,
     /// 2E10.0); then one VALUE a card (E20.0) until the next keyword, the
     /// curves following in the values' order. `*DEFINE_CURVE`: card 1
     /// LCID, SIDR, SFA, SFO, … (I10, I10, E10.0, E10.0, …); then points
     /// A, O (2E20.0).
-    fn read_ls_dyna(text: &str) -> (u32, Vec<f64>, Vec<(u32, Vec<(f64, f64)>)>) {
+    fn read_ls_dyna(text: &str) -> (u32, Vec<f64>, Vec<Curve>) {
         let field = |line: &str, at: usize, width: usize| -> String {
             assert!(line.len() <= 80, "a card is 80 columns: {line}");
             line.get(at..(at + width).min(line.len()))
