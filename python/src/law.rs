@@ -141,6 +141,8 @@ impl FrictionLawCore {
     /// The same table as text in `format` ([`LawFormat`]'s names), the
     /// pressures in `stress_unit` ([`StressUnit`]'s), with the core's notes
     /// (CSV: none; its names line and rows only).
+    // The arguments are `FrictionLaw.table`'s, one for one.
+    #[allow(clippy::too_many_arguments)]
     #[pyo3(signature = (lo, hi, rows, tolerance, format, stress_unit))]
     fn table_text(
         &self,
