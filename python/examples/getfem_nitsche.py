@@ -58,6 +58,9 @@ FIT_POINTS = 4001
 COMPARE_TOLERANCE = 5e-3
 #: The Nitsche parameter gamma0 (the penalty gamma0/h), in units of E.
 GAMMA0_OVER_E = 1.0
+#: The Nitsche variant: 0 (no second derivative of the Neumann term), 1
+#: (symmetric) or -1 (skew-symmetric).
+THETA = 0.0
 
 
 def closed_form(law, tolerance=FIT_TOLERANCE, points=FIT_POINTS):
@@ -109,7 +112,7 @@ class Nitsche:
         self.pressure_expr = f"(-(({neumann}).Normal))"
         self.friction = f"kef_mu({self.pressure_expr})"
         md.add_Nitsche_contact_with_rigid_obstacle_brick(self.mim, "u", neumann, "obstacle", "gamma0",
-                                                         nodal.BOTTOM, 0.0, self.friction)
+                                                         nodal.BOTTOM, THETA, self.friction)
         self.md = md
         self.newton = 0
 
