@@ -48,7 +48,8 @@ done
 # Abaqus: ffi/abaqus/fric_coef.f (fixed form, the stand-in ABA_PARAM.INC)
 # called as Abaqus/Standard calls it, blocks of nodes from 4 threads:
 # values against the library (1e-12), dmu/dp against a central difference
-# (1e-5); props of a wrong length stop it through XIT (exit 3).
+# (1e-5), every other fCoefDeriv entry 0 and fCoef(:,2) untouched; props
+# of a wrong length stop it through XIT (exit 3).
 gfortran -O2 -fopenmp -Wall -Werror -Wno-unused-dummy-argument -I ffi/abaqus/driver \
   -c ffi/abaqus/fric_coef.f -o "$out/fric_coef.o"
 gfortran -O2 -fopenmp -Wall -Werror -J "$out" ffi/fortran/ke_friction.f90 ffi/abaqus/driver/driver.f90 \

@@ -6,8 +6,11 @@
 # .ci/python.sh built, or `pip install ./python` without one; --no-deps:
 # Debian's NumPy 1.24, which getfem is built against, must stay). Runs
 # python/examples/getfem_contact.py (~10 s of CPU) and checks its JSON and
-# PNG: at gross sliding the tangential reaction equals sum mu(p_i) p_i A_i
-# within the stated tolerance, >= 100 nodes in contact, mu not uniform and
+# PNG, then python/examples/getfem_nitsche.py (mu(p) inside the Nitsche
+# brick's Newton solve against the nodal fixed point; 1-3 min; it exits 1
+# when its own checks fail). The nodal example's checks: at gross sliding
+# the tangential reaction equals sum mu(p_i) p_i A_i within the stated
+# tolerance, >= 100 nodes in contact, mu not uniform and
 # higher where the pressure is lower.
 # Runs from anywhere in a checkout; exits non-zero on any failure.
 set -euo pipefail
@@ -19,13 +22,15 @@ out=$target/ci-getfem
 rm -rf "$out" && mkdir -p "$out"
 export PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore MPLBACKEND=Agg
 
+# The set-up the README states, step by step: Debian's getfem and
+# matplotlib for /usr/bin/python3, a venv from /usr/bin/python3 with
+# --system-site-packages, ke_friction installed with --no-deps (no NumPy
+# upgrade inside the venv: Debian's getfem is built against Debian's).
 sys=/usr/bin/python3
 if ! "$sys" -c 'import getfem, matplotlib' 2> /dev/null; then
-  echo "getfem: installing python3-getfem python3-matplotlib"
+  echo "getfem: apt-get update; apt-get install python3-getfem python3-matplotlib"
   export DEBIAN_FRONTEND=noninteractive
-  apt-get install -y -q python3-getfem python3-matplotlib > "$out/apt.log" 2>&1 \
-    || { apt-get update -q >> "$out/apt.log" 2>&1 \
-      && apt-get install -y -q python3-getfem python3-matplotlib >> "$out/apt.log" 2>&1; } \
+  { apt-get update -q && apt-get install -y -q python3-getfem python3-matplotlib; } > "$out/apt.log" 2>&1 \
     || { tail -20 "$out/apt.log"; exit 1; }
 fi
 
@@ -65,4 +70,20 @@ image = imread(os.path.join(out, "getfem_contact.png"))
 assert image.ndim == 3 and image[..., :3].std() > 0.05, "a blank image"
 print(f"getfem: {len(nodes)} nodes in contact, reaction {r['tangential_reaction']:.6g} N/m against "
       f"sum mu p A {expected:.6g} N/m (relative {r['relative_difference']:.1e}), mu {mu.min():.4f} to {mu.max():.4f}")
+EOF
+
+# mu(p) in one Newton solve per load step (Nitsche brick, a GWFL closed
+# form of the law) against the nodal brick's fixed point; its own checks
+# (the fit's error, gross sliding, Fx/Fy within its tolerance) make it
+# exit 1 when they fail.
+(cd "$out" && "$venv/bin/python" "$root/python/examples/getfem_nitsche.py" --out "$out")
+"$venv/bin/python" - "$out" <<'EOF'
+import json, os, sys
+r = json.load(open(os.path.join(sys.argv[1], "getfem_nitsche.json")))
+assert all(r["checks"].values()), r["checks"]
+assert r["closed_form"]["max_relative_error"] <= r["closed_form"]["tolerance"] <= 1e-4
+assert r["relative_difference_fx_over_fy"] <= r["compare_tolerance"]
+assert os.path.getsize(os.path.join(sys.argv[1], "getfem_nitsche.png")) > 0
+print(f"getfem: Nitsche Fx/Fy {r['nitsche']['fx_over_fy']:.6f} against the fixed point's "
+      f"{r['nodal']['fx_over_fy']:.6f} ({r['relative_difference_fx_over_fy']:.1e})")
 EOF

@@ -33,8 +33,9 @@ fi
 # SurfaceTopography: the oracle of tests/test_formats_a.py (the
 # instruments' files read by its readers; a binary wheel, ~20 s when
 # missing).
-"$py" -m pip install --quiet maturin ziglang pytest numpy scipy matplotlib 'dask[distributed]' SurfaceTopography
-export KEF_REQUIRE_DASK=1
+# pandas: tests/test_law.py reads `kefric law`'s CSV with its defaults.
+"$py" -m pip install --quiet maturin ziglang pytest numpy scipy matplotlib pandas 'dask[distributed]' SurfaceTopography
+export KEF_REQUIRE_DASK=1 KEF_REQUIRE_PANDAS=1
 
 t0=$SECONDS
 # --force-reinstall: the version does not change from one commit to the next.

@@ -54,6 +54,7 @@ mod gw;
 #[cfg(feature = "builder")]
 mod io;
 mod law;
+mod law_format;
 mod law_table;
 mod load;
 mod model;
@@ -81,6 +82,10 @@ pub use distribution::{
 pub use error::{Classify, ErrorKind};
 pub use gw::BETA_MIN;
 pub use law::{FrictionLaw, FrictionLawError, OutOfRange, PressureError, LAW_F_STAR_RANGE};
+pub use law_format::{
+    law_notes, ls_dyna_number, LawFormat, StressUnit, LS_DYNA_FIELD, LS_DYNA_TABLE_ID, LS_DYNA_VELOCITIES,
+    MOOSE_FUNCTION,
+};
 pub use law_table::{
     LawRow, LawTable, LawTableError, INTERIOR_POINTS, LAW_TABLE_MAX_ROWS, LAW_TABLE_TOLERANCE,
     LAW_TABLE_TOLERANCE_RANGE,

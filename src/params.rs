@@ -203,6 +203,30 @@ pub const EPS_STAR_MIN: f64 = 1e-9;
 pub const EPS_STAR_MAX: f64 = 100.0;
 
 impl Params {
+    /// The settings as text, 6 significant digits, with the names the
+    /// front ends' flags and fields use (`psi = 1, theta = 0.003, beta =
+    /// 0.04, nu = 0.3, eps_star = 0.004, fit = consistent, model = ke`, and
+    /// `, heights = …` for non-Gaussian heights): `kefric`'s headers and a
+    /// law table's notes.
+    pub fn describe(&self) -> String {
+        use crate::Shortest;
+        let c = &self.constants;
+        format!(
+            "psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {}, model = {}",
+            Shortest::sig(self.psi),
+            Shortest::sig(self.theta),
+            Shortest::sig(c.beta),
+            Shortest::sig(c.nu),
+            Shortest::sig(c.eps_star),
+            c.fit.name(),
+            c.kind.name()
+        ) + &if c.distribution.is_gaussian() {
+            String::new()
+        } else {
+            format!(", heights = {}", c.distribution)
+        }
+    }
+
     /// Parameters with the default [`Constants`]: β = 0.04, ν = 0.3,
     /// ε* = 0.004, [`Fit::Consistent`] and [`ModelKind::KogutEtsion`].
     pub fn new(psi: f64, theta: f64) -> Params {

@@ -372,20 +372,7 @@ pub fn named<T: Named + Send + Sync>() -> impl TypedValueParser<Value = T> {
 /// every digit), with the flags' spellings
 /// (`psi = 1, theta = 0.003, …, fit = consistent, model = ke`).
 pub fn describe(p: &Params) -> String {
-    format!(
-        "psi = {}, theta = {}, beta = {}, nu = {}, eps_star = {}, fit = {}, model = {}",
-        Shortest::sig(p.psi),
-        Shortest::sig(p.theta),
-        Shortest::sig(p.constants.beta),
-        Shortest::sig(p.constants.nu),
-        Shortest::sig(p.constants.eps_star),
-        p.constants.fit.name(),
-        p.constants.kind.name()
-    ) + &if p.constants.distribution.is_gaussian() {
-        String::new()
-    } else {
-        format!(", heights = {}", p.constants.distribution)
-    }
+    p.describe()
 }
 
 /// The flags the SI inputs stand in for, where a subcommand has them.

@@ -1,20 +1,29 @@
-//! `kefric law`: a friction law's solver-ready table, `pressure,mu,dmu_dp`
-//! as CSV at log-spaced pressures ([`ke_friction::LawTable`]).
+//! `kefric law`: a friction law's solver-ready table at log-spaced
+//! pressures ([`ke_friction::LawTable`]), as CSV or in a solver's own input
+//! syntax ([`ke_friction::LawFormat`]).
 
-use crate::args::{describe, fields, number, whole};
+use crate::args::{describe, fields, named, number, whole};
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
-use ke_friction::{FrictionLaw, FrictionLawError, LawTable, OutOfRange, Shortest, LAW_TABLE_TOLERANCE};
+use ke_friction::{
+    law_notes, FrictionLaw, FrictionLawError, LawFormat, LawTable, OutOfRange, Shortest, StressUnit,
+    LAW_TABLE_TOLERANCE,
+};
 
-/// Write μ(p) and dμ/dp of a friction law as CSV, for a simulator.
+/// Write μ(p) and dμ/dp of a friction law for a simulator: CSV or a
+/// solver's input syntax.
 ///
-/// Rows `pressure,mu,dmu_dp` (Pa, 1, 1/Pa) at log-spaced contact
-/// pressures, F* = p/H, after a header of `#` lines: the inputs, the units,
-/// the version and the measured worst relative error of linear
-/// interpolation between rows (what MOOSE's PiecewiseLinear, LS-DYNA
-/// curves and COMSOL interpolation functions do). The model's inputs are
-/// those of `kefric eval` (ψ and θ with `--hardness`, or the SI materials
-/// and roughness, or `--surface FILE` with the materials).
+/// Rows at log-spaced contact pressures, F* = p/H: `--format csv` writes
+/// `pressure_Pa,mu,dmu_dp_per_Pa` and the rows only (NumPy's and pandas'
+/// defaults read it) and the notes as `#` lines on stderr; `abaqus`
+/// (`*FRICTION`), `ls-dyna` (`*DEFINE_TABLE` for FS = -2), `moose`
+/// (`PiecewiseLinear`, `axis = x`) and `comsol` (an interpolation-function
+/// file) carry the notes in their comment form: the inputs, the units, the
+/// version and the measured worst relative error of linear interpolation
+/// between rows (what every one of these solvers does between rows). The
+/// model's inputs are those of `kefric eval` (ψ and θ with `--hardness`,
+/// or the SI materials and roughness, or `--surface FILE` with the
+/// materials).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     #[command(flatten)]
@@ -28,6 +37,12 @@ pub struct Args {
     /// The worst relative error of linear interpolation between rows, in [1e-6, 0.5] [default: 1e-3]: the rows are the fewest that meet it (with --rows or COUNT, a warning says when they do not).
     #[arg(long, value_name = "T", value_parser = crate::args::parse_f64, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
+    /// The syntax: csv, abaqus (*FRICTION), ls-dyna (*DEFINE_TABLE for *CONTACT FS = -2), moose (PiecewiseLinear), comsol (interpolation-function file).
+    #[arg(long, value_parser = named::<LawFormat>(), default_value_t = LawFormat::Csv)]
+    pub format: LawFormat,
+    /// The unit the pressures are written in (dmu_dp in its inverse): the solver model's stress unit (Pa, MPa, psi); --pressure and --hardness stay in Pa.
+    #[arg(long, value_parser = named::<StressUnit>(), default_value_t = StressUnit::Pa)]
+    pub stress_unit: StressUnit,
 }
 
 /// The pressure range and the rows asked for (`--pressure`'s COUNT or
@@ -102,37 +117,23 @@ pub fn run(args: Args) -> Result<(), Failure> {
         None => LawTable::for_tolerance(&law, lo, hi, tolerance).map_err(|e| Failure::of("--tolerance", e))?,
     };
 
-    outln!(
-        "# ke-friction {} (kefric law): the Kogut-Etsion static friction coefficient mu of the contact pressure p, at F* = p/H",
-        env!("CARGO_PKG_VERSION")
-    )?;
-    outln!("# {}", describe(law.params()))?;
-    if let Some(source) = &source {
-        outln!("# {source}")?;
+    let mut inputs = vec![describe(law.params())];
+    inputs.extend(source.map(|s| s.to_string()));
+    let notes = law_notes(
+        &law,
+        &table,
+        args.stress_unit,
+        rows.is_none().then_some(tolerance),
+        &inputs,
+    );
+    if args.format == LawFormat::Csv {
+        // CSV holds the names and the rows only (so that NumPy's and
+        // pandas' defaults read it): its notes go to stderr.
+        for n in &notes {
+            errln!("# {n}");
+        }
     }
-    outln!(
-        "# hardness H = {} Pa; pressure from {} to {} Pa, {} rows, log-spaced",
-        Shortest(hardness),
-        Shortest(lo),
-        Shortest(hi),
-        table.rows.len()
-    )?;
-    outln!("# units: pressure Pa, mu 1, dmu_dp 1/Pa")?;
-    outln!(
-        "# worst relative error of linear interpolation in p between rows: {} (measured at {} points inside every interval, the midpoint among them{}); the law is within {} of the model",
-        Shortest::rounded(table.interpolation_error),
-        ke_friction::INTERIOR_POINTS,
-        if rows.is_none() {
-            format!("; rows chosen for a tolerance of {}", Shortest(tolerance))
-        } else {
-            String::new()
-        },
-        Shortest::rounded(law.max_error())
-    )?;
-    outln!("pressure,mu,dmu_dp")?;
-    for r in &table.rows {
-        outln!("{},{},{}", Shortest(r.pressure), Shortest(r.mu), Shortest(r.dmu_dp))?;
-    }
+    out!("{}", table.to_format(args.format, args.stress_unit, &notes))?;
     if rows.is_some() && table.interpolation_error > tolerance {
         errln!(
             "warning: linear interpolation between these {} rows is off by up to {} (relative), more than {}: leave out the count to get the fewest rows that meet it",

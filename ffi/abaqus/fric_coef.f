@@ -7,11 +7,17 @@ C link line (see the README, "In a simulator"). The interface is the
 C Abaqus User Subroutines Reference's (FRIC_COEF): fCoef(nBlock,2),
 C fCoefDeriv(nBlock,20,2), the derivative with respect to the contact
 C pressure at index i_fDer_Pressure = 2, isotropic friction (the first
-C direction only).
+C direction only). Every entry of fCoefDeriv is written (dmu/dp at
+C (k,2,1), zeros elsewhere: nothing says Abaqus clears it before the
+C call); fCoef(:,2), the second direction, is left as Abaqus passed it.
+C
+C Units: Abaqus passes the contact pressure in the model's own stress
+C unit (MPa in an N-mm model), so H, p_min and p_max are given in that
+C unit too: mu depends on p/H only, and dmu/dp comes out per that unit.
 C
 C props (*FRICTION, USER=COEFFICIENT, PROPERTIES=n):
-C   psi, theta, H (Pa)                         n = 3
-C   ... , p_min, p_max (Pa; 0, 0: 1e-5*H to 0.1*H)   n = 5
+C   psi, theta, H (the model's stress unit)    n = 3
+C   ... , p_min, p_max (same unit; 0, 0: 1e-5*H to 0.1*H)   n = 5
 C   ... , beta, nu, eps_star                   n = 8
 C The law of a props list is built once (about 20 ms) by the library
 C and shared by every later call with the same values, from any thread
@@ -43,7 +49,7 @@ C     KEF_FRIC_COEF, with every argument's type explicit.
       END
 C
 C The work of FRIC_COEF: mu into fCoef(:,1), dmu/dp into
-C fCoefDeriv(:,2,1), the other derivatives 0.
+C fCoefDeriv(:,2,1), every other entry of fCoefDeriv 0.
       SUBROUTINE KEF_FRIC_COEF(fCoef, fCoefDeriv, nBlock, nProps, props,
      *   pressure)
       USE, INTRINSIC :: ISO_C_BINDING
@@ -91,7 +97,7 @@ C fCoefDeriv(:,2,1), the other derivatives 0.
       TYPE(C_PTR) law
       INTEGER(C_INT) code
       INTEGER(C_SIZE_T) nNan
-      INTEGER k
+      INTEGER k, j
       REAL(C_DOUBLE) pMin, pMax, hard, muMin
 C
       law = kef_law_from_props(INT(nProps, C_SIZE_T), props)
@@ -103,9 +109,17 @@ C     mu into fCoef(:,1), dmu/dp into fCoefDeriv(:,2,1): contiguous.
      *   INT(nBlock, C_SIZE_T), pressure, fCoef(1,1),
      *   fCoefDeriv(1,i_fDer_Pressure,1), nNan)
       IF (code .NE. 0) CALL KEF_ABAQUS_STOP('kef_law batch')
-      DO k = 1, nBlock
-        fCoefDeriv(k,i_fDer_SlipRateMag,1) = 0.d0
-        fCoefDeriv(k,i_fDer_Temperature,1) = 0.d0
+C     Every other derivative (slip rate, temperature, 4-20: the slip
+C     rate's components and the slips; and the second direction's) is 0.
+      DO j = 1, 20
+        IF (j .NE. i_fDer_Pressure) THEN
+          DO k = 1, nBlock
+            fCoefDeriv(k,j,1) = 0.d0
+          END DO
+        END IF
+        DO k = 1, nBlock
+          fCoefDeriv(k,j,2) = 0.d0
+        END DO
       END DO
       IF (nNan .GT. 0) THEN
 C       Open nodes (p <= 0): mu at p_min, no slope.

@@ -716,13 +716,16 @@ double kef_law_max_error(const kef_law *law);
 // these values and shared by every later call (from any thread) for the
 // life of the process: what a user subroutine called per block of nodes
 // with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
-// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
-// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+// free. `props[0..n_props)`: psi, theta, the hardness H (in the solver
+// model's stress unit, as the pressures it passes: MPa in an N-mm model;
+// μ depends on p/H only, dμ/dp comes out per that unit); then
+// optionally p_min, p_max (the same unit; both 0: 1e-5*H to 0.1*H); then
 // optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
 // n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
 // number at every closed node; kef_law_clamped counts). NULL on failure
 // (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
-// failed list is not kept (the next call tries again).
+// failed list is not kept (the next call tries again). A list already
+// built is found without a lock (the lookup Abaqus makes per block).
 //
 // # Safety
 // `props` is NULL or valid for `n_props` reads.

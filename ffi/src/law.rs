@@ -9,6 +9,7 @@ use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface};
 use ke_friction::Materials;
 use ke_friction::{Constants, FrictionLaw, OnError, OutOfRange, Physical, PressureError};
 use std::ffi::{c_char, c_int, CStr};
+use std::sync::atomic::{AtomicPtr, Ordering};
 use std::sync::{Mutex, PoisonError};
 
 /// Out-of-range policy of a kef_law: a positive pressure outside
@@ -286,9 +287,43 @@ pub unsafe extern "C" fn kef_law_max_error(law: *const kef_law) -> f64 {
     ffi!(law => Ok(law.max_error()))
 }
 
-/// The laws of [`kef_law_from_props`], by their property lists' bits:
-/// built once each, kept for the life of the process.
-static SHARED: Mutex<Vec<(Vec<u64>, &'static kef_law)>> = Mutex::new(Vec::new());
+/// One law of [`kef_law_from_props`]: its property list's bits, the law,
+/// the entry added before it.
+struct Shared {
+    key: Vec<u64>,
+    law: &'static kef_law,
+    next: *const Shared,
+}
+
+/// The laws of [`kef_law_from_props`], newest first: an append-only list
+/// of entries that live for the life of the process (as their laws do).
+/// Readers walk it from here without a lock (the hot path: one lookup
+/// per block of nodes, from every solver thread); only adding a new list
+/// takes [`ADDING`]. Our own 20 lines rather than arc-swap or
+/// crossbeam-epoch: what those crates solve is reclaiming replaced data,
+/// and nothing here is ever replaced or freed.
+static SHARED: AtomicPtr<Shared> = AtomicPtr::new(std::ptr::null_mut());
+
+/// Held while an entry is added (so two threads building the same list
+/// keep one law).
+static ADDING: Mutex<()> = Mutex::new(());
+
+/// The shared entries, newest first (lock-free).
+fn shared_laws() -> impl Iterator<Item = &'static Shared> {
+    // SAFETY: every pointer in the list is a leaked `Shared`, published
+    // with Release after it was fully written (`add`), read with Acquire.
+    // SAFETY: as above.
+    let head = unsafe { SHARED.load(Ordering::Acquire).as_ref() };
+    // SAFETY: as above: `next` was written before its entry was published.
+    std::iter::successors(head, |e| unsafe { e.next.as_ref() })
+}
+
+/// The shared law of exactly these property bits, if built.
+fn find_shared(props: &[f64]) -> Option<&'static kef_law> {
+    shared_laws()
+        .find(|e| e.key.len() == props.len() && e.key.iter().zip(props).all(|(k, p)| *k == p.to_bits()))
+        .map(|e| e.law)
+}
 
 impl Answer for &'static kef_law {
     type C = *const kef_law;
@@ -329,22 +364,26 @@ fn props_length(n: usize) -> Failure {
     ))
 }
 
-/// The shared law of `props`: found, or built (outside the lock, so that
-/// other property lists are not held up) and kept.
+/// The shared law of `props`: found without a lock, or built (outside
+/// any lock, so that other property lists are not held up) and added.
 fn shared(props: &[f64]) -> Result<&'static kef_law, Failure> {
-    let key: Vec<u64> = props.iter().map(|p| p.to_bits()).collect();
-    let find = |laws: &[(Vec<u64>, &'static kef_law)]| laws.iter().find(|(k, _)| *k == key).map(|&(_, law)| law);
-    if let Some(law) = find(&SHARED.lock().unwrap_or_else(PoisonError::into_inner)) {
+    if let Some(law) = find_shared(props) {
         return Ok(law);
     }
     let built = law_of_props(props)?;
-    let mut laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
-    // Another thread may have built it meanwhile: keep the first.
-    if let Some(law) = find(&laws) {
+    let _adding = ADDING.lock().unwrap_or_else(PoisonError::into_inner);
+    // Another thread may have added it meanwhile: keep the first.
+    if let Some(law) = find_shared(props) {
         return Ok(law);
     }
     let law: &'static kef_law = Box::leak(Box::new(kef_law(built)));
-    laws.push((key, law));
+    let entry = Box::leak(Box::new(Shared {
+        key: props.iter().map(|p| p.to_bits()).collect(),
+        law,
+        // Only adders (holding ADDING) store: this is the current head.
+        next: SHARED.load(Ordering::Acquire),
+    }));
+    SHARED.store(entry, Ordering::Release);
     Ok(law)
 }
 
@@ -352,13 +391,16 @@ fn shared(props: &[f64]) -> Result<&'static kef_law, Failure> {
 /// these values and shared by every later call (from any thread) for the
 /// life of the process: what a user subroutine called per block of nodes
 /// with its material's properties needs (ffi/abaqus/fric_coef.f). Not to
-/// free. `props[0..n_props)`: psi, theta, the hardness H (Pa); then
-/// optionally p_min, p_max (Pa; both 0: 1e-5*H to 0.1*H); then
+/// free. `props[0..n_props)`: psi, theta, the hardness H (in the solver
+/// model's stress unit, as the pressures it passes: MPa in an N-mm model;
+/// μ depends on p/H only, dμ/dp comes out per that unit); then
+/// optionally p_min, p_max (the same unit; both 0: 1e-5*H to 0.1*H); then
 /// optionally beta, nu, eps_star (else the defaults 0.04, 0.3, 0.004);
 /// n_props is 3, 5 or 8. The policy is KEF_LAW_CLAMP (a solver needs a
 /// number at every closed node; kef_law_clamped counts). NULL on failure
 /// (errors as kef_law_new; KEF_ERR_ARGUMENT for another n_props); a
-/// failed list is not kept (the next call tries again).
+/// failed list is not kept (the next call tries again). A list already
+/// built is found without a lock (the lookup Abaqus makes per block).
 ///
 /// # Safety
 /// `props` is NULL or valid for `n_props` reads.
@@ -376,11 +418,9 @@ pub unsafe extern "C" fn kef_law_from_props(n_props: usize, props: *const f64) -
 /// thread.
 #[no_mangle]
 pub unsafe extern "C" fn kef_law_free(law: *mut kef_law) {
-    let laws = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
-    if laws.iter().any(|&(_, shared)| std::ptr::eq(shared, law)) {
+    if shared_laws().any(|e| std::ptr::eq(e.law, law)) {
         return;
     }
-    drop(laws);
     // SAFETY: the caller's contract (a shared law was returned above).
     unsafe { free(law, std::ptr::null()) }
 }

@@ -23,11 +23,15 @@ the contact as the model says (higher where the pressure is lower). It
 writes DIR/getfem_contact.json (the law's inputs, the nodes, the loads; 2-D:
 forces and areas per metre of thickness) and DIR/getfem_contact.png
 (pressure and mu along the contact; tangential force against the
-displacement), and exits 1 when a check fails.
+displacement; only with matplotlib), and exits 1 when a check fails.
 
-GetFEM comes from Debian (``apt-get install python3-getfem``, for the
-system ``python3``); install ke_friction into a venv made with
-``python3 -m venv --system-site-packages`` to see both. About 10 s.
+GetFEM comes from Debian (``apt-get install python3-getfem
+python3-matplotlib``, for the system ``/usr/bin/python3``); install
+ke_friction into a venv made with ``/usr/bin/python3 -m venv
+--system-site-packages`` to see both, and upgrade no NumPy inside it
+(Debian's getfem is built against Debian's NumPy). About 10 s.
+python/examples/getfem_nitsche.py solves the same block in one Newton
+solve per load step, mu(p) inside GetFEM's Nitsche brick.
 """
 
 import argparse
@@ -37,14 +41,10 @@ import sys
 import tempfile
 import time
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")  # headless, whatever MPLBACKEND says
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-import getfem as gf  # noqa: E402
-import ke_friction as kf  # noqa: E402
+import getfem as gf
+import ke_friction as kf
 
 #: The check's tolerance: |F_t - sum mu(p_i) p_i A_i| / sum mu(p_i) p_i A_i
 #: at gross sliding.
@@ -257,7 +257,23 @@ def run(args):
     return record, c.x[closed], p[closed], mu
 
 
+def pyplot():
+    """matplotlib's pyplot, headless, or None when matplotlib is missing
+    (the example runs without it; only the PNG needs it)."""
+    try:
+        import matplotlib
+    except ImportError:
+        return None
+    matplotlib.use("Agg")  # headless, whatever MPLBACKEND says
+    import matplotlib.pyplot as plt
+    return plt
+
+
 def plot(path, record, x, p, mu):
+    plt = pyplot()
+    if plt is None:
+        print(f"matplotlib is missing: no {path}")
+        return
     fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
     a.plot(x * 1e3, p / 1e6, color="C0")
     a.set_xlabel("x (mm)")

@@ -4,7 +4,9 @@ use crate::convert::{on_error, same_len, slice, slice_mut};
 use crate::error::{raise, value_error, Failure};
 use crate::model::ModelCore;
 use crate::parallel::{curve_batch, cut_pairs, CURVE_WORK};
-use ke_friction::{FrictionLaw, LawTable, Named, OutOfRange, PressureError, LAW_TABLE_MAX_ROWS};
+use ke_friction::{
+    law_notes, FrictionLaw, LawFormat, LawTable, Named, OutOfRange, PressureError, StressUnit, LAW_TABLE_MAX_ROWS,
+};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
@@ -131,6 +133,45 @@ impl FrictionLawCore {
     /// `hi` (`rows` of them, or the fewest within `tolerance`) and its
     /// measured interpolation error ([`LawTable`]).
     fn table(&self, py: Python<'_>, lo: f64, hi: f64, rows: Option<i64>, tolerance: f64) -> PyResult<(Vec<f64>, f64)> {
+        let table = self.make_table(py, lo, hi, rows, tolerance)?;
+        let flat = table.rows.iter().flat_map(|r| [r.pressure, r.mu, r.dmu_dp]).collect();
+        Ok((flat, table.interpolation_error))
+    }
+
+    /// The same table as text in `format` ([`LawFormat`]'s names), the
+    /// pressures in `stress_unit` ([`StressUnit`]'s), with the core's notes
+    /// (CSV: none; its names line and rows only).
+    // The arguments are `FrictionLaw.table`'s, one for one.
+    #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (lo, hi, rows, tolerance, format, stress_unit))]
+    fn table_text(
+        &self,
+        py: Python<'_>,
+        lo: f64,
+        hi: f64,
+        rows: Option<i64>,
+        tolerance: f64,
+        format: &str,
+        stress_unit: &str,
+    ) -> PyResult<String> {
+        let format = LawFormat::parse(format).map_err(value_error)?;
+        let unit = StressUnit::parse(stress_unit).map_err(value_error)?;
+        let table = self.make_table(py, lo, hi, rows, tolerance)?;
+        let law = &self.0;
+        let notes = law_notes(
+            law,
+            &table,
+            unit,
+            rows.is_none().then_some(tolerance),
+            &[law.params().describe()],
+        );
+        Ok(table.to_format(format, unit, &notes))
+    }
+}
+
+impl FrictionLawCore {
+    /// The table of `rows` rows, or the fewest within `tolerance`.
+    fn make_table(&self, py: Python<'_>, lo: f64, hi: f64, rows: Option<i64>, tolerance: f64) -> PyResult<LawTable> {
         let rows = rows
             .map(|n| {
                 usize::try_from(n).map_err(|_| {
@@ -147,7 +188,6 @@ impl FrictionLawCore {
                 None => LawTable::for_tolerance(law, lo, hi, tolerance),
             })
             .map_err(raise)?;
-        let flat = table.rows.iter().flat_map(|r| [r.pressure, r.mu, r.dmu_dp]).collect();
-        Ok((flat, table.interpolation_error))
+        Ok(table)
     }
 }

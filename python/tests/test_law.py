@@ -3,6 +3,7 @@ model at F* = p/H) and a finite difference, NumPy shapes, the out-of-range
 policies and open contacts, pickling, threads, solver-ready tables."""
 
 import copy
+import os
 import pickle
 import threading
 
@@ -206,3 +207,39 @@ def test_from_surface_is_the_surfaces_model_at_p_over_h():
     assert law.params == model.params and law.hardness == 1e9
     p = np.array([1e5, 1e6, 1e7])
     assert np.max(np.abs(law.mu(p) / model.at_f_star(p / 1e9).mu - 1)) < LAW_REL
+
+
+def test_a_table_in_a_solvers_syntax_and_a_csv_numpy_and_pandas_read():
+    import io
+    law = kf.FrictionLaw(1.0, 0.001, hardness=1e9, pressure_range=(1e4, 1e8))
+    t = law.table(1e4, 1e8)
+    csv = law.table(1e4, 1e8, format="csv")
+    # NumPy's genfromtxt with names, and pandas' defaults, read it (no
+    # comment line that holds commas).
+    a = np.genfromtxt(io.StringIO(csv), names=True, delimiter=",")
+    assert a.dtype.names == ("pressure_Pa", "mu", "dmu_dp_per_Pa")
+    assert np.array_equal(a["pressure_Pa"], t["pressure"]) and np.array_equal(a["mu"], t["mu"])
+    assert np.array_equal(a["dmu_dp_per_Pa"], t["dmu_dp"])
+    try:
+        import pandas as pd
+    except ImportError:
+        # CI installs pandas and sets KEF_REQUIRE_PANDAS: there it must run.
+        assert not os.environ.get("KEF_REQUIRE_PANDAS"), "pandas is missing"
+        pd = None
+    if pd is not None:
+        f = pd.read_csv(io.StringIO(csv))
+        assert list(f.columns) == ["pressure_Pa", "mu", "dmu_dp_per_Pa"]
+        assert np.array_equal(f["mu"].to_numpy(), t["mu"])
+    mpa = np.genfromtxt(io.StringIO(law.table(1e4, 1e8, format="csv", stress_unit="MPa")), names=True, delimiter=",")
+    assert np.array_equal(mpa["pressure_MPa"], t["pressure"] / 1e6)
+    assert np.array_equal(mpa["dmu_dp_per_MPa"], t["dmu_dp"] * 1e6)
+    moose = law.table(1e4, 1e8, format="moose", stress_unit="MPa")
+    assert "axis = x" in moose and "function_friction = kef_mu" in moose and "# units: pressure MPa" in moose
+    abaqus = law.table(1e4, 1e8, format="abaqus")
+    assert "*FRICTION" in abaqus and "psi = 1, theta = 0.001" in abaqus
+    with pytest.raises(ValueError, match="format 'ansys' is unknown: must be one of csv, abaqus"):
+        law.table(format="ansys")
+    with pytest.raises(ValueError, match="stress unit 'kPa' is unknown"):
+        law.table(format="csv", stress_unit="kPa")
+    with pytest.raises(TypeError):
+        law.table(format=3)

@@ -1,4 +1,4 @@
-//! `kefric law`: solver-ready tables `pressure,mu,dmu_dp` whose rows
+//! `kefric law`: solver-ready tables `pressure_Pa,mu,dmu_dp_per_Pa` whose rows
 //! interpolate within their stated error, checked against direct
 //! integration of the model (independent of the curve the law is built on).
 use crate::support::{assert_bad_input, kefric, stderr};
@@ -14,13 +14,14 @@ struct Csv {
 fn parse(o: &std::process::Output) -> Csv {
     assert!(o.status.success(), "{}", stderr(o));
     let text = String::from_utf8(o.stdout.clone()).unwrap();
-    let header: Vec<String> = text
+    // The notes are on stderr: the CSV is the names and the rows only.
+    let header: Vec<String> = stderr(o)
         .lines()
         .take_while(|l| l.starts_with('#'))
         .map(String::from)
         .collect();
-    let mut lines = text.lines().skip(header.len());
-    assert_eq!(lines.next(), Some("pressure,mu,dmu_dp"), "{text}");
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("pressure_Pa,mu,dmu_dp_per_Pa"), "{text}");
     let rows: Vec<[f64; 3]> = lines
         .map(|l| {
             let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
@@ -60,7 +61,7 @@ fn law_rows_interpolate_within_their_stated_error() {
     for needle in [
         "psi = 1, theta = 0.001",
         "hardness H = 1e9 Pa",
-        "units: pressure Pa, mu 1, dmu_dp 1/Pa",
+        "units: pressure Pa (the solver model's stress unit), mu 1, dmu_dp 1/Pa",
     ] {
         assert!(head.contains(needle), "{needle} missing in {head}");
     }
@@ -143,7 +144,7 @@ fn law_takes_the_fewest_rows_that_meet_the_tolerance() {
     assert_eq!(less.rows.len(), fine.rows.len() - 1);
     assert!(less.stated > 1e-4, "{}", less.stated);
     assert!(
-        stderr(&o).starts_with("warning: ") && stderr(&o).contains("more than 0.0001"),
+        stderr(&o).contains("\nwarning: ") && stderr(&o).contains("more than 0.0001"),
         "{}",
         stderr(&o)
     );
@@ -224,6 +225,14 @@ fn law_refuses_bad_input_naming_the_flag() {
             &["--hardness", "1e9", "--pressure", "1e4:1e8", "--tolerance", "nan"],
             "--tolerance",
         ),
+        (
+            &["--hardness", "1e9", "--pressure", "1e4:1e8", "--format", "ansys"],
+            "--format",
+        ),
+        (
+            &["--hardness", "1e9", "--pressure", "1e4:1e8", "--stress-unit", "kPa"],
+            "--stress-unit",
+        ),
         // F* = p/H up to 1e3: beyond the model's reach.
         (&["--hardness", "1e9", "--pressure", "1e4:1e12"], "--pressure"),
     ] {
@@ -232,4 +241,52 @@ fn law_refuses_bad_input_naming_the_flag() {
     }
     let o = kefric(&["law", "--theta", "0.001", "--hardness", "1e9", "--pressure", "1e4:1e8"]);
     assert_bad_input(&o, "--psi");
+}
+
+#[test]
+fn law_writes_each_solvers_syntax_in_its_stress_unit() {
+    let base = [
+        "law",
+        "--psi",
+        "1",
+        "--theta",
+        "0.001",
+        "--hardness",
+        "1e9",
+        "--pressure",
+        "1e4:1e8:5",
+    ];
+    let csv = parse(&kefric(&base));
+    let run = |extra: &[&str]| {
+        let o = kefric(&[&base[..], extra].concat());
+        assert!(o.status.success(), "{}", stderr(&o));
+        String::from_utf8(o.stdout).unwrap()
+    };
+    // The rows of every format are the CSV's (each format's reader is in
+    // the library's tests); here: the syntax's mark, its comments, the
+    // unit.
+    for (format, mark, comment) in [
+        ("abaqus", "*FRICTION", "** "),
+        ("ls-dyna", "*DEFINE_TABLE", "$ "),
+        ("moose", "axis = x", "# "),
+        ("comsol", "% p mu", "% "),
+    ] {
+        let text = run(&["--format", format, "--stress-unit", "MPa"]);
+        assert!(text.contains(mark), "{format}: {text}");
+        assert!(
+            text.contains(&format!("{comment}units: pressure MPa")),
+            "{format}: {text}"
+        );
+        assert!(text.contains(&format!("{comment}psi = 1, theta = 0.001")), "{text}");
+        // The middle row, 1e6 Pa = 1 MPa.
+        let mu = csv.rows[2][1].to_string();
+        assert!(text.contains(&mu), "{format}: {mu} missing in {text}");
+    }
+    let abaqus = run(&["--format", "abaqus", "--stress-unit", "MPa"]);
+    assert!(abaqus.contains(&format!("{}, 0., 1\n", csv.rows[2][1])), "{abaqus}");
+    let mpa = run(&["--stress-unit", "MPa"]);
+    let mut lines = mpa.lines();
+    assert_eq!(lines.next(), Some("pressure_MPa,mu,dmu_dp_per_MPa"));
+    let middle: Vec<f64> = lines.nth(2).unwrap().split(',').map(|x| x.parse().unwrap()).collect();
+    assert_eq!(middle, [1.0, csv.rows[2][1], csv.rows[2][2] * 1e6]);
 }

@@ -544,12 +544,14 @@ fn law_with_a_surface_is_the_model_of_eval_with_that_surface() {
         MATERIAL_FLAGS,
     )));
     assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8(o.stdout).unwrap();
+    // The CSV's notes are on stderr.
+    let notes = stderr(&o);
     assert!(
-        text.contains(&format!("# sigma, R, eta of {npy} at dx = 2e-6 m")),
-        "{text}"
+        notes.contains(&format!("# sigma, R, eta of {npy} at dx = 2e-6 m")),
+        "{notes}"
     );
-    assert!(text.contains("# hardness H = 1e9 Pa"), "{text}");
+    assert!(notes.contains("# hardness H = 1e9 Pa"), "{notes}");
+    let text = String::from_utf8(o.stdout).unwrap();
     let rows: Vec<Vec<f64>> = text
         .lines()
         .filter(|l| !l.starts_with('#') && !l.starts_with("pressure"))

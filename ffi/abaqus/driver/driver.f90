@@ -6,10 +6,12 @@
 !   the same inputs, policy clamp), to 1e-12 relative;
 ! - dmu/dp against a central difference of FRIC_COEF's own mu (steps of
 !   1e-6*p; inside the pressure range), to 1e-5 relative;
-! - open nodes (p <= 0): mu at p_min, derivative 0; the other derivative
-!   columns 0;
+! - open nodes (p <= 0): mu at p_min, derivative 0;
 ! - p = +inf: mu at p_max (clamped as 1e300 is), derivative 0; a NaN
 !   pressure: mu NaN (issue 46);
+! - every other entry of fCoefDeriv 0 (columns 1, 3 to 20 of the first
+!   slice and all of the second: the array comes in filled with -7), and
+!   fCoef(:,2) as it came in (-5: the second direction is not written);
 ! - one shared law per props list (kef_law_from_props gives one pointer).
 ! With the argument "bad": props of a wrong length, which must stop the
 ! analysis through XIT (this stand-in: exit status 3) with the message.
@@ -118,14 +120,15 @@ contains
     p(n_block) = ieee_value(1d0, ieee_quiet_nan)
     up = p * (1 + step)
     down = p * (1 - step)
-    d = -7
     call call_fric_coef(props, p, mu, d)
+    if (any(mu(:, 2) /= -5)) n_bad = n_bad + 1
     call call_fric_coef(props, up, mu_up, scratch)
     call call_fric_coef(props, down, mu_down, scratch)
     code = kef_law_mu(law, lo, mu_lo)
     code = kef_law_mu(law, hi, mu_hi)
     do k = 1, n_block
-      if (d(k, 1, 1) /= 0 .or. d(k, 3, 1) /= 0) n_bad = n_bad + 1
+      if (d(k, 1, 1) /= 0 .or. any(d(k, 3:20, 1) /= 0) .or. any(d(k, :, 2) /= 0)) n_bad = n_bad + 1
+      if (mu(k, 2) /= -5) n_bad = n_bad + 1
       if (ieee_is_nan(p(k))) then
         if (.not. ieee_is_nan(mu(k, 1))) n_bad = n_bad + 1
         cycle
@@ -160,7 +163,7 @@ contains
   ! read filled with what Abaqus would give).
   subroutine call_fric_coef(props, pressure, f_coef, f_coef_deriv)
     real(c_double), intent(in) :: props(:), pressure(n_block)
-    real(c_double), intent(out) :: f_coef(n_block, 2), f_coef_deriv(n_block, 20, 2)
+    real(c_double), intent(inout) :: f_coef(n_block, 2), f_coef_deriv(n_block, 20, 2)
     real(c_double) :: slip_data(n_block, 6), temp_avg(n_block), field_avg(n_block, 1), r_data(8)
     integer :: i_data(6)
     character(len=80) :: surf_int, surf_sec, surf_main
@@ -173,7 +176,10 @@ contains
     surf_int = 'KE-FRICTION'
     surf_sec = 'SECONDARY'
     surf_main = 'MAIN'
-    f_coef = 0
+    ! What the routine must overwrite, and what it must leave.
+    f_coef(:, 1) = 0
+    f_coef(:, 2) = -5
+    f_coef_deriv = -7
     call fric_coef(f_coef, f_coef_deriv, n_block, size(props), 1, 0, i_data, r_data, surf_int, surf_sec, &
                    surf_main, props, slip_data, pressure, temp_avg, field_avg)
   end subroutine

@@ -148,6 +148,10 @@ class FrictionLawCore:
     # LawTable: rows (p, mu, dmu/dp) flat, and the measured interpolation
     # error; `rows` rows, or (None) the fewest within `tolerance`.
     def table(self, lo: float, hi: float, rows: Optional[int], tolerance: float) -> Tuple[List[float], float]: ...
+    # The same table as text in `format` (LawFormat's names: csv, abaqus,
+    # ls-dyna, moose, comsol), pressures in `stress_unit` (Pa, MPa, psi).
+    def table_text(self, lo: float, hi: float, rows: Optional[int], tolerance: float, format: str,
+                   stress_unit: str) -> str: ...
 
 # A measured surface (topography::Surface): one topography, or two pressed
 # together. detrend: "plane", "line" or "mean"; derivative: "fd" or

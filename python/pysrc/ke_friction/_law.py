@@ -260,20 +260,33 @@ class FrictionLaw:
         return data, mask
 
     def table(self, pressure_min: Optional[float] = None, pressure_max: Optional[float] = None, *,
-              rows: Optional[int] = None, tolerance: float = 1e-3) -> Dict[str, Any]:
+              rows: Optional[int] = None, tolerance: float = 1e-3, format: Optional[str] = None,
+              stress_unit: str = "Pa") -> Any:
         """A solver-ready table (what ``kefric law`` writes): ``rows``
         log-spaced pressures from pressure_min to pressure_max (default: the
         law's range; within it), or the fewest whose linear interpolation in
         p is within ``tolerance`` (relative) of the law. Returns
         {"pressure", "mu", "dmu_dp": float64 arrays, "interpolation_error":
         the measured worst relative error of linear interpolation between
-        rows}."""
+        rows}.
+
+        With ``format`` ("csv", "abaqus", "ls-dyna", "moose", "comsol":
+        what ``kefric law --format`` writes) the same rows as text in that
+        solver's input syntax, the pressures in ``stress_unit`` ("Pa",
+        "MPa", "psi": the solver model's stress unit; dmu_dp in its inverse).
+        The CSV is a names line and the rows: ``numpy.genfromtxt(...,
+        names=True, delimiter=",")`` and ``pandas.read_csv`` read it."""
         lo, hi = self.range
         lo = lo if pressure_min is None else pressure_min
         hi = hi if pressure_max is None else pressure_max
         _check_real(pressure_min=lo, pressure_max=hi, tolerance=tolerance)
         if rows is not None and (not isinstance(rows, (int, np.integer)) or isinstance(rows, (bool, np.bool_))):
             raise TypeError(f"rows must be an int or None, not {type(rows).__name__}")
+        if format is not None or stress_unit != "Pa":
+            if not isinstance(format, (str, type(None))) or not isinstance(stress_unit, str):
+                raise TypeError("format and stress_unit must be str")
+            return self._core.table_text(float(lo), float(hi), None if rows is None else int(rows), float(tolerance),
+                                         "csv" if format is None else format, stress_unit)
         values, error = self._core.table(float(lo), float(hi), None if rows is None else int(rows), float(tolerance))
         cols = np.asarray(values).reshape(-1, 3)
         return {"pressure": np.ascontiguousarray(cols[:, 0]), "mu": np.ascontiguousarray(cols[:, 1]),
