@@ -132,12 +132,11 @@ pub(crate) mod domain {
     /// negligible, which the model handles (θ = 0 is the paper's limit).
     pub(crate) static THETA: Bound = Bound::at_most(0.01);
     /// β: the paper takes β = 0.04 "according to the finding of Greenwood
-    /// and Williamson". The range is this project's choice (issue 48): the
-    /// lower end 0.02 sits just above the model's own floor β > 0.01928
-    /// (σ_s real, MODEL.md §2), the upper end 0.1 is 2.5× the paper's
-    /// value; outside it the surface is unlike those the paper's single
-    /// β describes.
-    pub(crate) static BETA: Bound = Bound::new(End::Closed(0.02), End::Closed(0.1));
+    /// and Williamson" and varies nothing else. The range is this
+    /// project's choice (docs/MODEL.md, "Validity domain"): within a factor
+    /// 4 of the paper's β (0.01–0.16), and above the model's own floor
+    /// β > 0.01928 (σ_s real, MODEL.md §2), so from 0.02.
+    pub(crate) static BETA: Bound = Bound::new(End::Closed(0.02), End::Closed(0.16));
 }
 
 fn end_value(end: End) -> f64 {
@@ -194,7 +193,7 @@ mod tests {
     fn the_validity_domain_states_itself() {
         assert_eq!(domain::PSI.range(), "in [0.5, 8]");
         assert_eq!(domain::THETA.range(), "<= 0.01");
-        assert_eq!(domain::BETA.range(), "in [0.02, 0.1]");
+        assert_eq!(domain::BETA.range(), "in [0.02, 0.16]");
         assert!(domain::PSI.contains(8.0) && !domain::PSI.contains(8.0f64.next_up()));
         assert!(domain::BETA.contains(0.04) && !domain::BETA.contains(0.548));
     }

@@ -17,7 +17,7 @@ use crate::{
 pub struct SurfaceModel {
     /// The materials (E, ν, hardness, adhesion of each body).
     pub materials: Materials,
-    /// The heights' family (`None`: [`Surface::DEFAULT_FAMILY`]).
+    /// The heights' family (`None`: [`Surface::default_family`]).
     pub family: Option<Family>,
     /// The fit of the model's relations.
     pub fit: Fit,
