@@ -365,6 +365,9 @@ impl Analysis {
         let range = ScanRange::default_for(self.topography());
         let rows = scan(self.topography(), &self.stats_options, &range, self.cutoff, progress)
             .map_err(|e| format!("--scan: {e}"))?;
+        // Each row's warning kinds, and their summary once per kind (one
+        // result a row), as `kefric surface --scan` records them.
+        let mut all = Warnings::new();
         let rows: Vec<Value> = rows
             .iter()
             .map(|row| {
@@ -372,8 +375,11 @@ impl Analysis {
                 match &row.surface {
                     Ok(surface) => {
                         r["beta"] = surface.stats().beta.into();
+                        let mut warnings = Warnings::new();
+                        warnings.extend(surface.stats().warnings.iter().cloned());
                         match self.evaluate(surface, self.load) {
                             Ok(Some(e)) => {
+                                e.note_into(&mut warnings);
                                 r["psi"] = e.params.psi.into();
                                 if let Some(f) = e.frictions.first() {
                                     r["mu"] = f.mu.into();
@@ -382,13 +388,17 @@ impl Analysis {
                             Ok(None) => {}
                             Err(e) => r["error"] = e.into(),
                         }
+                        let kinds: Vec<&str> = warnings.summaries().map(|s| s.worst.kind().name()).collect();
+                        r["warnings"] = kinds.into();
+                        all.note(warnings.summaries().map(|s| s.worst.clone()));
                     }
                     Err(e) => r["error"] = e.to_string().into(),
                 }
                 r
             })
             .collect();
-        Ok(json!({ "cutoff": self.cutoff, "rows": rows }))
+        let summaries: Vec<ke_friction::Summary<'_>> = all.summaries().collect();
+        Ok(json!({ "cutoff": self.cutoff, "rows": rows, "warnings": summaries }))
     }
 
     /// The height histogram of the heights the statistics see (`bins`
