@@ -472,15 +472,20 @@ class Surface:
         """How the slope and curvature moments were estimated: ``"fd"`` or ``"spectral"``."""
         return self._core.options()[1]
 
-    def height_distribution(self, distribution: str = "pearson") -> HeightDistribution:
+    def height_distribution(self, distribution: Optional[str] = None) -> HeightDistribution:
         """The surface's height distribution of a family: ``"pearson"`` (of
-        the measured skewness and kurtosis, the default), ``"gaussian"``
+        the measured skewness and kurtosis), ``"gaussian"``
         (the paper's), ``"weibull"`` (of the measured skewness) or
         ``"empirical"`` (the kernel density of the detrended heights; a
         pair's is the convolution of the two, and it pickles with them).
         A measured skewness or kurtosis outside the family's range raises
-        ValueError naming it."""
-        family = _choice("distribution", distribution, _FAMILIES)
+        ValueError naming it. ``None`` (the default) is the library's rule
+        (docs/MODEL.md, "The default height model"): Pearson where its upper
+        tail is supported by the measured heights, else empirical."""
+        if distribution is None:
+            family = self._core.default_family()
+        else:
+            family = _choice("distribution", distribution, _FAMILIES)
         try:
             core = self._core.distribution(family)
         except ValueError as e:
@@ -495,7 +500,7 @@ class Surface:
         return HeightDistribution(core, None, (_heights_array(a), sa, _heights_array(b), sb))
 
     def model(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
-              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke") -> Model:
+              epsilon: float, distribution: Optional[str] = None, fit: str = "consistent", model: str = "ke") -> Model:
         """The :class:`Model` of this surface and the materials (as ``kefric
         surface`` with the material flags; its ``"model"`` record is the
         result's :attr:`Model.params`): psi, theta, beta, nu and eps_star
@@ -527,7 +532,7 @@ class Surface:
             raise ValueError(f"the surface with these materials: {e}") from None
 
     def curve(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
-              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke",
+              epsilon: float, distribution: Optional[str] = None, fit: str = "consistent", model: str = "ke",
               f_star_min: Optional[float] = None, f_star_max: Optional[float] = None) -> Curve:
         """The :class:`Curve` mu(F*) of :meth:`model` (the same keywords)
         for F* in [f_star_min, f_star_max], by default the library's
@@ -543,7 +548,7 @@ class Surface:
 
     def friction(self, *, force: Optional[ArrayLike] = None, area: Optional[ArrayLike] = None,
                  pressure: Optional[ArrayLike] = None, e1: float, nu1: float, e2: float, nu2: float,
-                 hardness: float, delta_gamma: float, epsilon: float, distribution: str = "pearson",
+                 hardness: float, delta_gamma: float, epsilon: float, distribution: Optional[str] = None,
                  fit: str = "consistent", model: str = "ke") -> Dict[str, Any]:
         """The static friction of a load on :meth:`model` (the same
         keywords): a ``force`` (N) on a nominal ``area`` (m^2), or a
@@ -678,7 +683,7 @@ class Surface:
              force: Optional[float] = None, area: Optional[float] = None, pressure: Optional[float] = None,
              e1: Optional[float] = None, nu1: Optional[float] = None, e2: Optional[float] = None,
              nu2: Optional[float] = None, hardness: Optional[float] = None, delta_gamma: Optional[float] = None,
-             epsilon: Optional[float] = None, distribution: str = "pearson", fit: str = "consistent",
+             epsilon: Optional[float] = None, distribution: Optional[str] = None, fit: str = "consistent",
              model: str = "ke") -> Dict[str, Any]:
         """The surface against the scale it is looked at (``kefric surface
         --scan``): the statistics at S-filter nesting indices lambda_s
@@ -719,7 +724,8 @@ class Surface:
             for name, value in (("fit", fit), ("model", model)):
                 if not isinstance(value, str):
                     raise TypeError(f"{name} must be a str, not {type(value).__name__}")
-            _choice("distribution", distribution, _FAMILIES)
+            if distribution is not None:
+                _choice("distribution", distribution, _FAMILIES)
         if isinstance(per_decade, bool) or not isinstance(per_decade, numbers.Integral):
             raise TypeError(f"per_decade must be an int, not {type(per_decade).__name__}")
         if not 1 <= per_decade <= 100:
