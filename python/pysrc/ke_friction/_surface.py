@@ -564,7 +564,10 @@ class Surface:
         a kind) are warned as :class:`ModelWarning` warnings, each with its record:
         the surface's, and the loads' (F* outside the paper's 1e-5..0.1,
         h* < 0, mu > 1 where adhesion dominates, fewer than 10 asperities
-        in contact on the area).
+        in contact on the area, ``tail``: fewer than 10 measured heights
+        above the separation), and the model's inputs outside its validity
+        domain (``psi_domain``, ``theta_domain``, ``beta_domain``;
+        docs/MODEL.md, "Validity domain").
 
         ValueError naming the keyword for a load out of range (or given
         otherwise than a force with an area, or a pressure alone), for
