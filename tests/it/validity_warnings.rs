@@ -140,7 +140,7 @@ fn the_default_family_of_each_file() {
         ("di-3.di", "empirical"),
         ("metropro-1.dat", "empirical"),
         ("nid-1.nid", "empirical"),
-        ("opd-1.opd", "pearson"),
+        ("opd-1.opd", "empirical"),
         ("plu-1.plu", "empirical"),
         ("sur-2.sur", "empirical"),
     ];
@@ -157,7 +157,7 @@ fn the_default_family_of_each_file() {
             s.pearson_tail_excess(),
             s.default_family()
         );
-        let _ = family;
+        assert_eq!(s.default_family(), family, "{name}");
     }
     let readme = Surface::new(readme_surface(), StatsOptions::default()).unwrap();
     println!(
