@@ -344,12 +344,13 @@ fn scan_rows_carry_the_single_commands_warnings() {
     assert_eq!(below.len(), 1, "once per kind: {summary:?}");
     assert_eq!((below[0]["count"].as_u64(), below[0]["of"].as_u64()), (Some(rows.len() as u64), Some(rows.len() as u64)));
     // Text: a last column of kinds; stderr: the summary once per kind.
-    let mut args = strs(&with(&["surface", &file], MATERIALS));
+    let text_base = with(&["surface", &file], MATERIALS);
+    let mut args = strs(&text_base);
     args.extend(load);
     args.extend(["--scan", "--per-decade", "3"]);
     let o = kefric(&args);
     assert!(o.status.success(), "{}", stderr(&o));
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = String::from_utf8(o.stdout.clone()).unwrap();
     let header = text.lines().nth(1).unwrap();
     assert!(header.trim_end().ends_with("warnings"), "{header}");
     for line in text.lines().skip(2).filter(|l| !l.starts_with('#')) {
