@@ -43,7 +43,11 @@ const SCAN_COLUMNS: [(&str, &str); 16] = [
 /// A scan row's warning kinds (its record's `warnings`), joined by `sep`.
 fn row_kinds(r: &serde_json::Value, sep: &str) -> String {
     let kinds = r.get("warnings").and_then(serde_json::Value::as_array);
-    let names: Vec<&str> = kinds.into_iter().flatten().filter_map(serde_json::Value::as_str).collect();
+    let names: Vec<&str> = kinds
+        .into_iter()
+        .flatten()
+        .filter_map(serde_json::Value::as_str)
+        .collect();
     names.join(sep)
 }
 

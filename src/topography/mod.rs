@@ -33,8 +33,8 @@ pub use scale::{
 };
 pub use scan::{scan, ScanError, ScanRange, ScanRow};
 pub use stats::{
-    combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
-    TAIL_SAMPLE,
+    combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX,
+    PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE,
 };
 pub use surface::Surface;
 pub use write::write_x3p;

@@ -192,8 +192,8 @@ impl Surface {
     /// `Some(None)` where the moments make no Pearson density.
     pub fn pearson_tail_excess(&self) -> Option<Option<f64>> {
         let tail = self.stats.tail.as_ref()?;
-        let Ok(density) = HeightDistribution::pearson(self.stats.skewness, self.stats.kurtosis)
-            .and_then(|d| d.density())
+        let Ok(density) =
+            HeightDistribution::pearson(self.stats.skewness, self.stats.kurtosis).and_then(|d| d.density())
         else {
             return Some(None);
         };

@@ -12,7 +12,9 @@ use std::f64::consts::PI;
 pub fn readme_surface() -> Topography {
     let (n, dx, hurst) = (256usize, 1e-6, 0.8);
     let uniform = |k: u64| {
-        let mut z = k.wrapping_add(0x9E37_79B9_7F4A_7C15).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        let mut z = k
+            .wrapping_add(0x9E37_79B9_7F4A_7C15)
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15);
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
         ((z ^ (z >> 31)) >> 11) as f64 * 2f64.powi(-53)
@@ -29,7 +31,10 @@ pub fn readme_surface() -> Topography {
     let mut z: Vec<f64> = (0..n * n)
         .map(|p| {
             let (x, y) = ((p % n) as f64 * dx, (p / n) as f64 * dx);
-            waves.iter().map(|&(kx, ky, ph, a)| a * (kx * x + ky * y + ph).cos()).sum()
+            waves
+                .iter()
+                .map(|&(kx, ky, ph, a)| a * (kx * x + ky * y + ph).cos())
+                .sum()
         })
         .collect();
     let mean = z.iter().sum::<f64>() / z.len() as f64;
@@ -90,7 +95,11 @@ fn di_1_is_outside_the_validity_domain() {
     assert!(k.contains(&"psi_domain") && k.contains(&"beta_domain"), "{k:?}");
     let how = SurfaceModel::new(STEEL);
     let e = s.evaluate(&how, &[]).unwrap();
-    let psi = e.domain.iter().find(|w| w.kind() == WarningKind::PsiOutsideDomain).unwrap();
+    let psi = e
+        .domain
+        .iter()
+        .find(|w| w.kind() == WarningKind::PsiOutsideDomain)
+        .unwrap();
     assert!(psi.to_string().starts_with("psi = 209."), "{psi}");
 }
 
@@ -116,11 +125,23 @@ fn plu_1_pearson_at_a_light_load_is_on_an_extrapolated_tail() {
         family: Some(ke_friction::Family::Pearson),
         ..SurfaceModel::new(STEEL)
     };
-    let e = s.evaluate(&how, &[Load::Force { force: 0.01, area: 1e-5 }]).unwrap();
+    let e = s
+        .evaluate(
+            &how,
+            &[Load::Force {
+                force: 0.01,
+                area: 1e-5,
+            }],
+        )
+        .unwrap();
     let w = e.warnings[0].iter().find(|w| w.kind() == WarningKind::Tail).unwrap();
     let text = w.to_string();
     assert!(text.contains("h* = 16.09"), "{text}");
-    assert!(text.contains(&format!("{:.4}", tail.max())[..4]), "{text} {}", tail.max());
+    assert!(
+        text.contains(&format!("{:.4}", tail.max())[..4]),
+        "{text} {}",
+        tail.max()
+    );
     assert!(text.contains("0 measured points above"), "{text}");
     // The default is the empirical density here (Pearson's tail is not
     // supported), and its contact has measured heights above it.

@@ -333,7 +333,12 @@ fn scan_rows_carry_the_single_commands_warnings() {
         args.extend(load);
         args.extend(["--lambda-s", &lambda_s]);
         let single = json(&args);
-        let want: Vec<&Value> = single["warnings"].as_array().unwrap().iter().map(|w| &w["kind"]).collect();
+        let want: Vec<&Value> = single["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| &w["kind"])
+            .collect();
         let got: Vec<&Value> = row["warnings"].as_array().unwrap().iter().collect();
         assert_eq!(got, want, "at {lambda_s}");
         flagged += usize::from(!got.is_empty());
@@ -342,7 +347,10 @@ fn scan_rows_carry_the_single_commands_warnings() {
     let summary = scan["warnings"].as_array().unwrap();
     let below: Vec<&Value> = summary.iter().filter(|w| w["kind"] == "f_star_below_range").collect();
     assert_eq!(below.len(), 1, "once per kind: {summary:?}");
-    assert_eq!((below[0]["count"].as_u64(), below[0]["of"].as_u64()), (Some(rows.len() as u64), Some(rows.len() as u64)));
+    assert_eq!(
+        (below[0]["count"].as_u64(), below[0]["of"].as_u64()),
+        (Some(rows.len() as u64), Some(rows.len() as u64))
+    );
     // Text: a last column of kinds; stderr: the summary once per kind.
     let text_base = with(&["surface", &file], MATERIALS);
     let mut args = strs(&text_base);
@@ -365,6 +373,9 @@ fn scan_rows_carry_the_single_commands_warnings() {
     let text = String::from_utf8(o.stdout).unwrap();
     assert!(text.lines().next().unwrap().ends_with(",error,warnings"));
     for line in text.lines().skip(1) {
-        assert!(line.rsplit(',').next().unwrap().contains("f_star_below_range"), "{line}");
+        assert!(
+            line.rsplit(',').next().unwrap().contains("f_star_below_range"),
+            "{line}"
+        );
     }
 }

@@ -301,8 +301,22 @@ fn instrument(name: &str) -> Option<String> {
 }
 
 const STEEL: &[&str] = &[
-    "--e1", "200e9", "--nu1", "0.3", "--e2", "200e9", "--nu2", "0.3", "--hardness", "2e9", "--delta-gamma", "0.3",
-    "--epsilon", "0.4e-9", "--area", "1e-5",
+    "--e1",
+    "200e9",
+    "--nu1",
+    "0.3",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.3",
+    "--hardness",
+    "2e9",
+    "--delta-gamma",
+    "0.3",
+    "--epsilon",
+    "0.4e-9",
+    "--area",
+    "1e-5",
 ];
 
 /// Issue 48: the validity domain on di-1, spikes on sur-2 (whose default
@@ -329,13 +343,29 @@ fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
     }
     if let Some(f) = instrument("plu-1.plu") {
         let err = run(&f, &["--force", "0.01", "--distribution", "pearson"]);
-        assert!(err.contains("the contact lies on an extrapolated tail: h* = 16.09"), "{err}");
+        assert!(
+            err.contains("the contact lies on an extrapolated tail: h* = 16.09"),
+            "{err}"
+        );
         assert!(err.contains("0 measured points above the separation"), "{err}");
-        let mut args = vec!["surface", f.as_str(), "--json", "--force", "0.01", "--distribution", "pearson"];
+        let mut args = vec![
+            "surface",
+            f.as_str(),
+            "--json",
+            "--force",
+            "0.01",
+            "--distribution",
+            "pearson",
+        ];
         args.extend(STEEL);
         let o = crate::support::kefric(&args);
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
-        let tail = v["warnings"].as_array().unwrap().iter().find(|w| w["kind"] == "tail").unwrap();
+        let tail = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|w| w["kind"] == "tail")
+            .unwrap();
         assert_eq!(tail["above"], 0);
         assert!(tail["max_height"].as_f64().unwrap() < 4.0);
         // The default (empirical here) has measured heights above its contact.

@@ -102,18 +102,26 @@ fn params_from_physical_sets_the_validity_domain_bits() {
             // SAFETY: the five outputs are distinct and writable.
             unsafe {
                 kef_params_from_physical(
-                    200e9, 0.3, 200e9, 0.3, 2e9, sigma, radius, density, 0.3, 0.4e-9, &mut psi, &mut theta,
-                    &mut beta, &mut nu, &mut eps,
+                    200e9, 0.3, 200e9, 0.3, 2e9, sigma, radius, density, 0.3, 0.4e-9, &mut psi, &mut theta, &mut beta,
+                    &mut nu, &mut eps,
                 )
             }
         };
         // sigma = 1 µm, R = 100 µm, eta = 4e8 /m²: beta = 0.04, theta = 1.5e-4, psi ~ 1.
         assert_eq!(call(1e-6, 100e-6, 4e8), KEF_OK);
-        assert_eq!(kef_warnings(), 0, "inside the domain: psi = {psi}, theta = {theta}, beta = {beta}");
+        assert_eq!(
+            kef_warnings(),
+            0,
+            "inside the domain: psi = {psi}, theta = {theta}, beta = {beta}"
+        );
         // sigma = 10 nm: theta = 0.015 (> 0.01), beta = 4e-4 ... below the model's floor: refused.
         // sigma = 20 nm, R = 10 µm, eta = 1e12: beta = 0.2 (> 0.16), theta = 0.0075.
         assert_eq!(call(20e-9, 10e-6, 1e12), KEF_OK);
-        assert_eq!(kef_warnings() & KEF_WARN_BETA_DOMAIN, KEF_WARN_BETA_DOMAIN, "beta = {beta}");
+        assert_eq!(
+            kef_warnings() & KEF_WARN_BETA_DOMAIN,
+            KEF_WARN_BETA_DOMAIN,
+            "beta = {beta}"
+        );
         assert!(message(KEF_WARN_BETA_DOMAIN).starts_with("beta = 0.2 is outside in [0.02, 0.16]"));
         kef_clear_warnings();
         assert_eq!((kef_warnings(), message(KEF_WARN_BETA_DOMAIN)), (0, String::new()));

@@ -348,7 +348,9 @@ impl Topography {
             (m20, m02, m40, m04),
         )?;
         let tail = HeightTail::of(self, z0, &plane, mean, sigma);
-        stats.warnings.extend(Warning::of_spikes(kurtosis, tail.beyond(), points));
+        stats
+            .warnings
+            .extend(Warning::of_spikes(kurtosis, tail.beyond(), points));
         stats.tail = Some(tail);
         if options.derivative == Derivative::Spectral {
             let mismatch = spectral::edge_mismatch(self, z0, &plane);
