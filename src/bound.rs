@@ -115,6 +115,30 @@ impl Bound {
     }
 }
 
+/// The model's validity domain (docs/MODEL.md, "Validity domain"): the
+/// ranges the paper studied, outside which a result is returned with a
+/// warning ([`crate::Warning::of_params`]), not refused.
+pub(crate) mod domain {
+    use super::{Bound, End};
+
+    /// ψ the paper covers: "a wide range of plasticity index values from
+    /// ψ = 0.5 to ψ = 8 was covered"; at ψ = 8 the friction is
+    /// "unreasonably small" and the model "may be invalid at large
+    /// plasticity index values".
+    pub(crate) static PSI: Bound = Bound::new(End::Closed(0.5), End::Closed(8.0));
+    /// θ the paper covers: "the range of the adhesion parameter, θ, is
+    /// 1e-4 ≤ θ ≤ 0.01 where the upper limit corresponds to very high
+    /// adhesion energy". Only the upper end warns: below 1e-4 adhesion is
+    /// negligible, which the model handles (θ = 0 is the paper's limit).
+    pub(crate) static THETA: Bound = Bound::at_most(0.01);
+    /// β: the paper takes β = 0.04 "according to the finding of Greenwood
+    /// and Williamson" and varies nothing else. The range is this
+    /// project's choice (docs/MODEL.md, "Validity domain"): within a factor
+    /// 4 of the paper's β (0.01–0.16), and above the model's own floor
+    /// β > 0.01928 (σ_s real, MODEL.md §2), so from 0.02.
+    pub(crate) static BETA: Bound = Bound::new(End::Closed(0.02), End::Closed(0.16));
+}
+
 fn end_value(end: End) -> f64 {
     match end {
         End::Open(x) | End::Closed(x) => x,
@@ -163,6 +187,15 @@ mod tests {
             assert_eq!(bound.range(), text);
             assert_eq!(bound.range(), text, "kept");
         }
+    }
+
+    #[test]
+    fn the_validity_domain_states_itself() {
+        assert_eq!(domain::PSI.range(), "in [0.5, 8]");
+        assert_eq!(domain::THETA.range(), "<= 0.01");
+        assert_eq!(domain::BETA.range(), "in [0.02, 0.16]");
+        assert!(domain::PSI.contains(8.0) && !domain::PSI.contains(8.0f64.next_up()));
+        assert!(domain::BETA.contains(0.04) && !domain::BETA.contains(0.548));
     }
 
     #[test]

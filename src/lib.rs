@@ -106,4 +106,7 @@ pub use table::{
     Accuracy, BuildRecord, ConstantsMismatch, Domain, LookupError, OnError, Precision, Table, TableError, TableInfo,
     FAST_KERNEL_MAX_REL,
 };
-pub use warning::{Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_RANGE, MU_ADHESION};
+pub use warning::{
+    Summary, Warning, WarningKind, Warnings, FEW_ASPERITIES, F_STAR_RANGE, KURTOSIS_MAX, MU_ADHESION, SPIKE_FRACTION,
+    SPIKE_SIGMA, TAIL_MIN_POINTS,
+};

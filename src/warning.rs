@@ -24,6 +24,28 @@ pub const MU_ADHESION: f64 = 1.0;
 /// too few for a statistical model ([`Warning::FewAsperities`]).
 pub const FEW_ASPERITIES: f64 = 10.0;
 
+/// Fewer measured heights than this above the separation h (over σ) is a
+/// contact on an extrapolated tail ([`Warning::Tail`]): the density there
+/// (a fitted family's, or the kernel density's own smoothing) is not
+/// supported by measured points.
+pub const TAIL_MIN_POINTS: usize = 10;
+
+/// A detrended height further than this many σ from the mean plane is a
+/// spike ([`Warning::Spikes`]): a Gaussian surface has one such point in
+/// 5e8 (P(|z| > 6) = 2.0e-9).
+pub const SPIKE_SIGMA: f64 = 6.0;
+
+/// A kurtosis above this is spiky ([`Warning::Spikes`]): no fitted height
+/// family follows it (the measured files range from 1.8 to 9.2 apart from
+/// the spiky one, 811; docs/MODEL.md, "Validity domain").
+pub const KURTOSIS_MAX: f64 = 20.0;
+
+/// Points beyond [`SPIKE_SIGMA`]·σ, as a fraction of the valid points,
+/// above which a surface has spikes ([`Warning::Spikes`]) whatever its
+/// kurtosis: 1e-3 is 5e5 times a Gaussian's share (the measured files
+/// without spikes have up to 4.9e-4: di-3, K = 5.7).
+pub const SPIKE_FRACTION: f64 = 1e-3;
+
 /// A relative slack on the range's ends: a solved F* may exceed 0.1 by
 /// rounding (0.10000000000000003) without lying outside the range.
 const RANGE_SLACK: f64 = 1e-9;
@@ -53,6 +75,16 @@ pub enum WarningKind {
     IntervalMismatch,
     /// [`Warning::Unreliable`].
     UnreliableScale,
+    /// [`Warning::PsiOutsideDomain`].
+    PsiOutsideDomain,
+    /// [`Warning::ThetaOutsideDomain`].
+    ThetaOutsideDomain,
+    /// [`Warning::BetaOutsideDomain`].
+    BetaOutsideDomain,
+    /// [`Warning::Spikes`].
+    Spikes,
+    /// [`Warning::Tail`].
+    Tail,
 }
 
 crate::named!(
@@ -69,6 +101,11 @@ crate::named!(
         Anisotropy = "anisotropy",
         IntervalMismatch = "interval_mismatch",
         UnreliableScale = "unreliable_scale",
+        PsiOutsideDomain = "psi_domain",
+        ThetaOutsideDomain = "theta_domain",
+        BetaOutsideDomain = "beta_domain",
+        Spikes = "spikes",
+        Tail = "tail",
     ]
 );
 
@@ -88,6 +125,7 @@ impl WarningKind {
                 | WarningKind::NegativeSeparation
                 | WarningKind::AdhesionDominated
                 | WarningKind::FewAsperities
+                | WarningKind::Tail
         )
     }
 
@@ -174,6 +212,48 @@ pub enum Warning {
         /// The reliability cut-off (metres).
         cutoff: f64,
     },
+    /// ψ outside the range the paper covers, 0.5 ≤ ψ ≤ 8 (docs/MODEL.md,
+    /// "Validity domain").
+    PsiOutsideDomain {
+        /// The plasticity index ψ.
+        psi: f64,
+    },
+    /// θ above the paper's upper limit 0.01 ("very high adhesion energy").
+    ThetaOutsideDomain {
+        /// The adhesion parameter θ.
+        theta: f64,
+    },
+    /// β outside 0.02 ≤ β ≤ 0.16 (within a factor 4 of the paper's single
+    /// β = 0.04).
+    BetaOutsideDomain {
+        /// The roughness parameter β = ηRσ.
+        beta: f64,
+    },
+    /// Spikes in the heights: a kurtosis above [`KURTOSIS_MAX`], or more
+    /// than [`SPIKE_FRACTION`] of the points beyond [`SPIKE_SIGMA`]·σ of
+    /// the mean plane: outliers (dust, dropouts, tip artefacts) that decide
+    /// the height density's tail.
+    Spikes {
+        /// The kurtosis K of the detrended heights.
+        kurtosis: f64,
+        /// Points beyond [`SPIKE_SIGMA`]·σ.
+        beyond: usize,
+        /// The valid points.
+        points: usize,
+    },
+    /// The contacting asperities lie where no (or too few) heights were
+    /// measured: fewer than [`TAIL_MIN_POINTS`] measured heights lie above
+    /// the separation h, so μ comes from the height density's extrapolated
+    /// tail.
+    Tail {
+        /// The separation h* = h/σ.
+        h_star: f64,
+        /// The highest measured height over σ.
+        max_height: f64,
+        /// Measured heights above h (counted exactly up to
+        /// the topography's `TAIL_SAMPLE`, 64).
+        above: usize,
+    },
 }
 
 impl Warning {
@@ -190,6 +270,11 @@ impl Warning {
             Warning::Anisotropy { .. } => WarningKind::Anisotropy,
             Warning::IntervalMismatch { .. } => WarningKind::IntervalMismatch,
             Warning::Unreliable { .. } => WarningKind::UnreliableScale,
+            Warning::PsiOutsideDomain { .. } => WarningKind::PsiOutsideDomain,
+            Warning::ThetaOutsideDomain { .. } => WarningKind::ThetaOutsideDomain,
+            Warning::BetaOutsideDomain { .. } => WarningKind::BetaOutsideDomain,
+            Warning::Spikes { .. } => WarningKind::Spikes,
+            Warning::Tail { .. } => WarningKind::Tail,
         }
     }
 
@@ -207,6 +292,12 @@ impl Warning {
             Warning::Anisotropy { value, .. } => value.max(1.0 / value),
             Warning::IntervalMismatch { first, second, .. } => (first / second).max(second / first),
             Warning::Unreliable { scale, cutoff } => cutoff / scale,
+            // Distance outside the range, as a ratio.
+            Warning::PsiOutsideDomain { psi } => (psi / 8.0).max(0.5 / psi),
+            Warning::ThetaOutsideDomain { theta } => theta,
+            Warning::BetaOutsideDomain { beta } => (beta / 0.16).max(0.02 / beta),
+            Warning::Spikes { kurtosis, .. } => kurtosis,
+            Warning::Tail { h_star, max_height, .. } => h_star - max_height,
         }
     }
 
@@ -249,6 +340,48 @@ impl Warning {
     /// [`Model::asperities_in_contact`](crate::Model::asperities_in_contact)).
     pub fn of_asperities(count: f64) -> Option<Warning> {
         (count < FEW_ASPERITIES).then_some(Warning::FewAsperities { count })
+    }
+
+    /// The model's inputs outside its validity domain (docs/MODEL.md,
+    /// "Validity domain"): ψ outside [0.5, 8], θ above 0.01, β outside
+    /// [0.02, 0.16]. Arithmetic only.
+    ///
+    /// ```
+    /// use ke_friction::{Params, Warning, WarningKind};
+    /// let kinds = |p: &Params| Warning::of_params(p).map(|w| w.kind()).collect::<Vec<_>>();
+    /// assert!(kinds(&Params::new(2.0, 0.001)).is_empty());
+    /// assert_eq!(kinds(&Params::new(209.0, 0.02)), [WarningKind::PsiOutsideDomain, WarningKind::ThetaOutsideDomain]);
+    /// ```
+    pub fn of_params(params: &crate::Params) -> impl Iterator<Item = Warning> {
+        use crate::bound::domain;
+        let (psi, theta, beta) = (params.psi, params.theta, params.constants.beta);
+        let psi = (!domain::PSI.contains(psi)).then_some(Warning::PsiOutsideDomain { psi });
+        let theta = (!domain::THETA.contains(theta)).then_some(Warning::ThetaOutsideDomain { theta });
+        let beta = (!domain::BETA.contains(beta)).then_some(Warning::BetaOutsideDomain { beta });
+        [psi, theta, beta].into_iter().flatten()
+    }
+
+    /// [`Warning::Spikes`] if the heights' kurtosis exceeds
+    /// [`KURTOSIS_MAX`] or more than [`SPIKE_FRACTION`] of the `points`
+    /// lie beyond [`SPIKE_SIGMA`]·σ (`beyond` of them).
+    pub fn of_spikes(kurtosis: f64, beyond: usize, points: usize) -> Option<Warning> {
+        (kurtosis > KURTOSIS_MAX || beyond as f64 > SPIKE_FRACTION * points as f64).then_some(Warning::Spikes {
+            kurtosis,
+            beyond,
+            points,
+        })
+    }
+
+    /// [`Warning::Tail`] if fewer than [`TAIL_MIN_POINTS`] of the measured
+    /// heights lie above the separation `h_star` (h/σ): `max_height` is
+    /// the highest over σ, `above` the count above h* (exact below
+    /// the topography's `TAIL_SAMPLE`, 64).
+    pub fn of_tail(h_star: f64, max_height: f64, above: usize) -> Option<Warning> {
+        (above < TAIL_MIN_POINTS).then_some(Warning::Tail {
+            h_star,
+            max_height,
+            above,
+        })
     }
 }
 
@@ -328,6 +461,60 @@ impl fmt::Display for Warning {
                 s(cutoff),
                 s(cutoff)
             ),
+            Warning::PsiOutsideDomain { psi } => write!(
+                f,
+                "psi = {} is outside the range the paper covers (psi {}): {}; the model is extrapolated there",
+                s(psi),
+                crate::bound::domain::PSI.range(),
+                if psi > 8.0 {
+                    "the paper finds the friction at psi = 8 \"unreasonably small\" and the model \"may be \
+                     invalid at large plasticity index values\" (no strain hardening)"
+                } else {
+                    "below 0.5 the contact is elastic and adhesion-dominated, unstudied"
+                }
+            ),
+            Warning::ThetaOutsideDomain { theta } => write!(
+                f,
+                "theta = {} is above the range the paper covers (theta {}; its upper limit is \"very high \
+                 adhesion energy\" of very clean surfaces in vacuum): the model is extrapolated there",
+                s(theta),
+                crate::bound::domain::THETA.range()
+            ),
+            Warning::BetaOutsideDomain { beta } => write!(
+                f,
+                "beta = {} is outside {} (within a factor 4 of the paper's beta = 0.04, from Greenwood and Williamson): \
+                 the surface is unlike those the model was built for; check the band (--lambda-s) and \
+                 the sampling",
+                s(beta),
+                crate::bound::domain::BETA.range()
+            ),
+            Warning::Spikes {
+                kurtosis,
+                beyond,
+                points,
+            } => write!(
+                f,
+                "the heights have spikes: kurtosis {} (limit {}), {beyond} of {points} points beyond {} sigma \
+                 of the mean plane; outliers decide the height density's tail: clean the data (remove \
+                 outliers, fill dropouts) or filter (--lambda-s)",
+                s(kurtosis),
+                Shortest(KURTOSIS_MAX),
+                Shortest(SPIKE_SIGMA)
+            ),
+            Warning::Tail {
+                h_star,
+                max_height,
+                above,
+            } => write!(
+                f,
+                "the contact lies on an extrapolated tail: h* = {} with the highest measured height at {} \
+                 sigma and {above} measured points above the separation (fewer than {}): mu comes from the \
+                 height density beyond the data; compare --distribution empirical and gaussian, or a \
+                 heavier load",
+                s(h_star),
+                s(max_height),
+                TAIL_MIN_POINTS
+            ),
         }
     }
 }
@@ -376,6 +563,27 @@ impl Warning {
                 map.serialize_entry("name", name)?;
                 map.serialize_entry("first", first)?;
                 map.serialize_entry("second", second)?;
+            }
+            Warning::PsiOutsideDomain { psi } => map.serialize_entry("psi", psi)?,
+            Warning::ThetaOutsideDomain { theta } => map.serialize_entry("theta", theta)?,
+            Warning::BetaOutsideDomain { beta } => map.serialize_entry("beta", beta)?,
+            Warning::Spikes {
+                kurtosis,
+                beyond,
+                points,
+            } => {
+                map.serialize_entry("kurtosis", kurtosis)?;
+                map.serialize_entry("beyond", beyond)?;
+                map.serialize_entry("points", points)?;
+            }
+            Warning::Tail {
+                h_star,
+                max_height,
+                above,
+            } => {
+                map.serialize_entry("h_star", h_star)?;
+                map.serialize_entry("max_height", max_height)?;
+                map.serialize_entry("above", above)?;
             }
         }
         Ok(())

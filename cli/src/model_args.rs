@@ -23,7 +23,7 @@ pub struct ModelArgs {
     pub constants: ConstantsArgs,
     #[command(flatten)]
     pub si: SiArgs,
-    /// A measured surface (X3P, .npy, text or an instrument's own file, see `kefric surface --help`; give it twice for two rough surfaces pressed together): sigma, R, eta and the height distribution (--distribution, default pearson from its Ssk and Sku) come from it, with the seven material flags (--e1 … --epsilon). See `kefric surface`.
+    /// A measured surface (X3P, .npy, text or an instrument's own file, see `kefric surface --help`; give it twice for two rough surfaces pressed together): sigma, R, eta and the height distribution (--distribution, default pearson from its Ssk and Sku where K <= 4 and its tail is supported, else empirical) come from it, with the seven material flags (--e1 … --epsilon). See `kefric surface`.
     #[arg(long, value_name = "FILE", action = clap::ArgAction::Append)]
     pub surface: Vec<std::path::PathBuf>,
     #[command(flatten)]

@@ -241,6 +241,7 @@ pub fn run(args: Args) -> Result<(), Failure> {
             let mut warnings = ke_friction::Warnings::new();
             warnings.extend(surface.stats().warnings.iter().cloned());
             if let Some((_, model)) = fits.first() {
+                warnings.extend(ke_friction::Warning::of_params(model.params()));
                 for end in [axis.range.0, axis.range.1] {
                     if let Ok(c) = model.at_f_star(end / axis.per_f_star) {
                         warnings.note_contact(&c);

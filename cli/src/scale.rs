@@ -10,7 +10,7 @@ use ke_friction::topography::{
     default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanError, ScanRange,
     Window,
 };
-use ke_friction::Shortest;
+use ke_friction::{Shortest, WarningKind, Warnings};
 use std::path::Path;
 
 /// The one file of --scan or --psd.
@@ -42,6 +42,17 @@ const SCAN_COLUMNS: [(&str, &str); 16] = [
     ("surface", "lambda_c"),
 ];
 
+/// A scan row's warning kinds (its record's `warnings`), joined by `sep`.
+fn row_kinds(r: &serde_json::Value, sep: &str) -> String {
+    let kinds = r.get("warnings").and_then(serde_json::Value::as_array);
+    let names: Vec<&str> = kinds
+        .into_iter()
+        .flatten()
+        .filter_map(serde_json::Value::as_str)
+        .collect();
+    names.join(sep)
+}
+
 /// `surface --scan`: one row a λs.
 pub fn run_scan(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scan")?;
@@ -69,13 +80,24 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
     }
     let mut records = Vec::with_capacity(rows.len());
     let mut unreliable = 0;
+    // The rows' warnings, one result a row: summarised once per kind at
+    // the end, as the single command does (the cut-off's own line below).
+    let mut warnings = Warnings::new();
     for row in &rows {
         let mut record = serde_json::json!({ "lambda_s": row.lambda_s, "reliable": row.reliable });
         match &row.surface {
             Ok(surface) => {
                 unreliable += usize::from(row.reliable == Some(false));
                 match evaluate(args, surface, materials.as_ref(), load.as_slice()) {
-                    Ok((params, friction, _)) => {
+                    Ok((params, friction, row_warnings)) => {
+                        let kinds: Vec<&str> = row_warnings.summaries().map(|s| s.worst.kind().name()).collect();
+                        record["warnings"] = kinds.into();
+                        warnings.note(
+                            row_warnings
+                                .summaries()
+                                .map(|s| s.worst.clone())
+                                .filter(|w| w.kind() != WarningKind::UnreliableScale),
+                        );
                         record["surface"] = serde_json::to_value(surface.stats()).expect("a record");
                         if let Some(p) = params {
                             record["model"] = serde_json::to_value(p).expect("a record");
@@ -98,6 +120,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
             Shortest(cutoff.unwrap_or(f64::NAN))
         );
     }
+    crate::output::warn(&warnings);
     let failed = records.iter().filter(|r| r.get("error").is_some()).count();
     if failed > 0 {
         errln!(
@@ -113,6 +136,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
             "lambda_c": options.lambda_c,
             "cutoff": cutoff,
             "rows": records,
+            "warnings": warnings.summaries().collect::<Vec<_>>(),
         });
         outln!("{}", serde_json::to_string(&doc).expect("a scan record serialises"))?;
         return Ok(());
@@ -129,7 +153,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
     };
     if args.csv {
         let names: Vec<&str> = SCAN_COLUMNS.iter().map(|(_, n)| *n).collect();
-        outln!("lambda_s,reliable,{},error", names.join(","))?;
+        outln!("lambda_s,reliable,{},error,warnings", names.join(","))?;
         for r in &records {
             let cells: Vec<String> = SCAN_COLUMNS.iter().map(|&c| cell(r, c)).collect();
             let reliable = r["reliable"].as_bool().map_or(String::new(), |b| b.to_string());
@@ -139,9 +163,10 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
                 .unwrap_or("")
                 .replace(['"', '\n'], " ");
             outln!(
-                "{},{reliable},{},\"{error}\"",
+                "{},{reliable},{},\"{error}\",{}",
                 Shortest(r["lambda_s"].as_f64().unwrap_or(f64::NAN)),
-                cells.join(",")
+                cells.join(","),
+                row_kinds(r, ";")
             )?;
         }
         return Ok(());
@@ -154,7 +179,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
             .map_or("none".to_string(), |l| format!("{} m", Shortest(l)))
     )?;
     outln!(
-        "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
+        "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}  warnings",
         "lambda_s",
         "reliable",
         "beta",
@@ -175,15 +200,17 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
         let reliable = r["reliable"]
             .as_bool()
             .map_or("-".to_string(), |b| if b { "yes" } else { "no" }.into());
+        let kinds = row_kinds(r, ",");
         outln!(
-            "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}",
+            "{:>12} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}  {}",
             sig(r["lambda_s"].as_f64().unwrap_or(f64::NAN)).to_string(),
             reliable,
             v(("surface", "beta")),
             v(("surface", "radius")),
             v(("surface", "eta")),
             v(("model", "psi")),
-            v(("friction", "mu"))
+            v(("friction", "mu")),
+            if kinds.is_empty() { "-" } else { &kinds }
         )?;
         if let Some(e) = r.get("error").and_then(|e| e.as_str()) {
             outln!("#   {e}")?;

@@ -35,7 +35,7 @@ pub struct Args {
     pub read: SurfaceArgs,
     #[command(flatten)]
     pub materials: MaterialsArgs,
-    /// Height distribution of the model: pearson (from the measured Ssk, Sku), gaussian, weibull (from Ssk) or empirical (the measured heights) [default: pearson].
+    /// Height distribution of the model: pearson (from the measured Ssk, Sku), gaussian, weibull (from Ssk) or empirical (the measured heights) [default: pearson where K <= 4 and its upper tail is supported by the measured heights, else empirical (MODEL.md, "The default height model")].
     #[arg(long, value_parser = named::<Family>())]
     pub distribution: Option<Family>,
     /// Friction row: consistent (MODEL.md §4), or as-printed.

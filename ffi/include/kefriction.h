@@ -107,6 +107,26 @@
 // (reserved).
 #define KEF_WARN_UNRELIABLE_SCALE (1 << 9)
 
+// Warning bit: psi outside the range the paper covers, 0.5 <= psi <= 8
+// (set by kef_params_from_physical).
+#define KEF_WARN_PSI_DOMAIN (1 << 10)
+
+// Warning bit: theta above the paper's upper limit 0.01 (set by
+// kef_params_from_physical).
+#define KEF_WARN_THETA_DOMAIN (1 << 11)
+
+// Warning bit: beta outside 0.02 <= beta <= 0.16, within a factor 4 of
+// the paper's 0.04 (set by kef_params_from_physical).
+#define KEF_WARN_BETA_DOMAIN (1 << 12)
+
+// Warning bit: spikes in a surface's heights (surface statistics;
+// reserved).
+#define KEF_WARN_SPIKES (1 << 13)
+
+// Warning bit: the contact lies above the measured heights (a measured
+// surface's; reserved).
+#define KEF_WARN_TAIL (1 << 14)
+
 // Out-of-range policy of a kef_law: a positive pressure outside
 // [p_min, p_max] gets mu at the nearest end and dmu/dp = 0, and is
 // counted (kef_law_clamped). No error path, no message.
@@ -173,7 +193,8 @@ const char *kef_last_error(void);
 // kef_clear_warnings (or the thread's start): a mask of KEF_WARN_* bits,
 // 0 if none. The direct integrations (kef_model_mu, kef_model_mu_with)
 // set them for a result they return (F* outside 1e-5..0.1, h* < 0,
-// mu > 1); a call that fails sets none.
+// mu > 1), kef_params_from_physical for inputs outside the validity
+// domain (psi, theta, beta); a call that fails sets none.
 int kef_warnings(void);
 
 // Clears this thread's warnings (kef_warnings() is 0 after it).
@@ -243,7 +264,10 @@ int kef_table_domain(const kef_table *table,
 // or a result out of its range (the message names it and the range),
 // KEF_ERR_ARGUMENT for NaN, ±inf, a NULL output or outputs that alias
 // each other (the five must be distinct; the message names two); no
-// output is written on failure.
+// output is written on failure. Inputs outside the model's validity
+// domain (psi outside [0.5, 8], theta > 0.01, beta outside [0.02, 0.16])
+// are returned and set KEF_WARN_PSI_DOMAIN, KEF_WARN_THETA_DOMAIN,
+// KEF_WARN_BETA_DOMAIN (kef_warnings).
 //
 // # Safety
 // The outputs are NULL or writable.

@@ -16,7 +16,10 @@ use std::ffi::c_int;
 /// or a result out of its range (the message names it and the range),
 /// KEF_ERR_ARGUMENT for NaN, ±inf, a NULL output or outputs that alias
 /// each other (the five must be distinct; the message names two); no
-/// output is written on failure.
+/// output is written on failure. Inputs outside the model's validity
+/// domain (psi outside [0.5, 8], theta > 0.01, beta outside [0.02, 0.16])
+/// are returned and set KEF_WARN_PSI_DOMAIN, KEF_WARN_THETA_DOMAIN,
+/// KEF_WARN_BETA_DOMAIN (kef_warnings).
 ///
 /// # Safety
 /// The outputs are NULL or writable.
@@ -41,6 +44,7 @@ pub unsafe extern "C" fn kef_params_from_physical(
     ffi!(psi, theta, beta, nu, eps_star => {
         let physical = Physical { e1, nu1, e2, nu2, hardness, sigma, radius, density, delta_gamma, epsilon };
         let p = Params::from_physical(&physical)?;
+        crate::warning::note_params(&p);
         (*psi, *theta) = (p.psi, p.theta);
         (*beta, *nu, *eps_star) = (p.constants.beta, p.constants.nu, p.constants.eps_star);
         Ok(())

@@ -4,7 +4,7 @@
 //! formats the latest warning of a kind (only when asked: a call that
 //! warns stores its contact, two words, and sets bits).
 
-use ke_friction::{Contact, Warning, WarningKind};
+use ke_friction::{Contact, Params, Warning, WarningKind};
 use std::cell::{Cell, RefCell};
 use std::ffi::{c_char, c_int, CString};
 
@@ -34,9 +34,25 @@ pub const KEF_WARN_INTERVAL_MISMATCH: c_int = 1 << 8;
 /// (reserved).
 pub const KEF_WARN_UNRELIABLE_SCALE: c_int = 1 << 9;
 
+/// Warning bit: psi outside the range the paper covers, 0.5 <= psi <= 8
+/// (set by kef_params_from_physical).
+pub const KEF_WARN_PSI_DOMAIN: c_int = 1 << 10;
+/// Warning bit: theta above the paper's upper limit 0.01 (set by
+/// kef_params_from_physical).
+pub const KEF_WARN_THETA_DOMAIN: c_int = 1 << 11;
+/// Warning bit: beta outside 0.02 <= beta <= 0.16, within a factor 4 of
+/// the paper's 0.04 (set by kef_params_from_physical).
+pub const KEF_WARN_BETA_DOMAIN: c_int = 1 << 12;
+/// Warning bit: spikes in a surface's heights (surface statistics;
+/// reserved).
+pub const KEF_WARN_SPIKES: c_int = 1 << 13;
+/// Warning bit: the contact lies above the measured heights (a measured
+/// surface's; reserved).
+pub const KEF_WARN_TAIL: c_int = 1 << 14;
+
 /// The C constants in the core's order (a test checks them against
 /// `WarningKind::bit`).
-pub(crate) const KEF_WARN: [(c_int, WarningKind); 10] = [
+pub(crate) const KEF_WARN: [(c_int, WarningKind); 15] = [
     (KEF_WARN_F_STAR_BELOW_RANGE, WarningKind::FStarBelowRange),
     (KEF_WARN_F_STAR_ABOVE_RANGE, WarningKind::FStarAboveRange),
     (KEF_WARN_NEGATIVE_SEPARATION, WarningKind::NegativeSeparation),
@@ -47,6 +63,11 @@ pub(crate) const KEF_WARN: [(c_int, WarningKind); 10] = [
     (KEF_WARN_ANISOTROPY, WarningKind::Anisotropy),
     (KEF_WARN_INTERVAL_MISMATCH, WarningKind::IntervalMismatch),
     (KEF_WARN_UNRELIABLE_SCALE, WarningKind::UnreliableScale),
+    (KEF_WARN_PSI_DOMAIN, WarningKind::PsiOutsideDomain),
+    (KEF_WARN_THETA_DOMAIN, WarningKind::ThetaOutsideDomain),
+    (KEF_WARN_BETA_DOMAIN, WarningKind::BetaOutsideDomain),
+    (KEF_WARN_SPIKES, WarningKind::Spikes),
+    (KEF_WARN_TAIL, WarningKind::Tail),
 ];
 
 thread_local! {
@@ -55,6 +76,9 @@ thread_local! {
     /// The latest contact that warned, per contact kind (its message is
     /// formatted from it on request).
     static LATEST: [Cell<Option<Contact>>; 4] = const { [const { Cell::new(None) }; 4] };
+    /// The latest warnings of the model's inputs (the validity domain's:
+    /// ψ, θ, β), of the latest call that gave one.
+    static DOMAIN: RefCell<Vec<Warning>> = const { RefCell::new(Vec::new()) };
     /// The last message kef_warning_message returned, kept alive until
     /// the next call on the thread.
     static MESSAGE: RefCell<CString> = RefCell::new(CString::default());
@@ -77,11 +101,28 @@ pub(crate) fn note(contact: &Contact) {
     });
 }
 
+/// Records the validity domain's warnings of inputs a call returned
+/// ([`Warning::of_params`]).
+pub(crate) fn note_params(params: &Params) {
+    let warnings: Vec<Warning> = Warning::of_params(params).collect();
+    if warnings.is_empty() {
+        return;
+    }
+    let mask = warnings.iter().fold(0, |m, w| m | w.kind().bit());
+    MASK.with(|m| m.set(m.get() | mask));
+    DOMAIN.with(|d| {
+        let mut d = d.borrow_mut();
+        d.retain(|old| warnings.iter().all(|w| w.kind() != old.kind()));
+        d.extend(warnings);
+    });
+}
+
 /// The warnings of this thread's calls since the last
 /// kef_clear_warnings (or the thread's start): a mask of KEF_WARN_* bits,
 /// 0 if none. The direct integrations (kef_model_mu, kef_model_mu_with)
 /// set them for a result they return (F* outside 1e-5..0.1, h* < 0,
-/// mu > 1); a call that fails sets none.
+/// mu > 1), kef_params_from_physical for inputs outside the validity
+/// domain (psi, theta, beta); a call that fails sets none.
 #[no_mangle]
 pub extern "C" fn kef_warnings() -> c_int {
     MASK.with(|m| m.get() as c_int)
@@ -92,6 +133,7 @@ pub extern "C" fn kef_warnings() -> c_int {
 pub extern "C" fn kef_clear_warnings() {
     MASK.with(|m| m.set(0));
     LATEST.with(|latest| latest.iter().for_each(|c| c.set(None)));
+    DOMAIN.with(|d| d.borrow_mut().clear());
 }
 
 /// The message of this thread's latest warning of kind `kind` (one
@@ -106,8 +148,12 @@ pub extern "C" fn kef_warning_message(kind: c_int) -> *const c_char {
         .iter()
         .position(|&(bit, _)| bit == kind)
         .and_then(|i| {
+            let kind = KEF_WARN[i].1;
+            if let Some(w) = DOMAIN.with(|d| d.borrow().iter().find(|w| w.kind() == kind).cloned()) {
+                return Some(w);
+            }
             let contact = LATEST.with(|latest| latest.get(i).and_then(Cell::get))?;
-            Warning::of_contact(&contact).find(|w| w.kind() == KEF_WARN[i].1)
+            Warning::of_contact(&contact).find(|w| w.kind() == kind)
         })
         .map_or_else(String::new, |w| w.to_string());
     MESSAGE.with(|m| {

@@ -577,6 +577,12 @@ impl SurfaceCore {
             .map_err(raise)
     }
 
+    /// The family the surface gets when none is named (the core's rule:
+    /// Pearson where its upper tail is supported, else empirical).
+    fn default_family(&self, py: Python<'_>) -> &'static str {
+        py.detach(|| self.surface.default_family())
+    }
+
     /// What the empirical density of the surface is made from: each
     /// part's detrended heights (NaN = missing) and standard deviation σ
     /// (`DistributionCore.empirical` of the one, or
@@ -640,6 +646,7 @@ impl SurfaceCore {
             .map_err(raise)?;
         let mut warnings = ke_friction::Warnings::new();
         warnings.extend(self.surface.stats().warnings.iter().cloned());
+        warnings.extend(ke_friction::Warning::of_params(model.0.params()));
         let mut records = Vec::with_capacity(frictions.len());
         for (f, w) in frictions {
             warnings.note(w);

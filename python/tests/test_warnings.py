@@ -3,6 +3,7 @@
 CLI prints; F* > 1 refused; Surface.friction broadcasting loads."""
 
 import os
+import pathlib
 import subprocess
 import warnings
 
@@ -114,3 +115,82 @@ def test_spectral_derivatives_of_a_non_periodic_map_warn():
     assert not any(w["kind"] == "non_periodic" for w in periodic.stats["warnings"])
     fd = kf.Surface.from_heights(waves(128, periodic=False), DX)
     assert rough.stats["m4"] / fd.stats["m4"] > 2
+
+
+# Issue 48: the validity domain, spikes and tail warnings, and the default
+# height model, on the README's synthetic map and the instruments' files.
+
+TOPOGRAPHIES = os.environ.get("KEF_TOPOGRAPHIES", str(pathlib.Path(__file__).resolve().parents[3] / "shared" / "topographies"))
+STEEL = dict(e1=200e9, nu1=0.3, e2=200e9, nu2=0.3, hardness=2e9, delta_gamma=0.3, epsilon=0.4e-9)
+
+
+def readme_map():
+    """examples/rough_surface.rs's map (the README's example), in NumPy."""
+    n, dx, hurst = 256, 1e-6, 0.8
+    m64 = (1 << 64) - 1
+
+    def uniform(k):
+        z = ((k + 0x9E3779B97F4A7C15) * 0x9E3779B97F4A7C15) & m64
+        z = ((z ^ (z >> 30)) * 0xBF58476D1CE4E5B9) & m64
+        z = ((z ^ (z >> 27)) * 0x94D049BB133111EB) & m64
+        return ((z ^ (z >> 31)) >> 11) * 2.0 ** -53
+
+    k_lo, k_hi = 2 * np.pi / (256 * dx), 2 * np.pi / (8 * dx)
+    x, y = np.meshgrid(np.arange(n) * dx, np.arange(n) * dx)
+    z = np.zeros((n, n))
+    for w in range(600):
+        k = k_lo * (k_hi / k_lo) ** uniform(3 * w)
+        angle, phase = 2 * np.pi * uniform(3 * w + 1), 2 * np.pi * uniform(3 * w + 2)
+        z += k ** -hurst * np.cos(k * np.cos(angle) * x + k * np.sin(angle) * y + phase)
+    z = (z - z.mean()) / z.std() * 0.5e-6
+    return kf.Surface.from_heights(z, dx, dx)
+
+
+def instrument(name):
+    path = pathlib.Path(TOPOGRAPHIES) / name
+    if not path.exists():
+        pytest.skip(f"{path} is absent (set KEF_TOPOGRAPHIES)")
+    return kf.Surface.read(path)
+
+
+def kinds(caught):
+    return {w.kind for w in caught}
+
+
+def test_the_new_kinds_are_the_libraries():
+    for kind in ("psi_domain", "theta_domain", "beta_domain", "spikes", "tail"):
+        assert kind in kf.WARNING_KINDS
+
+
+def test_the_readme_example_warns_nothing_at_10_n():
+    s = readme_map()
+    assert s.height_distribution().family == "pearson"
+    got, caught = recorded(lambda: s.friction(force=10.0, area=1e-5, **MATERIALS))
+    assert caught == [], [str(w) for w in caught]
+    assert 0.009 < got["mu"] < 0.0098
+
+
+def test_di_1_is_outside_the_validity_domain():
+    s = instrument("di-1.di")
+    _, caught = recorded(lambda: s.friction(force=1.0, area=1e-5, **STEEL))
+    assert {"psi_domain", "beta_domain"} <= kinds(caught)
+    psi = next(w for w in caught if w.kind == "psi_domain")
+    assert str(psi).startswith("psi = 209.") and psi.record["psi"] > 200
+
+
+def test_sur_2_has_spikes_and_falls_back_to_the_empirical_density():
+    s = instrument("sur-2.sur")
+    assert s.height_distribution().family == "empirical"
+    _, caught = recorded(lambda: s.friction(force=1.0, area=1e-5, **STEEL))
+    spikes = next(w for w in caught if w.kind == "spikes")
+    assert "clean the data" in str(spikes) and spikes.record["kurtosis"] > 800
+
+
+def test_plu_1_pearson_at_a_light_load_warns_tail_and_the_default_does_not():
+    s = instrument("plu-1.plu")
+    _, caught = recorded(lambda: s.friction(force=0.01, area=1e-5, distribution="pearson", **STEEL))
+    tail = next(w for w in caught if w.kind == "tail")
+    assert tail.record["above"] == 0 and tail.record["h_star"] > 16 and tail.record["max_height"] < 4
+    assert s.height_distribution().family == "empirical"
+    _, caught = recorded(lambda: s.friction(force=0.01, area=1e-5, **STEEL))
+    assert "tail" not in kinds(caught)

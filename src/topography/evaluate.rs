@@ -16,7 +16,7 @@ use crate::{
 pub struct SurfaceModel {
     /// The materials (E, ν, hardness, adhesion of each body).
     pub materials: Materials,
-    /// The heights' family (`None`: [`Surface::DEFAULT_FAMILY`]).
+    /// The heights' family (`None`: [`Surface::default_family`]).
     pub family: Option<Family>,
     /// The fit of the model's relations.
     pub fit: Fit,
@@ -45,13 +45,18 @@ pub struct Evaluation {
     /// The friction at each load, in the loads' order.
     pub frictions: Vec<Friction>,
     /// Each friction's warnings, in the loads' order (the statistics'
-    /// are the surface's own).
+    /// are the surface's own; the model's inputs' are in `domain`).
     pub warnings: Vec<Vec<Warning>>,
+    /// The model's inputs outside its validity domain
+    /// ([`Warning::of_params`]), with or without loads.
+    pub domain: Vec<Warning>,
 }
 
 impl Evaluation {
-    /// Notes each friction's warnings in `warnings`, one result a load.
+    /// Notes the validity domain's warnings and each friction's in
+    /// `warnings`, one result a load.
     pub fn note_into(&self, warnings: &mut Warnings) {
+        warnings.extend(self.domain.iter().cloned());
         for w in &self.warnings {
             warnings.note(w.iter().cloned());
         }
@@ -116,6 +121,7 @@ impl Surface {
     pub fn evaluate(&self, how: &SurfaceModel, loads: &[Load]) -> Result<Evaluation, EvaluateError> {
         let params = self.model_params(how)?;
         let mut evaluation = Evaluation {
+            domain: Warning::of_params(&params).collect(),
             params,
             frictions: Vec::new(),
             warnings: Vec::new(),
@@ -133,7 +139,10 @@ impl Surface {
     }
 
     /// The friction at each of `loads` on `model`, whose inputs came from
-    /// this surface with `materials`, each with its warnings.
+    /// this surface with `materials`, each with its warnings: the
+    /// contact's, and [`Warning::Tail`] where fewer than
+    /// [`TAIL_MIN_POINTS`](crate::TAIL_MIN_POINTS) measured
+    /// heights lie above the separation ([`Surface::tail_warning`]).
     pub fn frictions(
         &self,
         model: &Model,
@@ -145,7 +154,8 @@ impl Surface {
             .iter()
             .map(|load| {
                 let friction = load.friction(model, &physical)?;
-                let warnings = friction.warnings(model, &physical).collect();
+                let mut warnings: Vec<Warning> = friction.warnings(model, &physical).collect();
+                warnings.extend(self.tail_warning(friction.contact.h_star));
                 Ok((friction, warnings))
             })
             .collect()
@@ -164,6 +174,17 @@ impl Surface {
             .map_err(EvaluateError::Params)?
             .fit(how.fit)
             .kind(how.kind))
+    }
+
+    /// [`Warning::Tail`] if fewer than
+    /// [`TAIL_MIN_POINTS`](crate::TAIL_MIN_POINTS) measured
+    /// heights lie above the separation `h_star` (h/σ, of the mean plane
+    /// of the heights): the contacting asperities are where the density
+    /// is extrapolated, whatever its family (the empirical kernel density
+    /// too). `None` for a pair, whose summed heights are not kept.
+    pub fn tail_warning(&self, h_star: f64) -> Option<Warning> {
+        let tail = self.stats().tail.as_ref()?;
+        Warning::of_tail(h_star, tail.max(), tail.count_above(h_star))
     }
 
     /// The model of this surface set up as `how`.

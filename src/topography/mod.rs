@@ -39,7 +39,8 @@ pub use scale::{
 pub use scan::{scan, ScanError, ScanRange, ScanRow, SCAN_ROWS_MAX};
 pub use sensitivity::{band_ends, BandEnd, Outcome, Sensitivity, SENSITIVITY_FAMILIES};
 pub use stats::{
-    combine, Derivative, Detrend, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX, PRECISION_MIN, SIGMA_MIN,
+    combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX,
+    PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE,
 };
 pub use surface::Surface;
 pub use write::write_x3p;

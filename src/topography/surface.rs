@@ -38,9 +38,31 @@ pub struct Surface {
 }
 
 impl Surface {
-    /// The family of [`Surface::distribution`] when none is named: the
-    /// Pearson density of the measured skewness and kurtosis.
+    /// The family of [`Surface::distribution`] when none is named, where
+    /// its upper tail is supported by the measured heights
+    /// ([`Surface::default_family`]): the Pearson density of the measured
+    /// skewness and kurtosis.
     pub const DEFAULT_FAMILY: &'static str = "pearson";
+
+    /// The family of [`Surface::distribution`] when none is named and the
+    /// Pearson density is refused or its upper tail is not supported by
+    /// the measured heights ([`Surface::default_family`]).
+    pub const FALLBACK_FAMILY: &'static str = "empirical";
+
+    /// How far above the highest measured height (in σ) the Pearson
+    /// density may still expect one of the N measured heights for it to be
+    /// the default ([`Surface::default_family`]): a density expecting,
+    /// among N heights, one more than this above everything measured has a
+    /// tail no measured point supports, where a light load's contact would
+    /// sit (plu-1: h* = 16 against a highest height of 3.3σ).
+    pub const PEARSON_TAIL_MARGIN: f64 = 3.0;
+
+    /// The largest measured kurtosis for which the Pearson density is the
+    /// default ([`Surface::default_family`]): above it Pearson's power-law
+    /// tails inverted the empirical density's μ(F) trend on three of the
+    /// four files where it was tried (di-3, K = 5.7; metropro-1, K = 52;
+    /// plu-1, K = 9.2; docs/MODEL.md, "The default height model").
+    pub const PEARSON_KURTOSIS_MAX: f64 = 4.0;
 
     /// One measured surface against a flat, its statistics taken with
     /// `options`.
@@ -101,7 +123,7 @@ impl Surface {
 
     /// The height distribution of the surface for a family of
     /// [`HeightDistribution::FAMILIES`] (`None`:
-    /// [`DEFAULT_FAMILY`](Self::DEFAULT_FAMILY)):
+    /// [`Surface::default_family`]):
     ///
     /// - `"gaussian"`: the paper's;
     /// - `"pearson"`: the Pearson density of the measured skewness and
@@ -114,7 +136,10 @@ impl Surface {
     /// A measured skewness or kurtosis outside the family's range is an
     /// error naming it (`skewness` or `kurtosis`).
     pub fn distribution(&self, family: Option<&str>) -> Result<HeightDistribution, DistributionError> {
-        let name = family.unwrap_or(Self::DEFAULT_FAMILY);
+        let name = match family {
+            Some(name) => name,
+            None => self.default_family(),
+        };
         let Some(family) = Family::from_name(name) else {
             // The unknown name's error, as every front end words it.
             return HeightDistribution::from_arguments(Some(name), None, None, None);
@@ -137,6 +162,44 @@ impl Surface {
             None => first,
             Some((second, other_sd)) => first.sum(sd, &second, other_sd)?,
         }))
+    }
+
+    /// The family a surface gets when none is named (docs/MODEL.md,
+    /// "The default height model"): [`DEFAULT_FAMILY`](Self::DEFAULT_FAMILY)
+    /// (Pearson) if the measured skewness and kurtosis make one, the
+    /// kurtosis is at most [`PEARSON_KURTOSIS_MAX`](Self::PEARSON_KURTOSIS_MAX)
+    /// and its upper tail the measured heights support, N·P(z > z_max + m) < 1 with
+    /// m = [`PEARSON_TAIL_MARGIN`](Self::PEARSON_TAIL_MARGIN)
+    /// ([`Surface::pearson_tail_excess`]);
+    /// else [`FALLBACK_FAMILY`](Self::FALLBACK_FAMILY) (the measured
+    /// heights' own density). A pair (no kept tail) is judged by its
+    /// kurtosis alone.
+    pub fn default_family(&self) -> &'static str {
+        if self.stats.kurtosis > Self::PEARSON_KURTOSIS_MAX {
+            return Self::FALLBACK_FAMILY;
+        }
+        match self.pearson_tail_excess() {
+            Some(Some(excess)) if excess >= 1.0 => Self::FALLBACK_FAMILY,
+            Some(None) => Self::FALLBACK_FAMILY,
+            _ => Self::DEFAULT_FAMILY,
+        }
+    }
+
+    /// N·P(z > z_max + m), m = [`PEARSON_TAIL_MARGIN`](Self::PEARSON_TAIL_MARGIN):
+    /// how many heights, of the N measured, the Pearson density of the
+    /// measured skewness and kurtosis expects more than m σ above the
+    /// highest measured height z_max. `None` for a pair (its tail is not kept);
+    /// `Some(None)` where the moments make no Pearson density.
+    pub fn pearson_tail_excess(&self) -> Option<Option<f64>> {
+        let tail = self.stats.tail.as_ref()?;
+        let Ok(density) =
+            HeightDistribution::pearson(self.stats.skewness, self.stats.kurtosis).and_then(|d| d.density())
+        else {
+            return Some(None);
+        };
+        let z_max = tail.max() + Self::PEARSON_TAIL_MARGIN;
+        let p = density.integrate(|x| if x > z_max { 1.0 } else { 0.0 });
+        Some(Some(p * self.stats.points as f64))
     }
 
     /// The physical inputs of `materials` on this surface: σ, R and η from

@@ -31,3 +31,4 @@ mod topography_instruments_b;
 mod topography_read;
 mod topography_scale;
 mod topography_stats;
+mod validity_warnings;

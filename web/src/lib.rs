@@ -372,6 +372,9 @@ impl Analysis {
             progress,
         )
         .map_err(|e| format!("scan: {e}"))?;
+        // Each row's warning kinds, and their summary once per kind (one
+        // result a row), as `kefric surface --scan` records them.
+        let mut all = Warnings::new();
         let rows: Vec<Value> = rows
             .iter()
             .map(|row| {
@@ -379,8 +382,11 @@ impl Analysis {
                 match &row.surface {
                     Ok(surface) => {
                         r["beta"] = surface.stats().beta.into();
+                        let mut warnings = Warnings::new();
+                        warnings.extend(surface.stats().warnings.iter().cloned());
                         match self.evaluate(surface, self.load) {
                             Ok(Some(e)) => {
+                                e.note_into(&mut warnings);
                                 r["psi"] = e.params.psi.into();
                                 if let Some(f) = e.frictions.first() {
                                     r["mu"] = f.mu.into();
@@ -389,13 +395,17 @@ impl Analysis {
                             Ok(None) => {}
                             Err(e) => r["error"] = e.into(),
                         }
+                        let kinds: Vec<&str> = warnings.summaries().map(|s| s.worst.kind().name()).collect();
+                        r["warnings"] = kinds.into();
+                        all.note(warnings.summaries().map(|s| s.worst.clone()));
                     }
                     Err(e) => r["error"] = e.to_string().into(),
                 }
                 r
             })
             .collect();
-        Ok(json!({ "cutoff": self.cutoff(), "rows": rows }))
+        let summaries: Vec<ke_friction::Summary<'_>> = all.summaries().collect();
+        Ok(json!({ "cutoff": self.cutoff(), "rows": rows, "warnings": summaries }))
     }
 
     /// The height histogram of the heights the statistics see (`bins`

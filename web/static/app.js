@@ -362,12 +362,24 @@ function drawScan(scan) {
         u.ctx.fillStyle = 'rgba(46,125,50,0.10)';
         u.ctx.fillRect(x0, u.bbox.top, u.bbox.left + u.bbox.width - x0, u.bbox.height);
       }],
+      // Rows with warnings: a red ring on the row's last curve (μ, else ψ, else β).
+      draw: [(u) => {
+        const k = data.length - 1, scale = series[k].scale;
+        u.ctx.strokeStyle = '#c62828'; u.ctx.lineWidth = 2 * devicePixelRatio;
+        rows.forEach((r, i) => {
+          if (!r.warnings?.length || data[k][i] === null) return;
+          const x = u.valToPos(lambda[i], 'x', true), y = u.valToPos(data[k][i], scale, true);
+          u.ctx.beginPath(); u.ctx.arc(x, y, 5 * devicePixelRatio, 0, 2 * Math.PI); u.ctx.stroke();
+        });
+      }],
     },
   }, data);
+  if (scan.warnings?.length) $('scan').append(Object.assign(document.createElement('p'), { className: 'note', textContent: `ringed: rows with warnings. ${scan.warnings.map((w) => w.summary).join(' · ')}` }));
   const names = series.slice(1).map((s) => ({ 'β': 'beta', 'ψ': 'psi', 'μ': 'mu' })[s.label]);
   link('download-scan', `${file.name}.scan.csv`,
-    csv(['lambda_s', 'reliable', ...names, 'error'],
-      [lambda, rows.map((r) => r.reliable), ...names.map(col), rows.map((r) => (r.error ? JSON.stringify(r.error) : ''))]), 'text/csv');
+    csv(['lambda_s', 'reliable', ...names, 'error', 'warnings'],
+      [lambda, rows.map((r) => r.reliable), ...names.map(col), rows.map((r) => (r.error ? JSON.stringify(r.error) : '')),
+        rows.map((r) => (r.warnings ?? []).join(';'))]), 'text/csv');
 }
 
 // Events.

@@ -309,3 +309,73 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
     let o = kefric(&["surface", &file, "--scale-dependent", "--scan"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// Each scan row carries its warning kinds, the single command's at that
+/// λs (JSON), as a text column and a CSV column; the summary comes once
+/// per kind (issue 48, item 4).
+#[test]
+fn scan_rows_carry_the_single_commands_warnings() {
+    let dir = TempDir::new("scale-scan-warnings");
+    let (file, _) = map(&dir);
+    // A light load on a small area: F* below the paper's range and few
+    // asperities in every row.
+    let load = ["--force", "1e-4", "--area", "1e-7"];
+    let base = with(&["surface", &file, "--json"], MATERIALS);
+    let mut scan_args = strs(&base);
+    scan_args.extend(load);
+    scan_args.extend(["--scan", "--per-decade", "3"]);
+    let scan = json(&scan_args);
+    let rows = scan["rows"].as_array().unwrap();
+    let mut flagged = 0;
+    for row in rows {
+        let lambda_s = format!("{:e}", row["lambda_s"].as_f64().unwrap());
+        let mut args = strs(&base);
+        args.extend(load);
+        args.extend(["--lambda-s", &lambda_s]);
+        let single = json(&args);
+        let want: Vec<&Value> = single["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| &w["kind"])
+            .collect();
+        let got: Vec<&Value> = row["warnings"].as_array().unwrap().iter().collect();
+        assert_eq!(got, want, "at {lambda_s}");
+        flagged += usize::from(!got.is_empty());
+    }
+    assert_eq!(flagged, rows.len(), "every row warns f_star_below_range");
+    let summary = scan["warnings"].as_array().unwrap();
+    let below: Vec<&Value> = summary.iter().filter(|w| w["kind"] == "f_star_below_range").collect();
+    assert_eq!(below.len(), 1, "once per kind: {summary:?}");
+    assert_eq!(
+        (below[0]["count"].as_u64(), below[0]["of"].as_u64()),
+        (Some(rows.len() as u64), Some(rows.len() as u64))
+    );
+    // Text: a last column of kinds; stderr: the summary once per kind.
+    let text_base = with(&["surface", &file], MATERIALS);
+    let mut args = strs(&text_base);
+    args.extend(load);
+    args.extend(["--scan", "--per-decade", "3"]);
+    let o = kefric(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout.clone()).unwrap();
+    let header = text.lines().nth(1).unwrap();
+    assert!(header.trim_end().ends_with("warnings"), "{header}");
+    for line in text.lines().skip(2).filter(|l| !l.starts_with('#')) {
+        assert!(line.contains("f_star_below_range"), "{line}");
+    }
+    let err = stderr(&o);
+    assert_eq!(err.matches("is below the range the paper covers").count(), 1, "{err}");
+    // CSV: the kinds in a last column, joined by ';'.
+    args.push("--csv");
+    let o = kefric(&args);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(text.lines().next().unwrap().ends_with(",error,warnings"));
+    for line in text.lines().skip(1) {
+        assert!(
+            line.rsplit(',').next().unwrap().contains("f_star_below_range"),
+            "{line}"
+        );
+    }
+}

@@ -395,7 +395,15 @@ fn bad_input_names_the_flag() {
         })
         .collect();
     let spiky = write_npy(&dir, "spiky.npy", &spiky, n);
+    // The default falls back to the empirical density (Pearson refuses the
+    // skewness; MODEL.md, "The default height model") and warns the spikes.
     let o = kefric(&as_strs(&run(&["surface", &spiky, "--dx", "2e-6"], MATERIAL_FLAGS)));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(stderr(&o).contains("the heights have spikes"), "{}", stderr(&o));
+    let o = kefric(&as_strs(&run(
+        &["surface", &spiky, "--dx", "2e-6", "--distribution", "pearson"],
+        MATERIAL_FLAGS,
+    )));
     assert_bad_input(&o, "--distribution");
     assert!(
         stderr(&o).contains("skewness") && stderr(&o).contains("empirical"),

@@ -284,3 +284,92 @@ fn text_has_six_significant_digits_and_json_every_digit() {
         .unwrap();
     assert_eq!(mu, exact);
 }
+
+/// The instruments' files (`$KEF_TOPOGRAPHIES`, else `../shared/topographies`
+/// beside the repository), if present.
+fn instrument(name: &str) -> Option<String> {
+    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
+    let path = dir.join(name);
+    if path.exists() {
+        Some(path.display().to_string())
+    } else {
+        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
+        None
+    }
+}
+
+const STEEL: &[&str] = &[
+    "--e1",
+    "200e9",
+    "--nu1",
+    "0.3",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.3",
+    "--hardness",
+    "2e9",
+    "--delta-gamma",
+    "0.3",
+    "--epsilon",
+    "0.4e-9",
+    "--area",
+    "1e-5",
+];
+
+/// Issue 48: the validity domain on di-1, spikes on sur-2 (whose default
+/// is the empirical density: Pearson refuses its skewness), the tail of
+/// plu-1's Pearson density at 0.01 N; on stderr and in --json.
+#[test]
+fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
+    let run = |file: &str, extra: &[&str]| {
+        let mut args = vec!["surface", file];
+        args.extend(STEEL);
+        args.extend(extra);
+        let o = crate::support::kefric(&args);
+        assert!(o.status.success(), "{args:?}: {}", crate::support::stderr(&o));
+        crate::support::stderr(&o)
+    };
+    if let Some(f) = instrument("di-1.di") {
+        let err = run(&f, &["--force", "1"]);
+        assert!(err.contains("warning: psi = 209."), "{err}");
+        assert!(err.contains("warning: beta = 0.548"), "{err}");
+    }
+    if let Some(f) = instrument("sur-2.sur") {
+        let err = run(&f, &["--force", "1"]);
+        assert!(err.contains("warning: the heights have spikes: kurtosis 811"), "{err}");
+    }
+    if let Some(f) = instrument("plu-1.plu") {
+        let err = run(&f, &["--force", "0.01", "--distribution", "pearson"]);
+        assert!(
+            err.contains("the contact lies on an extrapolated tail: h* = 16.09"),
+            "{err}"
+        );
+        assert!(err.contains("0 measured points above the separation"), "{err}");
+        let mut args = vec![
+            "surface",
+            f.as_str(),
+            "--json",
+            "--force",
+            "0.01",
+            "--distribution",
+            "pearson",
+        ];
+        args.extend(STEEL);
+        let o = crate::support::kefric(&args);
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let tail = v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|w| w["kind"] == "tail")
+            .unwrap();
+        assert_eq!(tail["above"], 0);
+        assert!(tail["max_height"].as_f64().unwrap() < 4.0);
+        // The default (empirical here) has measured heights above its contact.
+        let err = run(&f, &["--force", "0.01"]);
+        assert!(!err.contains("extrapolated tail"), "{err}");
+    }
+}

@@ -26,6 +26,11 @@ fn the_c_bits_are_the_cores_kinds() {
         (KEF_WARN_ANISOTROPY, "anisotropy"),
         (KEF_WARN_INTERVAL_MISMATCH, "interval_mismatch"),
         (KEF_WARN_UNRELIABLE_SCALE, "unreliable_scale"),
+        (KEF_WARN_PSI_DOMAIN, "psi_domain"),
+        (KEF_WARN_THETA_DOMAIN, "theta_domain"),
+        (KEF_WARN_BETA_DOMAIN, "beta_domain"),
+        (KEF_WARN_SPIKES, "spikes"),
+        (KEF_WARN_TAIL, "tail"),
     ];
     assert_eq!(c.len(), WarningKind::ALL.len(), "a C constant for every kind");
     for (bit, name) in c {
@@ -81,6 +86,49 @@ fn direct_integration_sets_the_warnings_of_its_result() {
             "{}",
             last_error()
         );
+    })
+    .join()
+    .unwrap();
+}
+
+/// kef_params_from_physical sets the validity domain's bits for inputs it
+/// returns outside the paper's ranges, with their messages; inside them
+/// none (issue 48).
+#[test]
+fn params_from_physical_sets_the_validity_domain_bits() {
+    std::thread::spawn(|| {
+        let (mut psi, mut theta, mut beta, mut nu, mut eps) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        let mut call = |sigma: f64, radius: f64, density: f64| {
+            // SAFETY: the five outputs are distinct and writable.
+            unsafe {
+                kef_params_from_physical(
+                    200e9, 0.3, 200e9, 0.3, 2e9, sigma, radius, density, 0.3, 0.4e-9, &mut psi, &mut theta, &mut beta,
+                    &mut nu, &mut eps,
+                )
+            }
+        };
+        // sigma = 1 µm, R = 100 µm, eta = 4e8 /m²: beta = 0.04, theta = 1.5e-4, psi ~ 1.
+        assert_eq!(call(1e-6, 100e-6, 4e8), KEF_OK);
+        assert_eq!(
+            kef_warnings(),
+            0,
+            "inside the domain: psi = {psi}, theta = {theta}, beta = {beta}"
+        );
+        // sigma = 10 nm: theta = 0.015 (> 0.01), beta = 4e-4 ... below the model's floor: refused.
+        // sigma = 20 nm, R = 10 µm, eta = 1e12: beta = 0.2 (> 0.16), theta = 0.0075.
+        assert_eq!(call(20e-9, 10e-6, 1e12), KEF_OK);
+        assert_eq!(
+            kef_warnings() & KEF_WARN_BETA_DOMAIN,
+            KEF_WARN_BETA_DOMAIN,
+            "beta = {beta}"
+        );
+        assert!(message(KEF_WARN_BETA_DOMAIN).starts_with("beta = 0.2 is outside in [0.02, 0.16]"));
+        kef_clear_warnings();
+        assert_eq!((kef_warnings(), message(KEF_WARN_BETA_DOMAIN)), (0, String::new()));
+        // sigma = 5 µm, R = 5 µm: psi = (2E/(pi K H))·(sigma_s/R)^½ far above 8.
+        assert_eq!(call(5e-6, 5e-6, 1.6e9), KEF_OK);
+        assert_ne!(kef_warnings() & KEF_WARN_PSI_DOMAIN, 0, "psi = {psi}");
+        assert!(message(KEF_WARN_PSI_DOMAIN).contains("unreasonably small"));
     })
     .join()
     .unwrap();

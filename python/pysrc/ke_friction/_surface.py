@@ -473,15 +473,20 @@ class Surface:
         """How the slope and curvature moments were estimated: ``"fd"`` or ``"spectral"``."""
         return self._core.options()[1]
 
-    def height_distribution(self, distribution: str = "pearson") -> HeightDistribution:
+    def height_distribution(self, distribution: Optional[str] = None) -> HeightDistribution:
         """The surface's height distribution of a family: ``"pearson"`` (of
-        the measured skewness and kurtosis, the default), ``"gaussian"``
+        the measured skewness and kurtosis), ``"gaussian"``
         (the paper's), ``"weibull"`` (of the measured skewness) or
         ``"empirical"`` (the kernel density of the detrended heights; a
         pair's is the convolution of the two, and it pickles with them).
         A measured skewness or kurtosis outside the family's range raises
-        ValueError naming it."""
-        family = _choice("distribution", distribution, _FAMILIES)
+        ValueError naming it. ``None`` (the default) is the library's rule
+        (docs/MODEL.md, "The default height model"): Pearson where its upper
+        tail is supported by the measured heights, else empirical."""
+        if distribution is None:
+            family = self._core.default_family()
+        else:
+            family = _choice("distribution", distribution, _FAMILIES)
         try:
             core = self._core.distribution(family)
         except ValueError as e:
@@ -496,7 +501,7 @@ class Surface:
         return HeightDistribution(core, None, (_heights_array(a), sa, _heights_array(b), sb))
 
     def model(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
-              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke") -> Model:
+              epsilon: float, distribution: Optional[str] = None, fit: str = "consistent", model: str = "ke") -> Model:
         """The :class:`Model` of this surface and the materials (as ``kefric
         surface`` with the material flags; its ``"model"`` record is the
         result's :attr:`Model.params`): psi, theta, beta, nu and eps_star
@@ -528,7 +533,7 @@ class Surface:
             raise ValueError(f"the surface with these materials: {e}") from None
 
     def curve(self, *, e1: float, nu1: float, e2: float, nu2: float, hardness: float, delta_gamma: float,
-              epsilon: float, distribution: str = "pearson", fit: str = "consistent", model: str = "ke",
+              epsilon: float, distribution: Optional[str] = None, fit: str = "consistent", model: str = "ke",
               f_star_min: Optional[float] = None, f_star_max: Optional[float] = None) -> Curve:
         """The :class:`Curve` mu(F*) of :meth:`model` (the same keywords)
         for F* in [f_star_min, f_star_max], by default the library's
@@ -544,7 +549,7 @@ class Surface:
 
     def friction(self, *, force: Optional[ArrayLike] = None, area: Optional[ArrayLike] = None,
                  pressure: Optional[ArrayLike] = None, e1: float, nu1: float, e2: float, nu2: float,
-                 hardness: float, delta_gamma: float, epsilon: float, distribution: str = "pearson",
+                 hardness: float, delta_gamma: float, epsilon: float, distribution: Optional[str] = None,
                  fit: str = "consistent", model: str = "ke", sensitivity: bool = True) -> Dict[str, Any]:
         """The static friction of a load on :meth:`model` (the same
         keywords): a ``force`` (N) on a nominal ``area`` (m^2), or a
@@ -566,7 +571,10 @@ class Surface:
         a kind) are warned as :class:`ModelWarning` warnings, each with its record:
         the surface's, and the loads' (F* outside the paper's 1e-5..0.1,
         h* < 0, mu > 1 where adhesion dominates, fewer than 10 asperities
-        in contact on the area).
+        in contact on the area, ``tail``: fewer than 10 measured heights
+        above the separation), and the model's inputs outside its validity
+        domain (``psi_domain``, ``theta_domain``, ``beta_domain``;
+        docs/MODEL.md, "Validity domain").
 
         ValueError naming the keyword for a load out of range (or given
         otherwise than a force with an area, or a pressure alone), for
@@ -688,7 +696,7 @@ class Surface:
              force: Optional[float] = None, area: Optional[float] = None, pressure: Optional[float] = None,
              e1: Optional[float] = None, nu1: Optional[float] = None, e2: Optional[float] = None,
              nu2: Optional[float] = None, hardness: Optional[float] = None, delta_gamma: Optional[float] = None,
-             epsilon: Optional[float] = None, distribution: str = "pearson", fit: str = "consistent",
+             epsilon: Optional[float] = None, distribution: Optional[str] = None, fit: str = "consistent",
              model: str = "ke") -> Dict[str, Any]:
         """The surface against the scale it is looked at (``kefric surface
         --scan``): the statistics at S-filter nesting indices lambda_s
@@ -730,7 +738,8 @@ class Surface:
             for name, value in (("fit", fit), ("model", model)):
                 if not isinstance(value, str):
                     raise TypeError(f"{name} must be a str, not {type(value).__name__}")
-            _choice("distribution", distribution, _FAMILIES)
+            if distribution is not None:
+                _choice("distribution", distribution, _FAMILIES)
         if isinstance(per_decade, bool) or not isinstance(per_decade, numbers.Integral):
             raise TypeError(f"per_decade must be an int, not {type(per_decade).__name__}")
         if not 1 <= per_decade <= 100:

@@ -28,10 +28,12 @@ mod error;
 mod limits;
 mod spectral;
 mod sums;
+mod tail;
 
 pub use crate::warning::Warning;
 pub use composite::combine;
 pub use error::StatsError;
+pub use tail::{HeightTail, TAIL_SAMPLE};
 
 use super::Topography;
 use derived::Derived;
@@ -216,6 +218,11 @@ pub struct SurfaceStats {
     pub anisotropy_m4: Option<f64>,
     /// What to know about these values.
     pub warnings: Vec<Warning>,
+    /// The highest measured heights and the spikes ([`HeightTail`]);
+    /// `None` for the equivalent surface of two (its heights are not
+    /// summed point by point). Not part of the record.
+    #[serde(skip)]
+    pub tail: Option<HeightTail>,
 }
 
 impl Topography {
@@ -355,6 +362,11 @@ impl Topography {
             [m0, skewness, kurtosis],
             (m20, m02, m40, m04),
         )?;
+        let tail = HeightTail::of(self, z0, &plane, mean, sigma);
+        stats
+            .warnings
+            .extend(Warning::of_spikes(kurtosis, tail.beyond(), points));
+        stats.tail = Some(tail);
         if options.derivative == Derivative::Spectral {
             let mismatch = spectral::edge_mismatch(self, z0, &plane);
             if mismatch > sigma {
@@ -408,6 +420,7 @@ impl SurfaceStats {
             anisotropy_m2: m02.map(|m02| m20 / m02),
             anisotropy_m4: m04.map(|m04| m40 / m04),
             warnings: Vec::new(),
+            tail: None,
         };
         stats.warn();
         Ok(stats)

@@ -1,0 +1,117 @@
+//! The upper tail of the measured heights, kept small: the highest
+//! [`TAIL_SAMPLE`] detrended heights (over σ) and the count of points
+//! beyond [`SPIKE_SIGMA`]·σ either side, from one extra pass over the
+//! heights at [`Topography::stats`](crate::topography::Topography::stats)
+//! that allocates nothing of the map's size. What the `tail` and `spikes`
+//! warnings ([`crate::Warning::Tail`], [`crate::Warning::Spikes`]) need,
+//! without a copy of the heights.
+
+use super::sums::{centred, Plane};
+use crate::topography::Topography;
+use crate::warning::SPIKE_SIGMA;
+
+/// The highest heights kept: enough to count exactly the points above a
+/// separation up to this many (the `tail` warning asks for
+/// [`TAIL_MIN_POINTS`](crate::warning::TAIL_MIN_POINTS)).
+pub const TAIL_SAMPLE: usize = 64;
+
+/// The highest detrended heights of a surface over σ, and its spikes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HeightTail {
+    /// The highest heights over σ, descending, at most [`TAIL_SAMPLE`]
+    /// (heights measured from the mean plane of the heights).
+    top: Vec<f64>,
+    /// Points beyond ±[`SPIKE_SIGMA`]·σ.
+    beyond: usize,
+}
+
+impl HeightTail {
+    /// The tail of `t`'s heights detrended by `plane` about `z0`, their
+    /// mean `mean` and rms `sigma` (the statistics' own).
+    pub(super) fn of(t: &Topography, z0: f64, plane: &Plane, mean: f64, sigma: f64) -> HeightTail {
+        let (u_of, v_of) = (centred(t.nx), centred(t.ny));
+        let lin: Vec<f64> = (0..t.nx).map(|i| plane.b * u_of(i)).collect();
+        // The kept heights, unsorted, and the smallest of them once full
+        // (a new height enters only above it: one comparison a point).
+        let mut top: Vec<f64> = Vec::with_capacity(TAIL_SAMPLE);
+        let mut floor = f64::NEG_INFINITY;
+        let mut beyond = 0;
+        let limit = SPIKE_SIGMA * sigma;
+        for (j, row) in t.heights.chunks_exact(t.nx).enumerate() {
+            let p = plane.a + plane.c * v_of(j) + mean;
+            for (&z, &l) in row.iter().zip(&lin) {
+                let r = (z - z0) - (p + l);
+                // NaN (missing) compares false throughout.
+                if r.abs() > limit {
+                    beyond += 1;
+                }
+                if r > floor {
+                    if top.len() < TAIL_SAMPLE {
+                        top.push(r);
+                        if top.len() == TAIL_SAMPLE {
+                            floor = top.iter().copied().fold(f64::INFINITY, f64::min);
+                        }
+                    } else {
+                        let k = top.iter().position(|&x| x == floor).unwrap_or(0);
+                        top[k] = r;
+                        floor = top.iter().copied().fold(f64::INFINITY, f64::min);
+                    }
+                }
+            }
+        }
+        top.sort_by(|a, b| b.total_cmp(a));
+        top.iter_mut().for_each(|x| *x /= sigma);
+        HeightTail { top, beyond }
+    }
+
+    /// The highest measured height over σ.
+    pub fn max(&self) -> f64 {
+        self.top.first().copied().unwrap_or(f64::NAN)
+    }
+
+    /// How many measured heights lie above `level`·σ: exact below
+    /// [`TAIL_SAMPLE`], else at least that many (`TAIL_SAMPLE` is returned).
+    pub fn count_above(&self, level: f64) -> usize {
+        self.top.iter().take_while(|&&x| x > level).count()
+    }
+
+    /// Points beyond ±[`SPIKE_SIGMA`]·σ of the mean plane.
+    pub fn beyond(&self) -> usize {
+        self.beyond
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::topography::{StatsOptions, Topography};
+
+    /// The kept maximum and counts are those of the detrended heights,
+    /// computed plainly from a full copy.
+    #[test]
+    fn the_tail_matches_the_detrended_heights() {
+        let n = 80;
+        let mut heights: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (x, y) = ((k % n) as f64, (k / n) as f64);
+                1e-7 * ((x * 0.7).sin() + (y * 0.9).cos() + (x * 0.31 + y * 0.27).sin()) + 3e-9 * x - 2e-9 * y
+            })
+            .collect();
+        heights[1234] = 5e-6; // a spike
+        heights[77] = f64::NAN;
+        let t = Topography::map(heights, n, n, 1e-6, 1e-6).unwrap();
+        let stats = t.stats(&StatsOptions::default()).unwrap();
+        let tail = stats.tail.as_ref().unwrap();
+        let d: Vec<f64> = t.detrended(Default::default()).unwrap();
+        let valid: Vec<f64> = d.iter().copied().filter(|v| !v.is_nan()).collect();
+        let mean = valid.iter().sum::<f64>() / valid.len() as f64;
+        let z: Vec<f64> = valid.iter().map(|v| (v - mean) / stats.sigma).collect();
+        let max = z.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert!((tail.max() - max).abs() < 1e-9 * max, "{} {}", tail.max(), max);
+        for level in [0.5, 1.0, 1.2, 1.5, 3.0, 60.0] {
+            let exact = z.iter().filter(|&&x| x > level).count();
+            assert_eq!(tail.count_above(level), exact.min(super::TAIL_SAMPLE), "level {level}");
+        }
+        assert_eq!(tail.beyond(), z.iter().filter(|x| x.abs() > 6.0).count());
+        assert_eq!(tail.beyond(), 1);
+    }
+}
