@@ -719,16 +719,26 @@ fn text_column_matrix_and_pairs() {
     assert!(t.is_profile());
     assert!((t.dx() - 0.1e-6).abs() < 1e-18);
     assert_heights(t.heights(), &[1.0, 2.0, 3.0, f64::NAN], 0.0);
-    // A matrix needs both intervals.
-    match read_err(
-        &write_text(&dir, "need.txt", "1 2\n3 4\n5 6\n7 8\n"),
+    // A matrix with dx alone: dy = dx; with neither, dx is asked for.
+    let need = write_text(&dir, "need.txt", "1 2\n3 4\n5 6\n7 8\n");
+    let t = read_file(
+        &need,
         &ReadOptions {
             format: Some(Format::MATRIX),
             dx: Some(1.0),
             ..opts()
         },
+    )
+    .unwrap();
+    assert_eq!(t.dy(), Some(1.0));
+    match read_err(
+        &need,
+        &ReadOptions {
+            format: Some(Format::MATRIX),
+            ..opts()
+        },
     ) {
-        ReadError::NeedInterval { name: "dy", .. } => {}
+        ReadError::NeedInterval { name: "dx", .. } => {}
         e => panic!("{e}"),
     }
 }

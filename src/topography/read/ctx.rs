@@ -191,11 +191,11 @@ impl Ctx<'_> {
         if profile {
             Topography::profile(heights, dx)
         } else {
-            // dy defaults to dx where neither the file nor the options
-            // give one: a file's own dy is kept (only a dy given
-            // explicitly contradicts it).
+            // dy defaults to the dx of the options where neither the file
+            // nor the options give one: a file's own dy is kept (only a dy
+            // given explicitly contradicts it).
             let dy = match (dy, options.dy) {
-                (None, None) => self.interval("dy", None, Some(dx))?,
+                (None, None) => self.interval("dy", None, options.dx)?,
                 _ => self.interval("dy", dy, options.dy)?,
             };
             Topography::map(heights, nx, ny, dx, dy)

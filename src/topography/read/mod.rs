@@ -230,7 +230,7 @@ pub struct ReadOptions {
     /// Sampling interval along x (metres), for files that give none.
     pub dx: Option<f64>,
     /// Sampling interval along y (metres), for maps from files that give
-    /// none; `None`: `dx` where the file gives no dy either (a file's own
+    /// none; `None`: the `dx` given here where the file gives no dy either (a file's own
     /// dy is kept: only a dy given here contradicts it).
     pub dy: Option<f64>,
     /// Metres per unit of the heights in `.npy` and text files (1 = metres,
