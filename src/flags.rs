@@ -83,6 +83,26 @@ pub fn evaluate_failure(e: &EvaluateError, family: Option<Family>, load_flag: &s
 /// cut-off.
 pub const RELIABILITY_NEEDED: &str = "give --tip-radius or --resolution for the reliability cut-off";
 
+/// `--lambda-s auto` where `--tip-radius` (m) distorts no scale of
+/// `file`'s data, so the cut-off, and λs, is none: said as a warning, not
+/// refused (issue 49). The data need no S-filter for that tip, and the
+/// unfiltered result is the right one; an error would also fail a batch
+/// of files of which some have a cut-off. The front ends print it beside
+/// the result (the CLI on stderr, the page in its warnings, Python as a
+/// `UserWarning`).
+/// `names`: how the front end names λs and the tip radius (the CLI's
+/// `("--lambda-s", "--tip-radius")`).
+pub fn auto_without_cutoff(file: impl Display, names: (&str, &str), tip_radius: f64) -> String {
+    let (lambda_s, tip) = names;
+    format!(
+        "{file}: {lambda_s} auto: {tip} {} m distorts no scale of these data (reliability cut-off: none): no S-filter applied (lambda_s = none)",
+        crate::Shortest(tip_radius)
+    )
+}
+
+/// The CLI's names of λs and the tip radius, for [`auto_without_cutoff`].
+pub const LAMBDA_S_TIP_FLAGS: (&str, &str) = ("--lambda-s", "--tip-radius");
+
 /// A file (`file`, as the front end names it) that gives no sampling
 /// interval `name` (`dx` or `dy`).
 pub fn no_interval(file: impl Display, name: &str) -> String {

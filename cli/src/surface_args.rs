@@ -90,7 +90,12 @@ impl SurfaceArgs {
             Some(Lambda::Metres(m)) => Some(m),
             Some(Lambda::Auto) => match self.reliability(t) {
                 Ok(Some(cutoff)) => Some(cutoff),
-                Ok(None) => None,
+                Ok(None) => {
+                    // Only a tip radius gives none (a resolution is its own cut-off).
+                    let radius = self.tip_radius.unwrap_or(f64::NAN);
+                    errln!("warning: {}", flags::auto_without_cutoff(path.display(), flags::LAMBDA_S_TIP_FLAGS, radius));
+                    None
+                }
                 Err(e) => {
                     return Err(Failure::input(format!(
                         "{flag}: {}: --lambda-s auto: {e}",

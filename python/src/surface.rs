@@ -106,6 +106,17 @@ fn lambda_s_of(lambda_s: Option<f64>, auto: bool, cutoff: Cutoff) -> PyResult<Op
     }
 }
 
+/// `lambda_s="auto"` with a `tip_radius` that distorts no scale of `file`:
+/// a `UserWarning` (the core's `flags::auto_without_cutoff`).
+fn warn_auto_without_cutoff(py: Python<'_>, file: &str, auto: bool, cutoff: Cutoff, tip_radius: Option<f64>) -> PyResult<()> {
+    if let (true, Cutoff::Known(None), Some(radius)) = (auto, cutoff, tip_radius) {
+        let message = ke_friction::flags::auto_without_cutoff(file, ("lambda_s =", "tip_radius ="), radius);
+        let message = std::ffi::CString::new(message).unwrap_or_default();
+        PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 2)?;
+    }
+    Ok(())
+}
+
 /// The surface of `t` with `options`, its statistics checked against the
 /// reliability `cutoff` (an unreliable-scale warning if below).
 fn surface_of(t: Topography, options: StatsOptions, cutoff: Cutoff) -> Result<Surface, StatsError> {
@@ -271,6 +282,9 @@ impl SurfaceCore {
             } else {
                 py.detach(|| Cutoff::of(&t, tip_radius, resolution))?
             };
+            if !no_cutoff {
+                warn_auto_without_cutoff(py, "heights", auto, cutoff, tip_radius)?;
+            }
             lambda = Some(lambda_s_of(lambda_s, auto, cutoff)?);
             topographies.push((t, cutoff));
         }
@@ -330,6 +344,7 @@ impl SurfaceCore {
         let cutoff = py
             .detach(|| Cutoff::of(&topography, tip_radius, resolution))
             .map_err(|e| value_error(format!("{name}: {e}")))?;
+        warn_auto_without_cutoff(py, &name, auto, cutoff, tip_radius)?;
         let options = StatsOptions {
             lambda_s: lambda_s_of(lambda_s, auto, cutoff)?,
             lambda_c,
@@ -506,8 +521,8 @@ impl SurfaceCore {
     }
 
     /// The scale-dependent rms slope (`order` 1) or curvature (2) at each
-    /// distance (m) of the unfiltered heights: `(x, y)`, `y` None for a
-    /// profile.
+    /// distance (m) of the detrended (as the statistics), unfiltered
+    /// heights: `(x, y)`, `y` None for a profile.
     #[allow(clippy::type_complexity)]
     fn scale_dependent<'py>(
         &self,
@@ -516,14 +531,18 @@ impl SurfaceCore {
         order: u8,
     ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<Bound<'py, PyArray1<f64>>>)> {
         let t = self.single("scale_dependent")?;
+        let detrend = self.surface.options().detrend;
         let distances = slice("distances", &distances)?.into_owned();
         let rows = py
-            .detach(|| match order {
-                1 => Ok(scale_dependent_slope(t, &distances)),
-                2 => Ok(scale_dependent_curvature(t, &distances)),
-                _ => Err(value_error(format!(
-                    "order = {order}: must be 1 (slope) or 2 (curvature)"
-                ))),
+            .detach(|| -> PyResult<_> {
+                let detrended = t.detrended_topography(detrend).map_err(raise)?;
+                match order {
+                    1 => Ok(scale_dependent_slope(&detrended, &distances)),
+                    2 => Ok(scale_dependent_curvature(&detrended, &distances)),
+                    _ => Err(value_error(format!(
+                        "order = {order}: must be 1 (slope) or 2 (curvature)"
+                    ))),
+                }
             })?
             .map_err(raise)?;
         let x: Vec<f64> = rows.iter().map(|r| r.x).collect();

@@ -148,6 +148,8 @@ pub struct Analysis {
     friction: Option<Friction>,
     /// The statistics' and the load's warnings, as the CLI gives them.
     warnings: Warnings,
+    /// The CLI's other `warning:` lines (`flags::auto_without_cutoff`).
+    notes: Vec<String>,
     record: String,
 }
 
@@ -200,9 +202,16 @@ impl Analysis {
         // and `--lambda-s [auto]` give them.
         let (resolution, tip_radius) = (options.number("resolution")?, options.number("tip_radius")?);
         let reliability = || flags::reliability_cutoff(&topography, resolution, tip_radius);
+        let mut notes = Vec::new();
         let lambda_s = match options.get("lambda_s") {
             None => None,
-            Some("auto") => reliability().map_err(|e| format!("surface: {name}: --lambda-s auto: {e}"))?,
+            Some("auto") => {
+                let cutoff = reliability().map_err(|e| format!("surface: {name}: --lambda-s auto: {e}"))?;
+                if cutoff.is_none() {
+                    notes.push(flags::auto_without_cutoff(name, flags::LAMBDA_S_TIP_FLAGS, tip_radius.unwrap_or(f64::NAN)));
+                }
+                cutoff
+            }
             Some(_) => options.number("lambda_s")?,
         };
         let cutoff = match (resolution, tip_radius) {
@@ -278,6 +287,7 @@ impl Analysis {
             params: None,
             friction: None,
             warnings: Warnings::new(),
+            notes,
             record: String::new(),
         };
         let evaluation = analysis.evaluate(&analysis.surface, analysis.load)?;
@@ -455,7 +465,8 @@ impl Analysis {
     /// The warnings (the statistics' and the load's), once a kind, as
     /// the CLI prints them on stderr (JSON list).
     pub fn warnings(&self) -> String {
-        let w: Vec<String> = self.warnings.summaries().map(|s| format!("warning: {s}")).collect();
+        let notes = self.notes.iter().map(|s| format!("warning: {s}"));
+        let w: Vec<String> = notes.chain(self.warnings.summaries().map(|s| format!("warning: {s}"))).collect();
         json!(w).to_string()
     }
 
@@ -520,16 +531,20 @@ impl Analysis {
         self.topography().ny()
     }
 
-    /// The heights (m, row-major, NaN where missing), every `step`-th
-    /// point along x and y: a map of at most ⌈nx/step⌉ × ⌈ny/step⌉.
-    pub fn heights(&self, step: usize) -> Vec<f64> {
+    /// The heights detrended as the statistics are (`detrend`; m,
+    /// row-major, NaN where missing), every `step`-th point along x and y:
+    /// a map of at most ⌈nx/step⌉ × ⌈ny/step⌉.
+    pub fn heights(&self, step: usize) -> Result<Vec<f64>, JsError> {
         let step = step.max(1);
         let (nx, ny) = (self.topography().nx(), self.topography().ny());
-        let z = self.topography().heights();
-        (0..ny)
+        let z = self
+            .topography()
+            .detrended(self.stats_options.detrend)
+            .map_err(|e| JsError::new(&e.to_string()))?;
+        Ok((0..ny)
             .step_by(step)
-            .flat_map(|j| (0..nx).step_by(step).map(move |i| z[j * nx + i]))
-            .collect()
+            .flat_map(|j| (0..nx).step_by(step).map(|i| z[j * nx + i]))
+            .collect())
     }
 }
 

@@ -274,27 +274,43 @@ fn plot_surface_draws_the_psd_and_the_scan() {
 
 #[test]
 fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances() {
-    use ke_friction::topography::{default_distances, scale_dependent_curvature, scale_dependent_slope};
+    use ke_friction::topography::{default_distances, scale_dependent_curvature, scale_dependent_slope, Detrend};
     let dir = TempDir::new("scale-dependent");
-    let (file, t) = map(&dir);
+    let (_, flat) = map(&dir);
+    // Tilted: the rows are of the plane-detrended heights, as the
+    // statistics' (issue 49: they were of the heights as read).
+    let tilted: Vec<f64> = (0..flat.nx() * flat.ny())
+        .map(|k| flat.heights()[k] + 0.05 * (k % flat.nx()) as f64 * 1e-6 - 0.03 * (k / flat.nx()) as f64 * 1.5e-6)
+        .collect();
+    let t = Topography::map(tilted, flat.nx(), flat.ny(), 1e-6, 1.5e-6).unwrap();
+    write_x3p(&t, &dir.join("tilted.x3p"), 'D').unwrap();
+    let file = dir.arg("tilted.x3p");
     let doc = json(&["surface", &file, "--scale-dependent", "--json"]);
-    let d = default_distances(&t, 1);
+    let detrended = t.detrended_topography(Detrend::Plane).unwrap();
+    // From 2·max(dx, dy) as the help says: both orders have every row.
+    let d = default_distances(&t, 2);
+    assert_eq!(d[0], 2.0 * 1.5e-6);
     let got = |name: &str| -> Vec<Option<f64>> { doc[name].as_array().unwrap().iter().map(Value::as_f64).collect() };
     let distance: Vec<f64> = got("distance").into_iter().map(Option::unwrap).collect();
     assert_eq!(distance, d);
-    let slope = scale_dependent_slope(&t, &d).unwrap();
-    let curvature = scale_dependent_curvature(&t, &d).unwrap();
-    let shortest_curvature = default_distances(&t, 2)[0];
+    let slope = scale_dependent_slope(&detrended, &d).unwrap();
+    let curvature = scale_dependent_curvature(&detrended, &d).unwrap();
     for (k, (s, c)) in slope.iter().zip(&curvature).enumerate() {
         assert_eq!(got("slope_x")[k], Some(s.x));
         assert_eq!(got("slope_y")[k], s.y);
-        if d[k] < shortest_curvature * (1.0 - 1e-12) {
-            assert_eq!(got("curvature_x")[k], None, "no curvature below 2·max(dx, dy)");
-        } else {
-            assert_eq!(got("curvature_x")[k], Some(c.x));
-            assert_eq!(got("curvature_y")[k], c.y);
-        }
+        assert_eq!(got("curvature_x")[k], Some(c.x), "no empty curvature");
+        assert_eq!(got("curvature_y")[k], c.y);
     }
+    // At one interval the rms slope of these heights is √m20 of the
+    // statistics (`kefric surface --json`); of the tilted ones it is not.
+    let stats = json(&["surface", &file, "--json"]);
+    let m20 = stats["surface"]["m20"].as_f64().unwrap();
+    let one = scale_dependent_slope(&detrended, &[1e-6]).unwrap()[0].x;
+    let rel = (one - m20.sqrt()).abs() / m20.sqrt();
+    assert!(rel < 1e-2, "rms slope at dx {one} against sqrt(m20) {} ({rel:e})", m20.sqrt());
+    let raw = scale_dependent_slope(&t, &[1e-6]).unwrap()[0].x;
+    assert!((raw - m20.sqrt()).abs() / m20.sqrt() > 0.1, "the tilt shows: {raw} against {}", m20.sqrt());
+    let file = &file;
     // The slope falls with the scale on this self-affine map.
     assert!(slope.first().unwrap().x > 2.0 * slope.last().unwrap().x);
     // CSV: a header and one row a distance; the text adds the cut-off.
