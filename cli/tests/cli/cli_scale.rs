@@ -184,6 +184,19 @@ fn the_reliability_cut_off_marks_rows_and_warns() {
         let v: Value = serde_json::from_slice(&o.stdout).unwrap();
         assert_eq!(v["surface"]["lambda_s"], 6e-6);
     }
+    // A tip that distorts no scale: auto is no filter, and says so naming
+    // both flags (issue 49: it was silent).
+    let o = kefric(&["surface", &file, "--lambda-s", "auto", "--tip-radius", "10e-9", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["surface"]["lambda_s"], Value::Null);
+    assert!(
+        stderr(&o).contains(&format!(
+            "warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"
+        )),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -280,7 +293,7 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
     // Tilted: the rows are of the plane-detrended heights, as the
     // statistics' (issue 49: they were of the heights as read).
     let tilted: Vec<f64> = (0..flat.nx() * flat.ny())
-        .map(|k| flat.heights()[k] + 0.05 * (k % flat.nx()) as f64 * 1e-6 - 0.03 * (k / flat.nx()) as f64 * 1.5e-6)
+        .map(|k| flat.heights()[k] + 0.5 * (k % flat.nx()) as f64 * 1e-6 - 0.3 * (k / flat.nx()) as f64 * 1.5e-6)
         .collect();
     let t = Topography::map(tilted, flat.nx(), flat.ny(), 1e-6, 1.5e-6).unwrap();
     write_x3p(&t, &dir.join("tilted.x3p"), 'D').unwrap();
@@ -307,7 +320,8 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
     let m20 = stats["surface"]["m20"].as_f64().unwrap();
     let one = scale_dependent_slope(&detrended, &[1e-6]).unwrap()[0].x;
     let rel = (one - m20.sqrt()).abs() / m20.sqrt();
-    assert!(rel < 1e-2, "rms slope at dx {one} against sqrt(m20) {} ({rel:e})", m20.sqrt());
+    // Not exact on a map: the stencils drop the last row too (7e-4 here).
+    assert!(rel < 2e-3, "rms slope at dx {one} against sqrt(m20) {} ({rel:e})", m20.sqrt());
     let raw = scale_dependent_slope(&t, &[1e-6]).unwrap()[0].x;
     assert!((raw - m20.sqrt()).abs() / m20.sqrt() > 0.1, "the tilt shows: {raw} against {}", m20.sqrt());
     let file = &file;
