@@ -5,7 +5,7 @@ use crate::args::{check_writable, fields, flag_of, load_table, number, output_di
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
 use ke_friction::figures::{self, Figure, FigureError, Format};
-use ke_friction::topography::{psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
+use ke_friction::topography::{complete_part, psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
 use ke_friction::{Family, LookupError, Shortest};
 use std::path::{Path, PathBuf};
 
@@ -300,7 +300,12 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
     let t = a.read.read("surface", path)?;
     let options = a.read.options_for("surface", path, &t)?;
     let page = if a.psd {
-        let detrended = t
+        // Missing points: the largest complete rectangle, said so.
+        let (part, rectangle) = complete_part(&t).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
+        if let Some(r) = rectangle {
+            errln!("warning: --psd: {}: {r}", path.display());
+        }
+        let detrended = part
             .detrended_topography(options.detrend)
             .map_err(|e| Failure::of("surface", e))?;
         let spectra =

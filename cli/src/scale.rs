@@ -6,7 +6,7 @@ use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::{evaluate, Args};
 use ke_friction::topography::{
-    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
+    complete_part, default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
 };
 use ke_friction::Shortest;
 use std::path::Path;
@@ -206,6 +206,11 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
     let t = args.read.read("surface", path)?;
+    // Missing points: the largest complete rectangle, said so.
+    let (t, rectangle) = complete_part(&t).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
+    if let Some(r) = rectangle {
+        errln!("warning: --psd: {}: {r}", path.display());
+    }
     let detrended = t
         .detrended_topography(args.read.options().detrend)
         .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;

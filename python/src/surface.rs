@@ -7,7 +7,7 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
+    complete_part, default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
     tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError,
     StatsOptions, Surface, Topography, Window, MAX_POINTS,
 };
@@ -452,11 +452,17 @@ impl SurfaceCore {
         let window = window_of(window)?;
         let t = self.single("psd")?;
         let detrend = self.surface.options().detrend;
-        let spectra = py.detach(|| -> PyResult<Vec<(&'static str, Psd)>> {
-            let detrended = t.detrended_topography(detrend).map_err(raise)?;
+        let (spectra, rectangle) = py.detach(|| -> PyResult<(Vec<(&'static str, Psd)>, Option<Rectangle>)> {
+            // Missing points: the largest complete rectangle, as kefric --psd.
+            let (part, rectangle) = complete_part(t).map_err(raise)?;
+            let detrended = part.detrended_topography(detrend).map_err(raise)?;
             let spectra = psd_all(&detrended, window).map_err(raise)?;
-            Ok(spectra)
+            Ok((spectra, rectangle))
         })?;
+        if let Some(r) = rectangle {
+            let message = std::ffi::CString::new(format!("psd: {r}")).unwrap_or_default();
+            PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 2)?;
+        }
         Ok(spectra
             .into_iter()
             .map(|(name, p)| {

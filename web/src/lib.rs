@@ -11,7 +11,7 @@
 
 use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
-    psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation, Format, ReadError,
+    complete_part, psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation, Format, ReadError,
     ReadOptions, ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{
@@ -500,16 +500,22 @@ impl Analysis {
     }
 
     /// The power spectral densities of the detrended heights (JSON: one
-    /// `{q, c}` a direction, named as `kefric surface --psd` names them).
+    /// `{q, c}` a direction, named as `kefric surface --psd` names them;
+    /// with missing points, of the largest complete rectangle, which
+    /// `note` names, as kefric's warning does).
     pub fn psd(&self) -> Result<String, JsError> {
-        let detrended = self
-            .topography()
+        let (part, rectangle) =
+            complete_part(self.topography()).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
+        let detrended = part
             .detrended_topography(self.stats_options.detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;
         let spectra = psd_all(&detrended, Window::None).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
         let mut doc = serde_json::Map::new();
         for (name, p) in &spectra {
             doc.insert(name.to_string(), json!({ "q": p.q, "c": p.c }));
+        }
+        if let Some(r) = rectangle {
+            doc.insert("note".into(), json!(r.to_string()));
         }
         Ok(Value::Object(doc).to_string())
     }
@@ -537,13 +543,14 @@ impl Analysis {
     pub fn heights(&self, step: usize) -> Result<Vec<f64>, JsError> {
         let step = step.max(1);
         let (nx, ny) = (self.topography().nx(), self.topography().ny());
-        let z = self
+        let detrended = self
             .topography()
             .detrended(self.stats_options.detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;
+        let z = &detrended;
         Ok((0..ny)
             .step_by(step)
-            .flat_map(|j| (0..nx).step_by(step).map(|i| z[j * nx + i]))
+            .flat_map(|j| (0..nx).step_by(step).map(move |i| z[j * nx + i]))
             .collect())
     }
 }

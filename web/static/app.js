@@ -362,7 +362,7 @@ function drawHistogram(h) {
 
 function drawPsd(psd) {
   if (psd.error) { message('psd', psd.error); $('download-psd').removeAttribute('href'); return; }
-  const names = Object.keys(psd);
+  const names = Object.keys(psd).filter((n) => n !== 'note');
   // uPlot's log axes span ±16 decades: C (~1e-30 m³) is drawn in a unit
   // 10^e that puts its largest value between 1 and 10.
   const top = Math.max(...names.flatMap((n) => psd[n].c.filter((c) => c > 0)));
@@ -379,6 +379,7 @@ function drawPsd(psd) {
     axes: [{ label: 'q (rad/m)' }, { label: `C (10^${e} m³; m⁴ for the area)`, size: 60 }],
     series: [{ label: 'q' }, ...names.map((n, i) => ({ label: n, stroke: colours[i % 3], width: 2, spanGaps: true }))],
   }, data);
+  if (psd.note) $('psd').append(Object.assign(document.createElement('p'), { className: 'note', textContent: psd.note }));
   const rows = names.flatMap((n) => psd[n].q.map((q, i) => [n, q, psd[n].c[i]]));
   link('download-psd', `${file.name}.psd.csv`, csv(['direction', 'q', 'c'], [0, 1, 2].map((k) => rows.map((r) => r[k]))), 'text/csv');
 }
