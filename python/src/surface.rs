@@ -8,7 +8,7 @@ use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
     complete_part, default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
-    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, ScanRange, StatsError,
+    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, Rectangle, ScanRange, StatsError,
     StatsOptions, Surface, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};

@@ -339,3 +339,35 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
     let o = kefric(&["surface", &file, "--scale-dependent", "--scan"]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+/// Missing points: `--psd` gives the spectra of the largest complete
+/// rectangle and says so (issue 49: it refused; Python's psd() does the same).
+#[test]
+fn the_psd_of_a_map_with_missing_points_is_of_its_largest_complete_rectangle() {
+    use ke_friction::topography::{complete_part, psd_all, Detrend, Window};
+    let dir = TempDir::new("scale-psd-holes");
+    let (_, t) = map(&dir);
+    let mut z = t.heights().to_vec();
+    for v in &mut z[..5 * t.nx()] {
+        *v = f64::NAN; // rows 0-4
+    }
+    let holes = Topography::map(z, t.nx(), t.ny(), 1e-6, 1.5e-6).unwrap();
+    write_x3p(&holes, &dir.join("holes.x3p"), 'D').unwrap();
+    let file = dir.arg("holes.x3p");
+    let o = kefric(&["surface", &file, "--psd", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&format!(
+            "warning: --psd: {file}: 800 missing points: the power spectral density of the largest complete rectangle, 160 × 115 points from column 0, row 5 of 160 × 120"
+        )),
+        "{}",
+        stderr(&o)
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let (part, _) = complete_part(&holes).unwrap();
+    let want = psd_all(&part.detrended_topography(Detrend::Plane).unwrap(), Window::None).unwrap();
+    for (name, p) in &want {
+        let c: Vec<f64> = v[name]["c"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        assert_eq!(c, p.c, "{name}");
+    }
+}
