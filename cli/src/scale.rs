@@ -6,7 +6,8 @@ use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::{evaluate, Args};
 use ke_friction::topography::{
-    complete_part, default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanRange, Window,
+    complete_part, default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow,
+    ScanRange, Window,
 };
 use ke_friction::Shortest;
 use std::path::Path;

@@ -93,7 +93,10 @@ impl SurfaceArgs {
                 Ok(None) => {
                     // Only a tip radius gives none (a resolution is its own cut-off).
                     let radius = self.tip_radius.unwrap_or(f64::NAN);
-                    errln!("warning: {}", flags::auto_without_cutoff(path.display(), flags::LAMBDA_S_TIP_FLAGS, radius));
+                    errln!(
+                        "warning: {}",
+                        flags::auto_without_cutoff(path.display(), flags::LAMBDA_S_TIP_FLAGS, radius)
+                    );
                     None
                 }
                 Err(e) => {

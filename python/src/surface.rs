@@ -8,8 +8,8 @@ use crate::error::{exception, raise, read_error, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
     complete_part, default_distances, psd_all, read_file, scale_dependent_curvature, scale_dependent_slope, scan,
-    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, Rectangle, ScanRange, StatsError,
-    StatsOptions, Surface, Topography, Window, MAX_POINTS,
+    tip_reliability_cutoff, Channel, Derivative, Detrend, FilterError, Psd, ReadOptions, Rectangle, ScanRange,
+    StatsError, StatsOptions, Surface, Topography, Window, MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -108,7 +108,13 @@ fn lambda_s_of(lambda_s: Option<f64>, auto: bool, cutoff: Cutoff) -> PyResult<Op
 
 /// `lambda_s="auto"` with a `tip_radius` that distorts no scale of `file`:
 /// a `UserWarning` (the core's `flags::auto_without_cutoff`).
-fn warn_auto_without_cutoff(py: Python<'_>, file: &str, auto: bool, cutoff: Cutoff, tip_radius: Option<f64>) -> PyResult<()> {
+fn warn_auto_without_cutoff(
+    py: Python<'_>,
+    file: &str,
+    auto: bool,
+    cutoff: Cutoff,
+    tip_radius: Option<f64>,
+) -> PyResult<()> {
     if let (true, Cutoff::Known(None), Some(radius)) = (auto, cutoff, tip_radius) {
         let message = ke_friction::flags::auto_without_cutoff(file, ("lambda_s =", "tip_radius ="), radius);
         let message = std::ffi::CString::new(message).unwrap_or_default();

@@ -11,8 +11,9 @@
 
 use ke_friction::flags::{self, flag};
 use ke_friction::topography::{
-    complete_part, psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation, Format, ReadError,
-    ReadOptions, ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window, MAX_POINTS,
+    complete_part, psd_all, read_bytes, read_dy_defaulting_to_dx, scan, Channel, Derivative, Detrend, Evaluation,
+    Format, ReadError, ReadOptions, ScanRange, StatsOptions, Surface, SurfaceModel, SurfaceRecord, Topography, Window,
+    MAX_POINTS,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Shortest,
@@ -208,7 +209,11 @@ impl Analysis {
             Some("auto") => {
                 let cutoff = reliability().map_err(|e| format!("surface: {name}: --lambda-s auto: {e}"))?;
                 if cutoff.is_none() {
-                    notes.push(flags::auto_without_cutoff(name, flags::LAMBDA_S_TIP_FLAGS, tip_radius.unwrap_or(f64::NAN)));
+                    notes.push(flags::auto_without_cutoff(
+                        name,
+                        flags::LAMBDA_S_TIP_FLAGS,
+                        tip_radius.unwrap_or(f64::NAN),
+                    ));
                 }
                 cutoff
             }
@@ -466,7 +471,9 @@ impl Analysis {
     /// the CLI prints them on stderr (JSON list).
     pub fn warnings(&self) -> String {
         let notes = self.notes.iter().map(|s| format!("warning: {s}"));
-        let w: Vec<String> = notes.chain(self.warnings.summaries().map(|s| format!("warning: {s}"))).collect();
+        let w: Vec<String> = notes
+            .chain(self.warnings.summaries().map(|s| format!("warning: {s}")))
+            .collect();
         json!(w).to_string()
     }
 
@@ -504,8 +511,7 @@ impl Analysis {
     /// with missing points, of the largest complete rectangle, which
     /// `note` names, as kefric's warning does).
     pub fn psd(&self) -> Result<String, JsError> {
-        let (part, rectangle) =
-            complete_part(self.topography()).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
+        let (part, rectangle) = complete_part(self.topography()).map_err(|e| JsError::new(&format!("--psd: {e}")))?;
         let detrended = part
             .detrended_topography(self.stats_options.detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;

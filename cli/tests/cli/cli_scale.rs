@@ -186,7 +186,15 @@ fn the_reliability_cut_off_marks_rows_and_warns() {
     }
     // A tip that distorts no scale: auto is no filter, and says so naming
     // both flags (issue 49: it was silent).
-    let o = kefric(&["surface", &file, "--lambda-s", "auto", "--tip-radius", "10e-9", "--json"]);
+    let o = kefric(&[
+        "surface",
+        &file,
+        "--lambda-s",
+        "auto",
+        "--tip-radius",
+        "10e-9",
+        "--json",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["surface"]["lambda_s"], Value::Null);
@@ -321,9 +329,17 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
     let one = scale_dependent_slope(&detrended, &[1e-6]).unwrap()[0].x;
     let rel = (one - m20.sqrt()).abs() / m20.sqrt();
     // Not exact on a map: the stencils drop the last row too (7e-4 here).
-    assert!(rel < 2e-3, "rms slope at dx {one} against sqrt(m20) {} ({rel:e})", m20.sqrt());
+    assert!(
+        rel < 2e-3,
+        "rms slope at dx {one} against sqrt(m20) {} ({rel:e})",
+        m20.sqrt()
+    );
     let raw = scale_dependent_slope(&t, &[1e-6]).unwrap()[0].x;
-    assert!((raw - m20.sqrt()).abs() / m20.sqrt() > 0.1, "the tilt shows: {raw} against {}", m20.sqrt());
+    assert!(
+        (raw - m20.sqrt()).abs() / m20.sqrt() > 0.1,
+        "the tilt shows: {raw} against {}",
+        m20.sqrt()
+    );
     let file = &file;
     // The slope falls with the scale on this self-affine map.
     assert!(slope.first().unwrap().x > 2.0 * slope.last().unwrap().x);
@@ -367,7 +383,12 @@ fn the_psd_of_a_map_with_missing_points_is_of_its_largest_complete_rectangle() {
     let (part, _) = complete_part(&holes).unwrap();
     let want = psd_all(&part.detrended_topography(Detrend::Plane).unwrap(), Window::None).unwrap();
     for (name, p) in &want {
-        let c: Vec<f64> = v[name]["c"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+        let c: Vec<f64> = v[name]["c"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
         assert_eq!(c, p.c, "{name}");
     }
 }

@@ -271,7 +271,10 @@ fn force_and_pressure_ranges_give_one_row_a_load() {
     assert!(stderr(&o).contains("--force: the plot needs a range"), "{}", stderr(&o));
     // 10 N on 1e-5 m² is 1e6 Pa in the record, as --pressure 1e6 (not
     // 999999.9999999999), and gives the same μ.
-    let o = kefric(&args(&["surface", &file], &["--force", "10", "--area", "1e-5", "--json"]));
+    let o = kefric(&args(
+        &["surface", &file],
+        &["--force", "10", "--area", "1e-5", "--json"],
+    ));
     let text = String::from_utf8_lossy(&o.stdout).to_string();
     assert!(text.contains("\"pressure\":1000000.0"), "{text}");
     let by_force: Value = serde_json::from_str(&text).unwrap();
@@ -287,7 +290,10 @@ fn plot_warnings_count_the_loads_drawn() {
     let dir = TempDir::new("warn-plot-count");
     let file = write(&dir, "rough.x3p", rough(128), 128);
     let out = dir.arg("s.png");
-    let o = kefric(&args(&["plot", "surface", &file], &["--f-star", "1e-7:0.1", "--out", &out]));
+    let o = kefric(&args(
+        &["plot", "surface", &file],
+        &["--f-star", "1e-7:0.1", "--out", &out],
+    ));
     assert!(o.status.success(), "{}", stderr(&o));
     let err = stderr(&o);
     let fits = 3 - err.matches("note: no ").count();
