@@ -169,8 +169,8 @@ pub fn complete_part(t: &Topography) -> Result<(std::borrow::Cow<'_, Topography>
     let mut stack: Vec<usize> = Vec::with_capacity(nx + 1);
     let mut best = (0usize, 0usize, 0usize, 0usize, 0usize); // area, x0, y0, w, h
     for j in 0..ny {
-        for i in 0..nx {
-            run[i] = if t.heights[j * nx + i].is_nan() { 0 } else { run[i] + 1 };
+        for (r, z) in run.iter_mut().zip(&t.heights[j * nx..(j + 1) * nx]) {
+            *r = if z.is_nan() { 0 } else { *r + 1 };
         }
         stack.clear();
         for i in 0..=nx {
