@@ -340,7 +340,6 @@ fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances
         "the tilt shows: {raw} against {}",
         m20.sqrt()
     );
-    let file = &file;
     // The slope falls with the scale on this self-affine map.
     assert!(slope.first().unwrap().x > 2.0 * slope.last().unwrap().x);
     // CSV: a header and one row a distance; the text adds the cut-off.
