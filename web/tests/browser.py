@@ -7,7 +7,9 @@ screenshots go. The page is served from 127.0.0.1 and driven through
 `#file` with options in the URL; its `#record` must equal `kefric surface
 --json` on the same file and options (every number within 1e-12
 relative), its `#command` must be that command line, the browser's
-console must stay free of errors, a bad file must show the CLI's error
+console must stay free of errors (first: fields edited on an analysed page,
+Analyse and Enter pressed, give the new record within EDIT_SECONDS with one
+Web Worker running), a bad file must show the CLI's error
 text and leave the page usable. Every file of --topographies that kefric
 reads is compared too (the formats the reader registry gains come
 through). --big: a 1024 x 1024 X3P read, analysed and its mu(F) curve drawn
