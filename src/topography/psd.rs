@@ -155,8 +155,9 @@ impl std::fmt::Display for Rectangle {
 /// let t = Topography::map(z, 6, 4, 1e-6, 1e-6)?;
 /// let (part, rect) = complete_part(&t)?;
 /// let rect = rect.unwrap();
-/// assert_eq!((rect.x0, rect.y0, rect.nx, rect.ny), (0, 1, 6, 3));
-/// assert_eq!((part.nx(), part.ny()), (6, 3));
+/// // Columns 1-5 of all 4 rows (20 points) beat rows 1-3 (18).
+/// assert_eq!((rect.x0, rect.y0, rect.nx, rect.ny), (1, 0, 5, 4));
+/// assert_eq!((part.nx(), part.ny()), (5, 4));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn complete_part(t: &Topography) -> Result<(std::borrow::Cow<'_, Topography>, Option<Rectangle>), PsdError> {
