@@ -31,7 +31,7 @@ impl LoadAxis {
     }
 
     /// The loads the μ panel is drawn at, in the axis' unit:
-    /// [`DISTRIBUTIONS_LOADS`](super::DISTRIBUTIONS_LOADS) log-spaced over
+    /// [`DISTRIBUTIONS_LOADS`] log-spaced over
     /// the range, ends included (the warnings of a plot count these).
     pub fn loads(&self) -> impl Iterator<Item = f64> + '_ {
         let (lo, hi) = self.range;
