@@ -130,3 +130,17 @@ for built in contacts_pc contacts_cmake; do
     || { echo "ffi: $built's mu differs from the in-tree build's"; exit 1; }
 done
 echo "ffi: installed kefriction $version: pkg-config, CMake and Fortran builds run from $elsewhere"
+
+# The README's C and Fortran lines, as written (its first sh block under
+# "From C, C++ and Fortran"), with HOME a scratch directory (cargo and
+# rustup keep theirs).
+readme_home=$(mktemp -d)
+awk '/^## From C, C\+\+ and Fortran/ { on = 1 } on && /^```sh$/ { inside = 1; next }
+     inside && /^```$/ { exit } inside { print }' README.md > "$out/readme-ffi.sh"
+grep -q 'ffi/examples/contacts.c' "$out/readme-ffi.sh" || { cat "$out/readme-ffi.sh"; echo "ffi: no README block"; exit 1; }
+CARGO_HOME=${CARGO_HOME:-$HOME/.cargo} RUSTUP_HOME=${RUSTUP_HOME:-$HOME/.rustup} HOME=$readme_home \
+  bash -euo pipefail "$out/readme-ffi.sh" > "$out/readme-ffi.txt" 2>&1 \
+  || { cat "$out/readme-ffi.txt"; echo "ffi: the README's C/Fortran lines failed"; exit 1; }
+grep -q '^mu ' "$out/readme-ffi.txt" || { cat "$out/readme-ffi.txt"; echo "ffi: the README's C example printed no mu"; exit 1; }
+rm -rf "$readme_home"
+echo "ffi: the README's C and Fortran lines build and run ($(grep -c '^mu ' "$out/readme-ffi.txt") mu lines)"

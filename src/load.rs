@@ -34,14 +34,24 @@ impl Load {
     }
 
     /// The nominal pressure F/A_n (Pa), the load checked: a force and an
-    /// area (or a pressure) finite and > 0.
+    /// area (or a pressure) finite and > 0. F/A_n is rounded to 15
+    /// significant digits (what a decimal input such as `1e-5` holds), so
+    /// that 10 N on 1e-5 m² is 1e6 Pa, as `--pressure 1e6`, and not
+    /// 999999.9999999999 (1e-5 is not exact in binary); a change of at
+    /// most 5·10⁻¹⁵ relative.
+    ///
+    /// ```
+    /// use ke_friction::Load;
+    /// assert_eq!(Load::Force { force: 10.0, area: 1e-5 }.pressure()?, 1e6);
+    /// # Ok::<(), ke_friction::ParamError>(())
+    /// ```
     pub fn pressure(&self) -> Result<f64, ParamError> {
         let positive = |v: f64| v > 0.0;
         match *self {
             Load::Force { force, area } => {
                 check("force", force, "> 0 N", positive)?;
                 check("area", area, "> 0 m²", positive)?;
-                let p = force / area;
+                let p = decimal(force / area);
                 check("pressure (= force/area)", p, "> 0 Pa and finite", positive)?;
                 Ok(p)
             }
@@ -99,6 +109,15 @@ impl Load {
             contact,
         })
     }
+}
+
+/// `x` rounded to 15 significant digits. Kept here (not a crate): a
+/// formatting round trip, exact in Rust's float formatting and parsing.
+fn decimal(x: f64) -> f64 {
+    if !x.is_finite() {
+        return x;
+    }
+    format!("{x:.14e}").parse().unwrap_or(x)
 }
 
 /// F* = `pressure`/`hardness`, checked.

@@ -107,9 +107,10 @@ pub fn run(args: Args) -> Result<(), Failure> {
     if model.psi.is_some() || model.theta.is_some() {
         model.si.materials.hardness = None;
     }
-    let (params, source) = model.params_and_source()?;
-    // The model's inputs are checked (and named by their flags) first.
-    model.model()?;
+    // The model's inputs are checked (and named by their flags) first; the
+    // surface read once (its warnings printed once).
+    let (checked, source) = model.model_and_source()?;
+    let params = checked.params().clone();
     let law = FrictionLaw::new(params, hardness, Some((lo, hi)), OutOfRange::Error).map_err(law_failure)?;
     let tolerance = args.tolerance.unwrap_or(LAW_TABLE_TOLERANCE);
     let table = match rows {

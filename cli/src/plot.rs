@@ -5,7 +5,7 @@ use crate::args::{check_writable, fields, flag_of, load_table, number, output_di
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
 use ke_friction::figures::{self, Figure, FigureError, Format};
-use ke_friction::topography::{psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
+use ke_friction::topography::{complete_part, psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
 use ke_friction::{Family, LookupError, Shortest};
 use std::path::{Path, PathBuf};
 
@@ -143,9 +143,10 @@ struct AllArgs {
 
 /// `plot surface --f-star`'s help, quoting the library's default range.
 fn surface_f_star_help() -> String {
-    let (lo, hi) = ke_friction::SURFACE_F_STAR;
+    let (lo, hi) = figures::DISTRIBUTIONS_F_STAR;
     format!(
-        "Range of F*, LO:HI (0 < LO < HI), at 60 loads spaced logarithmically [default: {}:{}, the library's SURFACE_F_STAR]; or --force START:STOP:COUNT with --area (the axis in newtons) or --pressure START:STOP:COUNT (in pascals), drawn from START to STOP.",
+        "Range of F*, LO:HI (0 < LO < HI), at {} loads spaced logarithmically [default: {}:{}, the library's figures::DISTRIBUTIONS_F_STAR]; or --force START:STOP:COUNT with --area (the axis in newtons) or --pressure START:STOP:COUNT (in pascals), drawn from START to STOP; a single --force or --pressure: the default range in newtons or pascals, widened to hold it.",
+        figures::DISTRIBUTIONS_LOADS,
         ke_friction::Shortest(lo),
         ke_friction::Shortest(hi)
     )
@@ -236,14 +237,17 @@ pub fn run(args: Args) -> Result<(), Failure> {
                 })
                 .collect();
             let intervals = format!("at {}", crate::surface_args::intervals(surface.stats()));
-            // The warnings `kefric surface` gives: the surface's, and the
-            // loads' at the ends of the range (the first fit's).
+            // The warnings `kefric surface` gives: the surface's, and those
+            // of every load drawn of every fit ("N of M results": M = the
+            // loads × the fits).
             let mut warnings = ke_friction::Warnings::new();
             warnings.extend(surface.stats().warnings.iter().cloned());
             if let Some((_, model)) = fits.first() {
                 warnings.extend(ke_friction::Warning::of_params(model.params()));
-                for end in [axis.range.0, axis.range.1] {
-                    if let Ok(c) = model.at_f_star(end / axis.per_f_star) {
+            }
+            for (_, model) in &fits {
+                for f in axis.loads() {
+                    if let Ok(c) = model.at_f_star(f / axis.per_f_star) {
                         warnings.note_contact(&c);
                     }
                 }
@@ -299,7 +303,12 @@ fn scale_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
     let t = a.read.read("surface", path)?;
     let (options, cutoff) = a.read.options_for("surface", path, &t)?;
     let page = if a.psd {
-        let detrended = t
+        // Missing points: the largest complete rectangle, said so.
+        let (part, rectangle) = complete_part(&t).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
+        if let Some(r) = rectangle {
+            errln!("warning: --psd: {}: {r}", path.display());
+        }
+        let detrended = part
             .detrended_topography(options.detrend)
             .map_err(|e| Failure::of("surface", e))?;
         let spectra =
@@ -381,21 +390,26 @@ fn load_axis(
     }
     let loads = a.load.loads()?.unwrap_or_default();
     let value = |l: &ke_friction::Load| l.force().unwrap_or_else(|| l.pressure().unwrap_or(f64::NAN));
-    let (lo, hi) = match (loads.first(), loads.last()) {
+    let (mut lo, mut hi) = match (loads.first(), loads.last()) {
         (Some(first), Some(last)) => (value(first), value(last)),
         _ => (f64::NAN, f64::NAN),
     };
-    if lo.is_nan() || hi.is_nan() || lo >= hi {
-        return Err(Failure::input(format!(
-            "{flag}: the plot needs a range START:STOP:COUNT with START < STOP"
-        )));
-    }
     // The axis' value at F* = 1: A_n·H newtons, or H pascals.
     let hardness = surface.physical(materials).hardness;
     let (title, per_f_star) = match a.load.area {
         Some(area) if a.load.force.is_some() => ("F (N)", area * hardness),
         _ => ("p (Pa)", hardness),
     };
+    if loads.len() == 1 && lo > 0.0 && lo.is_finite() {
+        // One load: the default F* range in this unit, widened to hold it.
+        let (a, b) = figures::DISTRIBUTIONS_F_STAR;
+        (lo, hi) = ((a * per_f_star).min(lo / 2.0), (b * per_f_star).max(hi * 2.0));
+    }
+    if lo.is_nan() || hi.is_nan() || lo >= hi {
+        return Err(Failure::input(format!(
+            "{flag}: the plot needs a range START:STOP:COUNT with START < STOP, or a single load"
+        )));
+    }
     Ok(figures::LoadAxis {
         title: title.into(),
         per_f_star,

@@ -7,8 +7,8 @@ use crate::output::Failure;
 use crate::surface::{evaluate, Args};
 use crate::surface_args::request_failure;
 use ke_friction::topography::{
-    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow, ScanError, ScanRange,
-    Window,
+    complete_part, default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, ScaleRow,
+    ScanError, ScanRange, Window,
 };
 use ke_friction::{Shortest, WarningKind, Warnings};
 use std::path::Path;
@@ -225,13 +225,19 @@ pub fn run_psd(args: &Args) -> Result<(), Failure> {
     if crate::container::is_container(path) {
         return crate::container::run_psd(args, path);
     }
-    // The heights as read are dropped once detrended: one map held
-    // while the spectra are taken.
-    let detrended = args
-        .read
-        .read("surface", path)?
-        .detrended_topography(args.read.options().detrend)
-        .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?;
+    // Missing points: the largest complete rectangle, said so. The heights
+    // as read are dropped once cut and detrended: one map held while the
+    // spectra are taken.
+    let detrended = {
+        let read = args.read.read("surface", path)?;
+        let (t, rectangle) = complete_part(&read).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
+        if let Some(r) = rectangle {
+            errln!("warning: --psd: {}: {r}", path.display());
+        }
+        t.detrended_topography(args.read.options().detrend)
+            .map_err(|e| Failure::of(format!("surface {}", path.display()), e))?
+        // `read` and its cut part are dropped here.
+    };
     let window = if args.hann { Window::Hann } else { Window::None };
     let spectra = psd_all(&detrended, window).map_err(|e| Failure::of(format!("--psd: {}", path.display()), e))?;
     if args.json {
@@ -260,9 +266,9 @@ pub fn run_psd(args: &Args) -> Result<(), Failure> {
 }
 
 /// `surface --scale-dependent`: the rms slope and curvature of the heights
-/// as read against the stencil length, at the core's default distances
-/// (the slope's from 1·max(dx, dy), the curvature's from 2·max(dx, dy):
-/// one table on the union, NaN where an order has no value).
+/// detrended as the statistics are (`--detrend`; unfiltered) against the
+/// stencil length, at the core's default distances of the curvature (from
+/// 2·max(dx, dy), the shortest stencil both orders have: no empty cells).
 pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scale-dependent")?;
     let read = &args.read;
@@ -271,26 +277,15 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
         |e: ke_friction::topography::ScaleError| Failure::of(format!("--scale-dependent: {}", path.display()), e);
     let (_, cutoff) = read.options_for("surface", path, &t)?;
     let cutoff = cutoff.value();
-    let distances = default_distances(&t, 1);
+    // The statistics' detrending (m2 = the square of the slope at one
+    // interval of these heights).
+    let t = t
+        .detrended_topography(read.options().detrend)
+        .map_err(|e| Failure::of(format!("--scale-dependent: {}", path.display()), e))?;
+    let distances = default_distances(&t, 2);
     let slope = scale_dependent_slope(&t, &distances).map_err(failed)?;
     let curvature = scale_dependent_curvature(&t, &distances).map_err(failed)?;
     let map = t.dy().is_some();
-    // The curvature's stencil needs two intervals: NaN below 2·max(dx, dy).
-    let shortest_curvature = default_distances(&t, 2)[0] * (1.0 - 1e-12);
-    let curvature: Vec<ScaleRow> = curvature
-        .into_iter()
-        .map(|r| {
-            if r.distance < shortest_curvature {
-                ScaleRow {
-                    x: f64::NAN,
-                    y: r.y.map(|_| f64::NAN),
-                    ..r
-                }
-            } else {
-                r
-            }
-        })
-        .collect();
     let columns: &[&str] = if map {
         &["distance", "slope_x", "slope_y", "curvature_x", "curvature_y"]
     } else {
@@ -322,7 +317,7 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
     }
     if !args.csv {
         outln!(
-            "# {}: scale-dependent rms slope (1) and rms curvature (1/m) of the heights as read, against the stencil length (m)",
+            "# {}: scale-dependent rms slope (1) and rms curvature (1/m) of the detrended heights, against the stencil length (m)",
             path.display()
         )?;
         match cutoff {

@@ -73,7 +73,7 @@ pub struct Args {
     /// A Hann window for --psd.
     #[arg(long, requires = "psd")]
     pub hann: bool,
-    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights as read (unfiltered, undetrended) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
+    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights detrended as the statistics are (--detrend; unfiltered) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
     #[arg(long, conflicts_with_all = ["psd", "scan"])]
     pub scale_dependent: bool,
 }
@@ -140,6 +140,9 @@ pub fn run(args: Args) -> Result<(), Failure> {
     let request = args.request()?;
     let sources: Vec<Source> = args.files.iter().map(|p| Source::Path(p)).collect();
     let analysis = request.run(&sources).map_err(|e| request_failure("surface", e))?;
+    for note in &analysis.notes {
+        errln!("warning: {}", note.render(&crate::surface_args::spell("surface")));
+    }
     crate::output::warn(&analysis.warnings);
     let surface = &analysis.surface;
     let params = analysis.evaluation.as_ref().map(|e| &e.params);

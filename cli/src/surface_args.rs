@@ -110,7 +110,8 @@ impl SurfaceArgs {
     }
 
     /// The reliability cut-off of `t` (read from `path`) and the
-    /// statistics' options with it (`--lambda-s auto`).
+    /// statistics' options with it (`--lambda-s auto`; a tip radius that
+    /// distorts no scale: a warning, no S-filter).
     pub fn options_for(&self, flag: &str, path: &Path, t: &Topography) -> Result<(StatsOptions, Cutoff), Failure> {
         let request = self.request();
         let name = path.display().to_string();
@@ -118,6 +119,9 @@ impl SurfaceArgs {
         let options = request
             .stats_options(cutoff, &name)
             .map_err(|e| request_failure(flag, e))?;
+        if let Some(note) = request.auto_without_cutoff(cutoff, &name) {
+            errln!("warning: {}", note.render(&spell(flag)));
+        }
         Ok((options, cutoff))
     }
 
@@ -133,10 +137,13 @@ impl SurfaceArgs {
         let request = self.request();
         request.check().map_err(|e| request_failure(flag, e))?;
         let sources: Vec<Source> = files.iter().map(|p| Source::Path(p)).collect();
-        request
-            .surface(&sources)
-            .map(|(s, _)| s)
-            .map_err(|e| request_failure(flag, e))
+        let (surface, cutoff) = request.surface(&sources).map_err(|e| request_failure(flag, e))?;
+        for source in &sources {
+            if let Some(note) = request.auto_without_cutoff(cutoff, &source.name()) {
+                errln!("warning: {}", note.render(&spell(flag)));
+            }
+        }
+        Ok(surface)
     }
 }
 

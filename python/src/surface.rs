@@ -7,9 +7,10 @@ use crate::distribution::DistributionCore;
 use crate::error::{exception, raise, value_error};
 use crate::model::ModelCore;
 use ke_friction::topography::{
-    default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan, tip_reliability_cutoff,
-    Channel, Cutoff, Derivative, Detrend, Field, FilterError, LambdaS, LoadInputs, Psd, RequestError, ScanRange,
-    Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window, MAX_POINTS,
+    complete_part, default_distances, psd_all, scale_dependent_curvature, scale_dependent_slope, scan,
+    tip_reliability_cutoff, Channel, Cutoff, Derivative, Detrend, Field, FilterError, LambdaS, LoadInputs, Psd,
+    Rectangle, RequestError, ScanRange, Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window,
+    MAX_POINTS,
 };
 use ke_friction::{Classify, Load, Materials, Named};
 use numpy::{PyArray1, PyReadonlyArray1};
@@ -88,6 +89,28 @@ pub fn request_error(e: RequestError) -> PyErr {
         e.to_string()
     };
     exception(e.kind, message)
+}
+
+/// `lambda_s="auto"` with a `tip_radius` that distorts no scale of `file`:
+/// a `UserWarning` (the core's `SurfaceRequest::auto_without_cutoff`, its
+/// inputs by their keywords).
+fn warn_auto_without_cutoff(
+    py: Python<'_>,
+    file: &str,
+    auto: bool,
+    cutoff: Cutoff,
+    tip_radius: Option<f64>,
+) -> PyResult<()> {
+    let request = SurfaceRequest {
+        lambda_s: auto.then_some(LambdaS::Auto),
+        tip_radius,
+        ..SurfaceRequest::default()
+    };
+    if let Some(note) = request.auto_without_cutoff(cutoff, file) {
+        let message = std::ffi::CString::new(note.to_string()).unwrap_or_default();
+        PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 2)?;
+    }
+    Ok(())
 }
 
 /// The surface of `t` with `options`, its statistics checked against the
@@ -251,6 +274,9 @@ impl SurfaceCore {
             } else {
                 py.detach(|| cutoff_of(&t, tip_radius, resolution))?
             };
+            if !no_cutoff {
+                warn_auto_without_cutoff(py, "heights", auto, cutoff, tip_radius)?;
+            }
             lambda = Some(lambda_s_of(lambda_s, auto, cutoff)?);
             topographies.push((t, cutoff));
         }
@@ -319,6 +345,7 @@ impl SurfaceCore {
         let cutoff = py
             .detach(|| request.cutoff(&topography, &name))
             .map_err(request_error)?;
+        warn_auto_without_cutoff(py, &name, auto, cutoff, tip_radius)?;
         let options = request.stats_options(cutoff, &name).map_err(request_error)?;
         SurfaceCore::build(py, vec![(topography, cutoff)], options, Some(&name))
     }
@@ -422,11 +449,17 @@ impl SurfaceCore {
         let window = window_of(window)?;
         let t = self.single("psd")?;
         let detrend = self.surface.options().detrend;
-        let spectra = py.detach(|| -> PyResult<Vec<(&'static str, Psd)>> {
-            let detrended = t.detrended_topography(detrend).map_err(raise)?;
+        let (spectra, rectangle) = py.detach(|| -> PyResult<(Vec<(&'static str, Psd)>, Option<Rectangle>)> {
+            // Missing points: the largest complete rectangle, as kefric --psd.
+            let (part, rectangle) = complete_part(t).map_err(raise)?;
+            let detrended = part.detrended_topography(detrend).map_err(raise)?;
             let spectra = psd_all(&detrended, window).map_err(raise)?;
-            Ok(spectra)
+            Ok((spectra, rectangle))
         })?;
+        if let Some(r) = rectangle {
+            let message = std::ffi::CString::new(format!("psd: {r}")).unwrap_or_default();
+            PyErr::warn(py, &py.get_type::<pyo3::exceptions::PyUserWarning>(), &message, 2)?;
+        }
         Ok(spectra
             .into_iter()
             .map(|(name, p)| {
@@ -491,8 +524,8 @@ impl SurfaceCore {
     }
 
     /// The scale-dependent rms slope (`order` 1) or curvature (2) at each
-    /// distance (m) of the unfiltered heights: `(x, y)`, `y` None for a
-    /// profile.
+    /// distance (m) of the detrended (as the statistics), unfiltered
+    /// heights: `(x, y)`, `y` None for a profile.
     #[allow(clippy::type_complexity)]
     fn scale_dependent<'py>(
         &self,
@@ -501,14 +534,18 @@ impl SurfaceCore {
         order: u8,
     ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<Bound<'py, PyArray1<f64>>>)> {
         let t = self.single("scale_dependent")?;
+        let detrend = self.surface.options().detrend;
         let distances = slice("distances", &distances)?.into_owned();
         let rows = py
-            .detach(|| match order {
-                1 => Ok(scale_dependent_slope(t, &distances)),
-                2 => Ok(scale_dependent_curvature(t, &distances)),
-                _ => Err(value_error(format!(
-                    "order = {order}: must be 1 (slope) or 2 (curvature)"
-                ))),
+            .detach(|| -> PyResult<_> {
+                let detrended = t.detrended_topography(detrend).map_err(raise)?;
+                match order {
+                    1 => Ok(scale_dependent_slope(&detrended, &distances)),
+                    2 => Ok(scale_dependent_curvature(&detrended, &distances)),
+                    _ => Err(value_error(format!(
+                        "order = {order}: must be 1 (slope) or 2 (curvature)"
+                    ))),
+                }
             })?
             .map_err(raise)?;
         let x: Vec<f64> = rows.iter().map(|r| r.x).collect();

@@ -261,6 +261,26 @@ def test_psd_against_surfacetopography(files, name, window):
         close_psd(got[k][1], c)
 
 
+def test_psd_of_missing_points_is_of_the_largest_complete_rectangle(tmp_path):
+    # Issue 49: psd() refused any file with missing points; now the largest
+    # complete rectangle, said so, as kefric --psd.
+    z = rough((96, 128), 13)
+    z[:10, :] = np.nan          # rows 0-9 missing
+    z[50, 100] = np.nan         # one point: the rectangle is rows 10-95, columns 0-99
+    path = tmp_path / "holes.npy"
+    np.save(path, z)
+    s = kf.Surface.read(str(path), dx=DX, dy=DY)
+    with pytest.warns(UserWarning, match=r"1281 missing points: .* largest complete rectangle, 100 × 86 points"):
+        got = s.psd()
+    want = kf.Surface.from_heights(z[10:, :100], DX, DY).psd()
+    for k in ("x", "y", "area"):
+        np.testing.assert_array_equal(got[k][0], want[k][0])
+        np.testing.assert_array_equal(got[k][1], want[k][1])
+    ref = cli(str(path), "--dx", repr(DX), "--dy", repr(DY), "--psd")
+    for k in ("x", "y", "area"):
+        np.testing.assert_allclose(got[k][1], ref[k]["c"], rtol=SAME_REL, atol=0)
+
+
 def test_psd_refuses_a_pair_and_a_bad_window(files):
     _, arrays = files
     s = kf.Surface.from_heights(arrays["map"], DX, DY)
@@ -350,7 +370,8 @@ def test_scan_without_materials_and_its_errors(files):
 def test_scale_dependent_of_a_line_and_a_parabola():
     x = np.arange(400) * 1e-6
     h = 0.1 * x + 1e-9 * np.sin(x * 1e6)
-    line = kf.Surface.from_heights(h, 1e-6)
+    # detrend="mean" keeps the slope 0.1 (the default, a line fit, removes it).
+    line = kf.Surface.from_heights(h, 1e-6, detrend="mean")
     got = line.scale_dependent([1e-6, 3e-6, 2.5e-6, 10e-6])
     assert set(got) == {"distance", "x"}
     want = [np.sqrt(np.mean(((h[k:] - h[:-k]) / (k * 1e-6)) ** 2)) for k in (1, 3)]
@@ -365,6 +386,29 @@ def test_scale_dependent_of_a_line_and_a_parabola():
         bowl.scale_dependent([-1e-6])
 
 
+def test_scale_dependent_is_of_the_detrended_heights():
+    # Issue 49: at one interval the rms slope is sqrt(m20) of the statistics
+    # (the heights detrended as they are), not of the tilted heights.
+    x = np.arange(500) * DX
+    h = 3.0 * x + rough((500,), 5)
+    s = kf.Surface.from_heights(h, DX)
+    one = s.scale_dependent([DX])["x"][0]
+    assert one == pytest.approx(math.sqrt(s.stats["m20"]), rel=1e-10)
+    assert kf.Surface.from_heights(h, DX, detrend="mean").scale_dependent([DX])["x"][0] > 1.2 * one
+    z = rough((96, 128), 9) + 0.2 * (np.arange(128) * DX)[None, :]
+    m = kf.Surface.from_heights(z, DX, DY)
+    got = m.scale_dependent([DX])["x"][0]
+    # A map's stencils also drop its last row.
+    assert got == pytest.approx(math.sqrt(m.stats["m20"]), rel=2e-2)
+
+
+def test_auto_without_a_cutoff_warns(files):
+    _, arrays = files
+    with pytest.warns(UserWarning, match="tip_radius = 1e-8 m distorts no scale"):
+        s = kf.Surface.from_heights(arrays["map"], DX, DY, lambda_s="auto", tip_radius=1e-8)
+    assert s.lambda_s is None
+
+
 @pytest.mark.parametrize("order", [1, 2])
 def test_scale_dependent_against_surfacetopography(files, order):
     st = pytest.importorskip("SurfaceTopography")
@@ -374,7 +418,7 @@ def test_scale_dependent_against_surfacetopography(files, order):
     distances = np.array([DX, 2 * DY, 2.5e-6, 7.3e-6, 20e-6]) * order
     _, want = t.scale_dependent_statistical_property(lambda x, y: np.array([np.mean(x * x), np.mean(y * y)]),
                                                      n=order, distance=distances, reliable=False)
-    got = kf.Surface.from_heights(z, DX, DY).scale_dependent(distances, order=order)
+    got = kf.Surface.from_heights(z, DX, DY, detrend="mean").scale_dependent(distances, order=order)
     np.testing.assert_allclose(got["x"], np.sqrt(np.asarray(want)[:, 0]), rtol=1e-10)
     np.testing.assert_allclose(got["y"], np.sqrt(np.asarray(want)[:, 1]), rtol=1e-10)
     cut = kf.Surface.from_heights(z, DX, DY).reliability_cutoff(1e-4)

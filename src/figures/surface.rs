@@ -29,13 +29,22 @@ impl LoadAxis {
             range,
         }
     }
+
+    /// The loads the μ panel is drawn at, in the axis' unit:
+    /// [`DISTRIBUTIONS_LOADS`] log-spaced over
+    /// the range, ends included (the warnings of a plot count these).
+    pub fn loads(&self) -> impl Iterator<Item = f64> + '_ {
+        let (lo, hi) = self.range;
+        let n = super::DISTRIBUTIONS_LOADS;
+        (0..n).map(move |k| lo * (hi / lo).powf(k as f64 / (n - 1) as f64))
+    }
 }
 
 /// Bins of the height histogram.
 pub const SURFACE_BINS: usize = 80;
 
 /// Two panels for one surface. Above, μ against F* (log F*, over
-/// `f_star`, default [`SURFACE_F_STAR`](crate::SURFACE_F_STAR)) for each model of `fits` (label, model:
+/// `loads`, default [`DISTRIBUTIONS_F_STAR`](super::DISTRIBUTIONS_F_STAR)) for each model of `fits` (label, model:
 /// the same surface and materials with different height distributions;
 /// loads where μ is undefined are left out). Below, on a log axis, the
 /// histogram of `standardised` heights (height/σ of the detrended
@@ -55,7 +64,7 @@ pub fn surface_page(
     fits: &[(String, Model)],
     loads: Option<&LoadAxis>,
 ) -> Result<Page, FigureError> {
-    let default = LoadAxis::f_star(crate::SURFACE_F_STAR);
+    let default = LoadAxis::f_star(super::DISTRIBUTIONS_F_STAR);
     let loads = loads.unwrap_or(&default);
     let (lo, hi) = loads.range;
     let mut mu_series = Vec::with_capacity(fits.len());
@@ -96,8 +105,7 @@ pub fn surface_page(
             phase: i as f64 / fits.len().max(1) as f64,
         });
         let mut points = Vec::with_capacity(DISTRIBUTIONS_LOADS);
-        for k in 0..DISTRIBUTIONS_LOADS {
-            let f = lo * (hi / lo).powf(k as f64 / (DISTRIBUTIONS_LOADS - 1) as f64);
+        for f in loads.loads() {
             if let Some(mu) = model.at_f_star(f / loads.per_f_star).ok().and_then(|c| c.mu) {
                 if mu.is_finite() && mu > 0.0 {
                     points.push((f, mu));

@@ -25,7 +25,7 @@ mod write;
 pub use evaluate::{EvaluateError, Evaluation, SurfaceModel};
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use metadata::Metadata;
-pub use psd::{psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Window};
+pub use psd::{complete_part, psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Rectangle, Window};
 pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use record::{FrictionRecord, Frictions, SurfaceRecord};
 pub use request::{

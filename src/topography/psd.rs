@@ -110,6 +110,112 @@ pub fn psd_all(t: &Topography, window: Window) -> Result<Vec<(&'static str, Psd)
     Ok(spectra)
 }
 
+/// The part of a topography with missing points that its spectra are
+/// taken of ([`complete_part`]): the largest rectangle of valid points.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Rectangle {
+    /// Its first column and row.
+    pub x0: usize,
+    /// Its first row.
+    pub y0: usize,
+    /// Its points along x.
+    pub nx: usize,
+    /// Its points along y (1 for a profile).
+    pub ny: usize,
+    /// The whole topography's points along x and y.
+    pub of: (usize, usize),
+    /// The whole topography's missing points.
+    pub missing: usize,
+}
+
+impl std::fmt::Display for Rectangle {
+    /// What the front ends say beside such spectra (the CLI's `--psd` on
+    /// stderr, Python's `psd()` as a warning, the page in its PSD panel).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} missing points: the power spectral density of the largest complete rectangle, {} × {} points from column {}, row {} of {} × {}",
+            self.missing, self.nx, self.ny, self.x0, self.y0, self.of.0, self.of.1
+        )
+    }
+}
+
+/// `t` itself if it has no missing point (`None`); else its largest
+/// rectangle (the most points; the first such, row by row) without a
+/// missing point, a topography of its own with the same intervals, and
+/// where it lies. The spectra need every point: this is what `kefric
+/// surface --psd`, Python's `Surface.psd()` and the page take them of
+/// (rather than interpolating the gaps, which would add power that was
+/// not measured). `None` as the rectangle and an error if no point is
+/// valid. O(nx·ny): the largest rectangle under each row's histogram of
+/// valid runs, by a stack.
+///
+/// ```
+/// use ke_friction::topography::{complete_part, Topography};
+/// let mut z = vec![1.0; 6 * 4];
+/// z[0] = f64::NAN; // row 0, column 0
+/// let t = Topography::map(z, 6, 4, 1e-6, 1e-6)?;
+/// let (part, rect) = complete_part(&t)?;
+/// let rect = rect.unwrap();
+/// // Columns 1-5 of all 4 rows (20 points) beat rows 1-3 (18).
+/// assert_eq!((rect.x0, rect.y0, rect.nx, rect.ny), (1, 0, 5, 4));
+/// assert_eq!((part.nx(), part.ny()), (5, 4));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn complete_part(t: &Topography) -> Result<(std::borrow::Cow<'_, Topography>, Option<Rectangle>), PsdError> {
+    let missing = t.heights.iter().filter(|z| z.is_nan()).count();
+    if missing == 0 {
+        return Ok((std::borrow::Cow::Borrowed(t), None));
+    }
+    let (nx, ny) = (t.nx, t.ny);
+    let mut run = vec![0usize; nx]; // valid points ending at this row, per column
+    let mut stack: Vec<usize> = Vec::with_capacity(nx + 1);
+    let mut best = (0usize, 0usize, 0usize, 0usize, 0usize); // area, x0, y0, w, h
+    for j in 0..ny {
+        for (r, z) in run.iter_mut().zip(&t.heights[j * nx..(j + 1) * nx]) {
+            *r = if z.is_nan() { 0 } else { *r + 1 };
+        }
+        stack.clear();
+        for i in 0..=nx {
+            let h = if i < nx { run[i] } else { 0 };
+            while let Some(&top) = stack.last() {
+                if run[top] < h {
+                    break;
+                }
+                stack.pop();
+                let height = run[top];
+                let left = stack.last().map_or(0, |&k| k + 1);
+                let width = i - left;
+                if height * width > best.0 {
+                    best = (height * width, left, j + 1 - height, width, height);
+                }
+            }
+            stack.push(i);
+        }
+    }
+    let (area, x0, y0, w, h) = best;
+    if area == 0 {
+        return Err(PsdError::MissingPoints { missing });
+    }
+    let heights: Vec<f64> = (y0..y0 + h)
+        .flat_map(|j| t.heights[j * nx + x0..j * nx + x0 + w].iter().copied())
+        .collect();
+    let part = match t.dy {
+        Some(dy) => Topography::map(heights, w, h, t.dx, dy),
+        None => Topography::profile(heights, t.dx),
+    }
+    .map_err(|_| PsdError::MissingPoints { missing })?;
+    let rect = Rectangle {
+        x0,
+        y0,
+        nx: w,
+        ny: h,
+        of: (nx, ny),
+        missing,
+    };
+    Ok((std::borrow::Cow::Owned(part), Some(rect)))
+}
+
 /// The 1-D PSD along x: of the profile, or the mean of the PSDs of the
 /// rows of a map (SurfaceTopography's `power_spectrum_from_profile` with
 /// `resampling_method=None`). q_k = 2πk/Lx for k = 0 … ⌊Nx/2⌋ − 1 (below

@@ -10,9 +10,9 @@
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
 use ke_friction::topography::{
-    psd_all, scan, Analysis as Answer, Channel, Cutoff, Derivative, Detrend, Evaluation, Field, Format, LambdaS,
-    LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest, Topography,
-    Window, SENSITIVITY_FAMILIES,
+    complete_part, psd_all, scan, Analysis as Answer, Channel, Cutoff, Derivative, Detrend, Evaluation, Field, Format,
+    LambdaS, LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest,
+    Topography, Window, SENSITIVITY_FAMILIES,
 };
 use ke_friction::{
     Family, Fit, Friction, HeightDistribution, LengthUnit, Load, Materials, Model, ModelKind, Named, Params, Warnings,
@@ -271,7 +271,8 @@ impl Analysis {
         let (surface, cutoff) = request
             .surface(&[Source::Bytes { bytes, name }])
             .map_err(|e| page_error(&e))?;
-        let answer = request.analyse(surface, cutoff, &checked).map_err(|e| page_error(&e))?;
+        let mut answer = request.analyse(surface, cutoff, &checked).map_err(|e| page_error(&e))?;
+        answer.notes = request.auto_without_cutoff(cutoff, name).into_iter().collect();
         let frictions: &[Friction] = answer.evaluation.as_ref().map_or(&[], |e| &e.frictions);
         let record = SurfaceRecord::new(
             vec![name.to_string()],
@@ -472,10 +473,13 @@ impl Analysis {
     /// The warnings (the statistics' and the load's), once a kind, as
     /// the CLI prints them on stderr (JSON list).
     pub fn warnings(&self) -> String {
-        let w: Vec<String> = self
-            .warning_list()
-            .summaries()
-            .map(|s| format!("warning: {s}"))
+        let notes = self
+            .answer
+            .notes
+            .iter()
+            .map(|n| format!("warning: {}", n.render(&spell)));
+        let w: Vec<String> = notes
+            .chain(self.warning_list().summaries().map(|s| format!("warning: {s}")))
             .collect();
         json!(w).to_string()
     }
@@ -526,10 +530,13 @@ impl Analysis {
     }
 
     /// The power spectral densities of the detrended heights (JSON: one
-    /// `{q, c}` a direction, named as `kefric surface --psd` names them).
+    /// `{q, c}` a direction, named as `kefric surface --psd` names them;
+    /// with missing points, of the largest complete rectangle, which
+    /// `note` names, as kefric's warning does).
     pub fn psd(&self) -> Result<String, JsError> {
-        let detrended = self
-            .topography()
+        let (part, rectangle) =
+            complete_part(self.topography()).map_err(|e| JsError::new(&format!("power spectral density: {e}")))?;
+        let detrended = part
             .detrended_topography(self.stats_options().detrend)
             .map_err(|e| JsError::new(&e.to_string()))?;
         let spectra =
@@ -537,6 +544,9 @@ impl Analysis {
         let mut doc = serde_json::Map::new();
         for (name, p) in &spectra {
             doc.insert(name.to_string(), json!({ "q": p.q, "c": p.c }));
+        }
+        if let Some(r) = rectangle {
+            doc.insert("note".into(), json!(r.to_string()));
         }
         Ok(Value::Object(doc).to_string())
     }
@@ -558,16 +568,21 @@ impl Analysis {
         self.topography().ny()
     }
 
-    /// The heights (m, row-major, NaN where missing), every `step`-th
-    /// point along x and y: a map of at most ⌈nx/step⌉ × ⌈ny/step⌉.
-    pub fn heights(&self, step: usize) -> Vec<f64> {
+    /// The heights detrended as the statistics are (`detrend`; m,
+    /// row-major, NaN where missing), every `step`-th point along x and y:
+    /// a map of at most ⌈nx/step⌉ × ⌈ny/step⌉.
+    pub fn heights(&self, step: usize) -> Result<Vec<f64>, JsError> {
         let step = step.max(1);
         let (nx, ny) = (self.topography().nx(), self.topography().ny());
-        let z = self.topography().heights();
-        (0..ny)
+        let detrended = self
+            .topography()
+            .detrended(self.stats_options().detrend)
+            .map_err(|e| JsError::new(&e.to_string()))?;
+        let z = &detrended;
+        Ok((0..ny)
             .step_by(step)
             .flat_map(|j| (0..nx).step_by(step).map(move |i| z[j * nx + i]))
-            .collect()
+            .collect())
     }
 }
 

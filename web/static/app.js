@@ -17,12 +17,18 @@ let names = null;
 let version = '';
 let file = null; // { name, bytes: ArrayBuffer }
 let run = 0; // the current analysis; older results are dropped
+let current = {}; // its file and options
 let started = 0;
 let result = null;
 let extra = {}; // URL keys the form has no field for: the library refuses them by name
 const plots = {};
 
+// One worker at a time. A restart (to drop a scan still running) posts its
+// request at once: the worker queues it until its WebAssembly is ready, and
+// its second 'ready' is not taken for the page's first (issue 49: taking it
+// for one re-ran analyse(), which restarted the worker again, forever).
 function startWorker() {
+  if (worker) worker.terminate();
   worker = new Worker('worker.js', { type: 'module' });
   worker.onmessage = ({ data }) => handle(data);
   worker.onerror = (e) => showError(`the page's worker failed: ${e.message}`);
@@ -78,20 +84,27 @@ function fillSelects() {
     el.replaceChildren(new Option('(default)', ''));
     for (const n of names[el.dataset.names]) el.add(new Option(n, n));
   }
-  const ext = names.formats.map((f) => `${f.description} (${f.extensions.map((e) => '.' + e).join(', ')})`);
+  const ext = names.formats.map((f) => (f.extensions.length
+    ? `${f.description} (${f.extensions.map((e) => '.' + e).join(', ')})` : f.description));
   $('formats').textContent = `Formats: ${ext.join('; ')}.`;
 }
 
 function analyse() {
   writeUrl();
   if (!file || !names) return;
-  if (busy) { worker.terminate(); startWorker(); } // drop a scan still running
+  const opts = options();
+  const key = JSON.stringify(opts);
+  // A field's 'change' then the form's submit (Analyse, Enter): one run.
+  if (busy && file === current.file && key === current.key) return;
+  if (busy) startWorker(); // drop a scan still running
+  current = { file, key };
   busy = true;
   run += 1;
   started = performance.now();
   showError('');
+  $('results').classList.add('stale'); // the last result, until the new one
   status(`analysing ${file.name}…`, null);
-  worker.postMessage({ id: run, bytes: file.bytes.slice(0), name: file.name, options: options() });
+  worker.postMessage({ id: run, bytes: file.bytes.slice(0), name: file.name, options: opts });
 }
 
 async function openFile(f) {
@@ -102,6 +115,7 @@ async function openFile(f) {
 
 function handle(m) {
   if (m.type === 'ready') {
+    if (names) return; // a restarted worker: its request is already posted
     names = m.names;
     // The fields' labels, as the page's messages name them (the browser test reads them).
     document.documentElement.dataset.labels = JSON.stringify(names.labels);
@@ -151,11 +165,22 @@ function handle(m) {
   }
 }
 
-const fmt = (v) => (v === null || v === undefined ? '–' : typeof v === 'number' ? Number(v.toPrecision(6)).toString() : String(v));
+// A number with `digits` significant digits: plain from 0.001 to 10⁵,
+// else scientific (6.45e17, not 645046000000000000; 1.66e-6, not
+// 0.00000166), trailing zeros dropped.
+function num(v, digits = 4) {
+  if (v === 0 || !Number.isFinite(v)) return String(v);
+  const a = Math.abs(v);
+  if (a >= 1e-3 && a < 1e5) return String(Number(v.toPrecision(digits)));
+  const [m, e] = v.toExponential(digits - 1).split('e');
+  return `${String(Number(m))}e${Number(e)}`;
+}
+const fmt = (v) => (v === null || v === undefined ? '–' : typeof v === 'number' ? num(v) : String(v));
 
 function showResult(m) {
   const r = JSON.parse(m.record);
   $('results').hidden = false;
+  $('results').classList.remove('stale');
   $('record').textContent = m.record;
   $('command').textContent = m.command;
   const w = $('warnings');
@@ -254,16 +279,35 @@ function drawMap(map, s) {
   const um = (v) => `${fmt(v * 1e6)} µm`;
   $('colorbar-labels').replaceChildren(...[hi, (hi + lo) / 2, lo].map((v) => Object.assign(document.createElement('span'), { textContent: um(v) })));
   $('map-size').textContent = `${map.nx} × ${map.ny} points, ${um(s.size_x)}${s.size_y ? ' × ' + um(s.size_y) : ''}` +
-    (map.step > 1 ? ` (every ${map.step}th point shown)` : '');
+    (map.step > 1 ? ` (one point in ${map.step} along x and y shown)` : '');
 }
 
-// Tick labels: plain for moderate numbers, 1e-6 style for the rest; on a
-// log axis only the decades (uPlot passes the minor ticks too).
-const tick = (v) => (v === 0 ? '0' : Math.abs(Math.log10(Math.abs(v))) >= 3
-  ? v.toExponential(0) : String(Number(v.toPrecision(3))));
+// Tick labels as num(): the fewest significant digits (1 to 6) that keep
+// the labels of an axis distinct (no "1e-4, 1e-4"); on a log axis only
+// the decades (uPlot passes the minor ticks too).
 const ticks = (u, vs, axis) => {
   const log = u.scales[u.axes[axis].scale].distr === 3;
-  return vs.map((v) => (v === null ? null : log && Math.abs(Math.log10(v) - Math.round(Math.log10(v))) > 1e-9 ? '' : tick(v)));
+  const shown = vs.map((v) => v !== null && !(log && Math.abs(Math.log10(v) - Math.round(Math.log10(v))) > 1e-9));
+  for (let digits = 1; ; digits++) {
+    const labels = vs.map((v, i) => (v === null ? null : shown[i] ? num(v, digits) : ''));
+    const set = labels.filter((l) => l);
+    if (digits >= 6 || new Set(set).size === set.length) return labels;
+  }
+};
+
+// uPlot turns a right axis' label to read downwards: this draws it
+// upwards, as the left one, beside the right edge.
+const rightLabel = (text) => (u) => {
+  const ctx = u.ctx;
+  ctx.save();
+  ctx.font = `bold ${12 * devicePixelRatio}px system-ui, sans-serif`;
+  ctx.fillStyle = '#000';
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'bottom';
+  ctx.translate(ctx.canvas.width - 4 * devicePixelRatio, u.bbox.top + u.bbox.height / 2);
+  ctx.rotate(-Math.PI / 2);
+  ctx.fillText(text, 0, 0);
+  ctx.restore();
 };
 
 function plot(id, opts, data) {
@@ -320,7 +364,7 @@ function drawHistogram(h) {
 
 function drawPsd(psd) {
   if (psd.error) { message('psd', psd.error); $('download-psd').removeAttribute('href'); return; }
-  const names = Object.keys(psd);
+  const names = Object.keys(psd).filter((n) => n !== 'note');
   // uPlot's log axes span ±16 decades: C (~1e-30 m³) is drawn in a unit
   // 10^e that puts its largest value between 1 and 10.
   const top = Math.max(...names.flatMap((n) => psd[n].c.filter((c) => c > 0)));
@@ -337,6 +381,7 @@ function drawPsd(psd) {
     axes: [{ label: 'q (rad/m)' }, { label: `C (10^${e} m³; m⁴ for the area)`, size: 60 }],
     series: [{ label: 'q' }, ...names.map((n, i) => ({ label: n, stroke: colours[i % 3], width: 2, spanGaps: true }))],
   }, data);
+  if (psd.note) $('psd').append(Object.assign(document.createElement('p'), { className: 'note', textContent: psd.note }));
   const rows = names.flatMap((n) => psd[n].q.map((q, i) => [n, q, psd[n].c[i]]));
   link('download-psd', `${file.name}.psd.csv`, csv(['direction', 'q', 'c'], [0, 1, 2].map((k) => rows.map((r) => r[k]))), 'text/csv');
 }
@@ -350,12 +395,14 @@ function drawScan(scan) {
   const series = [{ label: 'λs (m)' }, { label: 'β', stroke: '#2e7d32', width: 2, scale: 'r' }];
   const data = [lambda, col('beta')];
   if (rows.some((r) => typeof r.psi === 'number')) { series.push({ label: 'ψ', stroke: '#6a1b9a', width: 2, scale: 'r' }); data.push(col('psi')); }
-  if (rows.some((r) => typeof r.mu === 'number')) { series.push({ label: 'μ', stroke: '#1565c0', width: 2, scale: 'mu' }); data.push(col('mu')); }
+  if (rows.some((r) => typeof r.mu === 'number')) { series.push({ label: 'μ', stroke: '#1565c0', width: 2, scale: 'mu' }); data.push(col('mu').map((v) => (v > 0 ? v : null))); }
   plot('scan', {
-    scales: { x: { time: false, distr: 3 }, r: { distr: 3 }, mu: {} },
-    axes: [{ label: 'λs (m)' }, { scale: 'mu', label: 'μ' }, { scale: 'r', side: 1, label: 'β, ψ', grid: { show: false } }],
+    // μ on a log axis too: a large μ at the finest λs flattens the rest.
+    scales: { x: { time: false, distr: 3 }, r: { distr: 3 }, mu: { distr: 3 } },
+    axes: [{ label: 'λs (m)' }, { scale: 'mu', label: 'μ' }, { scale: 'r', side: 1, label: '', size: 70, grid: { show: false } }],
     series,
     hooks: {
+      draw: [rightLabel('β, ψ')],
       drawClear: [(u) => {
         if (cutoff === null || cutoff === undefined) return;
         const x0 = Math.max(u.valToPos(cutoff, 'x', true), u.bbox.left);

@@ -7,8 +7,10 @@ screenshots go. The page is served from 127.0.0.1 and driven through
 `#file` with options in the URL; its `#record` must equal `kefric surface
 --json` on the same file and options (every number within 1e-12
 relative), its `#command` must be that command line, the browser's
-console must stay free of errors, a bad file must show the CLI's error
-text in the page's words (its fields by their labels) and leave the page usable. Every file of --topographies that kefric
+console must stay free of errors (first: fields edited on an analysed page,
+Analyse and Enter pressed, give the new record within EDIT_SECONDS with one
+Web Worker running), a bad file must show the CLI's error text in the
+page's words (its fields by their labels) and leave the page usable. Every file of --topographies that kefric
 reads is compared too (the formats the reader registry gains come
 through). --big: a 1024 x 1024 X3P read, analysed and its mu(F) curve drawn
 within BIG_SECONDS, best of BIG_RUNS (the figure is printed for docs/PERFORMANCE.md).
@@ -32,6 +34,7 @@ from pathlib import Path
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
 # Every number of the record: relative agreement with the CLI's (the same
@@ -43,6 +46,19 @@ BIG_SECONDS = 1.5
 BIG_RUNS = 3
 # Waiting for a result at most (a slow CI machine).
 TIMEOUT = 120
+# A field edited on an analysed page: the new record within this (issue 49:
+# the page hung, creating workers in a loop).
+EDIT_SECONDS = 10
+# Counts the page's Web Workers (created, terminated): run before the
+# page's own scripts.
+COUNT_WORKERS = """(() => {
+  const W = window.Worker;
+  window.__workers = { created: 0, terminated: 0 };
+  window.Worker = class extends W {
+    constructor(...a) { super(...a); window.__workers.created += 1; }
+    terminate() { window.__workers.terminated += 1; super.terminate(); }
+  };
+})();"""
 
 # The README's aluminium pin on a nickel-coated disk, 10 N on 10 mm^2.
 MATERIALS = {
@@ -93,7 +109,9 @@ def browser():
             options.binary_location = binary
             break
     driver_path = next((p for p in ("/usr/bin/chromedriver", "/usr/lib/chromium/chromedriver") if os.path.exists(p)), None)
-    return webdriver.Chrome(options=options, service=Service(driver_path) if driver_path else None)
+    driver = webdriver.Chrome(options=options, service=Service(driver_path) if driver_path else None)
+    driver.execute_cdp_cmd("Page.addScriptToEvaluateOnNewDocument", {"source": COUNT_WORKERS})
+    return driver
 
 
 def flags(options):
@@ -226,6 +244,51 @@ def check_file(page, exe, path, options, shots, shot=None):
     print(f"web: {path.name} {json.dumps(options)}: #record = kefric surface --json (rtol {RTOL})")
 
 
+def check_edits(page, exe, example, shots):
+    """Edits a field of an analysed page and presses Analyse, then edits
+    another and presses Enter, the second time while the scan still runs:
+    each gives the new record (= kefric surface --json) within EDIT_SECONDS,
+    and one worker is left running (issue 49)."""
+    options = {**MATERIALS, "force": "10", "area": "1e-5"}
+    page.open(options)
+    page.load(example, done=False)  # the first edit drops its scan too
+    for field, value, press in (("force", "20", "button"), ("area", "2e-5", "enter"), ("force", "5", "enter")):
+        before = page.d.execute_script("return document.body.dataset.drawn")
+        el = page.d.find_element(By.NAME, field)
+        el.clear()
+        el.send_keys(value)
+        t0 = time.perf_counter()
+        if press == "button":
+            page.d.find_element(By.ID, "analyse").click()
+        else:
+            el.send_keys(Keys.ENTER)
+        options[field] = value
+        try:
+            WebDriverWait(page.d, EDIT_SECONDS, poll_frequency=0.01).until(lambda d: d.execute_script(
+                "return document.body.dataset.drawn !== arguments[0] || !document.getElementById('error').hidden",
+                before))
+        except Exception:
+            raise AssertionError(f"{field} = {value}, {press}: no new record within {EDIT_SECONDS} s; "
+                                 f"status {page.text('status')!r}, workers {page.d.execute_script('return window.__workers')}")
+        seconds = time.perf_counter() - t0
+        assert page.error() is None, page.error()
+        status, out, err = kefric(exe, example, options)
+        assert status == 0, err
+        compare(json.loads(page.text("record")), json.loads(out))
+        print(f"web: {field} = {value} ({press}): the new record (= kefric surface --json) in {seconds:.2f} s")
+    run = page.d.execute_script("return document.body.dataset.drawn")
+    page.wait(lambda d: d.execute_script("return document.body.dataset.done") == run, "the scan after the edits")
+    workers = page.d.execute_script("return window.__workers")
+    time.sleep(1.0)
+    later = page.d.execute_script("return window.__workers")
+    assert workers == later, f"workers still being created: {workers} then {later}"
+    live = workers["created"] - workers["terminated"]
+    # The first worker, and one for each edit at most (a scan dropped).
+    assert live == 1 and workers["created"] <= 4, f"workers: {workers}"
+    page.d.save_screenshot(str(shots / "edited.png"))
+    print(f"web: three edits, {workers['created']} workers created, {live} running")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("site", type=Path)
@@ -241,6 +304,7 @@ def main():
     try:
         page = Page(driver, url)
         example = args.site / "example.x3p"
+        check_edits(page, exe, example, args.out)
         for k, options in enumerate(CASES):
             check_file(page, exe, example, options, args.out, f"page-{k}.png")
 

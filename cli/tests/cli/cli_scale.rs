@@ -184,6 +184,27 @@ fn the_reliability_cut_off_marks_rows_and_warns() {
         let v: Value = serde_json::from_slice(&o.stdout).unwrap();
         assert_eq!(v["surface"]["lambda_s"], 6e-6);
     }
+    // A tip that distorts no scale: auto is no filter, and says so naming
+    // both flags (issue 49: it was silent).
+    let o = kefric(&[
+        "surface",
+        &file,
+        "--lambda-s",
+        "auto",
+        "--tip-radius",
+        "10e-9",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["surface"]["lambda_s"], Value::Null);
+    assert!(
+        stderr(&o).contains(&format!(
+            "warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"
+        )),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -274,27 +295,51 @@ fn plot_surface_draws_the_psd_and_the_scan() {
 
 #[test]
 fn scale_dependent_slope_and_curvature_are_the_librarys_at_its_default_distances() {
-    use ke_friction::topography::{default_distances, scale_dependent_curvature, scale_dependent_slope};
+    use ke_friction::topography::{default_distances, scale_dependent_curvature, scale_dependent_slope, Detrend};
     let dir = TempDir::new("scale-dependent");
-    let (file, t) = map(&dir);
+    let (_, flat) = map(&dir);
+    // Tilted: the rows are of the plane-detrended heights, as the
+    // statistics' (issue 49: they were of the heights as read).
+    let tilted: Vec<f64> = (0..flat.nx() * flat.ny())
+        .map(|k| flat.heights()[k] + 0.5 * (k % flat.nx()) as f64 * 1e-6 - 0.3 * (k / flat.nx()) as f64 * 1.5e-6)
+        .collect();
+    let t = Topography::map(tilted, flat.nx(), flat.ny(), 1e-6, 1.5e-6).unwrap();
+    write_x3p(&t, &dir.join("tilted.x3p"), 'D').unwrap();
+    let file = dir.arg("tilted.x3p");
     let doc = json(&["surface", &file, "--scale-dependent", "--json"]);
-    let d = default_distances(&t, 1);
+    let detrended = t.detrended_topography(Detrend::Plane).unwrap();
+    // From 2·max(dx, dy) as the help says: both orders have every row.
+    let d = default_distances(&t, 2);
+    assert_eq!(d[0], 2.0 * 1.5e-6);
     let got = |name: &str| -> Vec<Option<f64>> { doc[name].as_array().unwrap().iter().map(Value::as_f64).collect() };
     let distance: Vec<f64> = got("distance").into_iter().map(Option::unwrap).collect();
     assert_eq!(distance, d);
-    let slope = scale_dependent_slope(&t, &d).unwrap();
-    let curvature = scale_dependent_curvature(&t, &d).unwrap();
-    let shortest_curvature = default_distances(&t, 2)[0];
+    let slope = scale_dependent_slope(&detrended, &d).unwrap();
+    let curvature = scale_dependent_curvature(&detrended, &d).unwrap();
     for (k, (s, c)) in slope.iter().zip(&curvature).enumerate() {
         assert_eq!(got("slope_x")[k], Some(s.x));
         assert_eq!(got("slope_y")[k], s.y);
-        if d[k] < shortest_curvature * (1.0 - 1e-12) {
-            assert_eq!(got("curvature_x")[k], None, "no curvature below 2·max(dx, dy)");
-        } else {
-            assert_eq!(got("curvature_x")[k], Some(c.x));
-            assert_eq!(got("curvature_y")[k], c.y);
-        }
+        assert_eq!(got("curvature_x")[k], Some(c.x), "no empty curvature");
+        assert_eq!(got("curvature_y")[k], c.y);
     }
+    // At one interval the rms slope of these heights is √m20 of the
+    // statistics (`kefric surface --json`); of the tilted ones it is not.
+    let stats = json(&["surface", &file, "--json"]);
+    let m20 = stats["surface"]["m20"].as_f64().unwrap();
+    let one = scale_dependent_slope(&detrended, &[1e-6]).unwrap()[0].x;
+    let rel = (one - m20.sqrt()).abs() / m20.sqrt();
+    // Not exact on a map: the stencils drop the last row too (7e-4 here).
+    assert!(
+        rel < 2e-3,
+        "rms slope at dx {one} against sqrt(m20) {} ({rel:e})",
+        m20.sqrt()
+    );
+    let raw = scale_dependent_slope(&t, &[1e-6]).unwrap()[0].x;
+    assert!(
+        (raw - m20.sqrt()).abs() / m20.sqrt() > 0.1,
+        "the tilt shows: {raw} against {}",
+        m20.sqrt()
+    );
     // The slope falls with the scale on this self-affine map.
     assert!(slope.first().unwrap().x > 2.0 * slope.last().unwrap().x);
     // CSV: a header and one row a distance; the text adds the cut-off.
@@ -377,5 +422,40 @@ fn scan_rows_carry_the_single_commands_warnings() {
             line.rsplit(',').next().unwrap().contains("f_star_below_range"),
             "{line}"
         );
+
+/// Missing points: `--psd` gives the spectra of the largest complete
+/// rectangle and says so (issue 49: it refused; Python's psd() does the same).
+#[test]
+fn the_psd_of_a_map_with_missing_points_is_of_its_largest_complete_rectangle() {
+    use ke_friction::topography::{complete_part, psd_all, Detrend, Window};
+    let dir = TempDir::new("scale-psd-holes");
+    let (_, t) = map(&dir);
+    let mut z = t.heights().to_vec();
+    for v in &mut z[..5 * t.nx()] {
+        *v = f64::NAN; // rows 0-4
+    }
+    let holes = Topography::map(z, t.nx(), t.ny(), 1e-6, 1.5e-6).unwrap();
+    write_x3p(&holes, &dir.join("holes.x3p"), 'D').unwrap();
+    let file = dir.arg("holes.x3p");
+    let o = kefric(&["surface", &file, "--psd", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains(&format!(
+            "warning: --psd: {file}: 800 missing points: the power spectral density of the largest complete rectangle, 160 × 115 points from column 0, row 5 of 160 × 120"
+        )),
+        "{}",
+        stderr(&o)
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let (part, _) = complete_part(&holes).unwrap();
+    let want = psd_all(&part.detrended_topography(Detrend::Plane).unwrap(), Window::None).unwrap();
+    for (name, p) in &want {
+        let c: Vec<f64> = v[name]["c"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
+        assert_eq!(c, p.c, "{name}");
     }
 }

@@ -256,12 +256,53 @@ fn force_and_pressure_ranges_give_one_row_a_load() {
     ));
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(std::fs::metadata(dir.join("n.png")).unwrap().len() > 1000);
+    // One load: the default F* range in newtons, widened to hold it
+    // (issue 49: it was refused).
     let o = kefric(&args(
         &["plot", "surface", &file],
         &["--force", "10", "--area", "1e-5", "--out", &out],
     ));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = kefric(&args(
+        &["plot", "surface", &file],
+        &["--force", "10:1:3", "--area", "1e-5", "--out", &out],
+    ));
     assert_eq!(o.status.code(), Some(2));
     assert!(stderr(&o).contains("--force: the plot needs a range"), "{}", stderr(&o));
+    // 10 N on 1e-5 m² is 1e6 Pa in the record, as --pressure 1e6 (not
+    // 999999.9999999999), and gives the same μ.
+    let o = kefric(&args(
+        &["surface", &file],
+        &["--force", "10", "--area", "1e-5", "--json"],
+    ));
+    let text = String::from_utf8_lossy(&o.stdout).to_string();
+    assert!(text.contains("\"pressure\":1000000.0"), "{text}");
+    let by_force: Value = serde_json::from_str(&text).unwrap();
+    let o = kefric(&args(&["surface", &file], &["--pressure", "1e6", "--json"]));
+    let by_pressure: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(by_force["friction"]["mu"], by_pressure["friction"]["mu"]);
+}
+
+/// A plot's warnings count every load drawn of every fit (60 loads × the
+/// fits), not the range's two ends (issue 49: "2 of 2 results").
+#[test]
+fn plot_warnings_count_the_loads_drawn() {
+    let dir = TempDir::new("warn-plot-count");
+    let file = write(&dir, "rough.x3p", rough(128), 128);
+    let out = dir.arg("s.png");
+    let o = kefric(&args(
+        &["plot", "surface", &file],
+        &["--f-star", "1e-7:0.1", "--out", &out],
+    ));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    let fits = 3 - err.matches("note: no ").count();
+    let total = format!("of {} results", fits * ke_friction::figures::DISTRIBUTIONS_LOADS);
+    let counted: Vec<&str> = err.lines().filter(|l| l.contains(" results; the worst")).collect();
+    assert!(!counted.is_empty(), "{err}");
+    for line in counted {
+        assert!(line.contains(&total), "{line}: not {total}");
+    }
 }
 
 /// One number format: 6 significant digits in text (`eval`'s μ is
@@ -372,4 +413,23 @@ fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
         let err = run(&f, &["--force", "0.01"]);
         assert!(!err.contains("extrapolated tail"), "{err}");
     }
+
+/// `law --surface` reads the surface once: its anisotropy warning is
+/// printed once (issue 49: twice).
+#[test]
+fn law_of_a_surface_warns_once() {
+    let dir = TempDir::new("warn-law");
+    let n = 128;
+    // Rougher along x than along y: m20/m02 far outside the isotropy band.
+    let z: Vec<f64> = (0..n * n)
+        .map(|k| {
+            let (x, y) = ((k % n) as f64, (k / n) as f64);
+            0.2e-6 * ((x * 0.31).sin() + 0.7 * (x * 0.53).cos() + 0.2 * (y * 0.07).sin())
+        })
+        .collect();
+    let file = write(&dir, "aniso.x3p", z, n);
+    let o = kefric(&args(&["law", "--surface", &file], &["--pressure", "1e5:1e7"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let err = stderr(&o);
+    assert_eq!(err.matches("anisotrop").count(), 1, "{err}");
 }

@@ -658,11 +658,12 @@ class Surface:
 
     def scale_dependent(self, distances: Optional[ArrayLike] = None, order: int = 1) -> Dict[str, np.ndarray]:
         """The scale-dependent rms slope (``order=1``) or curvature
-        (``order=2``, 1/m) of the unfiltered heights at each stencil length
+        (``order=2``, 1/m) of the heights detrended as the statistics are
+        (``detrend``), unfiltered, at each stencil length
         in ``distances`` (metres; by default the library's
         ``default_distances``: log-spaced, 5 a decade, from ``order`` x
-        max(dx, dy) to half the scan size, as ``kefric surface
-        --scale-dependent``) (Sanner et al. 2022; the
+        max(dx, dy) to half the scan size; ``kefric surface
+        --scale-dependent`` prints both orders at ``order=2``'s) (Sanner et al. 2022; the
         library's ``scale_dependent_slope``, ``scale_dependent_curvature``):
         ``{"distance", "x"}``, and ``"y"`` for a map; NaN where fewer than 4
         points have their stencil in the data. Of a single surface without

@@ -234,6 +234,10 @@ pub struct Analysis {
     pub warnings: Warnings,
     /// Each load's sensitivity (with loads, unless switched off).
     pub sensitivity: Vec<super::Sensitivity>,
+    /// What the request did that the user did not ask for in so many
+    /// words ([`SurfaceRequest::auto_without_cutoff`]): warnings whose
+    /// inputs each front end spells its own way.
+    pub notes: Vec<Message>,
 }
 
 impl SurfaceRequest {
@@ -364,6 +368,29 @@ impl SurfaceRequest {
         })
     }
 
+    /// The note that `lambda_s` auto applied no S-filter: the tip radius
+    /// distorts no scale of `name`'s data (the cut-off is known to be
+    /// none). A warning, not a refusal: the unfiltered result is right for
+    /// that tip, and an error would fail a batch of files of which some
+    /// have a cut-off (issue 49).
+    pub fn auto_without_cutoff(&self, cutoff: Cutoff, name: &str) -> Option<Message> {
+        if self.lambda_s != Some(LambdaS::Auto) || cutoff != Cutoff::Known(None) {
+            return None;
+        }
+        let radius = self.tip_radius?;
+        Some(
+            Message::text(format!("{name}: "))
+                .field(Field::LambdaS)
+                .then(" auto: ")
+                .field(Field::TipRadius)
+                .then(format!(
+                    " {} m distorts no scale of these data (reliability cut-off: none): no S-filter applied \
+                     (lambda_s = none)",
+                    Shortest(radius)
+                )),
+        )
+    }
+
     /// The surface of one source, its statistics checked against the
     /// reliability cut-off.
     pub fn part(&self, source: Source<'_>) -> Result<(Surface, Cutoff), RequestError> {
@@ -431,7 +458,12 @@ impl SurfaceRequest {
     pub fn run(&self, sources: &[Source<'_>]) -> Result<Analysis, RequestError> {
         let checked = self.check()?;
         let (surface, cutoff) = self.surface(sources)?;
-        self.analyse(surface, cutoff, &checked)
+        let mut analysis = self.analyse(surface, cutoff, &checked)?;
+        analysis.notes = sources
+            .iter()
+            .filter_map(|s| self.auto_without_cutoff(cutoff, &s.name()))
+            .collect();
+        Ok(analysis)
     }
 
     /// [`run`](Self::run) on a surface already made.
@@ -459,6 +491,7 @@ impl SurfaceRequest {
             evaluation,
             warnings,
             sensitivity,
+            notes: Vec::new(),
         })
     }
 }
