@@ -367,8 +367,8 @@ fn help_states_defaults_and_ranges() {
     }
     let eval = help(&["eval", "--help"]);
     for needle in [
-        "[0.001, 1000]",
-        "(0.01928, 100]",
+        ke_friction::bounds::PSI.range(),
+        ke_friction::bounds::BETA.range(),
         "[default: 0.04]",
         "--delta-gamma",
         "J/m²",
