@@ -50,7 +50,11 @@ impl Bound {
     pub const fn whole(lo: usize, hi: usize) -> Bound {
         Bound {
             lo: End::Closed(lo as f64),
-            hi: if hi == usize::MAX { End::Unbounded } else { End::Closed(hi as f64) },
+            hi: if hi == usize::MAX {
+                End::Unbounded
+            } else {
+                End::Closed(hi as f64)
+            },
             unit: "",
             whole: true,
             text: OnceLock::new(),

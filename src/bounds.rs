@@ -13,8 +13,7 @@ pub use crate::distribution::{HEIGHTS, PEARSON_KURTOSIS, PEARSON_SKEWNESS, SD, W
 pub use crate::gw::ALPHA_ADMISSIBLE;
 pub use crate::load::{AREA, FORCE, F_STAR};
 pub use crate::params::{
-    BETA, BETA_ADMISSIBLE, DENSITY, ENERGY, EPS_STAR, METRES, NU, NU2, PASCALS, PSI, THETA_AT_MOST,
-    THETA_NON_NEGATIVE,
+    BETA, BETA_ADMISSIBLE, DENSITY, ENERGY, EPS_STAR, METRES, NU, NU2, PASCALS, PSI, THETA_AT_MOST, THETA_NON_NEGATIVE,
 };
 
 /// Every bound, by its name in lower case (`beta` for [`BETA`]).
@@ -89,7 +88,11 @@ mod tests {
                 }
             };
             let words = |x: f64| {
-                let text = if bound.is_whole() { format!("{x}") } else { format!("{x:e}") };
+                let text = if bound.is_whole() {
+                    format!("{x}")
+                } else {
+                    format!("{x:e}")
+                };
                 let plain = format!("{x}");
                 // 4 significant digits: the words hold the end or its rounding.
                 let rounded: f64 = format!("{x:.3e}").parse().unwrap();
@@ -98,27 +101,24 @@ mod tests {
                     || range.contains(&format!("{rounded}"))
                     || range.contains(&format!("{rounded:e}"))
             };
-            match bound.lo() {
-                End::Closed(x) => {
-                    assert!(bound.contains(x) && !bound.contains(step(x, false)), "{what}: {range}");
-                    assert!(words(x) && (range.contains('[') || range.contains(">=") || bound.is_whole()), "{what}: {range}");
+            // Each end: (the end, the step inward, the marks of an open
+            // and of a closed end in the words).
+            for (end, up, open, closed) in [
+                (bound.lo(), true, ["(", ">"], ["[", ">="]),
+                (bound.hi(), false, [")", "<"], ["]", "<="]),
+            ] {
+                let marked = |marks: [&str; 2]| marks.iter().any(|m| range.contains(m));
+                match end {
+                    End::Closed(x) => {
+                        assert!(bound.contains(x) && !bound.contains(step(x, !up)), "{what}: {range}");
+                        assert!(words(x) && (marked(closed) || bound.is_whole()), "{what}: {range}");
+                    }
+                    End::Open(x) => {
+                        assert!(!bound.contains(x) && bound.contains(step(x, up)), "{what}: {range}");
+                        assert!(words(x) && marked(open), "{what}: {range}");
+                    }
+                    End::Unbounded => assert!(bound.contains(if up { -1e300 } else { 1e300 }), "{what}: {range}"),
                 }
-                End::Open(x) => {
-                    assert!(!bound.contains(x) && bound.contains(step(x, true)), "{what}: {range}");
-                    assert!(words(x) && (range.contains('(') || range.contains('>')), "{what}: {range}");
-                }
-                End::Unbounded => assert!(bound.contains(-1e300), "{what}: {range}"),
-            }
-            match bound.hi() {
-                End::Closed(x) => {
-                    assert!(bound.contains(x) && !bound.contains(step(x, true)), "{what}: {range}");
-                    assert!(words(x) && (range.contains(']') || range.contains("<=") || bound.is_whole()), "{what}: {range}");
-                }
-                End::Open(x) => {
-                    assert!(!bound.contains(x) && bound.contains(step(x, false)), "{what}: {range}");
-                    assert!(words(x) && (range.contains(')') || range.contains('<')), "{what}: {range}");
-                }
-                End::Unbounded => assert!(bound.contains(1e300), "{what}: {range}"),
             }
         }
     }

@@ -26,8 +26,8 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use crate::checks::check_in;
-use crate::params::PASCALS;
 use crate::num::Shortest;
+use crate::params::PASCALS;
 use crate::{
     Classify, Curve, CurveError, DistributionError, ErrorKind, Model, OnError, ParamError, Params, Physical,
     CURVE_ACCURACY,

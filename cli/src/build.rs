@@ -2,8 +2,8 @@
 
 use crate::args::{check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, ConstantsArgs};
 use crate::output::Failure;
-use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::bounds;
+use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::Shortest;
 use std::path::PathBuf;
 use std::time::Instant;

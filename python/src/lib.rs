@@ -58,8 +58,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     // Every checked range in words, by name (`ke_friction::bounds::ALL`),
     // for the docstrings.
-    let ranges: std::collections::HashMap<&str, &str> =
-        ke_friction::bounds::ALL.iter().map(|(name, bound)| (*name, bound.range())).collect();
+    let ranges: std::collections::HashMap<&str, &str> = ke_friction::bounds::ALL
+        .iter()
+        .map(|(name, bound)| (*name, bound.range()))
+        .collect();
     m.add("RANGES", ranges)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;
     Ok(())

@@ -127,10 +127,11 @@ class Model:
     nu = property(lambda self: self._params["nu"], doc="Poisson's ratio of the softer material (a float).")
     eps_star = property(lambda self: self._params["eps_star"],
                         doc="The intermolecular distance eps/sigma (a float).")
-    fit = property(lambda self: self._params["fit"], doc='The fit: "consistent" or "as-printed".')
-    model = property(lambda self: self._params["model"], doc='The model: "ke" (Kogut-Etsion) or "ceb" (CEB-type).')
+    fit = property(lambda self: self._params["fit"], doc=f"The fit: one of {', '.join(map(repr, _core.FITS))}.")
+    model = property(lambda self: self._params["model"],
+                     doc=f"The model: one of {', '.join(map(repr, _core.MODELS))} (MODEL.md).")
     distribution = property(lambda self: self._params["distribution"],
-                            doc='The heights\' distribution family: "gaussian", "pearson", "weibull" or "empirical".')
+                            doc=f"The heights' distribution family: one of {', '.join(map(repr, _core.FAMILIES))}.")
     skewness = property(lambda self: self._params["skewness"], doc="The skewness of the heights' distribution.")
     kurtosis = property(lambda self: self._params["kurtosis"],
                         doc="The kurtosis (not excess) of the heights' distribution.")
