@@ -19,19 +19,17 @@
 # Python: PYTHON (default python3) with numpy, pytest and maturin (CI's
 # venv), else a venv made once in target/scaffold/venv; the package built
 # from the copy is installed into target/scaffold/site, ahead on
-# PYTHONPATH. SCAFFOLD_KEEP=1 keeps the copy (its path is printed).
+# PYTHONPATH. The copy is target/scaffold/tree (kept until the next run).
 # Runs from anywhere in a checkout; exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
 export CARGO_TARGET_DIR=$root/target/scaffold CARGO_TERM_COLOR=never
 mkdir -p "$CARGO_TARGET_DIR"
-copy=$(mktemp -d "${TMPDIR:-/tmp}/kef-scaffold.XXXXXX")
-if [ "${SCAFFOLD_KEEP:-}" = 1 ]; then
-  echo "scaffold: the copy is $copy"
-else
-  trap 'rm -rf "$copy"' EXIT
-fi
+# The copy stays at one path (its files keep their times), so that a
+# second run recompiles only what changed.
+copy=$CARGO_TARGET_DIR/tree
+rm -rf "$copy" && mkdir -p "$copy"
 t0=$SECONDS
 
 # The tree: tracked and new (not ignored) files, as in the work tree.
@@ -64,7 +62,7 @@ echo "scaffold: copied and extended in $((SECONDS - t0)) s"
 
 t1=$SECONDS
 log=$CARGO_TARGET_DIR/scaffold-test.log
-nice cargo test --release > "$log" 2>&1 || {
+nice cargo test --release --no-fail-fast > "$log" 2>&1 || {
   grep -E '^(error|failures:|---- |test .* FAILED|thread .* panicked)' -A6 "$log" | tail -150
   echo "scaffold: cargo test --release failed (the whole log: $log)"
   exit 1
@@ -85,7 +83,7 @@ site=$CARGO_TARGET_DIR/site
 rm -rf "$site"
 "$py" -m pip install --quiet --disable-pip-version-check --no-build-isolation --no-deps --target "$site" ./python
 export KEFRIC=$CARGO_TARGET_DIR/release/kefric MPLBACKEND=Agg PYTHONPATH=$site
-mkdir -p "$copy/.pytest-run"
-(cd "$copy/.pytest-run" && "$py" -m pytest -q -p no:cacheprovider "$copy/python/tests")
+mkdir -p "$CARGO_TARGET_DIR/pytest-run"
+(cd "$CARGO_TARGET_DIR/pytest-run" && "$py" -m pytest -q -p no:cacheprovider "$copy/python/tests")
 echo "scaffold: python tests passed in $((SECONDS - t2)) s"
 echo "scaffold: a toy law, family and format added with one file and one line each: all tests pass ($((SECONDS - t0)) s)"
