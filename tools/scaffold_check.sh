@@ -38,7 +38,8 @@ git ls-files -z --cached --others --exclude-standard |
   tar --null -T - -cf - | tar -xf - -C "$copy"
 cd "$copy"
 
-# Adds `line` after the line matching `anchor` in `file` (exactly one).
+# Adds `line` right after the line matching `anchor` in `file` (exactly
+# one; a second call puts its line before the first's).
 add_line() {
   local file=$1 anchor=$2 line=$3
   [ "$(grep -c -- "$anchor" "$file")" = 1 ] || { echo "scaffold: '$anchor' is not one line of $file"; exit 1; }
@@ -48,10 +49,12 @@ add_line() {
 # A toy contact law: the CEB-type law under another name.
 sed 's/CebType/ToyLaw/g; s/CebCapacity/ToyCapacity/g' src/model/laws/ceb.rs > src/model/laws/toy.rs
 add_line src/model/laws/registry.rs 'CebType = ("ceb", 1,' '    ToyLaw = ("toy", 2, "Toy law") => toy::ToyLaw,'
+add_line src/model/laws/registry.rs 'CebType = ("ceb", 1,' '    /// A toy law: the CEB-type law copied (tools/scaffold_check.sh).'
 
 # A toy height distribution family: Weibull under another name.
 sed 's/Weibull/Toy/g; s/WEIBULL/TOY/g; s/weibull/toy/g' src/distribution/weibull.rs > src/distribution/toy.rs
 add_line src/distribution/mod.rs 'Weibull = 2, "weibull" => weibull::Weibull,' '    Toy = 5, "toy" => toy::Toy,'
+add_line src/distribution/mod.rs 'Weibull = 2, "weibull" => weibull::Weibull,' '    /// A toy family: Weibull copied (tools/scaffold_check.sh).'
 
 # A toy surface format: .sur under another name and extension.
 sed 's/name: "sur"/name: "toy"/; s/extensions: &\["sur"\]/extensions: \&["toy"]/; s/description: "Digital Surf .sur (MountainsMap)"/description: "a toy copy of Digital Surf .sur"/' \
