@@ -86,6 +86,12 @@ site=$CARGO_TARGET_DIR/site
 rm -rf "$site"
 "$py" -m pip install --quiet --disable-pip-version-check --no-build-isolation --no-deps --target "$site" ./python
 export KEFRIC=$CARGO_TARGET_DIR/release/kefric MPLBACKEND=Agg PYTHONPATH=$site
+# What .ci/python.sh gives the tests: the crafted tables, the reader's dump
+# and the instruments' files (../shared/topographies beside the checkout).
+cargo build --release --quiet -p ke-friction --features builder,plot,topography --example crafted_tables --example read_dump
+export KEF_CRAFTED_DIR=$CARGO_TARGET_DIR/crafted KEF_READ_DUMP=$CARGO_TARGET_DIR/release/examples/read_dump
+"$CARGO_TARGET_DIR/release/examples/crafted_tables" "$KEF_CRAFTED_DIR" > /dev/null
+export KEF_TOPOGRAPHIES=${KEF_TOPOGRAPHIES:-$root/../shared/topographies}
 mkdir -p "$CARGO_TARGET_DIR/pytest-run"
 (cd "$CARGO_TARGET_DIR/pytest-run" && "$py" -m pytest -q -p no:cacheprovider "$copy/python/tests")
 echo "scaffold: python tests passed in $((SECONDS - t2)) s"
