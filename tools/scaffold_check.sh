@@ -81,6 +81,8 @@ if ! "$py" -c 'import numpy, pytest, maturin' 2> /dev/null; then
   py=$venv/bin/python
   "$py" -m pip install --quiet --disable-pip-version-check maturin pytest numpy scipy
 fi
+# maturin (the package's build backend) from PYTHON's environment.
+export PATH=$(dirname "$py"):$PATH
 # The package built from the copy, beside (not over) PYTHON's own.
 site=$CARGO_TARGET_DIR/site
 rm -rf "$site"
