@@ -474,7 +474,10 @@ mod tests {
         // them in the unit tests), not a list here.
         assert_eq!(
             Family::parse("normal").unwrap_err().to_string(),
-            format!("distribution 'normal' is unknown: must be one of {}", Family::names().join(", "))
+            format!(
+                "distribution 'normal' is unknown: must be one of {}",
+                Family::names().join(", ")
+            )
         );
         assert!(Family::names().ends_with(&["uniform"]));
     }

@@ -121,7 +121,10 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
         assert_eq!(kef_constants_set_model(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
         // The names of the core's registry (LAWS), not a list here.
         let laws = <ke_friction::ModelKind as ke_friction::Named>::names().join(", ");
-        assert_eq!(last_error(), format!("model 'AsPrinted' is unknown: must be one of {laws}"));
+        assert_eq!(
+            last_error(),
+            format!("model 'AsPrinted' is unknown: must be one of {laws}")
+        );
         assert_eq!(kef_constants_set_model(c, null()), KEF_ERR_ARGUMENT);
         assert_eq!(last_error(), "name is NULL");
         assert_eq!(kef_constants_set_beta(null_mut(), 0.05), KEF_ERR_ARGUMENT);
