@@ -9,7 +9,7 @@ use std::sync::OnceLock;
 
 /// One end of a [`Bound`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) enum End {
+pub enum End {
     /// The value must be beyond this one (`(`, `>`).
     Open(f64),
     /// The value may equal this one (`[`, `>=`).
@@ -20,43 +20,66 @@ pub(crate) enum End {
 
 /// A range of accepted values, and its description, made once on first
 /// use (declare bounds as `static`s: the description is kept in them).
+/// Every range the library checks is one, declared beside the type it
+/// bounds and listed in [`crate::bounds::ALL`]; the front ends' help texts
+/// and docstrings quote [`Bound::range`].
 #[derive(Debug)]
-pub(crate) struct Bound {
+pub struct Bound {
     lo: End,
     hi: End,
     unit: &'static str,
+    /// A count: described with whole numbers (`a whole number from 2 to 100000`).
+    whole: bool,
     text: OnceLock<String>,
 }
 
 impl Bound {
     /// The values between `lo` and `hi`.
-    pub(crate) const fn new(lo: End, hi: End) -> Bound {
+    pub const fn new(lo: End, hi: End) -> Bound {
         Bound {
             lo,
             hi,
             unit: "",
+            whole: false,
+            text: OnceLock::new(),
+        }
+    }
+
+    /// The whole numbers from `lo` to `hi` (a count; `hi` may be
+    /// `usize::MAX` for no upper limit).
+    pub const fn whole(lo: usize, hi: usize) -> Bound {
+        Bound {
+            lo: End::Closed(lo as f64),
+            hi: if hi == usize::MAX {
+                End::Unbounded
+            } else {
+                End::Closed(hi as f64)
+            },
+            unit: "",
+            whole: true,
             text: OnceLock::new(),
         }
     }
 
     /// The values above `lo` (`> lo`).
-    pub(crate) const fn above(lo: f64) -> Bound {
+    pub const fn above(lo: f64) -> Bound {
         Bound::new(End::Open(lo), End::Unbounded)
     }
 
     /// The values from `lo` up (`>= lo`).
-    pub(crate) const fn at_least(lo: f64) -> Bound {
+    pub const fn at_least(lo: f64) -> Bound {
         Bound::new(End::Closed(lo), End::Unbounded)
     }
 
     /// The values up to `hi` (`<= hi`).
-    pub(crate) const fn at_most(hi: f64) -> Bound {
+    pub const fn at_most(hi: f64) -> Bound {
         Bound::new(End::Unbounded, End::Closed(hi))
     }
 
-    /// The same range, its description ending in `unit` (`> 0 Pa`).
-    pub(crate) const fn unit(self, unit: &'static str) -> Bound {
-        let (lo, hi) = (self.lo, self.hi);
+    /// The same range, its description ending in `unit` (`> 0 Pa`) or
+    /// other words (`<= 100 (ghost nodes included)`).
+    pub const fn unit(self, unit: &'static str) -> Bound {
+        let (lo, hi, whole) = (self.lo, self.hi, self.whole);
         // `self`'s description is empty (not yet made): nothing to free,
         // and a const fn may not drop it.
         std::mem::forget(self);
@@ -64,12 +87,32 @@ impl Bound {
             lo,
             hi,
             unit,
+            whole,
             text: OnceLock::new(),
         }
     }
 
-    /// Whether `value` is in the range (NaN never is).
-    pub(crate) fn contains(&self, value: f64) -> bool {
+    /// The lower end.
+    pub fn lo(&self) -> End {
+        self.lo
+    }
+
+    /// The upper end.
+    pub fn hi(&self) -> End {
+        self.hi
+    }
+
+    /// Whether the range is of whole numbers (a count).
+    pub fn is_whole(&self) -> bool {
+        self.whole
+    }
+
+    /// Whether `value` is in the range (NaN never is; a count's value must
+    /// be whole).
+    pub fn contains(&self, value: f64) -> bool {
+        if self.whole && value.fract() != 0.0 {
+            return false;
+        }
         let lo = match self.lo {
             End::Open(lo) => value > lo,
             End::Closed(lo) => value >= lo,
@@ -85,13 +128,16 @@ impl Bound {
 
     /// The range in words, as messages state it after "must be ":
     /// `in (0.01928, 100]`, `in [0, 0.5)`, `>= 0`, `<= 1e3`, `> 0 Pa`.
-    pub(crate) fn range(&'static self) -> &'static str {
+    pub fn range(&'static self) -> &'static str {
         self.text.get_or_init(|| self.describe())
     }
 
     fn describe(&self) -> String {
+        let number = |x: f64| if self.whole { format!("{x}") } else { number(x) };
         let mut text = match (self.lo, self.hi) {
-            (End::Unbounded, End::Unbounded) => String::from("any number"),
+            (End::Unbounded, End::Unbounded) => String::from("finite"),
+            (End::Closed(lo), End::Closed(hi)) if self.whole => format!("a whole number from {lo} to {hi}"),
+            (End::Closed(lo), End::Unbounded) if self.whole => format!("at least {lo}"),
             (lo, End::Unbounded) => match lo {
                 End::Open(lo) => format!("> {}", number(lo)),
                 _ => format!(">= {}", number(end_value(lo))),
@@ -146,10 +192,27 @@ fn end_value(end: End) -> f64 {
     }
 }
 
-/// `x` rounded to 4 significant digits, in the shorter of plain and
-/// exponent form, plain on a tie: `0.01928`, `0.5`, `100`, `1e-3`, `1e3`.
+/// A help text or docstring: `what`, then the range in brackets and
+/// `tail` (`Roughness parameter β = ηRσ, in (0.01928, 100] [default: 0.04]`).
+pub fn help(what: &str, bound: &'static Bound, tail: &str) -> String {
+    let range = bound.range();
+    let mut text = if range.starts_with("in ") {
+        format!("{what}, {range}")
+    } else {
+        format!("{what} ({range})")
+    };
+    if !tail.is_empty() {
+        let _ = write!(text, " {tail}");
+    }
+    text
+}
+
+/// `x` exactly if it has at most 6 significant digits (`-1.1395`), else
+/// rounded to 4, in the shorter of plain and exponent form, plain on a
+/// tie: `0.01928`, `0.5`, `100`, `1e-3`, `1e3`.
 fn number(x: f64) -> String {
-    let r: f64 = format!("{x:.3e}").parse().unwrap_or(x);
+    let rounded = |digits: usize| format!("{x:.digits$e}").parse::<f64>().unwrap_or(x);
+    let r = (0..6).map(rounded).find(|&r| r == x).unwrap_or_else(|| rounded(3));
     let (plain, exponent) = (format!("{r}"), format!("{r:e}"));
     if exponent.len() < plain.len() {
         exponent
@@ -173,6 +236,7 @@ mod tests {
         static GAMMA: Bound = Bound::at_least(0.0).unit("J/m²");
         static THETA: Bound = Bound::at_most(1e3);
         static ALPHA: Bound = Bound::above(0.896_805_76);
+        static WEIBULL: Bound = Bound::new(End::Open(-1.1395), End::Closed(2.0));
         for (bound, text) in [
             (&BETA, "in (0.01928, 100]"),
             (&NU, "in [0, 0.5)"),
@@ -183,6 +247,7 @@ mod tests {
             (&GAMMA, ">= 0 J/m²"),
             (&THETA, "<= 1e3"),
             (&ALPHA, "> 0.8968"),
+            (&WEIBULL, "in (-1.1395, 2]"),
         ] {
             assert_eq!(bound.range(), text);
             assert_eq!(bound.range(), text, "kept");

@@ -33,7 +33,13 @@ pub(crate) fn check_in(name: &'static str, value: f64, bound: &'static Bound) ->
     }
 }
 
-/// Rejects NaN, infinities and values failing `ok`.
+/// Rejects a count outside `bound`.
+pub(crate) fn check_count(name: &'static str, count: usize, bound: &'static Bound) -> Result<(), ParamError> {
+    check_in(name, count as f64, bound)
+}
+
+/// Rejects NaN, infinities and values failing `ok`: for relations
+/// between inputs (a range of one input is a [`Bound`], [`check_in`]).
 pub(crate) fn check(
     name: &'static str,
     value: f64,

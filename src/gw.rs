@@ -20,7 +20,7 @@ pub(crate) const ALPHA_MIN: f64 = 16.0 / PI - 3.0 * 1.732_050_807_568_877_2 + 1.
 
 /// The bandwidths α at which σ_s is real: > [`ALPHA_MIN`] (MODEL.md §10),
 /// the check and its message.
-pub(crate) static ALPHA_ADMISSIBLE: Bound = Bound::above(ALPHA_MIN);
+pub static ALPHA_ADMISSIBLE: Bound = Bound::above(ALPHA_MIN);
 
 /// McCool's constant in σ_s/σ = (1 − 3.717e-4/β²)^½: [`ALPHA_MIN`]/(768π)
 /// (as β² = α/(768π)), rounded as MODEL.md §2 prints it.

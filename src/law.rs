@@ -25,8 +25,9 @@
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use crate::checks::check;
+use crate::checks::check_in;
 use crate::num::Shortest;
+use crate::params::PASCALS;
 use crate::{
     Classify, Curve, CurveError, DistributionError, ErrorKind, Model, OnError, ParamError, Params, Physical,
     CURVE_ACCURACY,
@@ -272,7 +273,7 @@ impl FrictionLaw {
         range: Option<(f64, f64)>,
         policy: OutOfRange,
     ) -> Result<FrictionLaw, FrictionLawError> {
-        check("hardness", hardness, "> 0 Pa and finite", |h| h > 0.0)?;
+        check_in("hardness", hardness, &PASCALS)?;
         let (lo, hi) = range.unwrap_or((LAW_F_STAR_RANGE.0 * hardness, LAW_F_STAR_RANGE.1 * hardness));
         if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && lo < hi) {
             return Err(FrictionLawError::Range { lo, hi });

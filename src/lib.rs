@@ -39,7 +39,8 @@
 // Every unsafe block says why it is sound; every unsafe fn states its contract.
 #![warn(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
 
-mod bound;
+pub mod bound;
+pub mod bounds;
 #[cfg(feature = "builder")]
 pub mod build;
 mod checks;

@@ -2,7 +2,16 @@
 //! friction it meets: F* = F/(A_n·H) (MODEL.md §1), μ at that F*, the
 //! friction force Q = μ·F and the separation h = h*·σ.
 
-use crate::checks::check;
+use crate::bound::Bound;
+use crate::checks::check_in;
+use crate::params::PASCALS;
+
+/// The force of a [`Load::Force`]: > 0 N.
+pub static FORCE: Bound = Bound::above(0.0).unit("N");
+/// The nominal contact area of a [`Load::Force`]: > 0 m².
+pub static AREA: Bound = Bound::above(0.0).unit("m²");
+/// F* = pressure/hardness: > 0.
+pub static F_STAR: Bound = Bound::above(0.0);
 use crate::{Contact, EvalError, Model, ParamError, Physical, Warning};
 
 /// A normal load on a rough contact, in SI units.
@@ -46,17 +55,16 @@ impl Load {
     /// # Ok::<(), ke_friction::ParamError>(())
     /// ```
     pub fn pressure(&self) -> Result<f64, ParamError> {
-        let positive = |v: f64| v > 0.0;
         match *self {
             Load::Force { force, area } => {
-                check("force", force, "> 0 N", positive)?;
-                check("area", area, "> 0 m²", positive)?;
+                check_in("force", force, &FORCE)?;
+                check_in("area", area, &AREA)?;
                 let p = decimal(force / area);
-                check("pressure (= force/area)", p, "> 0 Pa and finite", positive)?;
+                check_in("pressure (= force/area)", p, &PASCALS)?;
                 Ok(p)
             }
             Load::Pressure(p) => {
-                check("pressure", p, "> 0 Pa", positive)?;
+                check_in("pressure", p, &PASCALS)?;
                 Ok(p)
             }
         }
@@ -122,9 +130,9 @@ fn decimal(x: f64) -> f64 {
 
 /// F* = `pressure`/`hardness`, checked.
 fn f_star_of(pressure: f64, hardness: f64) -> Result<f64, ParamError> {
-    check("hardness", hardness, "> 0 Pa", |v| v > 0.0)?;
+    check_in("hardness", hardness, &PASCALS)?;
     let f = pressure / hardness;
-    check("f_star (= pressure/hardness)", f, "> 0 and finite", |v| v > 0.0)?;
+    check_in("f_star (= pressure/hardness)", f, &F_STAR)?;
     Ok(f)
 }
 

@@ -44,11 +44,11 @@ pub type Kind = ModelKind;
 /// ```
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Constants {
-    /// Roughness parameter β = ηRσ, in (0.01928, 100] (default 0.04).
+    /// Roughness parameter β = ηRσ, in [`BETA`] (default 0.04).
     pub beta: f64,
-    /// Poisson's ratio of the softer material, in [0, 0.5) (default 0.3).
+    /// Poisson's ratio of the softer material, in [`NU`] (default 0.3).
     pub nu: f64,
-    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100] (default 0.004).
+    /// Intermolecular distance ε* = ε/σ, in [`EPS_STAR`] (default 0.004).
     pub eps_star: f64,
     /// Which friction row to use (default [`Fit::Consistent`]).
     pub fit: Fit,
@@ -153,9 +153,10 @@ impl Constants {
 /// ```
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct Params {
-    /// Plasticity index ψ, in [1e-3, 1e3] (the paper covers 0.5–8).
+    /// Plasticity index ψ, in [`PSI`] (the paper covers 0.5–8).
     pub psi: f64,
-    /// Adhesion parameter θ = Δγ/(σH), in [0, 1e3] (the paper covers 1e-4–0.01).
+    /// Adhesion parameter θ = Δγ/(σH), in [`THETA_NON_NEGATIVE`] and
+    /// [`THETA_AT_MOST`] (the paper covers 1e-4–0.01).
     pub theta: f64,
     /// The model constants (serialised flat, beside ψ and θ).
     #[serde(flatten)]
@@ -183,20 +184,30 @@ pub const THETA_MAX: f64 = 1e3;
 /// Largest accepted β.
 pub const BETA_MAX: f64 = 100.0;
 /// The accepted ψ: [1e-3, 1e3].
-static PSI: Bound = Bound::new(End::Closed(PSI_MIN), End::Closed(PSI_MAX));
+pub static PSI: Bound = Bound::new(End::Closed(PSI_MIN), End::Closed(PSI_MAX));
 /// θ >= 0 (checked first: a negative θ is refused as such).
-static THETA_NON_NEGATIVE: Bound = Bound::at_least(0.0);
+pub static THETA_NON_NEGATIVE: Bound = Bound::at_least(0.0);
 /// θ <= 1e3.
-static THETA_AT_MOST: Bound = Bound::at_most(THETA_MAX);
+pub static THETA_AT_MOST: Bound = Bound::at_most(THETA_MAX);
 /// The accepted β: (β_min, 100] (σ_s real, [`BETA_MIN`]).
-static BETA: Bound = Bound::new(End::Open(BETA_MIN), End::Closed(BETA_MAX));
+pub static BETA: Bound = Bound::new(End::Open(BETA_MIN), End::Closed(BETA_MAX));
 /// The accepted Poisson's ratio of the softer material: [0, 0.5).
-static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
+pub static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
 /// The accepted ε*: [1e-9, 100].
-static EPS_STAR: Bound = Bound::new(End::Closed(EPS_STAR_MIN), End::Closed(EPS_STAR_MAX));
+pub static EPS_STAR: Bound = Bound::new(End::Closed(EPS_STAR_MIN), End::Closed(EPS_STAR_MAX));
 /// The β at which σ_s is real (> [`BETA_MIN`]): what a β computed from
 /// physical inputs or a measured surface must satisfy.
-pub(crate) static BETA_ADMISSIBLE: Bound = Bound::above(BETA_MIN);
+pub static BETA_ADMISSIBLE: Bound = Bound::above(BETA_MIN);
+/// A modulus, hardness or other pressure of [`Physical`]: > 0 Pa.
+pub static PASCALS: Bound = Bound::above(0.0).unit("Pa");
+/// A length of [`Physical`]: > 0 m.
+pub static METRES: Bound = Bound::above(0.0).unit("m");
+/// The areal density of summits: > 0 per m².
+pub static DENSITY: Bound = Bound::above(0.0).unit("per m²");
+/// The energy of adhesion: >= 0 J/m².
+pub static ENERGY: Bound = Bound::at_least(0.0).unit("J/m²");
+/// Poisson's ratio of the other (harder) material: [-1, 0.5].
+pub static NU2: Bound = Bound::new(End::Closed(-1.0), End::Closed(0.5));
 /// Smallest accepted ε*.
 pub const EPS_STAR_MIN: f64 = 1e-9;
 /// Largest accepted ε*.
@@ -302,11 +313,6 @@ impl Params {
     /// assert!((p.constants.eps_star - 0.004).abs() < 1e-12);
     /// ```
     pub fn from_physical(phys: &Physical) -> Result<Params, ParamError> {
-        static PASCALS: Bound = Bound::above(0.0).unit("Pa");
-        static METRES: Bound = Bound::above(0.0).unit("m");
-        static DENSITY: Bound = Bound::above(0.0).unit("per m²");
-        static ENERGY: Bound = Bound::at_least(0.0).unit("J/m²");
-        static NU2: Bound = Bound::new(End::Closed(-1.0), End::Closed(0.5));
         check_in("e1", phys.e1, &PASCALS)?;
         check_in("e2", phys.e2, &PASCALS)?;
         check_in("nu1", phys.nu1, &NU)?;

@@ -3,6 +3,8 @@
 //! and output paths.
 use crate::output::{io_message, Failure};
 use clap::builder::{PossibleValuesParser, TypedValueParser};
+use ke_friction::bound::help;
+use ke_friction::bounds;
 use ke_friction::Shortest;
 use ke_friction::{Constants, Family, Fit, HeightDistribution, Materials, ModelKind, Named, Params};
 
@@ -157,14 +159,14 @@ pub fn print_worst(acc: &ke_friction::Accuracy) -> Result<(), Failure> {
 /// subcommand that takes them; unset ones take [`Constants::default`].
 #[derive(Debug, Clone, clap::Args)]
 pub struct ConstantsArgs {
-    /// Roughness parameter β = ηRσ, in (0.01928, 100] [default: 0.04].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Roughness parameter β = ηRσ (the range: [`bounds::BETA`]).
+    #[arg(long, help = help("Roughness parameter β = ηRσ", &bounds::BETA, "[default: 0.04]"), value_parser = parse_f64, allow_hyphen_values = true)]
     pub beta: Option<f64>,
-    /// Poisson's ratio ν of the softer material, in [0, 0.5) [default: 0.3].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Poisson's ratio ν of the softer material ([`bounds::NU`]).
+    #[arg(long, help = help("Poisson's ratio ν of the softer material", &bounds::NU, "[default: 0.3]"), value_parser = parse_f64, allow_hyphen_values = true)]
     pub nu: Option<f64>,
-    /// Intermolecular distance ε* = ε/σ, in [1e-9, 100] [default: 0.004].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Intermolecular distance ε* = ε/σ ([`bounds::EPS_STAR`]).
+    #[arg(long, help = help("Intermolecular distance ε* = ε/σ", &bounds::EPS_STAR, "[default: 0.004]"), value_parser = parse_f64, allow_hyphen_values = true)]
     pub eps_star: Option<f64>,
     /// Friction row: consistent (MODEL.md §4), or as-printed (the literal printed Eq. 18; negative μ for ψ ≳ 2).
     #[arg(long, value_parser = named::<Fit>(), default_value_t = Fit::Consistent)]
@@ -184,14 +186,14 @@ pub struct DistributionArgs {
     /// Distribution of the asperity heights (MODEL.md §9) [default: gaussian; pearson with --skewness or --kurtosis; empirical with --heights].
     #[arg(long, value_parser = named::<Family>())]
     pub distribution: Option<Family>,
-    /// Skewness Sk of the heights (ISO Ssk): pearson (K > Sk² + 1, |Sk| ≤ 5) or weibull (-1.1395 < Sk ≤ 2) [default: 0].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Skewness Sk of the heights (ISO Ssk): pearson or weibull ([`bounds::PEARSON_SKEWNESS`], [`bounds::WEIBULL_SKEWNESS`]).
+    #[arg(long, help = format!("Skewness Sk of the heights (ISO Ssk): pearson ({}; K > Sk² + 1) or weibull ({}) [default: 0].", bounds::PEARSON_SKEWNESS.range(), bounds::WEIBULL_SKEWNESS.range()), value_parser = parse_f64, allow_hyphen_values = true)]
     pub skewness: Option<f64>,
-    /// Kurtosis K of the heights, not excess (ISO Sku; 3 for a Gaussian): pearson, K > Sk² + 1 and ≤ 100 [default: 3].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Kurtosis K of the heights, not excess (ISO Sku; 3 for a Gaussian): pearson ([`bounds::PEARSON_KURTOSIS`]).
+    #[arg(long, help = format!("Kurtosis K of the heights (ISO Sku): pearson, K > Sk² + 1 and {} [default: 3].", bounds::PEARSON_KURTOSIS.range()), value_parser = parse_f64, allow_hyphen_values = true)]
     pub kurtosis: Option<f64>,
-    /// Measured heights for an empirical density: a text file (one height per line) or a .npy array (at least 100 finite values, any unit).
-    #[arg(long, value_name = "FILE")]
+    /// Measured heights for an empirical density: a text file or a .npy array ([`bounds::HEIGHTS`]).
+    #[arg(long, value_name = "FILE", help = format!("Measured heights for an empirical density: a text file (one height per line) or a .npy array ({}, any unit).", bounds::HEIGHTS.range()))]
     pub heights: Option<std::path::PathBuf>,
 }
 
@@ -221,26 +223,26 @@ impl ConstantsArgs {
 /// surface (`kefric surface`, `--surface`) they give ψ, θ, β, ν and ε*.
 #[derive(Debug, Clone, clap::Args)]
 pub struct MaterialsArgs {
-    /// Young's modulus E₁ of the softer material, Pa (> 0).
-    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Young's modulus E₁ of the softer material ([`bounds::PASCALS`]).
+    #[arg(long, value_name = "PA", help = help("Young's modulus E₁ of the softer material", &bounds::PASCALS, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub e1: Option<f64>,
-    /// Poisson's ratio ν₁ of the softer material, in [0, 0.5); sets ν and the hardness coefficient K.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Poisson's ratio ν₁ of the softer material ([`bounds::NU`]).
+    #[arg(long, help = help("Poisson's ratio ν₁ of the softer material", &bounds::NU, "(sets ν and the hardness coefficient K)"), value_parser = parse_f64, allow_hyphen_values = true)]
     pub nu1: Option<f64>,
-    /// Young's modulus E₂ of the other material, Pa (> 0).
-    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Young's modulus E₂ of the other material ([`bounds::PASCALS`]).
+    #[arg(long, value_name = "PA", help = help("Young's modulus E₂ of the other material", &bounds::PASCALS, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub e2: Option<f64>,
-    /// Poisson's ratio ν₂ of the other material, in [-1, 0.5].
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Poisson's ratio ν₂ of the other material ([`bounds::NU2`]).
+    #[arg(long, help = help("Poisson's ratio ν₂ of the other material", &bounds::NU2, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub nu2: Option<f64>,
-    /// Hardness H of the softer material, Pa (> 0).
-    #[arg(long, value_name = "PA", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Hardness H of the softer material ([`bounds::PASCALS`]).
+    #[arg(long, value_name = "PA", help = help("Hardness H of the softer material", &bounds::PASCALS, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub hardness: Option<f64>,
-    /// Energy of adhesion Δγ, J/m² (≥ 0).
-    #[arg(long, value_name = "J_PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Energy of adhesion Δγ ([`bounds::ENERGY`]).
+    #[arg(long, value_name = "J_PER_M2", help = help("Energy of adhesion Δγ", &bounds::ENERGY, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub delta_gamma: Option<f64>,
-    /// Intermolecular distance ε, m (> 0).
-    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Intermolecular distance ε ([`bounds::METRES`]).
+    #[arg(long, value_name = "M", help = help("Intermolecular distance ε", &bounds::METRES, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub epsilon: Option<f64>,
 }
 
@@ -299,14 +301,14 @@ const SI_HEADING: &str = "SI inputs";
 pub struct SiArgs {
     #[command(flatten)]
     pub materials: MaterialsArgs,
-    /// Standard deviation σ of the surface heights (Sq), m (> 0).
-    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Standard deviation σ of the surface heights (Sq) ([`bounds::METRES`]).
+    #[arg(long, value_name = "M", help = help("Standard deviation σ of the surface heights (Sq)", &bounds::METRES, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub sigma: Option<f64>,
-    /// Mean summit radius of curvature R, m (> 0).
-    #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Mean summit radius of curvature R ([`bounds::METRES`]).
+    #[arg(long, value_name = "M", help = help("Mean summit radius of curvature R", &bounds::METRES, ""), value_parser = parse_f64, allow_hyphen_values = true)]
     pub radius: Option<f64>,
-    /// Areal density η of summits, 1/m² (> 0; β = ηRσ must exceed 0.01928).
-    #[arg(long, value_name = "PER_M2", value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Areal density η of summits ([`bounds::DENSITY`]; β = ηRσ: [`bounds::BETA_ADMISSIBLE`]).
+    #[arg(long, value_name = "PER_M2", help = help("Areal density η of summits", &bounds::DENSITY, &format!("(β = ηRσ must be {})", bounds::BETA_ADMISSIBLE.range())), value_parser = parse_f64, allow_hyphen_values = true)]
     pub density: Option<f64>,
 }
 

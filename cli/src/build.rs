@@ -2,6 +2,7 @@
 
 use crate::args::{check_writable, fields, flag_of, number, parse_f64, print_worst, whole, Bar, ConstantsArgs};
 use crate::output::Failure;
+use ke_friction::bounds;
 use ke_friction::build::{build, threads, BuildError, BuildOptions, Precision};
 use ke_friction::Shortest;
 use std::path::PathBuf;
@@ -20,34 +21,34 @@ pub struct Args {
     /// tables/default.kft).
     #[arg(long, value_name = "FILE")]
     pub out: Option<PathBuf>,
-    /// Range of ψ, LO:HI, within [0.001, 1000] with the ghost nodes.
-    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().psi), allow_hyphen_values = true)]
+    /// Range of ψ, LO:HI ([`bounds::GHOST_PSI`]).
+    #[arg(long, value_name = "LO:HI", help = format!("Range of ψ, LO:HI, {}.", bounds::GHOST_PSI.range()), default_value_t = range_text(defaults().psi), allow_hyphen_values = true)]
     pub psi: String,
-    /// Range of θ, LO:HI, within [0, 1000] with the ghost nodes.
-    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().theta), allow_hyphen_values = true)]
+    /// Range of θ, LO:HI ([`bounds::GHOST_THETA`]).
+    #[arg(long, value_name = "LO:HI", help = format!("Range of θ, LO:HI, {} and {}.", bounds::THETA_NON_NEGATIVE.range(), bounds::GHOST_THETA.range()), default_value_t = range_text(defaults().theta), allow_hyphen_values = true)]
     pub theta: String,
-    /// Range of F*, LO:HI, within (0, 100] with the ghost nodes.
-    #[arg(long, value_name = "LO:HI", default_value_t = range_text(defaults().f_star), allow_hyphen_values = true)]
+    /// Range of F*, LO:HI ([`bounds::F_STAR_END`], [`bounds::GHOST_F_STAR`]).
+    #[arg(long, value_name = "LO:HI", help = format!("Range of F*, LO:HI, {}, HI {}, {}.", bounds::F_STAR.range(), bounds::F_STAR_END.range(), bounds::GHOST_F_STAR.range()), default_value_t = range_text(defaults().f_star), allow_hyphen_values = true)]
     pub f_star: String,
-    /// Nodes across the ψ, θ, F* ranges, NP,NT,NF, each from 5 to 4096.
-    #[arg(long, value_name = "NP,NT,NF", default_value_t = nodes_text(defaults().nodes), allow_hyphen_values = true)]
+    /// Nodes across the ψ, θ, F* ranges, NP,NT,NF ([`bounds::NODES`]).
+    #[arg(long, value_name = "NP,NT,NF", help = format!("Nodes across the ψ, θ, F* ranges, NP,NT,NF, each {}.", bounds::NODES.range()), default_value_t = nodes_text(defaults().nodes), allow_hyphen_values = true)]
     pub nodes: String,
-    /// Ghost nodes beyond each end of the ψ and F* ranges (and above θ's), 0 to 8.
-    #[arg(long, default_value_t = defaults().ghosts, allow_hyphen_values = true)]
+    /// Ghost nodes beyond each end of the ψ and F* ranges ([`bounds::GHOSTS`]).
+    #[arg(long, help = format!("Ghost nodes beyond each end of the ψ and F* ranges (and above θ's), {}.", bounds::GHOSTS.range()), default_value_t = defaults().ghosts, allow_hyphen_values = true)]
     pub ghosts: usize,
-    /// Integration grid in h*, LO:HI:COUNT (within ±1e6; COUNT from 2 to 100000).
-    #[arg(long, value_name = "LO:HI:COUNT", default_value_t = h_text(defaults().h_star), allow_hyphen_values = true)]
+    /// Integration grid in h*, LO:HI:COUNT ([`bounds::H_STAR`], [`bounds::H_NODES`]).
+    #[arg(long, value_name = "LO:HI:COUNT", help = format!("Integration grid in h*, LO:HI:COUNT (LO and HI {}; COUNT {}).", bounds::H_STAR.range(), bounds::H_NODES.range()), default_value_t = h_text(defaults().h_star), allow_hyphen_values = true)]
     pub h_star: String,
     #[command(flatten)]
     pub constants: ConstantsArgs,
     /// Stored precision of the coefficients.
     #[arg(long, value_enum, default_value_t = PrecisionArg::F32)]
     pub precision: PrecisionArg,
-    /// Maximum relative error of μ the table must meet, in (0, 1]; the build fails otherwise.
-    #[arg(long, value_parser = parse_f64, default_value_t = defaults().tolerance, allow_hyphen_values = true)]
+    /// Maximum relative error of μ the table must meet ([`bounds::TOLERANCE`]).
+    #[arg(long, help = format!("Maximum relative error of μ the table must meet, {}; the build fails otherwise.", bounds::TOLERANCE.range()), value_parser = parse_f64, default_value_t = defaults().tolerance, allow_hyphen_values = true)]
     pub tolerance: f64,
-    /// Points checked against direct integration (half random, half cell centres), 2 to 10000000.
-    #[arg(long, default_value_t = defaults().samples, allow_hyphen_values = true)]
+    /// Points checked against direct integration ([`bounds::SAMPLES`]).
+    #[arg(long, help = format!("Points checked against direct integration (half random, half cell centres), {}.", bounds::SAMPLES.range()), default_value_t = defaults().samples, allow_hyphen_values = true)]
     pub samples: usize,
     /// Seed of those points.
     #[arg(long, default_value_t = defaults().seed, allow_hyphen_values = true)]

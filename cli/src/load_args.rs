@@ -3,6 +3,7 @@
 
 use crate::args::{flag_of, number, parse_f64};
 use crate::output::Failure;
+use ke_friction::bounds;
 use ke_friction::topography::LoadInputs;
 use ke_friction::Load;
 
@@ -65,20 +66,21 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
 #[derive(Debug, Clone, clap::Args)]
 #[command(next_help_heading = "Load (--force with --area, or --pressure)")]
 pub struct LoadArgs {
-    /// Normal force F, N (> 0), on the nominal area --area; or START:STOP:COUNT, COUNT forces spaced logarithmically.
+    /// Normal force F ([`bounds::FORCE`]) on the nominal area --area, or START:STOP:COUNT.
     #[arg(
         long,
+        help = format!("Normal force F ({}), on the nominal area --area; or START:STOP:COUNT, COUNT forces spaced logarithmically.", bounds::FORCE.range()),
         value_name = "N|START:STOP:COUNT",
         allow_hyphen_values = true,
         requires = "area",
         conflicts_with = "pressure"
     )]
     pub force: Option<String>,
-    /// Nominal contact area A_n, m² (> 0).
-    #[arg(long, value_name = "M2", value_parser = parse_f64, allow_hyphen_values = true, requires = "force")]
+    /// Nominal contact area A_n ([`bounds::AREA`]).
+    #[arg(long, value_name = "M2", help = format!("Nominal contact area A_n ({}).", bounds::AREA.range()), value_parser = parse_f64, allow_hyphen_values = true, requires = "force")]
     pub area: Option<f64>,
-    /// Nominal pressure F/A_n, Pa (> 0), in place of --force and --area; or START:STOP:COUNT, spaced logarithmically.
-    #[arg(long, value_name = "PA|START:STOP:COUNT", allow_hyphen_values = true)]
+    /// Nominal pressure F/A_n ([`bounds::PASCALS`]), or START:STOP:COUNT.
+    #[arg(long, value_name = "PA|START:STOP:COUNT", help = format!("Nominal pressure F/A_n ({}), in place of --force and --area; or START:STOP:COUNT, spaced logarithmically.", bounds::PASCALS.range()), allow_hyphen_values = true)]
     pub pressure: Option<String>,
 }
 

@@ -6,6 +6,8 @@
 use crate::args::{flag_of, parse_f64, ConstantsArgs, SiArgs};
 use crate::output::{warn, Failure};
 use crate::surface_args::request_failure;
+use ke_friction::bound::help;
+use ke_friction::bounds;
 use ke_friction::topography::{Cutoff, Sensitivity, Source, Surface, SurfaceRequest};
 use ke_friction::{Load, Materials, Model, Params, Physical, Shortest, Warnings};
 
@@ -13,11 +15,11 @@ use ke_friction::{Load, Materials, Model, Params, Physical, Shortest, Warnings};
 /// dimensionless (ψ, θ, β, ν, ε*) or SI quantities ([`SiArgs`]).
 #[derive(Debug, Clone, clap::Args)]
 pub struct ModelArgs {
-    /// Plasticity index ψ, in [0.001, 1000] (the paper: 0.5 to 8). Required unless the SI inputs are given.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Plasticity index ψ ([`bounds::PSI`]). Required unless the SI inputs are given.
+    #[arg(long, help = help("Plasticity index ψ", &bounds::PSI, "(the paper: 0.5 to 8). Required unless the SI inputs are given."), value_parser = parse_f64, allow_hyphen_values = true)]
     pub psi: Option<f64>,
-    /// Adhesion parameter θ = Δγ/(σH), in [0, 1000] (the paper: 1e-4 to 0.01). Required unless the SI inputs are given.
-    #[arg(long, value_parser = parse_f64, allow_hyphen_values = true)]
+    /// Adhesion parameter θ = Δγ/(σH) ([`bounds::THETA_AT_MOST`]). Required unless the SI inputs are given.
+    #[arg(long, help = format!("Adhesion parameter θ = Δγ/(σH), {} and {} (the paper: 1e-4 to 0.01). Required unless the SI inputs are given.", bounds::THETA_NON_NEGATIVE.range(), bounds::THETA_AT_MOST.range()), value_parser = parse_f64, allow_hyphen_values = true)]
     pub theta: Option<f64>,
     #[command(flatten)]
     pub constants: ConstantsArgs,

@@ -777,7 +777,8 @@ kef_constants *kef_constants_new(void);
 void kef_constants_free(kef_constants *constants);
 
 // Sets β, the roughness parameter ηRσ, checked at once: KEF_ERR_DOMAIN
-// outside (0.01928, 100], KEF_ERR_ARGUMENT for NaN, ±inf or a NULL
+// outside its range (the library's `bounds::BETA`, named in the message
+// of kef_last_error), KEF_ERR_ARGUMENT for NaN, ±inf or a NULL
 // handle; the handle is unchanged on failure.
 //
 // # Safety

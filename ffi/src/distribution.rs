@@ -22,6 +22,17 @@ pub const KEF_DIST_WEIBULL: c_int = 2;
 /// kef_constants_set_distribution).
 pub const KEF_DIST_EMPIRICAL: c_int = 3;
 
+/// The families with a `KEF_DIST_*` constant (literals above, for
+/// cbindgen and the Fortran module), by name. A family added to the core
+/// without one is reached by name (kef_constants_set_distribution_named)
+/// and by its core code.
+const CONSTANTS: [(&str, c_int, Family); 4] = [
+    ("KEF_DIST_GAUSSIAN", KEF_DIST_GAUSSIAN, Family::Gaussian),
+    ("KEF_DIST_PEARSON", KEF_DIST_PEARSON, Family::Pearson),
+    ("KEF_DIST_WEIBULL", KEF_DIST_WEIBULL, Family::Weibull),
+    ("KEF_DIST_EMPIRICAL", KEF_DIST_EMPIRICAL, Family::Empirical),
+];
+
 /// The distribution of family `family` (a `KEF_DIST_*` code other than
 /// [`KEF_DIST_EMPIRICAL`]) with `skewness` and `kurtosis` (the latter read
 /// by [`KEF_DIST_PEARSON`] alone, neither by [`KEF_DIST_GAUSSIAN`]),
@@ -50,9 +61,13 @@ fn distribution(family: c_int, skewness: f64, kurtosis: f64) -> Result<HeightDis
     }
 }
 
-/// The name of a family's `KEF_DIST_*` constant.
+/// A family as C code names it: its `KEF_DIST_*` constant, or (a family
+/// without one) its name, for kef_constants_set_distribution_named.
 fn constant(f: Family) -> String {
-    format!("KEF_DIST_{}", f.name().to_uppercase())
+    match CONSTANTS.iter().find(|(_, _, family)| *family == f) {
+        Some((name, _, _)) => (*name).to_string(),
+        None => format!("\"{}\"", f.name()),
+    }
 }
 
 /// The `KEF_DIST_*` code of a distribution: its family's core code.
@@ -167,14 +182,21 @@ mod tests {
     /// the core's family codes.
     #[test]
     fn the_kef_dist_constants_are_the_core_family_codes() {
-        for (c, family) in [
-            (KEF_DIST_GAUSSIAN, Family::Gaussian),
-            (KEF_DIST_PEARSON, Family::Pearson),
-            (KEF_DIST_WEIBULL, Family::Weibull),
-            (KEF_DIST_EMPIRICAL, Family::Empirical),
-        ] {
+        for (name, c, family) in CONSTANTS {
             assert_eq!(c, c_int::from(family.code()), "{family}");
+            assert_eq!(name, format!("KEF_DIST_{}", family.name().to_uppercase()));
+            assert_eq!(constant(family), name);
         }
-        assert_eq!(Family::ALL.len(), 4, "a new family needs its KEF_DIST_* constant");
+    }
+
+    /// Every family of the core is named in C: by its constant or by its
+    /// name (never a constant that does not exist).
+    #[test]
+    fn every_family_is_named_by_an_existing_constant_or_its_name() {
+        for f in Family::ALL {
+            let named = constant(f);
+            let known = CONSTANTS.iter().any(|(name, _, _)| *name == named);
+            assert!(known || named == format!("\"{}\"", f.name()), "{f}: {named}");
+        }
     }
 }

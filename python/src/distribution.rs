@@ -141,7 +141,7 @@ impl DistributionCore {
         .map_err(raise)
     }
 
-    /// "gaussian", "pearson", "weibull" or "empirical".
+    /// The family's name (one of the core's `Family` names).
     fn family(&self) -> &'static str {
         self.dist.family()
     }

@@ -57,6 +57,13 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LAW_F_STAR_RANGE", ke_friction::LAW_F_STAR_RANGE)?;
     m.add("LAW_TABLE_TOLERANCE", ke_friction::LAW_TABLE_TOLERANCE)?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
+    // Every checked range in words, by name (`ke_friction::bounds::ALL`),
+    // for the docstrings.
+    let ranges: std::collections::HashMap<&str, &str> = ke_friction::bounds::ALL
+        .iter()
+        .map(|(name, bound)| (*name, bound.range()))
+        .collect();
+    m.add("RANGES", ranges)?;
     m.add("TableError", m.py().get_type::<error::TableError>())?;
     Ok(())
 }

@@ -9,7 +9,8 @@
 
 pub mod verify;
 
-use crate::checks::{check, ParamError};
+use crate::bound::{Bound, End};
+use crate::checks::{check_count, check_in, ParamError};
 use crate::model::{EvalError, Model, H_LIMIT};
 use crate::num::Shortest;
 use crate::params::{Constants, Params, PSI_MAX, PSI_MIN, THETA_MAX};
@@ -23,6 +24,37 @@ use rayon::prelude::*;
 /// builder's input, not the paper's range of loads): F* = F/(A_n·H)
 /// above 1 would already mean a mean pressure above the hardness.
 pub const F_STAR_LIMIT: f64 = 100.0;
+
+// The ranges of the options ([`BuildOptions::validate`]).
+/// A range's lower end for ψ and F*: > 0.
+pub static POSITIVE: Bound = Bound::above(0.0);
+/// A range's lower end for θ: >= 0.
+pub static NON_NEGATIVE: Bound = Bound::at_least(0.0);
+/// A range's upper end: finite.
+pub static FINITE: Bound = Bound::new(End::Unbounded, End::Unbounded);
+/// The F* range's upper end: at most the model's [`F_STAR_MAX`](crate::F_STAR_MAX).
+pub static F_STAR_END: Bound = Bound::at_most(crate::F_STAR_MAX).unit("(a pressure at most the hardness)");
+/// Nodes per axis.
+pub static NODES: Bound = Bound::whole(5, 4096);
+/// Ghost nodes beyond each open end.
+pub static GHOSTS: Bound = Bound::whole(0, 8);
+/// Both ends of the h* range (the model's [`H_LIMIT`]).
+pub static H_STAR: Bound = Bound::new(End::Closed(-H_LIMIT), End::Closed(H_LIMIT));
+/// Points of the h* integration grid.
+pub static H_NODES: Bound = Bound::whole(2, 100_000);
+/// The build's relative tolerance.
+pub static TOLERANCE: Bound = Bound::new(End::Open(0.0), End::Closed(1.0));
+/// ψ at every node, ghost nodes included.
+pub static GHOST_PSI: Bound = Bound::new(End::Closed(PSI_MIN), End::Closed(PSI_MAX)).unit("(ghost nodes included)");
+/// θ at every node, ghost nodes included.
+pub static GHOST_THETA: Bound = Bound::at_most(THETA_MAX).unit("(ghost nodes included)");
+/// F* at every node, ghost nodes included.
+pub static GHOST_F_STAR: Bound = Bound::at_most(F_STAR_LIMIT).unit("(ghost nodes included)");
+/// The table's coefficient arrays: the limit [`Table`] accepts.
+pub static GRID_NODES: Bound = Bound::whole(0, 1 << 28).unit("(NP+2·ghosts+2)·(NT+ghosts+2)·(NF+2·ghosts+2)");
+/// The integration grid's points.
+pub static GRID_POINTS: Bound =
+    Bound::whole(0, 1 << 26).unit("(psi nodes × theta nodes × h* points, ghost nodes included)");
 
 /// Everything that shapes a table. [`Default`] gives the default table.
 #[derive(Debug, Clone, PartialEq)]
@@ -209,9 +241,9 @@ impl BuildOptions {
     /// would make the build fail or run out of memory for reasons known in
     /// advance is caught here, before any work.
     pub fn validate(&self) -> Result<(), BuildError> {
-        let range = |name: &'static str, (lo, hi): (f64, f64), low_ok: fn(f64) -> bool, what: &'static str| {
-            check(name, lo, what, low_ok)?;
-            check(name, hi, "finite", |_| true)?;
+        let range = |name: &'static str, (lo, hi): (f64, f64), bound: &'static Bound| {
+            check_in(name, lo, bound)?;
+            check_in(name, hi, if std::ptr::eq(bound, &H_STAR) { bound } else { &FINITE })?;
             if lo < hi {
                 Ok(())
             } else {
@@ -225,30 +257,20 @@ impl BuildOptions {
                 range: "gaussian, pearson or weibull (a table does not hold an empirical density: use a curve)",
             }));
         }
-        range("psi", self.psi, |v| v > 0.0, "> 0")?;
-        range("theta", self.theta, |v| v >= 0.0, ">= 0")?;
-        range("f_star", self.f_star, |v| v > 0.0, "> 0")?;
+        range("psi", self.psi, &POSITIVE)?;
+        range("theta", self.theta, &NON_NEGATIVE)?;
+        range("f_star", self.f_star, &POSITIVE)?;
         // A table answers up to its F* range's end: no further than the
         // model's F* <= 1 (its ghost nodes may lie beyond, up to F_STAR_LIMIT).
-        check("f_star", self.f_star.1, "<= 1 (a pressure at most the hardness)", |v| {
-            v <= crate::F_STAR_MAX
-        })?;
-        let count = |name, n: usize, min: usize| {
-            check(name, n as f64, "a whole number from 5 to 4096", |v| {
-                v >= min as f64 && v <= 4096.0
-            })
-        };
-        count("psi_nodes", self.nodes[0], 5)?;
-        count("theta_nodes", self.nodes[1], 5)?;
-        count("f_nodes", self.nodes[2], 5)?;
-        check("ghosts", self.ghosts as f64, "from 0 to 8", |v| v <= 8.0)?;
+        check_in("f_star", self.f_star.1, &F_STAR_END)?;
+        check_count("psi_nodes", self.nodes[0], &NODES)?;
+        check_count("theta_nodes", self.nodes[1], &NODES)?;
+        check_count("f_nodes", self.nodes[2], &NODES)?;
+        check_count("ghosts", self.ghosts, &GHOSTS)?;
         let (h_lo, h_hi, h_n) = self.h_star;
-        range("h_star", (h_lo, h_hi), |v| v.abs() <= H_LIMIT, "within ±1e6")?;
-        check("h_star", h_hi, "within ±1e6", |v| v <= H_LIMIT)?;
-        check("h_nodes", h_n as f64, "a whole number from 2 to 100000", |v| {
-            (2.0..=1e5).contains(&v)
-        })?;
-        check("tolerance", self.tolerance, "in (0, 1]", |v| v > 0.0 && v <= 1.0)?;
+        range("h_star", (h_lo, h_hi), &H_STAR)?;
+        check_count("h_nodes", h_n, &H_NODES)?;
+        check_in("tolerance", self.tolerance, &TOLERANCE)?;
         verify::check_samples(self.samples)?;
         // The model must be valid at every node, ghost nodes included: at
         // both ends of the ψ axis and at the top of the θ axis.
@@ -258,32 +280,16 @@ impl BuildOptions {
         let theta_hi = ax_t.value(ax_t.nodes - 1);
         params_of(self, self.psi.0, self.theta.0).validate()?;
         params_of(self, self.psi.1, self.theta.1).validate()?;
-        let ghost_psi = "in [1e-3, 1e3], ghost nodes included";
-        check("psi", psi_lo, ghost_psi, |v| v >= PSI_MIN)?;
-        check("psi", psi_hi, ghost_psi, |v| v <= PSI_MAX)?;
-        check("theta", theta_hi, "<= 1e3, ghost nodes included", |v| v <= THETA_MAX)?;
-        check(
-            "f_star",
-            ax_f.value(ax_f.nodes - 1),
-            "<= 100, ghost nodes included",
-            |v| v <= F_STAR_LIMIT,
-        )?;
+        check_in("psi", psi_lo, &GHOST_PSI)?;
+        check_in("psi", psi_hi, &GHOST_PSI)?;
+        check_in("theta", theta_hi, &GHOST_THETA)?;
+        check_in("f_star", ax_f.value(ax_f.nodes - 1), &GHOST_F_STAR)?;
         // Sizes: the table's coefficient arrays (the limit `Table` accepts)
         // and the integration grid (five arrays of doubles, twice over).
         let lookup = axes.iter().map(|a| (a.nodes + 2) as f64).product::<f64>();
-        check(
-            "grid_nodes",
-            lookup,
-            "at most 268435456 (NP+2·ghosts+2)·(NT+ghosts+2)·(NF+2·ghosts+2)",
-            |v| v <= (1u64 << 28) as f64,
-        )?;
+        check_in("grid_nodes", lookup, &GRID_NODES)?;
         let points = (ax_p.nodes * ax_t.nodes) as f64 * h_n as f64;
-        check(
-            "grid_points",
-            points,
-            "at most 67108864 (psi nodes × theta nodes × h* points, ghost nodes included)",
-            |v| v <= (1u64 << 26) as f64,
-        )?;
+        check_in("grid_points", points, &GRID_POINTS)?;
         Ok(())
     }
 

@@ -9,14 +9,12 @@ use crate::table::{Accuracy, Table};
 use rayon::prelude::*;
 
 /// The accepted numbers of verification points.
-pub const SAMPLES: std::ops::RangeInclusive<usize> = 2..=10_000_000;
+pub static SAMPLES: crate::bound::Bound = crate::bound::Bound::whole(2, 10_000_000);
 
 /// `Ok` for an accepted number of verification points, else a message
 /// naming the range.
 pub fn check_samples(samples: usize) -> Result<(), crate::ParamError> {
-    crate::checks::check("samples", samples as f64, "a whole number from 2 to 10000000", |v| {
-        SAMPLES.contains(&(v as usize))
-    })
+    crate::checks::check_count("samples", samples, &SAMPLES)
 }
 
 /// A table measured against direct integration, and its verdict.

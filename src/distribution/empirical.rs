@@ -4,11 +4,16 @@ use super::density::Density;
 use super::family::{DistributionFamily, Parameters};
 use super::shape::Form;
 use super::{DistributionError, Shape};
-use crate::checks::{check, ParamError};
+use crate::bound::Bound;
+use crate::checks::{check_count, check_in, ParamError};
 use std::sync::Arc;
 
 /// Fewest finite heights an [`Empirical`] density accepts.
 pub const EMPIRICAL_MIN_HEIGHTS: usize = 100;
+/// The finite heights an empirical density needs: at least [`EMPIRICAL_MIN_HEIGHTS`].
+pub static HEIGHTS: Bound = Bound::whole(EMPIRICAL_MIN_HEIGHTS, usize::MAX).unit("finite values");
+/// A standard deviation of [`Empirical::sum`]: > 0.
+pub static SD: Bound = Bound::above(0.0);
 
 /// An empirical density of measured heights (MODEL.md §9;
 /// [`HeightDistribution::Empirical`](super::HeightDistribution::Empirical)): the heights are
@@ -87,9 +92,7 @@ impl Empirical {
     pub fn new(heights: &[f64]) -> Result<Empirical, ParamError> {
         let finite = || heights.iter().copied().filter(|v| v.is_finite());
         let n = finite().count();
-        check("heights", n as f64, "at least 100 finite values", |v| {
-            v >= EMPIRICAL_MIN_HEIGHTS as f64
-        })?;
+        check_count("heights", n, &HEIGHTS)?;
         if let Some(bad) = heights.iter().find(|v| v.is_infinite()) {
             return Err(ParamError {
                 name: "heights",
@@ -143,9 +146,8 @@ impl Empirical {
     /// # Ok::<(), ke_friction::ParamError>(())
     /// ```
     pub fn sum(&self, sd: f64, other: &Empirical, other_sd: f64) -> Result<Empirical, ParamError> {
-        let positive = |v: f64| v > 0.0;
-        check("sd", sd, "> 0", positive)?;
-        check("other_sd", other_sd, "> 0", positive)?;
+        check_in("sd", sd, &SD)?;
+        check_in("other_sd", other_sd, &SD)?;
         let (a, b) = (&*self.0, &*other.0);
         let total = sd.hypot(other_sd);
         let (wa, wb) = (sd / total, other_sd / total);

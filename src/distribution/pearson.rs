@@ -6,7 +6,8 @@ use super::family::{DistributionFamily, Parameters};
 use super::gaussian::Gaussian;
 use super::shape::{End, Form, PowerTails};
 use super::{DistributionError, Shape};
-use crate::checks::{check, ParamError};
+use crate::bound::{Bound, End as Limit};
+use crate::checks::{check, check_in, ParamError};
 use crate::quadrature::{Rule, NODES};
 use crate::special::atan2;
 
@@ -15,6 +16,10 @@ use crate::special::atan2;
 pub const PEARSON_KURTOSIS_MAX: f64 = 100.0;
 /// |Skewness| accepted by the Pearson family, at most.
 pub const PEARSON_SKEWNESS_MAX: f64 = 5.0;
+/// The Pearson family's skewness: [-5, 5].
+pub static PEARSON_SKEWNESS: Bound = Bound::new(Limit::Closed(-PEARSON_SKEWNESS_MAX), Limit::Closed(PEARSON_SKEWNESS_MAX));
+/// The Pearson family's kurtosis: at most 100 (and above Sk² + 1).
+pub static PEARSON_KURTOSIS: Bound = Bound::at_most(PEARSON_KURTOSIS_MAX).unit("(not excess: 3 for a Gaussian)");
 
 /// The Pearson system from skewness Sk and kurtosis K (not excess: 3 for
 /// a Gaussian), admissible where K > Sk² + 1
@@ -31,10 +36,8 @@ pub struct Pearson {
 impl Parameters for Pearson {
     fn validate(&self) -> Result<(), ParamError> {
         let Pearson { skewness, kurtosis } = *self;
-        check("skewness", skewness, "in [-5, 5]", |v| v.abs() <= PEARSON_SKEWNESS_MAX)?;
-        check("kurtosis", kurtosis, "<= 100 (not excess: 3 for a Gaussian)", |v| {
-            v <= PEARSON_KURTOSIS_MAX
-        })?;
+        check_in("skewness", skewness, &PEARSON_SKEWNESS)?;
+        check_in("kurtosis", kurtosis, &PEARSON_KURTOSIS)?;
         check(
             "kurtosis",
             kurtosis,

@@ -422,6 +422,8 @@ fn scan_rows_carry_the_single_commands_warnings() {
             line.rsplit(',').next().unwrap().contains("f_star_below_range"),
             "{line}"
         );
+    }
+}
 
 /// Missing points: `--psd` gives the spectra of the largest complete
 /// rectangle and says so (issue 49: it refused; Python's psd() does the same).

@@ -367,8 +367,8 @@ fn help_states_defaults_and_ranges() {
     }
     let eval = help(&["eval", "--help"]);
     for needle in [
-        "[0.001, 1000]",
-        "(0.01928, 100]",
+        ke_friction::bounds::PSI.range(),
+        ke_friction::bounds::BETA.range(),
         "[default: 0.04]",
         "--delta-gamma",
         "J/m²",
@@ -460,6 +460,25 @@ fn every_flag_in_the_readme_is_in_some_help() {
     assert!(missing.is_empty(), "README flags that no --help lists: {missing:?}");
 }
 
+/// Whether `name` (a source file in the folder `rel`) is a module that
+/// its folder's registry lists: a law (`=> toy::Toy` in
+/// src/model/laws/registry.rs), a family (`=> toy::Toy` in
+/// src/distribution/mod.rs) or a format (`toy => [ENTRY]` in
+/// src/topography/read/mod.rs).
+fn registered(root: &std::path::Path, rel: &std::path::Path, name: &str) -> bool {
+    let registries = [
+        ("src/model/laws", "registry.rs"),
+        ("src/distribution", "mod.rs"),
+        ("src/topography/read", "mod.rs"),
+    ];
+    let module = name.trim_end_matches(".rs");
+    registries.iter().any(|(folder, file)| {
+        rel == std::path::Path::new(folder)
+            && std::fs::read_to_string(root.join(folder).join(file))
+                .is_ok_and(|text| text.contains(&format!("=> {module}::")) || text.contains(&format!("{module} => [")))
+    })
+}
+
 #[test]
 fn the_architecture_map_lists_every_folder_and_source_file() {
     let root = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
@@ -493,9 +512,12 @@ fn the_architecture_map_lists_every_folder_and_source_file() {
                 }
                 stack.push(path);
             } else if path.starts_with("src") && name.ends_with(".rs") && name != "mod.rs" {
-                // Every library source file is named (in backticks) in its row.
+                // Every library source file is named (in backticks) in its
+                // row, but for a file of a registry folder that its
+                // registry names (one file and one line: a new law, family
+                // or format needs no edit of the map).
                 let shown = format!("`{name}`");
-                if !map.contains(&shown) {
+                if !map.contains(&shown) && !registered(root, &rel, &name) {
                     missing.push(path.display().to_string());
                 }
             }

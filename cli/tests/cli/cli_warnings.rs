@@ -413,6 +413,7 @@ fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
         let err = run(&f, &["--force", "0.01"]);
         assert!(!err.contains("extrapolated tail"), "{err}");
     }
+}
 
 /// `law --surface` reads the surface once: its anisotropy warning is
 /// printed once (issue 49: twice).

@@ -119,7 +119,12 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
         );
         assert_eq!(name(kef_constants_fit(c)), "consistent");
         assert_eq!(kef_constants_set_model(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
-        assert_eq!(last_error(), "model 'AsPrinted' is unknown: must be one of ke, ceb");
+        // The names of the core's registry (LAWS), not a list here.
+        let laws = <ke_friction::ModelKind as ke_friction::Named>::names().join(", ");
+        assert_eq!(
+            last_error(),
+            format!("model 'AsPrinted' is unknown: must be one of {laws}")
+        );
         assert_eq!(kef_constants_set_model(c, null()), KEF_ERR_ARGUMENT);
         assert_eq!(last_error(), "name is NULL");
         assert_eq!(kef_constants_set_beta(null_mut(), 0.05), KEF_ERR_ARGUMENT);
@@ -267,10 +272,20 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
         );
         // An unknown code, and the empirical family's, which its heights set.
         assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
-        assert_eq!(
-            last_error(),
-            "family 7 is unknown: must be KEF_DIST_GAUSSIAN (0), KEF_DIST_PEARSON (1) or KEF_DIST_WEIBULL (2)"
-        );
+        // The settable families of the core's registry, each once.
+        let message = last_error();
+        assert!(message.starts_with("family 7 is unknown: must be "), "{message}");
+        for family in ke_friction::Family::ALL
+            .into_iter()
+            .filter(|f| *f != ke_friction::Family::Empirical)
+        {
+            let mentions = message.matches(&format!("({})", family.code())).count()
+                + message.matches(&format!("({}, ", family.code())).count();
+            assert_eq!(mentions, 1, "{family}: {message}");
+        }
+        for constant in ["KEF_DIST_GAUSSIAN (0)", "KEF_DIST_PEARSON (1)", "KEF_DIST_WEIBULL (2)"] {
+            assert!(message.contains(constant), "{message}");
+        }
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
             KEF_ERR_ARGUMENT
@@ -468,9 +483,10 @@ fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
             kef_constants_set_distribution_named(by_name, bad.as_ptr(), 0.0, 3.0),
             KEF_ERR_ARGUMENT
         );
+        let families = <ke_friction::Family as ke_friction::Named>::names().join(", ");
         assert_eq!(
             last_error(),
-            "distribution 'lognormal' is unknown: must be one of gaussian, pearson, weibull, empirical"
+            format!("distribution 'lognormal' is unknown: must be one of {families}")
         );
         assert_eq!(
             kef_constants_set_distribution_named(by_name, null(), 0.0, 3.0),

@@ -69,11 +69,12 @@ class HeightDistribution:
     * :meth:`gaussian` -- the paper's Gaussian (the default);
     * :meth:`pearson` -- the Pearson system from skewness Sk and kurtosis K
       (not excess: 3 for a Gaussian), admissible where K > Sk**2 + 1,
-      |Sk| <= 5 and K <= 100; Pearson(0, 3) is the Gaussian;
-    * :meth:`weibull` -- a Weibull distribution of skewness Sk in
-      (-1.1395, 2] (its kurtosis follows from Sk);
-    * :meth:`empirical` -- a kernel density of measured heights (at least
-      100 finite values, any unit; NaN marks a missing point).
+      Sk {ranges[pearson_skewness]} and K {ranges[pearson_kurtosis]};
+      Pearson(0, 3) is the Gaussian;
+    * :meth:`weibull` -- a Weibull distribution of skewness Sk
+      {ranges[weibull_skewness]} (its kurtosis follows from Sk);
+    * :meth:`empirical` -- a kernel density of measured heights
+      ({ranges[heights]}, any unit; NaN marks a missing point).
 
     Inadmissible values raise ValueError naming the argument and its bound.
     Pass one to :class:`Model` (``distribution=``). Immutable; it pickles
@@ -128,15 +129,16 @@ class HeightDistribution:
     def pearson(skewness: float = 0.0, kurtosis: float = 3.0) -> "HeightDistribution":
         """The Pearson distribution of ``skewness`` Sk and ``kurtosis`` K
         (not excess: 3 for a Gaussian). ValueError outside K > Sk**2 + 1,
-        |Sk| <= 5, K <= 100 (or for NaN), naming the argument and the bound."""
+        Sk {ranges[pearson_skewness]}, K {ranges[pearson_kurtosis]} (or for
+        NaN), naming the argument and the bound."""
         _check_real(skewness=skewness, kurtosis=kurtosis)
         return HeightDistribution(_core.DistributionCore.pearson(float(skewness), float(kurtosis)))
 
     @staticmethod
     def weibull(skewness: float = 0.0) -> "HeightDistribution":
-        """The standardised Weibull distribution of ``skewness`` Sk in
-        (-1.1395, 2] (its kurtosis follows: 2.717 at Sk = 0); ValueError
-        outside."""
+        """The standardised Weibull distribution of ``skewness`` Sk
+        {ranges[weibull_skewness]} (its kurtosis follows: 2.717 at Sk = 0);
+        ValueError outside."""
         _check_real(skewness=skewness)
         return HeightDistribution(_core.DistributionCore.weibull(float(skewness)))
 
@@ -165,7 +167,7 @@ class HeightDistribution:
 
     @property
     def family(self) -> str:
-        """The family: ``"gaussian"``, ``"pearson"``, ``"weibull"`` or ``"empirical"``."""
+        """The family: one of the core's ``ke_friction._core.FAMILIES``."""
         return self._core.family()
 
     @property
@@ -244,7 +246,16 @@ class HeightDistribution:
             return f"HeightDistribution.weibull({self.skewness!r})"
         if family == "empirical":
             return f"HeightDistribution.empirical(<{self._core.heights()} heights>)"
-        return "HeightDistribution.gaussian()"
+        if family == "gaussian":
+            return "HeightDistribution.gaussian()"
+        # A family of the core's registry without a constructor here.
+        return f"<HeightDistribution {family}: skewness={self.skewness!r}, kurtosis={self.kurtosis!r}>"
+
+
+# The ranges in the docstrings are the core's (`ke_friction::bounds`).
+for _documented in (HeightDistribution, HeightDistribution.pearson, HeightDistribution.weibull):
+    if _documented.__doc__:  # (None under python -OO)
+        _documented.__doc__ = _documented.__doc__.format(ranges=_core.RANGES)
 
 
 def _resolve(distribution: Any, skewness: Any, kurtosis: Any, heights: Any) -> Optional[HeightDistribution]:

@@ -41,10 +41,11 @@ class Contact:
 class Model:
     """The Kogut-Etsion model by direct integration (microseconds a point).
 
-    psi: plasticity index, in [1e-3, 1e3]; theta: adhesion parameter, in
-    [0, 1e3]; beta: roughness parameter eta*R*sigma, in (0.01928, 100];
-    nu: Poisson's ratio of the softer material, in [0, 0.5); eps_star:
-    intermolecular distance eps/sigma, in [1e-9, 100]; fit: "consistent"
+    psi: plasticity index, {ranges[psi]}; theta: adhesion parameter,
+    {ranges[theta_non_negative]} and {ranges[theta_at_most]}; beta: roughness
+    parameter eta*R*sigma, {ranges[beta]}; nu: Poisson's ratio of the softer
+    material, {ranges[nu]}; eps_star: intermolecular distance eps/sigma,
+    {ranges[eps_star]}; fit: "consistent"
     (MODEL.md section 4) or "as-printed" (the literal printed Eq. 18);
     model: "ke" (Kogut-Etsion) or "ceb" (the CEB-type comparison model).
     A constant left out (or None) is the library's default,
@@ -126,10 +127,11 @@ class Model:
     nu = property(lambda self: self._params["nu"], doc="Poisson's ratio of the softer material (a float).")
     eps_star = property(lambda self: self._params["eps_star"],
                         doc="The intermolecular distance eps/sigma (a float).")
-    fit = property(lambda self: self._params["fit"], doc='The fit: "consistent" or "as-printed".')
-    model = property(lambda self: self._params["model"], doc='The model: "ke" (Kogut-Etsion) or "ceb" (CEB-type).')
+    fit = property(lambda self: self._params["fit"], doc=f"The fit: one of {', '.join(map(repr, _core.FITS))}.")
+    model = property(lambda self: self._params["model"],
+                     doc=f"The model: one of {', '.join(map(repr, _core.MODELS))} (MODEL.md).")
     distribution = property(lambda self: self._params["distribution"],
-                            doc='The heights\' distribution family: "gaussian", "pearson", "weibull" or "empirical".')
+                            doc=f"The heights' distribution family: one of {', '.join(map(repr, _core.FAMILIES))}.")
     skewness = property(lambda self: self._params["skewness"], doc="The skewness of the heights' distribution.")
     kurtosis = property(lambda self: self._params["kurtosis"],
                         doc="The kurtosis (not excess) of the heights' distribution.")
@@ -181,7 +183,7 @@ class Model:
 
 
 if Model.__doc__:  # (None under python -OO)
-    Model.__doc__ = Model.__doc__.format(**DEFAULTS)
+    Model.__doc__ = Model.__doc__.format(ranges=_core.RANGES, **DEFAULTS)
 
 
 def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,

@@ -244,7 +244,7 @@ impl SurfaceRequest {
     /// The interval `field` (`dx`, `dy`) in metres: > 0 where given.
     fn interval(&self, field: Field, value: Option<f64>) -> Result<Option<f64>, RequestError> {
         match value {
-            Some(v) if !(v > 0.0) => Err(RequestError::new(
+            Some(v) if v.is_nan() || v <= 0.0 => Err(RequestError::new(
                 field,
                 Message::text(format!("{} is out of range: must be > 0", Shortest(v))),
                 ErrorKind::of_value(v),

@@ -49,7 +49,10 @@ mod tests {
         let e = StatsError::Bandwidth { alpha: 0.5, beta: 0.01 };
         assert_eq!(
             e.to_string(),
-            "alpha = 0.5 is out of range: must be > 0.8968 (beta = 0.01 must be > 0.01928), else sigma_s is imaginary"
+            format!(
+                "alpha = 0.5 is out of range: must be > 0.8968 (beta = 0.01 must be {}), else sigma_s is imaginary",
+                crate::bounds::BETA_ADMISSIBLE.range()
+            )
         );
         assert!(!ALPHA_ADMISSIBLE.contains(gw::ALPHA_MIN) && ALPHA_ADMISSIBLE.contains(gw::ALPHA_MIN.next_up()));
         assert!(Derived::new(1.0, 1.0, gw::ALPHA_MIN).is_err());

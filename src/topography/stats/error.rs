@@ -66,7 +66,8 @@ pub enum StatsError {
         /// σ of the detrended heights (metres).
         sigma: f64,
     },
-    /// α ≤ 0.8968 (β ≤ 0.01928): σ_s would be imaginary.
+    /// α outside [`ALPHA_ADMISSIBLE`](crate::bounds::ALPHA_ADMISSIBLE) (β outside
+    /// [`BETA_ADMISSIBLE`](crate::bounds::BETA_ADMISSIBLE)): σ_s would be imaginary.
     #[error(
         "alpha = {alpha} is out of range: must be {} (beta = {beta} must be {}), else sigma_s is imaginary",
         crate::gw::ALPHA_ADMISSIBLE.range(),
