@@ -3,15 +3,15 @@
 //! spectrum (the library's `topography::container`). Dispatched from
 //! `scale::run_psd` when its one file is a container.
 
+use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::Args;
+use crate::surface_args::request_failure;
+use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
     combined_psd, container_analysis, container_scan, measurement_psd, read_container, Band, ContainerOptions,
     ContainerSurface, Measurement, MeasurementPsd, Resolved, COMBINED_POINTS_PER_DECADE,
 };
-use crate::output::sig;
-use crate::surface_args::request_failure;
-use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::{evaluate_failure, Field, LambdaS, SurfaceModel};
 use ke_friction::{Load, Shortest, Warnings};
 use std::path::Path;
@@ -226,8 +226,15 @@ pub fn run(args: &Args, path: &Path) -> Result<(), Failure> {
         let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
         let resolved = Resolved::of(&spectra);
         let band = band_of(&asked, &resolved);
-        let a = container_analysis(&s.measurements, &spectra, band, COMBINED_POINTS_PER_DECADE, &asked.how, &asked.loads)
-            .map_err(|e| analysis_failure(path, &asked, e))?;
+        let a = container_analysis(
+            &s.measurements,
+            &spectra,
+            band,
+            COMBINED_POINTS_PER_DECADE,
+            &asked.how,
+            &asked.loads,
+        )
+        .map_err(|e| analysis_failure(path, &asked, e))?;
         warnings.extend(a.warnings.iter().cloned());
         let measurements: Vec<_> = s
             .measurements
@@ -292,7 +299,12 @@ pub fn run(args: &Args, path: &Path) -> Result<(), Failure> {
         for f in &a.frictions {
             let (load, q) = f.as_given();
             let unit = if f.force.is_some() { "N" } else { "Pa" };
-            text.push(format!("load {} {unit}: mu {} (friction {} {unit})", sig(load), sig(f.mu), sig(q)));
+            text.push(format!(
+                "load {} {unit}: mu {} (friction {} {unit})",
+                sig(load),
+                sig(f.mu),
+                sig(q)
+            ));
         }
     }
     crate::output::warn(&warnings);
@@ -371,8 +383,15 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
                     for v in [r.sigma, r.alpha, r.eta, r.radius, r.beta] {
                         cells.push(Shortest(v).to_string());
                     }
-                    cells.push(a.frictions.first().map_or(String::new(), |f| Shortest(f.mu).to_string()));
-                    let (lo, hi) = row.spread.as_ref().map_or((None, None), |v| (Some(v[0].0), Some(v[0].1)));
+                    cells.push(
+                        a.frictions
+                            .first()
+                            .map_or(String::new(), |f| Shortest(f.mu).to_string()),
+                    );
+                    let (lo, hi) = row
+                        .spread
+                        .as_ref()
+                        .map_or((None, None), |v| (Some(v[0].0), Some(v[0].1)));
                     cells.push(lo.map_or(String::new(), |v| Shortest(v).to_string()));
                     cells.push(hi.map_or(String::new(), |v| Shortest(v).to_string()));
                     let kinds: Vec<&str> = a.warnings.iter().map(|w| w.kind().name()).collect();

@@ -361,9 +361,7 @@ fn mutated_containers_do_not_panic() {
 
 mod analysis {
     use super::*;
-    use ke_friction::topography::container::{
-        container_analysis, container_scan, measurement_spectra, Band, Resolved,
-    };
+    use ke_friction::topography::container::{container_analysis, container_scan, measurement_spectra, Band, Resolved};
     use ke_friction::topography::{StatsOptions, Surface, SurfaceModel};
     use ke_friction::{Load, Materials, Model, Params};
 
@@ -394,7 +392,12 @@ mod analysis {
         let how = SurfaceModel::new(MATERIALS);
         let a = container_analysis(ms, &spectra, None, COMBINED_POINTS_PER_DECADE, &how, &loads).unwrap();
         let resolved = Resolved::of(&spectra);
-        let lo = resolved.ranges.iter().flatten().map(|r| r.0).fold(f64::INFINITY, f64::min);
+        let lo = resolved
+            .ranges
+            .iter()
+            .flatten()
+            .map(|r| r.0)
+            .fold(f64::INFINITY, f64::min);
         let hi = resolved.ranges.iter().flatten().map(|r| r.1).fold(0.0, f64::max);
         assert_eq!((a.band.lambda_s, a.band.lambda_c), (lo, hi));
         let with_data: Vec<usize> = (0..ms.len()).filter(|&i| spectra[i].psd.is_some()).collect();
@@ -409,7 +412,10 @@ mod analysis {
             panic!("uniform heights")
         };
         let (nx, _) = ms[a.heights_from].grid();
-        assert!((nx as f64 * t.dx() / hi - 1.0).abs() < 0.5, "the heights come from the longest scan");
+        assert!(
+            (nx as f64 * t.dx() / hi - 1.0).abs() < 0.5,
+            "the heights come from the longest scan"
+        );
         let surface = Surface::new(t.clone(), StatsOptions::default()).unwrap();
         let params = Params::from_physical(&physical)
             .unwrap()
@@ -430,8 +436,7 @@ mod analysis {
     /// The scan over λs spans the union band from the smallest reliable
     /// scale towards λc, each row naming the measurements whose reliable
     /// range overlaps its band; rows over several measurements carry the
-    /// spread of μ across them, which brackets nothing by construction but
-    /// is ordered and positive.
+    /// spread of μ across them (min ≤ max, μ ≥ 0).
     fn check_scan(path: &std::path::Path) {
         let s = read_container(path, &ContainerOptions::default()).unwrap();
         let ms = &s[0].measurements;
@@ -460,7 +465,11 @@ mod analysis {
             assert!(!row.measurements.is_empty());
             if let Some(spread) = &row.spread {
                 assert!(row.measurements.len() >= 2);
-                assert!(spread[0].0 <= spread[0].1 && spread[0].0 >= 0.0, "{spread:?} {:?}", row.band);
+                assert!(
+                    spread[0].0 <= spread[0].1 && spread[0].0 >= 0.0,
+                    "{spread:?} {:?}",
+                    row.band
+                );
                 spreads += 1;
             }
         }
@@ -497,9 +506,18 @@ mod analysis {
         let spectra = measurement_spectra(ms);
         let how = SurfaceModel::new(MATERIALS);
         for band in [
-            Band { lambda_s: 1e-6, lambda_c: 1e-7 },
-            Band { lambda_s: f64::NAN, lambda_c: 1e-3 },
-            Band { lambda_s: 1e-3, lambda_c: 2e-3 },
+            Band {
+                lambda_s: 1e-6,
+                lambda_c: 1e-7,
+            },
+            Band {
+                lambda_s: f64::NAN,
+                lambda_c: 1e-3,
+            },
+            Band {
+                lambda_s: 1e-3,
+                lambda_c: 2e-3,
+            },
         ] {
             let e = container_analysis(ms, &spectra, Some(band), 10, &how, &[]).unwrap_err();
             assert!(e.to_string().starts_with("band"), "{e}");

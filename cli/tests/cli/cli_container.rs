@@ -75,8 +75,20 @@ fn container_psd_rejects_a_bad_tip_radius_and_a_bad_container() {
 }
 
 const MATERIALS: [&str; 14] = [
-    "--e1", "70e9", "--nu1", "0.33", "--e2", "200e9", "--nu2", "0.31", "--hardness", "1e9", "--delta-gamma", "0.5",
-    "--epsilon", "0.4e-9",
+    "--e1",
+    "70e9",
+    "--nu1",
+    "0.33",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.31",
+    "--hardness",
+    "1e9",
+    "--delta-gamma",
+    "0.5",
+    "--epsilon",
+    "0.4e-9",
 ];
 
 fn args<'a>(zip: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
@@ -129,7 +141,10 @@ fn container_mu_json_and_text() {
     let o = kefric(&args(&zip, &["--pressure", "1e6"]));
     assert!(o.status.success(), "{}", stderr(&o));
     let text = String::from_utf8(o.stdout).unwrap();
-    assert!(text.contains(&format!("mu {}", ke_friction::Shortest::sig(a.frictions[0].mu))), "{text}");
+    assert!(
+        text.contains(&format!("mu {}", ke_friction::Shortest::sig(a.frictions[0].mu))),
+        "{text}"
+    );
     assert!(text.contains("band: λs"));
 }
 
@@ -152,7 +167,9 @@ fn container_scan_rows_name_their_measurements() {
         .fold(f64::INFINITY, f64::min);
     assert_eq!(rows[0]["lambda_s"].as_f64(), Some(smallest));
     assert!(rows.iter().all(|r| !r["measurements"].as_array().unwrap().is_empty()));
-    assert!(rows.iter().any(|r| r["spread"].is_array() && r["measurements"].as_array().unwrap().len() >= 2));
+    assert!(rows
+        .iter()
+        .any(|r| r["spread"].is_array() && r["measurements"].as_array().unwrap().len() >= 2));
     let o = kefric(&args(&zip, &["--pressure", "1e6", "--scan", "--csv"]));
     assert!(o.status.success(), "{}", stderr(&o));
     let out = String::from_utf8(o.stdout).unwrap();
@@ -166,7 +183,10 @@ fn container_scan_rows_name_their_measurements() {
 fn container_mu_rejects_bad_inputs() {
     let zip = format!("{DATA}/uniform.zip");
     for (extra, flag) in [
-        (vec!["--pressure", "1e6", "--lambda-s", "1", "--lambda-c", "1e-3"], "--lambda-s"),
+        (
+            vec!["--pressure", "1e6", "--lambda-s", "1", "--lambda-c", "1e-3"],
+            "--lambda-s",
+        ),
         (vec!["--pressure", "1e6", "--lambda-c", "-1"], "--lambda-c"),
         (vec!["--pressure", "1e6", "--scan", "--per-decade", "0"], "--per-decade"),
         (vec!["--pressure", "1e6", "--scan", "--from", "1e-6"], "--from"),
@@ -177,6 +197,11 @@ fn container_mu_rejects_bad_inputs() {
     }
     // No materials: the message names them.
     let o = kefric(&["surface", &zip, "--pressure", "1e6"]);
-    let why = bad_input_problem(o.status.code(), &String::from_utf8_lossy(&o.stdout), &stderr(&o), "--e1");
+    let why = bad_input_problem(
+        o.status.code(),
+        &String::from_utf8_lossy(&o.stdout),
+        &stderr(&o),
+        "--e1",
+    );
     assert!(why.is_none(), "{why:?}");
 }

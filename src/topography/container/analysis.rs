@@ -12,7 +12,7 @@ use super::{
     Moments, Roughness,
 };
 use crate::topography::{EvaluateError, StatsOptions, Surface, SurfaceModel};
-use crate::{Classify, ErrorKind, Friction, Load, Model, Params, Warning};
+use crate::{Classify, ErrorKind, Friction, Load, Model, Params, Shortest, Warning};
 
 /// The band of scales μ is computed over (metres): λs the shortest
 /// wavelength, λc the longest.
@@ -90,7 +90,11 @@ pub enum AnalysisError {
     #[error("band: {0}")]
     Band(String),
     /// The moments make no roughness (α out of range, a zero moment).
-    #[error("band {lambda_s}..{lambda_c} m: its spectral moments make no roughness (m0, m2, m4 > 0 and α in range needed)")]
+    #[error(
+        "band {}..{} m: its spectral moments make no roughness (m0, m2, m4 > 0 and α in range needed)",
+        Shortest(*lambda_s),
+        Shortest(*lambda_c)
+    )]
     Roughness {
         /// λs (m).
         lambda_s: f64,
@@ -284,13 +288,15 @@ fn band_moments(psd: &crate::topography::Psd, band: Band) -> Result<Moments, Ana
     if !(band.lambda_s > 0.0 && band.lambda_c > band.lambda_s && band.lambda_c.is_finite()) {
         return Err(AnalysisError::Band(format!(
             "λs {} m and λc {} m: need 0 < λs < λc, finite",
-            band.lambda_s, band.lambda_c
+            Shortest(band.lambda_s),
+            Shortest(band.lambda_c)
         )));
     }
     spectral_moments(psd, band.lambda_s, band.lambda_c).ok_or_else(|| {
         AnalysisError::Band(format!(
             "λs {} m to λc {} m holds fewer than two points of the spectrum",
-            band.lambda_s, band.lambda_c
+            Shortest(band.lambda_s),
+            Shortest(band.lambda_c)
         ))
     })
 }
@@ -312,10 +318,7 @@ pub struct ScanRow {
     pub spread: Option<Vec<(f64, f64)>>,
 }
 
-fn result_record<S: serde::Serializer>(
-    r: &Result<ContainerAnalysis, AnalysisError>,
-    s: S,
-) -> Result<S::Ok, S::Error> {
+fn result_record<S: serde::Serializer>(r: &Result<ContainerAnalysis, AnalysisError>, s: S) -> Result<S::Ok, S::Error> {
     use serde::Serialize;
     match r {
         Ok(a) => a.serialize(s),
@@ -344,8 +347,9 @@ pub fn container_scan(
     let lambda_c = lambda_c.unwrap_or(default.lambda_c);
     if !(lambda_c > default.lambda_s && lambda_c.is_finite()) {
         return Err(AnalysisError::Band(format!(
-            "λc {lambda_c} m: must be finite and above the smallest reliable scale {} m",
-            default.lambda_s
+            "λc {} m: must be finite and above the smallest reliable scale {} m",
+            Shortest(lambda_c),
+            Shortest(default.lambda_s)
         )));
     }
     let combined = combined_psd(spectra, super::COMBINED_POINTS_PER_DECADE).ok_or(AnalysisError::NoSpectrum)?;
@@ -416,7 +420,9 @@ fn spread(
             .map(|j| {
                 each.iter()
                     .map(|mus| mus[j])
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), mu| (lo.min(mu), hi.max(mu)))
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), mu| {
+                        (lo.min(mu), hi.max(mu))
+                    })
             })
             .collect(),
     )
