@@ -314,7 +314,11 @@ pub struct ScanRow {
     /// Where two or more measurements overlap the band: each load's
     /// (min, max) μ over the measurements taken alone (each one's own
     /// spectrum over the band, the same heights); `None` otherwise or
-    /// where fewer than two of them give a μ.
+    /// where fewer than two of them give a μ. A measurement that resolves
+    /// only a small part of the band has a small σ alone and may put the
+    /// contact far below the mean plane, where μ is 0: the spread says how
+    /// much μ depends on which instrument is believed, not a statistical
+    /// error.
     pub spread: Option<Vec<(f64, f64)>>,
 }
 
