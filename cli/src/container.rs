@@ -107,6 +107,20 @@ fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value 
 
 /// The container's surfaces, read with the instrument flags.
 fn read(args: &Args, path: &Path) -> Result<Vec<ContainerSurface>, Failure> {
+    // A container's meta.yml gives each measurement's spacing, unit and
+    // detrending: flags that would set them for a loose file are refused
+    // rather than ignored.
+    for (flag, given) in [
+        ("--dx", args.read.dx.is_some()),
+        ("--dy", args.read.dy.is_some()),
+        ("--channel", args.read.channel.is_some()),
+    ] {
+        if given {
+            return Err(Failure::input(format!(
+                "{flag}: not with a container (its meta.yml and data files give each measurement's)"
+            )));
+        }
+    }
     for (name, v) in [
         ("tip-radius", args.read.tip_radius),
         ("resolution", args.read.resolution),

@@ -190,6 +190,7 @@ fn container_mu_rejects_bad_inputs() {
         (vec!["--pressure", "1e6", "--lambda-c", "-1"], "--lambda-c"),
         (vec!["--pressure", "1e6", "--scan", "--per-decade", "0"], "--per-decade"),
         (vec!["--pressure", "1e6", "--scan", "--from", "1e-6"], "--from"),
+        (vec!["--pressure", "1e6", "--dx", "1e-6"], "--dx"),
     ] {
         let o = kefric(&args(&zip, &extra));
         let why = bad_input_problem(o.status.code(), &String::from_utf8_lossy(&o.stdout), &stderr(&o), flag);
