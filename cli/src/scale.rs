@@ -56,6 +56,9 @@ fn row_kinds(r: &serde_json::Value, sep: &str) -> String {
 /// `surface --scan`: one row a λs.
 pub fn run_scan(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scan")?;
+    if crate::container::is_container(path) {
+        return crate::container::run_scan(args, path);
+    }
     let load = args.load.load()?;
     let request = args.request()?;
     let materials = request.check().map_err(|e| request_failure("surface", e))?.materials;

@@ -137,6 +137,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
             "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
         ));
     }
+    if let [path] = args.files.as_slice() {
+        if crate::container::is_container(path) {
+            return crate::container::run(&args, path);
+        }
+    }
     let request = args.request()?;
     let sources: Vec<Source> = args.files.iter().map(|p| Source::Path(p)).collect();
     let analysis = request.run(&sources).map_err(|e| request_failure("surface", e))?;

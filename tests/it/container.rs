@@ -358,3 +358,170 @@ fn mutated_containers_do_not_panic() {
         check(&zip_of(&entries));
     }
 }
+
+mod analysis {
+    use super::*;
+    use ke_friction::topography::container::{container_analysis, container_scan, measurement_spectra, Band, Resolved};
+    use ke_friction::topography::{StatsOptions, Surface, SurfaceModel};
+    use ke_friction::{Load, Materials, Model, Params};
+
+    const MATERIALS: Materials = Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9]);
+
+    fn container_2() -> Option<PathBuf> {
+        let dir = std::env::var_os("KEF_CONTAINERS")
+            .map(PathBuf::from)
+            .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
+        let path = dir.join("container-2.zip");
+        if path.is_file() {
+            Some(path)
+        } else {
+            println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
+            None
+        }
+    }
+
+    /// μ of the whole band equals μ computed by hand from the same
+    /// moments (σ = √m0, η, R from m2, m4: Params::from_physical), with the
+    /// heights of the measurement resolving λc; the band is the union of
+    /// the reliable ranges and rests on every measurement.
+    fn check_whole_band(path: &std::path::Path) {
+        let s = read_container(path, &ContainerOptions::default()).unwrap();
+        let ms = &s[0].measurements;
+        let spectra = measurement_spectra(ms);
+        let loads = [Load::Pressure(1e6), Load::Force { force: 1.0, area: 1e-6 }];
+        let how = SurfaceModel::new(MATERIALS);
+        let a = container_analysis(ms, &spectra, None, COMBINED_POINTS_PER_DECADE, &how, &loads).unwrap();
+        let resolved = Resolved::of(&spectra);
+        let lo = resolved
+            .ranges
+            .iter()
+            .flatten()
+            .map(|r| r.0)
+            .fold(f64::INFINITY, f64::min);
+        let hi = resolved.ranges.iter().flatten().map(|r| r.1).fold(0.0, f64::max);
+        assert_eq!((a.band.lambda_s, a.band.lambda_c), (lo, hi));
+        let with_data: Vec<usize> = (0..ms.len()).filter(|&i| spectra[i].psd.is_some()).collect();
+        assert_eq!(a.measurements, with_data);
+        // By hand.
+        let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE).unwrap();
+        let m = spectral_moments(&combined.psd, lo, hi).unwrap();
+        assert_eq!((a.moments.m0, a.moments.m2, a.moments.m4), (m.m0, m.m2, m.m4));
+        let r = roughness_from_moments(&m).unwrap();
+        let physical = MATERIALS.with_roughness(m.m0.sqrt(), r.radius, r.eta);
+        let Heights::Uniform(t) = &ms[a.heights_from].heights else {
+            panic!("uniform heights")
+        };
+        let (nx, _) = ms[a.heights_from].grid();
+        assert!(
+            (nx as f64 * t.dx() / hi - 1.0).abs() < 0.5,
+            "the heights come from the longest scan"
+        );
+        let surface = Surface::new(t.clone(), StatsOptions::default()).unwrap();
+        let params = Params::from_physical(&physical)
+            .unwrap()
+            .distribution(surface.distribution(None).unwrap());
+        assert_eq!(a.model, params);
+        let model = Model::new(params).unwrap();
+        for (load, f) in loads.iter().zip(&a.frictions) {
+            let want = load.friction(&model, &physical).unwrap();
+            assert_eq!(f.mu, want.mu);
+            assert!(f.mu > 0.0);
+        }
+        // The record serialises with its warnings as {kind, message}.
+        let v = serde_json::to_value(&a).unwrap();
+        assert!(v["roughness"]["beta"].as_f64().unwrap() > 0.0);
+        assert!(v["warnings"].is_array());
+    }
+
+    /// The scan over λs spans the union band from the smallest reliable
+    /// scale towards λc, each row naming the measurements whose reliable
+    /// range overlaps its band; rows over several measurements carry the
+    /// spread of μ across them (min ≤ max, μ ≥ 0).
+    fn check_scan(path: &std::path::Path) {
+        let s = read_container(path, &ContainerOptions::default()).unwrap();
+        let ms = &s[0].measurements;
+        let spectra = measurement_spectra(ms);
+        let resolved = Resolved::of(&spectra);
+        let band = resolved.default_band().unwrap();
+        let how = SurfaceModel::new(MATERIALS);
+        let loads = [Load::Pressure(1e6)];
+        let rows = container_scan(ms, &spectra, None, 5, &how, &loads).unwrap();
+        assert_eq!(rows[0].band.lambda_s, band.lambda_s);
+        let last = rows.last().unwrap().band.lambda_s;
+        assert!(last < band.lambda_c && last * 10f64.powf(1.0 / 5.0) >= band.lambda_c * (1.0 - 1e-12));
+        let decades = (band.lambda_c / band.lambda_s).log10();
+        assert_eq!(rows.len(), (decades * 5.0).ceil() as usize);
+        let mut spreads = 0;
+        for row in &rows {
+            assert_eq!(row.band.lambda_c, band.lambda_c);
+            let want: Vec<usize> = resolved
+                .ranges
+                .iter()
+                .enumerate()
+                .filter(|(_, r)| r.is_some_and(|r| r.0 < band.lambda_c && r.1 > row.band.lambda_s))
+                .map(|(i, _)| i)
+                .collect();
+            assert_eq!(row.measurements, want);
+            assert!(!row.measurements.is_empty());
+            if let Some(spread) = &row.spread {
+                assert!(row.measurements.len() >= 2);
+                assert!(
+                    spread[0].0 <= spread[0].1 && spread[0].0 >= 0.0,
+                    "{spread:?} {:?}",
+                    row.band
+                );
+                spreads += 1;
+            }
+        }
+        // The first row rests on the whole band: the same μ as the analysis.
+        let a = container_analysis(ms, &spectra, Some(band), COMBINED_POINTS_PER_DECADE, &how, &loads).unwrap();
+        assert_eq!(rows[0].result.as_ref().unwrap().frictions[0].mu, a.frictions[0].mu);
+        assert!(spreads > 0, "some band rests on two or more measurements");
+        // Rows carry serialisable records and errors.
+        let v = serde_json::to_value(&rows).unwrap();
+        assert_eq!(v.as_array().unwrap().len(), rows.len());
+    }
+
+    #[test]
+    fn uniform_container_mu_from_the_whole_band() {
+        let path = PathBuf::from(format!("{DATA}/uniform.zip"));
+        check_whole_band(&path);
+        check_scan(&path);
+    }
+
+    #[test]
+    fn container_2_mu_from_the_whole_band() {
+        if let Some(path) = container_2() {
+            check_whole_band(&path);
+            check_scan(&path);
+        }
+    }
+
+    /// A band that is not one is a clear error naming it.
+    #[test]
+    fn a_bad_band_is_refused() {
+        let path = PathBuf::from(format!("{DATA}/uniform.zip"));
+        let s = read_container(&path, &ContainerOptions::default()).unwrap();
+        let ms = &s[0].measurements;
+        let spectra = measurement_spectra(ms);
+        let how = SurfaceModel::new(MATERIALS);
+        for band in [
+            Band {
+                lambda_s: 1e-6,
+                lambda_c: 1e-7,
+            },
+            Band {
+                lambda_s: f64::NAN,
+                lambda_c: 1e-3,
+            },
+            Band {
+                lambda_s: 1e-3,
+                lambda_c: 2e-3,
+            },
+        ] {
+            let e = container_analysis(ms, &spectra, Some(band), 10, &how, &[]).unwrap_err();
+            assert!(e.to_string().starts_with("band"), "{e}");
+        }
+        assert!(container_scan(ms, &spectra, Some(f64::INFINITY), 10, &how, &[]).is_err());
+    }
+}

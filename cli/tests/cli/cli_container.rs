@@ -73,3 +73,136 @@ fn container_psd_rejects_a_bad_tip_radius_and_a_bad_container() {
     assert!(why.is_none(), "{why:?}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+const MATERIALS: [&str; 14] = [
+    "--e1",
+    "70e9",
+    "--nu1",
+    "0.33",
+    "--e2",
+    "200e9",
+    "--nu2",
+    "0.31",
+    "--hardness",
+    "1e9",
+    "--delta-gamma",
+    "0.5",
+    "--epsilon",
+    "0.4e-9",
+];
+
+fn args<'a>(zip: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+    let mut a = vec!["surface", zip];
+    a.extend(MATERIALS);
+    a.extend(extra);
+    a
+}
+
+/// `surface CONTAINER` with materials and a load: μ from the whole band,
+/// equal to the library's `container_analysis` (same record), with the
+/// measurements' list, the combined moments and roughness, the model and
+/// the friction; the text names μ and the band.
+#[test]
+fn container_mu_json_and_text() {
+    use ke_friction::topography::container::{
+        container_analysis, measurement_spectra, read_container, ContainerOptions, COMBINED_POINTS_PER_DECADE,
+    };
+    use ke_friction::topography::SurfaceModel;
+    use ke_friction::{Load, Materials};
+    let zip = format!("{DATA}/uniform.zip");
+    let o = kefric(&args(&zip, &["--pressure", "1e6", "--json"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let s = read_container(zip.as_ref(), &ContainerOptions::default()).unwrap();
+    let ms = &s[0].measurements;
+    let spectra = measurement_spectra(ms);
+    let materials = Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9]);
+    let a = container_analysis(
+        ms,
+        &spectra,
+        None,
+        COMBINED_POINTS_PER_DECADE,
+        &SurfaceModel::new(materials),
+        &[Load::Pressure(1e6)],
+    )
+    .unwrap();
+    assert_eq!(doc["friction"][0]["mu"].as_f64(), Some(a.frictions[0].mu));
+    assert_eq!(doc["combined"]["moments"]["m2"].as_f64(), Some(a.moments.m2));
+    assert_eq!(doc["combined"]["roughness"]["beta"].as_f64(), Some(a.roughness.beta));
+    assert_eq!(doc["combined"]["band"]["lambda_c"].as_f64(), Some(a.band.lambda_c));
+    assert_eq!(doc["measurements"].as_array().unwrap().len(), ms.len());
+    for m in doc["measurements"].as_array().unwrap() {
+        for key in ["file", "name", "unit", "nx", "ny", "dx", "size", "reliable"] {
+            assert!(m.get(key).is_some(), "{key}");
+        }
+    }
+    assert_eq!(doc["combined"]["rests_on"].as_array().unwrap().len(), ms.len());
+    assert!(doc["model"]["psi"].as_f64().unwrap() > 0.0);
+    let o = kefric(&args(&zip, &["--pressure", "1e6"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        text.contains(&format!("mu {}", ke_friction::Shortest::sig(a.frictions[0].mu))),
+        "{text}"
+    );
+    assert!(text.contains("band: λs"));
+}
+
+/// `surface CONTAINER --scan`: rows from the smallest reliable scale, each
+/// naming its measurements (CSV and JSON agree), the spread where two or
+/// more overlap.
+#[test]
+fn container_scan_rows_name_their_measurements() {
+    let zip = format!("{DATA}/uniform.zip");
+    let o = kefric(&args(&zip, &["--pressure", "1e6", "--scan", "--json"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let rows = doc["rows"].as_array().unwrap();
+    assert!(rows.len() > 2);
+    let smallest = doc["measurements"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|m| m["reliable"]["lambda_min"].as_f64())
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(rows[0]["lambda_s"].as_f64(), Some(smallest));
+    assert!(rows.iter().all(|r| !r["measurements"].as_array().unwrap().is_empty()));
+    assert!(rows
+        .iter()
+        .any(|r| r["spread"].is_array() && r["measurements"].as_array().unwrap().len() >= 2));
+    let o = kefric(&args(&zip, &["--pressure", "1e6", "--scan", "--csv"]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = String::from_utf8(o.stdout).unwrap();
+    let mut lines = out.lines();
+    assert!(lines.next().unwrap().starts_with("lambda_s,lambda_c,measurements,"));
+    assert_eq!(lines.count(), rows.len());
+}
+
+/// Bad inputs: exit 2, one line naming the flag.
+#[test]
+fn container_mu_rejects_bad_inputs() {
+    let zip = format!("{DATA}/uniform.zip");
+    for (extra, flag) in [
+        (
+            vec!["--pressure", "1e6", "--lambda-s", "1", "--lambda-c", "1e-3"],
+            "--lambda-s",
+        ),
+        (vec!["--pressure", "1e6", "--lambda-c", "-1"], "--lambda-c"),
+        (vec!["--pressure", "1e6", "--scan", "--per-decade", "0"], "--per-decade"),
+        (vec!["--pressure", "1e6", "--scan", "--from", "1e-6"], "--from"),
+        (vec!["--pressure", "1e6", "--dx", "1e-6"], "--dx"),
+    ] {
+        let o = kefric(&args(&zip, &extra));
+        let why = bad_input_problem(o.status.code(), &String::from_utf8_lossy(&o.stdout), &stderr(&o), flag);
+        assert!(why.is_none(), "{extra:?}: {why:?}");
+    }
+    // No materials: the message names them.
+    let o = kefric(&["surface", &zip, "--pressure", "1e6"]);
+    let why = bad_input_problem(
+        o.status.code(),
+        &String::from_utf8_lossy(&o.stdout),
+        &stderr(&o),
+        "--e1",
+    );
+    assert!(why.is_none(), "{why:?}");
+}

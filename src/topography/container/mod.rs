@@ -23,8 +23,13 @@
 //! and 64 levels of nesting (no aliases), at most
 //! [`MAX_MEASUREMENTS`] measurements.
 
+mod analysis;
 mod spectrum;
 mod yaml;
+
+pub use analysis::{
+    container_analysis, container_scan, measurement_spectra, AnalysisError, Band, ContainerAnalysis, Resolved, ScanRow,
+};
 
 pub use spectrum::{
     combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,

@@ -233,7 +233,7 @@ pub fn combined_psd(spectra: &[MeasurementPsd], per_decade: u32) -> Option<Combi
 }
 
 /// The spectral moments of a band of a 1-D PSD (see [`spectral_moments`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Moments {
     /// m0: the mean square height (m²).
     pub m0: f64,
@@ -304,7 +304,7 @@ pub fn spectral_moments(psd: &Psd, lambda_s: f64, lambda_c: f64) -> Option<Momen
 /// σ = √m0, the bandwidth α = m0·m4/m2², the summit density η, the summit
 /// radius R and β = σ·η·R, by the same functions the single-measurement
 /// statistics use.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Roughness {
     /// rms height σ (m).
     pub sigma: f64,
