@@ -17,9 +17,8 @@
 //! Errors of the binding itself (a wrong length or layout in a direct call
 //! of `_core`) are `ValueError`s too ([`value_error`]).
 
-use ke_friction::topography::ReadError;
 use ke_friction::{Classify, ErrorKind, LookupError};
-use pyo3::exceptions::{PyMemoryError, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
 pyo3::create_exception!(
