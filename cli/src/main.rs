@@ -120,6 +120,15 @@ fn run() -> i32 {
         Command::Surface(args) if args.scale_dependent => scale::run_scale_dependent(&args),
         Command::Surface(args) if args.psd => scale::run_psd(&args),
         Command::Surface(args) if args.scan => scale::run_scan(&args),
+        Command::Surface(args) if args.files.len() == 1 && container::is_container(&args.files[0]) => {
+            if args.csv {
+                Err(Failure::input(
+                    "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
+                ))
+            } else {
+                container::run(&args, &args.files[0])
+            }
+        }
         Command::Surface(args) => surface::run(args),
     };
     // Whatever the command left in stdout's buffer must be written too.

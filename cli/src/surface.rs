@@ -131,16 +131,12 @@ impl Args {
 
 /// Runs `kefric surface`.
 pub fn run(args: Args) -> Result<(), Failure> {
-    // --scan, --psd and --scale-dependent run from main.rs (scale.rs).
+    // --scan, --psd and --scale-dependent run from main.rs (scale.rs), a
+    // container from main.rs too (container.rs).
     if args.csv {
         return Err(Failure::input(
             "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
         ));
-    }
-    if let [path] = args.files.as_slice() {
-        if crate::container::is_container(path) {
-            return crate::container::run(&args, path);
-        }
     }
     let request = args.request()?;
     let sources: Vec<Source> = args.files.iter().map(|p| Source::Path(p)).collect();

@@ -17,7 +17,6 @@ mod record;
 mod request;
 mod scale;
 mod scan;
-mod sensitivity;
 mod stats;
 mod surface;
 mod write;
@@ -29,15 +28,14 @@ pub use psd::{complete_part, psd_all, psd_area, psd_profile_x, psd_profile_y, Ps
 pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use record::{FrictionRecord, Frictions, SurfaceRecord};
 pub use request::{
-    evaluate_failure, reliability_needed, Analysis, Checked, Cutoff, Field, LambdaS, LoadInputs, Message, Part,
-    RequestError, Source, SurfaceRequest, WITH_MATERIALS,
+    band_ends, evaluate_failure, reliability_needed, Analysis, BandEnd, Checked, Cutoff, Field, LambdaS, LoadInputs,
+    Message, Outcome, Part, RequestError, Sensitivity, Source, SurfaceRequest, SENSITIVITY_FAMILIES, WITH_MATERIALS,
 };
 pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
 pub use scan::{scan, ScanError, ScanRange, ScanRow, SCAN_ROWS_MAX};
-pub use sensitivity::{band_ends, BandEnd, Outcome, Sensitivity, SENSITIVITY_FAMILIES};
 pub use stats::{
     combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX,
     PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE,

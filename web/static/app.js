@@ -323,6 +323,10 @@ function message(id, text) {
   $(id).replaceChildren(Object.assign(document.createElement('p'), { className: 'note', textContent: text }));
 }
 
+// μ against the load under each height model of the sensitivity (the
+// chosen one emphasised, the others thinner; a model the surface does not
+// admit named with its reason), the given load marked, and μ at the two
+// ends of the reliable band (the record's sensitivity) below.
 function drawLoad(load, friction) {
   if (!load.load.length) {
     message('mu-load', 'give the materials and a load (force and area, or pressure) for μ');
@@ -330,10 +334,20 @@ function drawLoad(load, friction) {
   }
   const unit = load.unit === 'Pa' ? 'pressure (Pa)' : 'normal force F (N)';
   const given = load.unit === 'Pa' ? friction.pressure : friction.force;
+  const colours = { gaussian: '#2e7d32', pearson: '#6a1b9a', empirical: '#ef6c00' };
+  const models = Object.entries(load.models ?? {}).filter(([, m]) => m.load && m.load.length);
+  const refused = Object.entries(load.models ?? {}).filter(([, m]) => m.error);
+  const tables = [[load.load, load.mu], ...models.map(([, m]) => [m.load, m.mu])];
+  const data = models.length ? uPlot.join(tables) : [load.load, load.mu];
+  const series = [{ label: unit }, { label: `μ (${load.chosen ?? 'chosen'})`, stroke: '#1565c0', width: 3 }];
+  for (const [name] of models) {
+    const chosen = name === load.chosen;
+    series.push({ label: name, stroke: colours[name] ?? '#888', width: chosen ? 0 : 1.5, dash: chosen ? undefined : [6, 4], show: !chosen });
+  }
   plot('mu-load', {
-    scales: { x: { time: false, distr: 3 } },
+    scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },
     axes: [{ label: unit }, { label: 'μ' }],
-    series: [{ label: unit }, { label: 'μ', stroke: '#1565c0', width: 2 }],
+    series,
     hooks: {
       draw: [(u) => {
         const x = u.valToPos(given, 'x', true), y = u.valToPos(friction.mu, 'y', true);
@@ -341,7 +355,15 @@ function drawLoad(load, friction) {
         u.ctx.beginPath(); u.ctx.arc(x, y, 5 * devicePixelRatio, 0, 2 * Math.PI); u.ctx.fill();
       }],
     },
-  }, [load.load, load.mu]);
+  }, data);
+  const notes = refused.map(([name, m]) => `${name}: ${m.error}`);
+  const band = friction.sensitivity?.lambda_s ?? [];
+  if (band.length) {
+    notes.unshift('μ at the reliable band\'s ends: ' + band.map((b) => `λs = ${fmt(b.lambda_s)} m: ${b.mu !== undefined ? fmt(b.mu) : b.error}`).join('; '));
+  }
+  for (const text of notes) {
+    $('mu-load').append(Object.assign(document.createElement('p'), { className: 'note', textContent: text }));
+  }
 }
 
 function drawHistogram(h) {

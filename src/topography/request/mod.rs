@@ -16,7 +16,9 @@ use crate::{Classify, ErrorKind, Family, Fit, Load, LoadError, Materials, ModelK
 use std::path::Path;
 
 mod field;
+mod sensitivity;
 pub use field::{Field, Message, Part, RequestError};
+pub use sensitivity::{band_ends, BandEnd, Outcome, Sensitivity, SENSITIVITY_FAMILIES};
 
 /// The S-filter's nesting index asked for.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -233,7 +235,7 @@ pub struct Analysis {
     /// The statistics' warnings and each load's.
     pub warnings: Warnings,
     /// Each load's sensitivity (with loads, unless switched off).
-    pub sensitivity: Vec<super::Sensitivity>,
+    pub sensitivity: Vec<Sensitivity>,
     /// What the request did that the user did not ask for in so many
     /// words ([`SurfaceRequest::auto_without_cutoff`]): warnings whose
     /// inputs each front end spells its own way.
@@ -499,8 +501,8 @@ impl SurfaceRequest {
 impl SurfaceRequest {
     /// The sensitivity of each of `loads` on `surface` (whose reliability
     /// cut-off is `cutoff`) with `materials`: μ under each of
-    /// [`SENSITIVITY_FAMILIES`](super::SENSITIVITY_FAMILIES) and at the
-    /// two ends of the band ([`band_ends`](super::band_ends)), the other
+    /// [`SENSITIVITY_FAMILIES`] and at the
+    /// two ends of the band ([`band_ends`]), the other
     /// choices this request's.
     pub fn sensitivity_of(
         &self,
@@ -508,8 +510,8 @@ impl SurfaceRequest {
         cutoff: Cutoff,
         materials: Materials,
         loads: &[Load],
-    ) -> Vec<super::Sensitivity> {
-        super::sensitivity::of(self, surface, cutoff, materials, loads)
+    ) -> Vec<Sensitivity> {
+        sensitivity::of(self, surface, cutoff, materials, loads)
     }
 }
 

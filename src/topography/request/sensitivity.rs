@@ -4,8 +4,8 @@
 //! value is exactly the single evaluation with that option
 //! ([`SurfaceRequest::run`](super::SurfaceRequest::run) with it).
 
-use super::request::{Cutoff, SurfaceRequest};
-use super::{ScanRange, StatsOptions, Surface};
+use super::super::{ScanRange, StatsOptions, Surface};
+use super::{Cutoff, SurfaceRequest};
 use crate::{Family, Load, Materials};
 use serde::ser::{SerializeMap, Serializer};
 use serde::Serialize;
@@ -130,14 +130,14 @@ pub(super) fn of(
     loads: &[Load],
 ) -> Vec<Sensitivity> {
     let outcomes = |s: &Surface, family: Option<Family>| -> Vec<Outcome> {
-        let how = super::SurfaceModel {
+        let how = super::super::SurfaceModel {
             family,
             ..request.model_of(materials)
         };
         match s.evaluate(&how, loads) {
             Ok(e) => e.frictions.iter().map(|f| Outcome::Mu(f.mu)).collect(),
             Err(e) => {
-                let e = super::request::evaluate_failure(&e, family, request.loads.field());
+                let e = super::evaluate_failure(&e, family, request.loads.field());
                 vec![Outcome::Error(e.message.to_string()); loads.len()]
             }
         }
@@ -181,8 +181,8 @@ pub(super) fn of(
 
 /// The surface of the same heights with `options`, checked against the
 /// cut-off as the single evaluation is.
-fn rebuild(surface: &Surface, options: StatsOptions, cutoff: Cutoff) -> Result<Surface, super::StatsError> {
-    let one = |t: &super::Topography| {
+fn rebuild(surface: &Surface, options: StatsOptions, cutoff: Cutoff) -> Result<Surface, super::super::StatsError> {
+    let one = |t: &super::super::Topography| {
         let mut s = Surface::new(t.clone(), options)?;
         if let Some(c) = cutoff.value() {
             s.check_reliability(c);
