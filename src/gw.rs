@@ -18,7 +18,7 @@ use std::f64::consts::PI;
 /// to be real (MODEL.md §10).
 pub(crate) const ALPHA_MIN: f64 = 16.0 / PI - 3.0 * 1.732_050_807_568_877_2 + 1.0;
 
-/// The bandwidths α at which σ_s is real: > [`ALPHA_MIN`] (MODEL.md §10),
+/// The bandwidths α at which σ_s is real: > 16/π − 3√3 + 1 (MODEL.md §10),
 /// the check and its message.
 pub static ALPHA_ADMISSIBLE: Bound = Bound::above(ALPHA_MIN);
 

@@ -8,7 +8,7 @@
 //! | `Table` | `ke_friction.TableError` (a `ValueError`) |
 //! | `Internal` | `RuntimeError` ("this is a bug") |
 //!
-//! A surface file's [`ReadError`] is an `OSError` if the file cannot be
+//! A surface file's read error (the core's `ReadError`) is an `OSError` if the file cannot be
 //! read, else a `ValueError` (one over the points limit,
 //! `ReadError::TooManyPoints`, included: its message names the limit and
 //! `max_points`), but for `ReadError::OutOfMemory`, a `MemoryError`

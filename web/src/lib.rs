@@ -2,10 +2,11 @@
 //!
 //! The page (`web/static/`) hands a file's bytes and its options (the URL
 //! query: `kefric surface`'s flags with `_` for `-`, [`keys`]) to
-//! [`Analysis::new`], which reads the file with the core's reader registry
-//! ([`read_bytes`]), takes the statistics and, with materials and a load,
-//! μ exactly as `kefric surface --json` does, and keeps the core's record
-//! ([`SurfaceRecord`]). The curves (μ against load, μ, ψ and β against
+//! [`Analysis::new`], which makes them the core's request
+//! ([`SurfaceRequest`]: the file read by the reader registry, the
+//! statistics and, with materials and a load, μ and its sensitivity exactly
+//! as `kefric surface --json` gives them; errors name the page's fields,
+//! [`label`]), and keeps the core's record ([`SurfaceRecord`]). The curves (μ against load, μ, ψ and β against
 //! λs, the PSD, the height map and histogram) are further methods. Every
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 

@@ -5,7 +5,7 @@
 use crate::{Classify, ErrorKind};
 use std::fmt;
 
-/// One input of a [`SurfaceRequest`], as errors name it: each front end
+/// One input of a [`SurfaceRequest`](super::SurfaceRequest), as errors name it: each front end
 /// spells it its own way (the CLI `--` and the name with `-` for `_`,
 /// Python the name as a keyword, the web page its field's label).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -98,7 +98,7 @@ crate::named!(
 );
 
 impl Field {
-    /// The materials' fields, in [`Materials::FIELDS`]' order.
+    /// The materials' fields, in [`Materials::FIELDS`](crate::Materials::FIELDS)' order.
     pub const MATERIALS: [Field; 7] = [
         Field::E1,
         Field::Nu1,
@@ -177,7 +177,7 @@ impl fmt::Display for Message {
     }
 }
 
-/// Why a [`SurfaceRequest`] has no answer: the input to blame, the
+/// Why a [`SurfaceRequest`](super::SurfaceRequest) has no answer: the input to blame, the
 /// message (which may name other inputs) and the error's kind.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RequestError {
