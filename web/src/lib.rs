@@ -11,7 +11,7 @@
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
 use ke_friction::topography::{
-    complete_part, psd_all, scan, Analysis as Answer, Channel, Cutoff, Derivative, Detrend, Evaluation, Field, Format,
+    complete_part, psd_all, scan, Analysis as Answer, Channel, Checked, Cutoff, Derivative, Detrend, Evaluation, Field, Format,
     LambdaS, LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest,
     Topography, Window, SENSITIVITY_FAMILIES,
 };
@@ -231,6 +231,8 @@ pub struct Analysis {
     load: Option<Load>,
     materials: Option<Materials>,
     record: String,
+    /// Why the model's inputs or μ could not be had (the statistics are).
+    failure: Option<String>,
 }
 
 impl Analysis {
@@ -272,7 +274,22 @@ impl Analysis {
         let (surface, cutoff) = request
             .surface(&[Source::Bytes { bytes, name }])
             .map_err(|e| page_error(&e))?;
-        let mut answer = request.analyse(surface, cutoff, &checked).map_err(|e| page_error(&e))?;
+        // A failed evaluation (a height model the surface does not admit,
+        // inputs out of the model's range) keeps the statistics shown,
+        // with the error beside them.
+        let (mut answer, failure) = match request.analyse(surface.clone(), cutoff, &checked) {
+            Ok(answer) => (answer, None),
+            Err(e) => {
+                let statistics = Checked {
+                    materials: None,
+                    loads: None,
+                };
+                let answer = request
+                    .analyse(surface, cutoff, &statistics)
+                    .map_err(|e| page_error(&e))?;
+                (answer, Some(page_error(&e)))
+            }
+        };
         answer.notes = request.auto_without_cutoff(cutoff, name).into_iter().collect();
         let frictions: &[Friction] = answer.evaluation.as_ref().map_or(&[], |e| &e.frictions);
         let record = SurfaceRecord::new(
@@ -284,14 +301,16 @@ impl Analysis {
         .with_sensitivity(frictions, &answer.sensitivity, false)
         .with_warnings(&answer.warnings);
         let record = serde_json::to_string(&record).map_err(|e| format!("the record: {e}"))?;
+        let evaluated = failure.is_none();
         Ok(Analysis {
             name: name.to_string(),
             options,
-            load: checked.loads.and_then(|l| l.into_iter().next()),
-            materials: checked.materials,
+            load: checked.loads.and_then(|l| l.into_iter().next()).filter(|_| evaluated),
+            materials: checked.materials.filter(|_| evaluated),
             request,
             answer,
             record,
+            failure,
         })
     }
 
@@ -466,9 +485,16 @@ impl Analysis {
         Analysis::analyse(bytes, name, options).map_err(|e| JsError::new(&e))
     }
 
-    /// The record: exactly `kefric surface --json`'s.
+    /// The record: exactly `kefric surface --json`'s (the statistics'
+    /// alone where [`error`](Self::error) says why μ could not be had).
     pub fn record(&self) -> String {
         self.record.clone()
+    }
+
+    /// Why the model's inputs or μ could not be had, in the page's words
+    /// (the statistics were; kefric refuses the whole command).
+    pub fn error(&self) -> Option<String> {
+        self.failure.clone()
     }
 
     /// The warnings (the statistics' and the load's), once a kind, as
@@ -716,6 +742,24 @@ mod tests {
             e,
             "h.txt: the file gives no sampling interval dx: give “Δx” (and “Δy” for a map, if it differs), in “unit of Δx, Δy”"
         );
+    }
+
+    /// A model the surface's inputs refuse: the statistics are kept and
+    /// shown, the error beside them names the page's field.
+    #[test]
+    fn a_failed_evaluation_keeps_the_statistics() {
+        let options = Options::parse(
+            r#"{"dx": "0.5", "xy_unit": "um", "z_unit": "um", "e1": "70e9", "nu1": "0.33", "e2": "200e9",
+                "nu2": "0.31", "hardness": "-1", "delta_gamma": "0.5", "epsilon": "0.4e-9", "pressure": "1e6"}"#,
+        )
+        .unwrap();
+        let a = Analysis::analyse(&text_map(), "h.txt", options).unwrap();
+        let e = a.error().unwrap();
+        assert!(e.starts_with("“hardness H”: "), "{e}");
+        let record: Value = serde_json::from_str(&a.record).unwrap();
+        assert!(record["surface"]["sigma"].as_f64().unwrap() > 0.0);
+        assert!(record.get("model").is_none() && record.get("friction").is_none(), "{record}");
+        assert!(a.mu_against_load_rows().is_empty());
     }
 
     #[test]

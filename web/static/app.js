@@ -139,6 +139,8 @@ function handle(m) {
     case 'result':
       result = m;
       showResult(m);
+      // The statistics are shown; why μ is not (kefric's message in the page's words).
+      if (m.error) showError(m.error);
       requestAnimationFrame(() => {
         $('timing').textContent = `(read, analysed and μ(F) drawn in ${Math.round(performance.now() - started)} ms)`;
         document.body.dataset.drawn = String(run);

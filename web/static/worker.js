@@ -25,6 +25,7 @@ onmessage = async ({ data }) => {
     postMessage({
       type: 'result', id,
       record: analysis.record(),
+      error: analysis.error() ?? null,
       warnings: JSON.parse(analysis.warnings()),
       command: analysis.command(),
       load: JSON.parse(analysis.mu_against_load()),
