@@ -280,6 +280,9 @@ pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
         |e: ke_friction::topography::ScaleError| Failure::of(format!("--scale-dependent: {}", path.display()), e);
     let (_, cutoff) = read.options_for("surface", path, &t)?;
     let cutoff = cutoff.value();
+    // Too few points is said as such, before the detrending could fail on them.
+    scale_dependent_slope(&t, &[]).map_err(failed)?;
+    scale_dependent_curvature(&t, &[]).map_err(failed)?;
     // The statistics' detrending (m2 = the square of the slope at one
     // interval of these heights).
     let t = t

@@ -538,6 +538,9 @@ impl SurfaceCore {
         let distances = slice("distances", &distances)?.into_owned();
         let rows = py
             .detach(|| -> PyResult<_> {
+                // Too few points is said as such, before the detrending
+                // could fail on them.
+                scale_dependent_slope(t, &[]).map_err(raise)?;
                 let detrended = t.detrended_topography(detrend).map_err(raise)?;
                 match order {
                     1 => Ok(scale_dependent_slope(&detrended, &distances)),

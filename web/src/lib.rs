@@ -11,8 +11,8 @@
 //! result crosses to JavaScript as JSON text or a `Float64Array`.
 
 use ke_friction::topography::{
-    complete_part, psd_all, scan, Analysis as Answer, Channel, Checked, Cutoff, Derivative, Detrend, Evaluation, Field, Format,
-    LambdaS, LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest,
+    complete_part, psd_all, scan, Analysis as Answer, Channel, Checked, Cutoff, Derivative, Detrend, Evaluation, Field,
+    Format, LambdaS, LoadInputs, RequestError, ScanRange, Source, StatsOptions, Surface, SurfaceRecord, SurfaceRequest,
     Topography, Window, SENSITIVITY_FAMILIES,
 };
 use ke_friction::{
@@ -758,7 +758,10 @@ mod tests {
         assert!(e.starts_with("“hardness H”: "), "{e}");
         let record: Value = serde_json::from_str(&a.record).unwrap();
         assert!(record["surface"]["sigma"].as_f64().unwrap() > 0.0);
-        assert!(record.get("model").is_none() && record.get("friction").is_none(), "{record}");
+        assert!(
+            record.get("model").is_none() && record.get("friction").is_none(),
+            "{record}"
+        );
         assert!(a.mu_against_load_rows().is_empty());
     }
 
