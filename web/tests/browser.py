@@ -71,6 +71,20 @@ CASES = [
      "resolution": "3e-6"},
     {},
 ]
+# Steel on steel (issue 48): the validity-domain, spikes and tail warnings
+# a shared file must raise on the page as kefric raises them, with the
+# kinds named here among them.
+STEEL = {
+    "e1": "200e9", "nu1": "0.3", "e2": "200e9", "nu2": "0.3",
+    "hardness": "2e9", "delta_gamma": "0.3", "epsilon": "0.4e-9", "area": "1e-5",
+}
+VALIDITY = {
+    "di-1.di": ({**STEEL, "force": "0.01"}, {"psi_domain", "theta_domain", "beta_domain"}),
+    "sur-2.sur": ({**STEEL, "force": "1"}, {"spikes"}),
+    "plu-1.plu": ({**STEEL, "force": "0.01", "distribution": "pearson"}, {"tail"}),
+}
+# None of them on the README's example (CASES[0]).
+VALIDITY_KINDS = {"psi_domain", "theta_domain", "beta_domain", "spikes", "tail"}
 # The page's download links: the record, then the CSV files.
 DOWNLOADS = ["download-json", "download-load", "download-scan", "download-psd", "download-histogram"]
 # Options kefric refuses: the page gives the same message.
@@ -353,6 +367,20 @@ def main():
             read += 1
         if args.topographies:
             print(f"web: {read} instrument files of {args.topographies} compared")
+        for name, (options, kinds) in VALIDITY.items() if args.topographies else []:
+            path = args.topographies / name
+            if not path.is_file():
+                continue
+            check_file(page, exe, path, options, args.out)
+            shown = {w["kind"] for w in json.loads(page.text("record"))["warnings"]}
+            assert kinds <= shown, f"{name}: the page records {sorted(shown)}, not all of {sorted(kinds)}"
+            items = page.d.find_elements(By.CSS_SELECTOR, "#warnings li")
+            assert len(items) >= len(shown), f"{name}: {len(items)} warnings listed on the page, {len(shown)} recorded"
+            print(f"web: {name}: the page warns {sorted(kinds & shown)} as kefric does")
+        page.open(CASES[0])
+        page.load(example)
+        shown = {w["kind"] for w in json.loads(page.text("record"))["warnings"]}
+        assert not shown & VALIDITY_KINDS, f"the README's example warns {sorted(shown & VALIDITY_KINDS)}"
 
         if args.big:
             options = {**MATERIALS, "force": "10", "area": "1e-5"}
