@@ -127,12 +127,22 @@ impl Classify for AnalysisError {
     }
 }
 
+/// A warning's record: its kind and its message.
+#[derive(serde::Serialize)]
+struct WarningRecord {
+    kind: &'static str,
+    message: String,
+}
+
 /// Serialises warnings as `{kind, message}` records.
 fn warning_records<S: serde::Serializer>(warnings: &[Warning], s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeSeq;
     let mut seq = s.serialize_seq(Some(warnings.len()))?;
     for w in warnings {
-        seq.serialize_element(&serde_json::json!({"kind": w.kind().name(), "message": w.to_string()}))?;
+        seq.serialize_element(&WarningRecord {
+            kind: w.kind().name(),
+            message: w.to_string(),
+        })?;
     }
     seq.end()
 }
@@ -326,7 +336,12 @@ fn result_record<S: serde::Serializer>(r: &Result<ContainerAnalysis, AnalysisErr
     use serde::Serialize;
     match r {
         Ok(a) => a.serialize(s),
-        Err(e) => serde_json::json!({ "error": e.to_string() }).serialize(s),
+        Err(e) => {
+            use serde::ser::SerializeMap;
+            let mut map = s.serialize_map(Some(1))?;
+            map.serialize_entry("error", &e.to_string())?;
+            map.end()
+        }
     }
 }
 
