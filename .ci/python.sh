@@ -103,7 +103,7 @@ venv=$out/wheel-venv
   export PATH=$venv/bin:$nocargo
   unset CARGO_HOME RUSTUP_HOME
   if command -v cargo > /dev/null; then echo "python: cargo is still on PATH"; exit 1; fi
-  python -m pip install --quiet --only-binary ke-friction "$wheel" pytest 'dask[distributed]'
+  python -m pip install --quiet --only-binary ke-friction "$wheel" pytest pandas 'dask[distributed]'
   cd "$out"
   python -c "import ke_friction, sys; assert ke_friction.__file__.startswith(sys.prefix), ke_friction.__file__"
   python -m pytest -q -p no:cacheprovider "$root/python/tests"
