@@ -40,6 +40,11 @@ from selenium.webdriver.support.ui import WebDriverWait
 # Every number of the record: relative agreement with the CLI's (the same
 # library, compiled for wasm32 instead of x86-64).
 RTOL = 1e-12
+# The sensitivity's mu at the band's ends: the heights re-filtered (an FFT,
+# whose summation order the x86-64 build's SIMD and wasm32's portable code
+# differ in) and, on a surface filtered far from its own band, a contact so
+# ill-conditioned (plu-1: mu = 7e4) that the two builds differ by 1.8e-12.
+SENSITIVITY_RTOL = 1e-9
 # A 1024 x 1024 X3P read, analysed and mu(F) drawn (issue 40).
 BIG_SECONDS = 1.5
 # ... the best of this many runs (a machine shared with other jobs).
@@ -167,7 +172,8 @@ def compare(page, cli, where="record"):
             compare(a, b, f"{where}[{i}]")
     elif isinstance(cli, (int, float)) and not isinstance(cli, bool):
         assert isinstance(page, (int, float)) and not isinstance(page, bool), f"{where}: {page!r} != {cli!r}"
-        assert math.isclose(page, cli, rel_tol=RTOL, abs_tol=0.0) or page == cli, f"{where}: {page!r} != {cli!r} (rtol {RTOL})"
+        rtol = SENSITIVITY_RTOL if ".sensitivity." in where else RTOL
+        assert math.isclose(page, cli, rel_tol=rtol, abs_tol=0.0) or page == cli, f"{where}: {page!r} != {cli!r} (rtol {rtol})"
     else:
         assert page == cli, f"{where}: {page!r} != {cli!r}"
 
