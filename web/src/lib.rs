@@ -526,8 +526,14 @@ impl Analysis {
             "N"
         };
         let (load, mu): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
-        // The same loads under each height model of the sensitivity, the
-        // chosen one among them.
+        let chosen = self.params().map(|p| p.constants.distribution.family());
+        json!({ "unit": unit, "load": load, "mu": mu, "chosen": chosen }).to_string()
+    }
+
+    /// μ against the same loads under each height model of the
+    /// sensitivity (JSON: name → `{load, mu}` or `{error}`); drawn after
+    /// the analysis' own curve.
+    pub fn mu_against_load_models(&self) -> String {
         let mut models = serde_json::Map::new();
         if self.load.is_some() {
             for family in SENSITIVITY_FAMILIES {
@@ -541,8 +547,7 @@ impl Analysis {
                 models.insert(family.name().to_string(), value);
             }
         }
-        let chosen = self.params().map(|p| p.constants.distribution.family());
-        json!({ "unit": unit, "load": load, "mu": mu, "models": models, "chosen": chosen }).to_string()
+        Value::Object(models).to_string()
     }
 
     /// The scan over λs (JSON), calling `progress(done, total)` after each row.

@@ -150,6 +150,11 @@ function handle(m) {
     case 'curves':
       result.histogram = m.histogram;
       result.psd = m.psd;
+      // μ(F) under the other height models, over the analysis' own curve.
+      if (result.load.load.length && Object.keys(m.models).length) {
+        result.load.models = m.models;
+        drawLoad(result.load, JSON.parse(result.record).friction);
+      }
       drawHistogram(m.histogram);
       drawPsd(m.psd);
       status('scan over λs…', null);

@@ -34,7 +34,9 @@ onmessage = async ({ data }) => {
     let histogram = null, psd = null;
     try { histogram = JSON.parse(analysis.histogram(60)); } catch (e) { histogram = { error: String(e.message ?? e) }; }
     try { psd = JSON.parse(analysis.psd()); } catch (e) { psd = { error: String(e.message ?? e) }; }
-    postMessage({ type: 'curves', id, histogram, psd });
+    let models = {};
+    try { models = JSON.parse(analysis.mu_against_load_models()); } catch (e) { models = {}; }
+    postMessage({ type: 'curves', id, histogram, psd, models });
     let scan;
     try {
       scan = JSON.parse(analysis.scan((done, total) => postMessage({ type: 'progress', id, done, total })));
