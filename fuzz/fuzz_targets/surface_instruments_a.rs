@@ -315,7 +315,10 @@ fn plu(p: &Plu) -> Vec<u8> {
             h.extend((v.get() as f32).to_le_bytes());
         }
         h.extend([0u8; 8]);
-        let rgb = (3 * n * i64::from(images)).clamp(0, 3 * MAX_VALUES as i64) as usize;
+        let rgb = 3i64
+            .saturating_mul(n)
+            .saturating_mul(i64::from(images))
+            .clamp(0, 3 * MAX_VALUES as i64) as usize;
         h.extend(std::iter::repeat_n(0x80u8, rgb));
     }
     h
