@@ -483,7 +483,7 @@ impl fmt::Display for Warning {
             Warning::BetaOutsideDomain { beta } => write!(
                 f,
                 "beta = {} is outside {} (within a factor 4 of the paper's beta = 0.04, from Greenwood and Williamson): \
-                 the surface is unlike those the model was built for; check the band (--lambda-s) and \
+                 the surface is unlike those the model was built for; check the band (lambda_s) and \
                  the sampling",
                 s(beta),
                 crate::bound::domain::BETA.range()
@@ -496,7 +496,7 @@ impl fmt::Display for Warning {
                 f,
                 "the heights have spikes: kurtosis {} (limit {}), {beyond} of {points} points beyond {} sigma \
                  of the mean plane; outliers decide the height density's tail: clean the data (remove \
-                 outliers, fill dropouts) or filter (--lambda-s)",
+                 outliers, fill dropouts) or filter (lambda_s)",
                 s(kurtosis),
                 Shortest(KURTOSIS_MAX),
                 Shortest(SPIKE_SIGMA)
@@ -509,7 +509,7 @@ impl fmt::Display for Warning {
                 f,
                 "the contact lies on an extrapolated tail: h* = {} with the highest measured height at {} \
                  sigma and {above} measured points above the separation (fewer than {}): mu comes from the \
-                 height density beyond the data; compare --distribution empirical and gaussian, or a \
+                 height density beyond the data; compare the empirical and gaussian height models, or a \
                  heavier load",
                 s(h_star),
                 s(max_height),

@@ -97,7 +97,7 @@ impl Ctx<'_> {
                 (_, 1) => Ok(0),
                 (_, 0) => Err(error("the file has no channel of heights".into())),
                 _ => Err(error(
-                    "the file has several channels and none is a height channel: choose one with channel / --channel"
+                    "the file has several channels and none is a height channel: choose one with the channel option"
                         .into(),
                 )),
             },

@@ -359,7 +359,7 @@ pub enum ReadError {
     },
     /// The file declares more points than [`ReadOptions::max_points`].
     #[error(
-        "{}: {what} makes {points} points, over the limit of {limit} (raise it with max_points / --max-points)",
+        "{}: {what} makes {points} points, over the limit of {limit} (raise it with the max_points option)",
         path.display()
     )]
     TooManyPoints {
