@@ -74,22 +74,7 @@ fn container_psd_rejects_a_bad_tip_radius_and_a_bad_container() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-const MATERIALS: [&str; 14] = [
-    "--e1",
-    "70e9",
-    "--nu1",
-    "0.33",
-    "--e2",
-    "200e9",
-    "--nu2",
-    "0.31",
-    "--hardness",
-    "1e9",
-    "--delta-gamma",
-    "0.5",
-    "--epsilon",
-    "0.4e-9",
-];
+use crate::cli_surface::MATERIAL_FLAGS as MATERIALS;
 
 fn args<'a>(zip: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
     let mut a = vec!["surface", zip];

@@ -483,7 +483,7 @@ impl SurfaceRequest {
         };
         let sensitivity = match (&evaluation, checked.materials) {
             (Some(e), Some(materials)) if self.sensitivity && !e.frictions.is_empty() => {
-                self.sensitivity_of(&surface, cutoff, materials, &loads)
+                sensitivity::of(self, &surface, cutoff, materials, &loads, Some(e))
             }
             _ => Vec::new(),
         };
@@ -511,7 +511,7 @@ impl SurfaceRequest {
         materials: Materials,
         loads: &[Load],
     ) -> Vec<Sensitivity> {
-        sensitivity::of(self, surface, cutoff, materials, loads)
+        sensitivity::of(self, surface, cutoff, materials, loads, None)
     }
 }
 
