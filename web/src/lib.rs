@@ -536,8 +536,15 @@ impl Analysis {
     pub fn mu_against_load_models(&self) -> String {
         let mut models = serde_json::Map::new();
         if self.load.is_some() {
+            let chosen = self.params().map(|p| p.constants.distribution.family_kind());
             for family in SENSITIVITY_FAMILIES {
-                let value = match self.mu_against_load_under(family) {
+                // The analysis' own family: its curve, not solved again.
+                let rows = if chosen == Some(family) {
+                    Ok(self.mu_against_load_rows())
+                } else {
+                    self.mu_against_load_under(family)
+                };
+                let value = match rows {
                     Ok(rows) => {
                         let (load, mu): (Vec<f64>, Vec<f64>) = rows.into_iter().unzip();
                         json!({ "load": load, "mu": mu })
