@@ -1,0 +1,242 @@
+//! Several measurements of one surface (a contact.engineering container,
+//! or loose files): each measurement's reliable spectrum with the combined
+//! one, and μ against λs with its spread across the measurements
+//! (`kefric plot surface CONTAINER --psd`, `--scan`).
+
+use super::chart::{Chart, ChartAxis, Corner, LineStyle, Markers, Page, Series};
+use super::paper::SHAPES;
+use super::surface::{log_axis, marker};
+use super::{FigureError, BLACK_INDEX};
+use crate::topography::container::{MeasurementPsd, ScanRow};
+use crate::topography::Psd;
+use std::f64::consts::PI;
+
+/// The palette's colours a measurement may take (black is the combined
+/// spectrum's).
+const COLOURS: usize = BLACK_INDEX;
+
+/// Bins a decade of a measurement's spectrum as drawn.
+pub const DRAWN_PER_DECADE: f64 = 100.0;
+
+/// The positive points of a spectrum.
+fn points(p: &Psd) -> Vec<(f64, f64)> {
+    p.q.iter()
+        .zip(&p.c)
+        .filter(|(q, c)| **q > 0.0 && **c > 0.0 && q.is_finite() && c.is_finite())
+        .map(|(q, c)| (*q, *c))
+        .collect()
+}
+
+/// A measurement's spectrum as drawn: its points averaged (q and C) in
+/// bins of 1/[`DRAWN_PER_DECADE`] decade, so that a dense, noisy spectrum
+/// (thousands of points swinging by decades from one to the next) draws as
+/// a line rather than a solid block of spikes; where the spectrum is
+/// sparser than the bins its points are kept as they are.
+fn drawn(p: &Psd) -> Vec<(f64, f64)> {
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    let mut bin = (i64::MIN, 0.0, 0.0, 0usize);
+    for (q, c) in points(p) {
+        let b = (q.log10() * DRAWN_PER_DECADE).floor() as i64;
+        if b != bin.0 && bin.3 > 0 {
+            out.push((bin.1 / bin.3 as f64, bin.2 / bin.3 as f64));
+            bin = (b, 0.0, 0.0, 0);
+        }
+        bin.0 = b;
+        bin.1 += q;
+        bin.2 += c;
+        bin.3 += 1;
+    }
+    if bin.3 > 0 {
+        out.push((bin.1 / bin.3 as f64, bin.2 / bin.3 as f64));
+    }
+    out
+}
+
+/// Each measurement's reliable 1-D PSD (log–log; averaged in bins of
+/// 1/[`DRAWN_PER_DECADE`] decade) in its own colour,
+/// labelled `label` (its name and instrument), clipped to its reliable
+/// range, its reliability cut-off (tip radius or resolution) dotted in its
+/// colour where one is given; the combined spectrum on top in black with
+/// markers. A measurement without a reliable spectrum keeps its legend
+/// entry, saying so. `title` names the surface.
+pub fn container_psd_page(
+    title: &str,
+    measurements: &[(String, &MeasurementPsd)],
+    combined: Option<&Psd>,
+) -> Result<Page, FigureError> {
+    let mut series: Vec<Series> = measurements
+        .iter()
+        .enumerate()
+        .map(|(i, (label, m))| {
+            let label = match &m.psd {
+                Some(_) => label.clone(),
+                None => format!("{label} (no reliable spectrum)"),
+            };
+            Series::line(Some(label), m.psd.as_ref().map(drawn).unwrap_or_default(), i % COLOURS)
+        })
+        .collect();
+    if let Some(c) = combined {
+        series.push(Series {
+            markers: Some(Markers {
+                shape: SHAPES[0],
+                phase: 0.0,
+            }),
+            ..Series::line(Some("combined".into()), points(c), BLACK_INDEX)
+        });
+    }
+    let x = log_axis("q (rad/m)", &series, true)?;
+    let y = log_axis("C¹ᴰ (m³)", &series, false)?;
+    for (i, (_, m)) in measurements.iter().enumerate() {
+        if let Some(cutoff) = m.cutoff {
+            let q = 2.0 * PI / cutoff;
+            if q > x.range.0 && q < x.range.1 {
+                let mut line = marker("", q, y.range, i % COLOURS);
+                line.label = None;
+                series.push(line);
+            }
+        }
+    }
+    Ok(Page::single(Chart {
+        title: Some(format!(
+            "reliable power spectra and the combined one (dotted: reliability cut-offs): {title}"
+        )),
+        x,
+        y,
+        series,
+        legend: Corner::Clear,
+    }))
+}
+
+/// μ against λs from a scan of the combined spectrum (above: μ with a
+/// load, else ψ; the spread of μ across the measurements taken alone
+/// shaded between its min and max where two or more overlap a band), and
+/// below the measurements each λs rests on: measurement k's line at
+/// height k + 1 (the upper half left to the legend) through the λs whose band it overlaps, in its colour, over
+/// its reliable range shaded. `names[k]` labels measurement k, `reliable[k]`
+/// its reliable wavelengths (λ_min, λ_max). Rows without a μ are left out
+/// of the upper panel.
+pub fn container_scan_page(
+    title: &str,
+    names: &[String],
+    reliable: &[Option<(f64, f64)>],
+    rows: &[ScanRow],
+) -> Result<Page, FigureError> {
+    let mu = |r: &ScanRow| r.result.as_ref().ok().and_then(|a| a.frictions.first()).map(|f| f.mu);
+    let has_mu = rows.iter().any(|r| mu(r).is_some_and(|v| v.is_finite() && v > 0.0));
+    let value = |r: &ScanRow| {
+        if has_mu {
+            mu(r)
+        } else {
+            r.result.as_ref().ok().map(|a| a.model.psi)
+        }
+    };
+    let line: Vec<(f64, f64)> = rows
+        .iter()
+        .filter_map(|r| {
+            value(r)
+                .filter(|v| v.is_finite() && *v > 0.0)
+                .map(|v| (r.band.lambda_s, v))
+        })
+        .collect();
+    let symbol = if has_mu { "μ" } else { "ψ" };
+    let mut top = vec![Series {
+        markers: Some(Markers {
+            shape: SHAPES[0],
+            phase: 0.0,
+        }),
+        ..Series::line(Some(format!("{symbol} from the combined spectrum")), line, 0)
+    }];
+    // The spread: one shaded polygon a run of consecutive rows with one.
+    let mut bands: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new()];
+    for r in rows {
+        match r.spread.as_ref().and_then(|s| s.first()).filter(|_| has_mu) {
+            Some(&(lo, hi)) if lo > 0.0 && hi >= lo && hi.is_finite() => {
+                if let Some(b) = bands.last_mut() {
+                    b.push((r.band.lambda_s, lo, hi));
+                }
+            }
+            _ => {
+                if bands.last().is_some_and(|b| !b.is_empty()) {
+                    bands.push(Vec::new());
+                }
+            }
+        }
+    }
+    bands.retain(|b| b.len() >= 2);
+    let mut first = true;
+    for b in &bands {
+        let mut polygon: Vec<(f64, f64)> = b.iter().map(|&(x, lo, _)| (x, lo)).collect();
+        polygon.extend(b.iter().rev().map(|&(x, _, hi)| (x, hi)));
+        let label = first.then(|| "μ from each measurement alone (min to max)".to_string());
+        first = false;
+        top.insert(
+            0,
+            Series {
+                style: LineStyle::Shade,
+                ..Series::line(label, polygon, 0)
+            },
+        );
+    }
+    if top.iter().all(|s| s.points.is_empty()) {
+        return Err(FigureError::Empty(format!("{symbol} is defined at no λs of the scan")));
+    }
+    let x = log_axis("λs (m)", &top, true)?;
+    let y_top = log_axis(symbol, &top, false)?;
+    // Below: the measurements each row rests on.
+    let n = names.len();
+    let mut bottom = Vec::with_capacity(2 * n);
+    for (k, name) in names.iter().enumerate() {
+        let level = (k + 1) as f64;
+        if let Some((lo, hi)) = reliable.get(k).copied().flatten() {
+            let (lo, hi) = (lo.max(x.range.0), hi.min(x.range.1));
+            if lo < hi {
+                bottom.push(Series {
+                    style: LineStyle::Shade,
+                    ..Series::line(
+                        None,
+                        vec![
+                            (lo, level - 0.3),
+                            (hi, level - 0.3),
+                            (hi, level + 0.3),
+                            (lo, level + 0.3),
+                        ],
+                        k % COLOURS,
+                    )
+                });
+            }
+        }
+        let on: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.measurements.contains(&k))
+            .map(|r| (r.band.lambda_s, level))
+            .collect();
+        bottom.push(Series {
+            markers: Some(Markers {
+                shape: SHAPES[(k + 1) % SHAPES.len()],
+                phase: k as f64 / n.max(1) as f64,
+            }),
+            ..Series::line(Some(name.clone()), on, k % COLOURS)
+        });
+    }
+    Ok(Page {
+        top: Chart {
+            title: Some(format!("{symbol} against λs, λc fixed: {title}")),
+            x: x.clone(),
+            y: y_top,
+            series: top,
+            legend: Corner::Clear,
+        },
+        bottom: Some(Chart {
+            title: Some("the measurements each λs rests on (shaded: each one's reliable range)".into()),
+            x,
+            y: ChartAxis {
+                title: "measurement".into(),
+                log: false,
+                range: (0.0, 2.0 * n as f64 + 1.0),
+                ticks: Some((1..=n).map(|k| k as f64).collect()),
+            },
+            series: bottom,
+            legend: Corner::Clear,
+        }),
+    })
+}
