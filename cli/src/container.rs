@@ -39,9 +39,16 @@ impl Input<'_> {
     fn files(&self) -> Vec<String> {
         match self {
             Input::Container(p) => vec![p.display().to_string()],
-            Input::Loose(files) => files.to_vec(),
+            Input::Loose(files) => files.iter().map(|f| loose_path(f)).collect(),
         }
     }
+}
+
+/// The file of a `--measurements` value (its settings apart).
+fn loose_path(value: &str) -> String {
+    value
+        .parse::<ke_friction::topography::container::LooseMeasurement>()
+        .map_or_else(|_| value.to_string(), |m| m.path.display().to_string())
 }
 
 /// The container's path, or the loose files joined by `+`.
@@ -49,7 +56,10 @@ impl std::fmt::Display for Input<'_> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Input::Container(p) => write!(f, "{}", p.display()),
-            Input::Loose(files) => f.write_str(&files.join(" + ")),
+            Input::Loose(files) => {
+                let paths: Vec<String> = files.iter().map(|f| loose_path(f)).collect();
+                f.write_str(&paths.join(" + "))
+            }
         }
     }
 }
