@@ -294,7 +294,9 @@ fn hostile_containers_give_one_line() {
     let profile = b"1\n2\n3\n2\n1\n0\n1\n2\n".as_slice();
     let entry =
         |rest: &str| format!("surfaces:\n- topographies:\n  - datafile: {{original: p.txt}}\n    unit: um\n{rest}");
-    let cases: Vec<(&str, Vec<u8>, Vec<(&str, Vec<u8>)>, &str)> = vec![
+    // (name, meta.yml, other members, what the message says)
+    type Case<'a> = (&'a str, Vec<u8>, Vec<(&'a str, Vec<u8>)>, &'a str);
+    let cases: Vec<Case> = vec![
         (
             "size",
             entry("    size: [8.0, 8.0]\n").into_bytes(),
