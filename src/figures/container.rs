@@ -240,3 +240,70 @@ pub fn container_scan_page(
         }),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A dense spectrum draws as bin averages of 1/100 decade; a sparse
+    /// one as it is.
+    #[test]
+    fn dense_spectra_are_drawn_as_bin_averages() {
+        let q: Vec<f64> = (1..=1000).map(|k| k as f64 * 1e6).collect();
+        let c: Vec<f64> = q
+            .iter()
+            .enumerate()
+            .map(|(k, q)| q.powi(-3) * if k % 2 == 0 { 1e3 } else { 1.0 })
+            .collect();
+        let p = Psd { q, c };
+        let d = drawn(&p);
+        // q from 1e6 to 1e9: 3 decades, at most 301 bins.
+        assert!(d.len() <= 301 && d.len() > 150, "{}", d.len());
+        // The first point alone in its bin, as it is; from 1e8 on, bins of
+        // several points mix the two alternating levels (C·q³ = 1000 and 1).
+        assert_eq!(d[0], (p.q[0], p.c[0]));
+        let upper: Vec<f64> = d
+            .iter()
+            .filter(|(q, _)| *q > 1.1e8 && *q < 9.9e8)
+            .map(|(q, c)| c * q.powi(3))
+            .collect();
+        assert!(upper.len() > 50);
+        assert!(upper.iter().all(|v| *v > 100.0 && *v < 900.0), "{upper:?}");
+        let sparse = Psd {
+            q: vec![0.0, 1e3, 1e5, 1e7],
+            c: vec![1.0, 2.0, 3.0, 4.0],
+        };
+        assert_eq!(drawn(&sparse), vec![(1e3, 2.0), (1e5, 3.0), (1e7, 4.0)]);
+    }
+
+    /// A measurement without a reliable spectrum keeps its legend entry;
+    /// the cut-off of one with a tip radius is marked at 2π/cutoff; the
+    /// combined curve is last but for the markers, in black.
+    #[test]
+    fn psd_page_names_every_measurement() {
+        let p = Psd {
+            q: (0..50).map(|k| 1e6 * 1.1f64.powi(k)).collect(),
+            c: (0..50).map(|k| 1e-20 * 1.1f64.powi(-3 * k)).collect(),
+        };
+        let with = MeasurementPsd {
+            psd: Some(p.clone()),
+            cutoff: Some(1e-6),
+            reason: None,
+        };
+        let without = MeasurementPsd {
+            psd: None,
+            cutoff: None,
+            reason: Some("no reliable data".into()),
+        };
+        let page = container_psd_page("t", &[("a".into(), &with), ("b".into(), &without)], Some(&p)).unwrap();
+        let labels: Vec<Option<&str>> = page.top.series.iter().map(|s| s.label.as_deref()).collect();
+        assert_eq!(
+            labels,
+            vec![Some("a"), Some("b (no reliable spectrum)"), Some("combined"), None]
+        );
+        assert_eq!(page.top.series[2].color, BLACK_INDEX);
+        let cut = &page.top.series[3];
+        assert_eq!(cut.style, LineStyle::Dotted);
+        assert!((cut.points[0].0 - 2.0 * PI / 1e-6).abs() < 1e-3);
+    }
+}
