@@ -150,6 +150,29 @@ fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value 
     })
 }
 
+/// `surface --measurements ...`: the combined spectrum (`--psd`), the scan
+/// over λs (`--scan`) or μ over the whole band, as for a container.
+pub fn run_measurements(args: &Args) -> Result<(), Failure> {
+    let input = Input::Loose(&args.measurements);
+    if args.scale_dependent {
+        return Err(Failure::input(
+            "--scale-dependent: not with --measurements (each file alone, or --psd for the combined spectrum)",
+        ));
+    }
+    if args.psd {
+        return run_psd(args, &input);
+    }
+    if args.scan {
+        return run_scan(args, &input);
+    }
+    if args.csv {
+        return Err(Failure::input(
+            "--csv: with --scan or --psd (the single record is --json)",
+        ));
+    }
+    run(args, &input)
+}
+
 /// The container's surfaces, read with the instrument flags.
 fn read(args: &SurfaceArgs, path: &Input) -> Result<Vec<ContainerSurface>, Failure> {
     // A container's meta.yml gives each measurement's spacing, unit and

@@ -118,7 +118,7 @@ fn run() -> i32 {
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
         Command::Law(args) => law::run(args),
-        Command::Surface(args) if !args.measurements.is_empty() => measurements::run(&args),
+        Command::Surface(args) if !args.measurements.is_empty() => container::run_measurements(&args),
         Command::Surface(args) if args.scale_dependent => scale::run_scale_dependent(&args),
         Command::Surface(args) if args.psd => scale::run_psd(&args),
         Command::Surface(args) if args.scan => scale::run_scan(&args),

@@ -1,40 +1,15 @@
 //! `kefric surface --measurements FILE[@KEY=VALUE,...] ...`: loose files
 //! as the measurements of one surface, read into the same surface a
-//! container of them gives (the library's `container::read_loose`), then
-//! `--psd`, `--scan` or μ exactly as for a container (container.rs).
-//! Two positional files stay two surfaces pressed together.
+//! container of them gives (the library's `container::read_loose`), for
+//! `--psd`, `--scan` or μ exactly as for a container (container.rs, which
+//! calls this). Two positional files stay two surfaces pressed together.
 
-use crate::container::{self, Input};
 use crate::output::Failure;
-use crate::surface::Args;
 use crate::surface_args::SurfaceArgs;
 use ke_friction::topography::container::{
     read_loose, ContainerOptions, ContainerSurface, DetrendMode, LooseMeasurement, LooseOptions,
 };
 use ke_friction::topography::Detrend;
-
-/// `surface --measurements ...`: the combined spectrum (`--psd`), the scan
-/// over λs (`--scan`) or μ over the whole band, as for a container.
-pub fn run(args: &Args) -> Result<(), Failure> {
-    let input = Input::Loose(&args.measurements);
-    if args.scale_dependent {
-        return Err(Failure::input(
-            "--scale-dependent: not with --measurements (each file alone, or --psd for the combined spectrum)",
-        ));
-    }
-    if args.psd {
-        return container::run_psd(args, &input);
-    }
-    if args.scan {
-        return container::run_scan(args, &input);
-    }
-    if args.csv {
-        return Err(Failure::input(
-            "--csv: with --scan or --psd (the single record is --json)",
-        ));
-    }
-    container::run(args, &input)
-}
 
 /// The surface of the loose files `files`, each with its settings, the
 /// flags' unit and detrending for the files without their own.
