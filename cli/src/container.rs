@@ -556,7 +556,29 @@ pub fn plot_page(
             .zip(&spectra)
             .map(|(m, p)| (label(m), p))
             .collect();
-        return container_psd_page(&title, &labelled, combined.as_ref().map(|c| &c.psd)).map_err(figure);
+        // The filters marked as for one surface (`auto`: the smallest
+        // reliable scale of any measurement, the band's default λs).
+        let lambda_s = match read_args.lambda_s {
+            Some(LambdaS::Metres(v)) => Some(v),
+            Some(LambdaS::Auto) => Resolved::of(&spectra).default_band().map(|b| b.lambda_s),
+            None => None,
+        };
+        for (flag, v) in [("--lambda-s", lambda_s), ("--lambda-c", read_args.lambda_c)] {
+            if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+                return Err(Failure::input(format!(
+                    "{flag}: {} is out of range: must be > 0 and finite (metres)",
+                    Shortest(v)
+                )));
+            }
+        }
+        return container_psd_page(
+            &title,
+            &labelled,
+            combined.as_ref().map(|c| &c.psd),
+            lambda_s,
+            read_args.lambda_c,
+        )
+        .map_err(figure);
     }
     let Some(how) = how else {
         return Err(Failure::input(

@@ -58,11 +58,14 @@ fn drawn(p: &Psd) -> Vec<(f64, f64)> {
 /// range, its reliability cut-off (tip radius or resolution) dotted in its
 /// colour where one is given; the combined spectrum on top in black with
 /// markers. A measurement without a reliable spectrum keeps its legend
-/// entry, saying so. `title` names the surface.
+/// entry, saying so. The filters' wavevectors 2π/λs and 2π/λc are
+/// marked where given. `title` names the surface.
 pub fn container_psd_page(
     title: &str,
     measurements: &[(String, &MeasurementPsd)],
     combined: Option<&Psd>,
+    lambda_s: Option<f64>,
+    lambda_c: Option<f64>,
 ) -> Result<Page, FigureError> {
     let mut series: Vec<Series> = measurements
         .iter()
@@ -94,6 +97,11 @@ pub fn container_psd_page(
                 line.label = None;
                 series.push(line);
             }
+        }
+    }
+    for (name, lambda) in [("2π/λs", lambda_s), ("2π/λc", lambda_c)] {
+        if let Some(lambda) = lambda {
+            series.push(marker(name, 2.0 * PI / lambda, y.range, BLACK_INDEX));
         }
     }
     Ok(Page::single(Chart {
@@ -295,7 +303,14 @@ mod tests {
             cutoff: None,
             reason: Some("no reliable data".into()),
         };
-        let page = container_psd_page("t", &[("a".into(), &with), ("b".into(), &without)], Some(&p)).unwrap();
+        let page = container_psd_page(
+            "t",
+            &[("a".into(), &with), ("b".into(), &without)],
+            Some(&p),
+            None,
+            None,
+        )
+        .unwrap();
         let labels: Vec<Option<&str>> = page.top.series.iter().map(|s| s.label.as_deref()).collect();
         assert_eq!(
             labels,
@@ -305,5 +320,8 @@ mod tests {
         let cut = &page.top.series[3];
         assert_eq!(cut.style, LineStyle::Dotted);
         assert!((cut.points[0].0 - 2.0 * PI / 1e-6).abs() < 1e-3);
+        let page = container_psd_page("t", &[("a".into(), &with)], Some(&p), Some(2e-6), Some(1e-5)).unwrap();
+        let marked: Vec<&str> = page.top.series.iter().filter_map(|s| s.label.as_deref()).collect();
+        assert_eq!(marked, vec!["a", "combined", "2π/λs", "2π/λc"]);
     }
 }

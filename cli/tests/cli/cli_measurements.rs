@@ -97,8 +97,25 @@ fn plot_container_psd() {
     for colour in ["#0072B2", "#D55E00", "#009E73", "#000000"] {
         assert!(svg.to_uppercase().contains(colour), "{colour} not drawn");
     }
-    // The tip radius of nonuniform.txt marks its reliability cut-off.
-    assert!(svg.contains("stroke-dasharray") || svg.matches("<polyline").count() > 4);
+    // The filters asked for are marked, as for one surface; a bad one is
+    // refused naming it.
+    let out = dir.arg("filters.svg");
+    ok(&[
+        "plot",
+        "surface",
+        &zip,
+        "--psd",
+        "--lambda-s",
+        "auto",
+        "--lambda-c",
+        "1e-5",
+        "--out",
+        &out,
+    ]);
+    let svg = image(out.as_ref());
+    assert!(svg.contains("2π/λs") && svg.contains("2π/λc"));
+    let o = kefric(&["plot", "surface", &zip, "--psd", "--lambda-c", "-1", "--out", &out]);
+    assert_bad_input(&o, "--lambda-c");
 }
 
 /// `plot surface CONTAINER --scan` with materials and a load: μ against λs,

@@ -242,7 +242,8 @@ fn container_pages() -> Vec<(&'static str, Page)> {
     let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE).unwrap();
     let labelled: Vec<(String, &_)> = names.iter().cloned().zip(&spectra).collect();
     let title = "instrument_export_2024-05-17_sample-03_container.zip";
-    let psd = crate::figures::container_psd_page(title, &labelled, Some(&combined.psd)).unwrap();
+    let psd =
+        crate::figures::container_psd_page(title, &labelled, Some(&combined.psd), Some(1e-6), Some(1e-4)).unwrap();
     let how = crate::topography::SurfaceModel::new(crate::Materials::from_array([
         70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9,
     ]));
