@@ -546,7 +546,13 @@ pub fn plot_page(
             s.name.as_deref().unwrap_or("unnamed")
         );
     }
-    let title = s.name.clone().unwrap_or_else(|| path.to_string());
+    // A container's surface name, else its file; loose files: their count
+    // (the legend names each).
+    let title = match (&s.name, path) {
+        (Some(name), _) => name.clone(),
+        (None, Input::Container(_)) => path.to_string(),
+        (None, Input::Loose(files)) => format!("{} measurements (--measurements)", files.len()),
+    };
     let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
     if psd {
         let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE);
@@ -619,7 +625,7 @@ pub fn plot_page(
         }
     }
     crate::output::warn(&warnings);
-    let names: Vec<String> = s.measurements.iter().map(label).collect();
+    let names: Vec<String> = s.measurements.iter().map(|m| m.name.clone()).collect();
     container_scan_page(&title, &names, &Resolved::of(&spectra).ranges, &rows).map_err(figure)
 }
 

@@ -120,10 +120,10 @@ struct SurfacePlotArgs {
     materials: crate::args::MaterialsArgs,
     #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
     f_star: Option<String>,
-    /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
+    /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed. A container (or --measurements): each measurement's reliable 1-D PSD in its colour and the combined one.
     #[arg(long, conflicts_with = "scan")]
     psd: bool,
-    /// Draw μ (with a load; else ψ), ψ and β against the S-filter's λs instead, from 2·max(dx, dy) to a tenth of the scan size, the reliability cut-off (--tip-radius, --resolution) marked.
+    /// Draw μ (with a load; else ψ), ψ and β against the S-filter's λs instead, from 2·max(dx, dy) to a tenth of the scan size, the reliability cut-off (--tip-radius, --resolution) marked. A container (or --measurements; materials needed): μ of the combined spectrum from the smallest reliable scale, the spread across measurements shaded, the measurements each λs rests on below.
     #[arg(long)]
     scan: bool,
     /// Values a decade of --scan.

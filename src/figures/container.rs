@@ -119,7 +119,7 @@ pub fn container_psd_page(
 /// load, else ψ; the spread of μ across the measurements taken alone
 /// shaded between its min and max where two or more overlap a band), and
 /// below the measurements each λs rests on: measurement k's line at
-/// height k + 1 (the upper half left to the legend) through the λs whose band it overlaps, in its colour, over
+/// height k + 1 (named in the upper legend) through the λs whose band it overlaps, in its colour, over
 /// its reliable range shaded. `names[k]` labels measurement k, `reliable[k]`
 /// its reliable wavelengths (λ_min, λ_max). Rows without a μ are left out
 /// of the upper panel.
@@ -152,7 +152,7 @@ pub fn container_scan_page(
             shape: SHAPES[0],
             phase: 0.0,
         }),
-        ..Series::line(Some(format!("{symbol} from the combined spectrum")), line, 0)
+        ..Series::line(Some(format!("{symbol} (combined spectrum)")), line, 0)
     }];
     // The spread: one shaded polygon a run of consecutive rows with one.
     let mut bands: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new()];
@@ -175,7 +175,7 @@ pub fn container_scan_page(
     for b in &bands {
         let mut polygon: Vec<(f64, f64)> = b.iter().map(|&(x, lo, _)| (x, lo)).collect();
         polygon.extend(b.iter().rev().map(|&(x, _, hi)| (x, hi)));
-        let label = first.then(|| "μ from each measurement alone (min to max)".to_string());
+        let label = first.then(|| "μ of each measurement alone (min to max)".to_string());
         first = false;
         top.insert(
             0,
@@ -218,12 +218,18 @@ pub fn container_scan_page(
             .filter(|r| r.measurements.contains(&k))
             .map(|r| (r.band.lambda_s, level))
             .collect();
+        let markers = Some(Markers {
+            shape: SHAPES[(k + 1) % SHAPES.len()],
+            phase: k as f64 / n.max(1) as f64,
+        });
         bottom.push(Series {
-            markers: Some(Markers {
-                shape: SHAPES[(k + 1) % SHAPES.len()],
-                phase: k as f64 / n.max(1) as f64,
-            }),
-            ..Series::line(Some(name.clone()), on, k % COLOURS)
+            markers,
+            ..Series::line(None, on, k % COLOURS)
+        });
+        // Named in the upper legend (the lower panel has no room for one).
+        top.push(Series {
+            markers,
+            ..Series::line(Some(format!("below: {name}")), Vec::new(), k % COLOURS)
         });
     }
     Ok(Page {
@@ -240,7 +246,7 @@ pub fn container_scan_page(
             y: ChartAxis {
                 title: "measurement".into(),
                 log: false,
-                range: (0.0, 2.0 * n as f64 + 1.0),
+                range: (0.5, n as f64 + 0.5),
                 ticks: Some((1..=n).map(|k| k as f64).collect()),
             },
             series: bottom,

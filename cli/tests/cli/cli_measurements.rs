@@ -138,8 +138,8 @@ fn plot_container_scan() {
     for text in [
         "coarse.txt",
         "map.npy",
-        "μ from the combined spectrum",
-        "μ from each measurement alone",
+        "μ (combined spectrum)",
+        "μ of each measurement alone",
         "the measurements each λs rests on",
     ] {
         assert!(svg.contains(text), "{text} not in the SVG");
