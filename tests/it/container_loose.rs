@@ -200,6 +200,23 @@ fn loose_errors_name_the_file_and_setting() {
         let text = e.to_string();
         assert!(text.contains(says) && text.contains("p.txt"), "{spec}: {text}");
     }
+    // A file over the bound is refused before it is read whole.
+    let small = LooseOptions {
+        container: ContainerOptions {
+            read: ke_friction::topography::ReadOptions {
+                max_bytes: 8,
+                ..Default::default()
+            },
+            ..ContainerOptions::default()
+        },
+        ..LooseOptions::default()
+    };
+    let m: LooseMeasurement = format!("{}@size=8", dir.arg("p.txt")).parse().unwrap();
+    let e = read_loose(&[m], &small).unwrap_err();
+    assert!(
+        e.to_string().contains("over the limit of 8 bytes") && e.to_string().contains("p.txt"),
+        "{e}"
+    );
     // A directory is not read.
     let e = read_loose(&[dir.arg("").parse().unwrap()], &LooseOptions::default()).unwrap_err();
     assert!(e.to_string().contains("not a regular file"), "{e}");
