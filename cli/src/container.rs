@@ -6,7 +6,7 @@
 use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::Args;
-use crate::surface_args::request_failure;
+use crate::surface_args::{request_failure, SurfaceArgs};
 use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
     combined_psd, container_analysis, container_scan, measurement_psd, read_container, Band, ContainerOptions,
@@ -16,6 +16,54 @@ use ke_friction::topography::{evaluate_failure, Field, LambdaS, SurfaceModel};
 use ke_friction::{Load, Shortest, Warnings};
 use std::path::Path;
 
+/// What the measurements come from: a container, or loose files
+/// (`--measurements FILE[@KEY=VALUE,...] ...`, cli/src/measurements.rs).
+#[derive(Debug, Clone, Copy)]
+pub enum Input<'a> {
+    /// A contact.engineering container.
+    Container(&'a Path),
+    /// Loose files, as given to `--measurements`.
+    Loose(&'a [String]),
+}
+
+impl Input<'_> {
+    /// The input an error names: `surface CONTAINER` or `--measurements`.
+    fn context(&self) -> String {
+        match self {
+            Input::Container(p) => format!("surface {}", p.display()),
+            Input::Loose(_) => "--measurements".into(),
+        }
+    }
+
+    /// The files read (`--json`'s `files`).
+    fn files(&self) -> Vec<String> {
+        match self {
+            Input::Container(p) => vec![p.display().to_string()],
+            Input::Loose(files) => files.iter().map(|f| loose_path(f)).collect(),
+        }
+    }
+}
+
+/// The file of a `--measurements` value (its settings apart).
+fn loose_path(value: &str) -> String {
+    value
+        .parse::<ke_friction::topography::container::LooseMeasurement>()
+        .map_or_else(|_| value.to_string(), |m| m.path.display().to_string())
+}
+
+/// The container's path, or the loose files joined by `+`.
+impl std::fmt::Display for Input<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Input::Container(p) => write!(f, "{}", p.display()),
+            Input::Loose(files) => {
+                let paths: Vec<String> = files.iter().map(|f| loose_path(f)).collect();
+                f.write_str(&paths.join(" + "))
+            }
+        }
+    }
+}
+
 /// Whether `path` is a container (a zip with `meta.yml` or `index.json`).
 pub fn is_container(path: &Path) -> bool {
     ke_friction::topography::container::is_container_file(path)
@@ -24,8 +72,8 @@ pub fn is_container(path: &Path) -> bool {
 /// `surface CONTAINER --psd` (`--json`: `measurements` with their spectra
 /// and `combined: {"q": [...], "c": [...]}`; else CSV rows
 /// `measurement,q,c`, the combined spectrum's measurement `combined`).
-pub fn run_psd(args: &Args, path: &Path) -> Result<(), Failure> {
-    let surfaces = read(args, path)?;
+pub fn run_psd(args: &Args, path: &Input) -> Result<(), Failure> {
+    let surfaces = read(&args.read, path)?;
     let mut docs = Vec::new();
     let mut rows = Vec::new();
     for s in &surfaces {
@@ -62,10 +110,7 @@ pub fn run_psd(args: &Args, path: &Path) -> Result<(), Failure> {
         return print_docs(docs, path);
     }
     if !args.csv {
-        outln!(
-            "# {}: each measurement's reliable 1-D PSD along x and the combined one (q in rad/m, C in m^3)",
-            path.display()
-        )?;
+        outln!("# {path}: each measurement's reliable 1-D PSD along x and the combined one (q in rad/m, C in m^3)")?;
     }
     outln!("measurement,q,c")?;
     for r in rows {
@@ -75,13 +120,13 @@ pub fn run_psd(args: &Args, path: &Path) -> Result<(), Failure> {
 }
 
 /// One JSON document, or `{"surfaces": [...]}` for several, with `files`.
-fn print_docs(mut docs: Vec<serde_json::Value>, path: &Path) -> Result<(), Failure> {
+fn print_docs(mut docs: Vec<serde_json::Value>, path: &Input) -> Result<(), Failure> {
     let mut doc = if docs.len() == 1 {
         docs.pop().expect("one surface")
     } else {
         serde_json::json!({ "surfaces": docs })
     };
-    doc["files"] = serde_json::json!([path.display().to_string()]);
+    doc["files"] = serde_json::json!(path.files());
     outln!("{doc}")?;
     Ok(())
 }
@@ -105,26 +150,51 @@ fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value 
     })
 }
 
+/// `surface --measurements ...`: the combined spectrum (`--psd`), the scan
+/// over λs (`--scan`) or μ over the whole band, as for a container.
+pub fn run_measurements(args: &Args) -> Result<(), Failure> {
+    let input = Input::Loose(&args.measurements);
+    if args.scale_dependent {
+        return Err(Failure::input(
+            "--scale-dependent: not with --measurements (each file alone, or --psd for the combined spectrum)",
+        ));
+    }
+    if args.psd {
+        return run_psd(args, &input);
+    }
+    if args.scan {
+        return run_scan(args, &input);
+    }
+    if args.csv {
+        return Err(Failure::input(
+            "--csv: with --scan or --psd (the single record is --json)",
+        ));
+    }
+    run(args, &input)
+}
+
 /// The container's surfaces, read with the instrument flags.
-fn read(args: &Args, path: &Path) -> Result<Vec<ContainerSurface>, Failure> {
+fn read(args: &SurfaceArgs, path: &Input) -> Result<Vec<ContainerSurface>, Failure> {
     // A container's meta.yml gives each measurement's spacing, unit and
     // detrending: flags that would set them for a loose file are refused
     // rather than ignored.
     for (flag, given) in [
-        ("--dx", args.read.dx.is_some()),
-        ("--dy", args.read.dy.is_some()),
-        ("--channel", args.read.channel.is_some()),
+        ("--dx", args.dx.is_some()),
+        ("--dy", args.dy.is_some()),
+        ("--channel", args.channel.is_some()),
     ] {
         if given {
-            return Err(Failure::input(format!(
-                "{flag}: not with a container (its meta.yml and data files give each measurement's)"
-            )));
+            return Err(Failure::input(match path {
+                Input::Container(_) => format!(
+                    "{flag}: not with a container (its meta.yml and data files give each measurement's)"
+                ),
+                Input::Loose(_) => format!(
+                    "{flag}: not with --measurements (each file's own, or its size=, data_source= setting: FILE@KEY=VALUE)"
+                ),
+            }));
         }
     }
-    for (name, v) in [
-        ("tip-radius", args.read.tip_radius),
-        ("resolution", args.read.resolution),
-    ] {
+    for (name, v) in [("tip-radius", args.tip_radius), ("resolution", args.resolution)] {
         if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
             return Err(Failure::input(format!(
                 "--{name}: {} is out of range: must be > 0 and finite (metres)",
@@ -136,13 +206,16 @@ fn read(args: &Args, path: &Path) -> Result<Vec<ContainerSurface>, Failure> {
     // --resolution takes precedence over --tip-radius, as for one file.
     let options = ContainerOptions {
         read: ke_friction::topography::ReadOptions {
-            max_points: args.read.max_points.unwrap_or(ke_friction::topography::MAX_POINTS),
+            max_points: args.max_points.unwrap_or(ke_friction::topography::MAX_POINTS),
             ..Default::default()
         },
-        tip_radius: args.read.tip_radius.filter(|_| args.read.resolution.is_none()),
-        resolution: args.read.resolution,
+        tip_radius: args.tip_radius.filter(|_| args.resolution.is_none()),
+        resolution: args.resolution,
     };
-    read_container(path, &options).map_err(|e| Failure::of(format!("surface {}", path.display()), e))
+    match path {
+        Input::Container(p) => read_container(p, &options).map_err(|e| Failure::of(path.context(), e)),
+        Input::Loose(files) => crate::measurements::read(args, files, options).map(|s| vec![s]),
+    }
 }
 
 /// The model set-up, the loads and the band asked for, checked.
@@ -203,11 +276,11 @@ fn asked(args: &Args) -> Result<Asked, Failure> {
 }
 
 /// An analysis error, naming the flags to blame.
-fn analysis_failure(path: &Path, asked: &Asked, e: AnalysisError) -> Failure {
+fn analysis_failure(path: &Input, asked: &Asked, e: AnalysisError) -> Failure {
     match e {
         AnalysisError::Evaluate(e) => request_failure("surface", evaluate_failure(&e, asked.family, asked.load_field)),
         AnalysisError::Band(_) if asked.band.is_some() => Failure::of("--lambda-s, --lambda-c", e),
-        e => Failure::of(format!("surface {}", path.display()), e),
+        e => Failure::of(path.context(), e),
     }
 }
 
@@ -225,14 +298,14 @@ fn band_of(asked: &Asked, resolved: &Resolved) -> Option<Band> {
 /// `surface CONTAINER` with the materials: μ from the whole band of the
 /// combined spectrum (text, or `--json`: `measurements`, `combined`,
 /// `model`, `friction`, `warnings`).
-pub fn run(args: &Args, path: &Path) -> Result<(), Failure> {
+pub fn run(args: &Args, path: &Input) -> Result<(), Failure> {
     if args.from.is_some() || args.to.is_some() {
         return Err(Failure::input(
             "--from, --to: not with a container (its scan runs over λs from the smallest reliable scale)",
         ));
     }
     let asked = asked(args)?;
-    let surfaces = read(args, path)?;
+    let surfaces = read(&args.read, path)?;
     let mut docs = Vec::new();
     let mut warnings = Warnings::new();
     let mut text = Vec::new();
@@ -338,7 +411,7 @@ const SCAN_HEADER: &str = "lambda_s,lambda_c,measurements,sigma,alpha,eta,radius
 /// towards λc, each row with the measurements it rests on, its warnings and
 /// the spread of μ across the measurements taken alone (text/CSV rows, or
 /// `--json`: `measurements` and `rows`).
-pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
+pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
     if args.from.is_some() || args.to.is_some() {
         return Err(Failure::input(
             "--from, --to: not with a container (its scan runs over λs from the smallest reliable scale to λc)",
@@ -357,7 +430,7 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
     if matches!(args.read.lambda_s, Some(LambdaS::Metres(_))) {
         return Err(Failure::input("--lambda-s: not with --scan (the scan runs over λs)"));
     }
-    let surfaces = read(args, path)?;
+    let surfaces = read(&args.read, path)?;
     let mut docs = Vec::new();
     let mut lines = vec![SCAN_HEADER.to_string()];
     let mut warnings = Warnings::new();
@@ -435,12 +508,132 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
     }
     if !args.csv {
         outln!(
-            "# {}: μ from the combined spectrum over [λs, λc] (m); mu_min..mu_max: μ from each measurement alone",
-            path.display()
+            "# {path}: μ from the combined spectrum over [λs, λc] (m); mu_min..mu_max: μ from each measurement alone"
         )?;
     }
     for line in lines {
         outln!("{line}")?;
     }
     Ok(())
+}
+
+/// `plot surface CONTAINER --psd` or `--scan` (or `--measurements`): the
+/// page of each surface of the input (a container may hold several: the
+/// first is drawn, the others named in a note). `how` and `load` are the
+/// scan's materials and load (ψ without a load); `lambda_c` its λc.
+pub fn plot_page(
+    read_args: &SurfaceArgs,
+    path: &Input,
+    psd: bool,
+    how: Option<&SurfaceModel>,
+    load: Option<Load>,
+    per_decade: usize,
+) -> Result<ke_friction::figures::Page, Failure> {
+    use ke_friction::figures::{container_psd_page, container_scan_page, FigureError};
+    let figure = |e: FigureError| Failure::of(format!("plot surface {path}"), e);
+    let surfaces = read(read_args, path)?;
+    let Some(s) = surfaces.first() else {
+        return Err(Failure::input(format!(
+            "{}: no surface in the container",
+            path.context()
+        )));
+    };
+    if surfaces.len() > 1 {
+        errln!(
+            "note: {}: {} surfaces; the first ({}) is drawn",
+            path.context(),
+            surfaces.len(),
+            s.name.as_deref().unwrap_or("unnamed")
+        );
+    }
+    // A container's surface name, else its file; loose files: their count
+    // (the legend names each).
+    let title = match (&s.name, path) {
+        (Some(name), _) => name.clone(),
+        (None, Input::Container(_)) => path.to_string(),
+        (None, Input::Loose(files)) => format!("{} measurements (--measurements)", files.len()),
+    };
+    let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+    if psd {
+        let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE);
+        let labelled: Vec<(String, &MeasurementPsd)> = s
+            .measurements
+            .iter()
+            .zip(&spectra)
+            .map(|(m, p)| (label(m), p))
+            .collect();
+        // The filters marked as for one surface (`auto`: the smallest
+        // reliable scale of any measurement, the band's default λs).
+        let lambda_s = match read_args.lambda_s {
+            Some(LambdaS::Metres(v)) => Some(v),
+            Some(LambdaS::Auto) => Resolved::of(&spectra).default_band().map(|b| b.lambda_s),
+            None => None,
+        };
+        for (flag, v) in [("--lambda-s", lambda_s), ("--lambda-c", read_args.lambda_c)] {
+            if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
+                return Err(Failure::input(format!(
+                    "{flag}: {} is out of range: must be > 0 and finite (metres)",
+                    Shortest(v)
+                )));
+            }
+        }
+        return container_psd_page(
+            &title,
+            &labelled,
+            combined.as_ref().map(|c| &c.psd),
+            lambda_s,
+            read_args.lambda_c,
+        )
+        .map_err(figure);
+    }
+    let Some(how) = how else {
+        return Err(Failure::input(
+            "plot surface --scan of several measurements: needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon)",
+        ));
+    };
+    if !(1..=1000).contains(&per_decade) {
+        return Err(Failure::input(format!(
+            "--per-decade: {per_decade} is out of range: 1 to 1000"
+        )));
+    }
+    if let Some(v) = read_args.lambda_c.filter(|v| !(v.is_finite() && *v > 0.0)) {
+        return Err(Failure::input(format!(
+            "--lambda-c: {} is out of range: must be > 0 and finite (metres)",
+            Shortest(v)
+        )));
+    }
+    if read_args.lambda_s.is_some() {
+        return Err(Failure::input("--lambda-s: not with --scan (the scan runs over λs)"));
+    }
+    let loads: Vec<Load> = load.into_iter().collect();
+    let rows = container_scan(
+        &s.measurements,
+        &spectra,
+        read_args.lambda_c,
+        per_decade as u32,
+        how,
+        &loads,
+    )
+    .map_err(|e| match e {
+        AnalysisError::Band(_) if read_args.lambda_c.is_some() => Failure::of("--lambda-c", e),
+        e => Failure::of(path.context(), e),
+    })?;
+    let mut warnings = Warnings::new();
+    for row in &rows {
+        if let Ok(a) = &row.result {
+            warnings.note(a.warnings.iter().cloned());
+        }
+    }
+    crate::output::warn(&warnings);
+    let names: Vec<String> = s.measurements.iter().map(|m| m.name.clone()).collect();
+    container_scan_page(&title, &names, &Resolved::of(&spectra).ranges, &rows).map_err(figure)
+}
+
+/// A measurement's legend label: its name and grid (`512 × 512 map`,
+/// `3001-point profile`).
+fn label(m: &Measurement) -> String {
+    match m.grid() {
+        (nx, 1) => format!("{} ({nx}-point profile)", m.name),
+        (nx, ny) => format!("{} ({nx} × {ny} map)", m.name),
+    }
 }

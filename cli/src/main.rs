@@ -32,6 +32,7 @@ mod info;
 mod law;
 mod load_args;
 mod lookup;
+mod measurements;
 mod model_args;
 mod output;
 mod params;
@@ -117,6 +118,7 @@ fn run() -> i32 {
         Command::Info(args) => info::run(args),
         Command::Params(args) => params::run(args),
         Command::Law(args) => law::run(args),
+        Command::Surface(args) if !args.measurements.is_empty() => container::run_measurements(&args),
         Command::Surface(args) if args.scale_dependent => scale::run_scale_dependent(&args),
         Command::Surface(args) if args.psd => scale::run_psd(&args),
         Command::Surface(args) if args.scan => scale::run_scan(&args),
@@ -126,7 +128,7 @@ fn run() -> i32 {
                     "--csv: with --scan, --psd or --scale-dependent (the single record is --json)",
                 ))
             } else {
-                container::run(&args, &args.files[0])
+                container::run(&args, &container::Input::Container(&args.files[0]))
             }
         }
         Command::Surface(args) => surface::run(args),

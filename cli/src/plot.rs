@@ -109,18 +109,21 @@ struct DistributionsArgs {
 #[derive(Debug, clap::Args)]
 struct SurfacePlotArgs {
     /// The surface file, and optionally a second rough surface pressed against it (then no histogram: the summed heights are not a sample).
-    #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+    #[arg(value_name = "FILE", num_args = 1..=2, required_unless_present = "measurements")]
     files: Vec<PathBuf>,
+    /// Files that are measurements of one surface, as `kefric surface --measurements`: FILE or FILE@KEY=VALUE,... (with --psd or --scan). Not with FILE.
+    #[arg(long, value_name = "FILE[@KEY=VALUE,...]", num_args = 1.., conflicts_with = "files")]
+    measurements: Vec<String>,
     #[command(flatten)]
     read: crate::surface_args::SurfaceArgs,
     #[command(flatten)]
     materials: crate::args::MaterialsArgs,
     #[arg(long, value_name = "LO:HI", help = surface_f_star_help())]
     f_star: Option<String>,
-    /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed.
+    /// Draw the power spectral densities instead (log–log, 2π/λs and 2π/λc marked); no materials needed. A container (or --measurements): each measurement's reliable 1-D PSD in its colour and the combined one.
     #[arg(long, conflicts_with = "scan")]
     psd: bool,
-    /// Draw μ (with a load; else ψ), ψ and β against the S-filter's λs instead, from 2·max(dx, dy) to a tenth of the scan size, the reliability cut-off (--tip-radius, --resolution) marked.
+    /// Draw μ (with a load; else ψ), ψ and β against the S-filter's λs instead, from 2·max(dx, dy) to a tenth of the scan size, the reliability cut-off (--tip-radius, --resolution) marked. A container (or --measurements; materials needed): μ of the combined spectrum from the smallest reliable scale, the spread across measurements shaded, the measurements each λs rests on below.
     #[arg(long)]
     scan: bool,
     /// Values a decade of --scan.
@@ -194,6 +197,11 @@ pub fn run(args: Args) -> Result<(), Failure> {
             page.save_scaled(out, scale).map_err(failure)?;
             wrote(out)?;
             Ok(())
+        }
+        What::Surface(a)
+            if !a.measurements.is_empty() || (a.files.len() == 1 && crate::container::is_container(&a.files[0])) =>
+        {
+            measurements_plot(&a)
         }
         What::Surface(a) if a.psd || a.scan => scale_plot(&a),
         What::Surface(a) => {
@@ -289,6 +297,36 @@ fn fit_label(family: Family, stats: &ke_friction::topography::SurfaceStats) -> S
         Family::Empirical => "empirical (the measured heights)".to_string(),
         other => other.name().to_string(),
     }
+}
+
+/// `plot surface CONTAINER` (or `--measurements ...`) `--psd` or `--scan`:
+/// each measurement's spectrum and the combined one, or μ against λs with
+/// its spread and the measurements each λs rests on.
+fn measurements_plot(a: &SurfacePlotArgs) -> Result<(), Failure> {
+    use crate::container::Input;
+    let input = match &a.files[..] {
+        [path] => Input::Container(path),
+        _ => Input::Loose(&a.measurements),
+    };
+    if !(a.psd || a.scan) {
+        return Err(Failure::input(format!(
+            "plot surface {input}: several measurements are drawn with --psd or --scan"
+        )));
+    }
+    if a.f_star.is_some() {
+        return Err(Failure::input("--f-star: not with --psd or --scan"));
+    }
+    let (out, scale) = output(&a.out)?;
+    let how = a
+        .materials
+        .any()
+        .then(|| a.materials.materials(&[]))
+        .transpose()?
+        .map(SurfaceModel::new);
+    let load = if a.scan { a.load.load()? } else { None };
+    let page = crate::container::plot_page(&a.read, &input, a.psd, how.as_ref(), load, a.per_decade)?;
+    page.save_scaled(out, scale).map_err(failure)?;
+    wrote(out)
 }
 
 /// `plot surface --psd` or `--scan`.

@@ -57,7 +57,7 @@ fn row_kinds(r: &serde_json::Value, sep: &str) -> String {
 pub fn run_scan(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scan")?;
     if crate::container::is_container(path) {
-        return crate::container::run_scan(args, path);
+        return crate::container::run_scan(args, &crate::container::Input::Container(path));
     }
     let load = args.load.load()?;
     let request = args.request()?;
@@ -226,7 +226,7 @@ pub fn run_scan(args: &Args) -> Result<(), Failure> {
 pub fn run_psd(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--psd")?;
     if crate::container::is_container(path) {
-        return crate::container::run_psd(args, path);
+        return crate::container::run_psd(args, &crate::container::Input::Container(path));
     }
     // Missing points: the largest complete rectangle, said so. The heights
     // as read are dropped once cut and detrended: one map held while the

@@ -29,8 +29,11 @@ use std::path::PathBuf;
 #[command(after_help = formats_help())]
 pub struct Args {
     /// The surface file, and optionally a second rough surface pressed against it.
-    #[arg(value_name = "FILE", num_args = 1..=2, required = true)]
+    #[arg(value_name = "FILE", num_args = 1..=2, required_unless_present = "measurements")]
     pub files: Vec<PathBuf>,
+    /// Files that are measurements of one surface (several instruments or positions), combined as a contact.engineering container's: FILE or FILE@KEY=VALUE,... with KEY one of name, unit, size (100 or 100x80, in unit), height_scale, detrend_mode (center, height, curvature), is_periodic, data_source, tip_radius or resolution (m). Not with FILE.
+    #[arg(long, value_name = "FILE[@KEY=VALUE,...]", num_args = 1.., conflicts_with = "files")]
+    pub measurements: Vec<String>,
     #[command(flatten)]
     pub read: SurfaceArgs,
     #[command(flatten)]

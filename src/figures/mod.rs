@@ -22,6 +22,8 @@
 
 mod chart;
 mod compare;
+#[cfg(feature = "topography")]
+mod container;
 mod distributions;
 mod paper;
 mod render;
@@ -29,6 +31,8 @@ mod surface;
 
 pub use chart::{Chart, ChartAxis, Corner, ErrorMap, LineStyle, Markers, Page, Series, Shape, BLACK_INDEX, PALETTE};
 pub use compare::{curve_page, table_error};
+#[cfg(feature = "topography")]
+pub use container::{container_psd_page, container_scan_page, DRAWN_PER_DECADE};
 pub use distributions::{
     distribution_set, distributions_page, DENSITY_X, DENSITY_Y, DISTRIBUTIONS_F_STAR, DISTRIBUTIONS_LOADS,
     DISTRIBUTION_SET,

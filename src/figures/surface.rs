@@ -179,7 +179,7 @@ pub fn surface_page(
 }
 
 /// A log axis over the positive data of `series` (title `title`).
-fn log_axis(title: &str, series: &[Series], x: bool) -> Result<ChartAxis, FigureError> {
+pub(super) fn log_axis(title: &str, series: &[Series], x: bool) -> Result<ChartAxis, FigureError> {
     let ((x0, x1), (y0, y1)) = super::chart::extent(series);
     let (lo, hi) = if x { (x0, x1) } else { (y0, y1) };
     if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo) {
@@ -197,7 +197,7 @@ fn log_axis(title: &str, series: &[Series], x: bool) -> Result<ChartAxis, Figure
 }
 
 /// A vertical dotted line at `x` across `range`, labelled `label`.
-fn marker(label: &str, x: f64, range: (f64, f64), color: usize) -> Series {
+pub(super) fn marker(label: &str, x: f64, range: (f64, f64), color: usize) -> Series {
     Series {
         style: LineStyle::Dotted,
         ..Series::line(Some(label.into()), vec![(x, range.0), (x, range.1)], color)

@@ -6,6 +6,7 @@
 mod batch_contract;
 mod common;
 mod container;
+mod container_loose;
 mod crafted_tables;
 mod curve;
 // The independent table encoder, shared with the CLI's, the C ABI's tests

@@ -16,6 +16,7 @@ mod cli_container;
 mod cli_eval;
 mod cli_export;
 mod cli_law;
+mod cli_measurements;
 mod cli_scale;
 mod cli_surface;
 mod cli_table;

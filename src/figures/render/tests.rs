@@ -190,6 +190,8 @@ fn every_text_lies_inside_the_image() {
             .unwrap(),
         ));
     }
+    #[cfg(feature = "topography")]
+    pages.extend(container_pages());
     let map = table_error(Table::embedded(), 0.003, 8, 12).unwrap();
     for scale in [1, 2] {
         for (name, page) in &pages {
@@ -219,6 +221,35 @@ fn every_text_lies_inside_the_image() {
         title_w > BASE_SIZE.0,
         "the long title ({title_w} px) would fit unwrapped"
     );
+}
+
+/// `plot surface CONTAINER --psd` and `--scan` of the synthetic container
+/// (tests/data/container/uniform.zip), its measurements given long names.
+#[cfg(feature = "topography")]
+fn container_pages() -> Vec<(&'static str, Page)> {
+    use crate::topography::container::{
+        combined_psd, container_scan, measurement_spectra, read_container, ContainerOptions, Resolved,
+        COMBINED_POINTS_PER_DECADE,
+    };
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/container/uniform.zip");
+    let s = read_container(&path, &ContainerOptions::default()).unwrap().remove(0);
+    let spectra = measurement_spectra(&s.measurements);
+    let names: Vec<String> = s
+        .measurements
+        .iter()
+        .map(|m| format!("instrument_export_2024-05-17_{} (512-point profile)", m.name))
+        .collect();
+    let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE).unwrap();
+    let labelled: Vec<(String, &_)> = names.iter().cloned().zip(&spectra).collect();
+    let title = "instrument_export_2024-05-17_sample-03_container.zip";
+    let psd =
+        crate::figures::container_psd_page(title, &labelled, Some(&combined.psd), Some(1e-6), Some(1e-4)).unwrap();
+    let how = crate::topography::SurfaceModel::new(crate::Materials::from_array([
+        70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9,
+    ]));
+    let rows = container_scan(&s.measurements, &spectra, None, 5, &how, &[crate::Load::Pressure(1e6)]).unwrap();
+    let scan = crate::figures::container_scan_page(title, &names, &Resolved::of(&spectra).ranges, &rows).unwrap();
+    vec![("surface CONTAINER --psd", psd), ("surface CONTAINER --scan", scan)]
 }
 
 /// A title is broken after commas where it can be, between words

@@ -25,6 +25,7 @@
 
 mod analysis;
 mod heights;
+mod loose;
 mod spectrum;
 mod yaml;
 
@@ -32,6 +33,7 @@ pub use analysis::{
     container_analysis, container_scan, measurement_spectra, AnalysisError, Band, ContainerAnalysis, Resolved, ScanRow,
 };
 
+pub use loose::{read_loose, LooseError, LooseMeasurement, LooseOptions, LOOSE_KEYS};
 pub use spectrum::{
     combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,
     CombinedScale, MeasurementPsd, Moments, Roughness, COMBINED_POINTS_PER_DECADE,
@@ -545,6 +547,20 @@ impl Spec {
             ))));
         }
         let bytes = member(cx, zip, &self.data_file, options.read.max_bytes)?;
+        self.measurement(&bytes, cx, options, at, true)
+    }
+
+    /// The measurement from its data file's `bytes` (a container's member,
+    /// or a loose file: `xy_npy` false, a `.npy` map then read as a loose
+    /// file is, rows = y).
+    fn measurement(
+        self,
+        bytes: &[u8],
+        cx: &Cx,
+        options: &ContainerOptions,
+        at: &str,
+        xy_npy: bool,
+    ) -> Result<Measurement, Failure> {
         let member_err = |source| {
             Failure::Other(ContainerError::Member {
                 path: cx.name.to_string(),
@@ -574,18 +590,18 @@ impl Spec {
                 channel: None,
                 ..base.clone()
             };
-            let m = read_bytes(&bytes, &self.data_file, &matrix).map_err(member_err)?;
+            let m = read_bytes(bytes, &self.data_file, &matrix).map_err(member_err)?;
             if m.nx() == 2 && m.ny() > 1 {
                 let unit = unit.ok_or_else(|| Failure::Meta("unit: missing (the data file gives none)".into()))?;
                 xz_profile(m.heights(), unit)
                     .map_err(|d| Failure::Other(cx.archive(format!("{at}: data file {}: {d}", self.data_file))))?
             } else {
-                Heights::Uniform(self.read_sized(&bytes, &base, cx)?)
+                Heights::Uniform(self.read_sized(bytes, &base, cx)?)
             }
         } else {
-            Heights::Uniform(self.read_sized(&bytes, &base, cx)?)
+            Heights::Uniform(self.read_sized(bytes, &base, cx)?)
         };
-        if format == Format::NPY {
+        if format == Format::NPY && xy_npy {
             if let Heights::Uniform(t) = &heights {
                 heights = Heights::Uniform(transpose(t));
             }
