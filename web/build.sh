@@ -32,9 +32,8 @@ if [ ! -x "$bindgen" ]; then
   # Not --locked: its published lock file pins a webpki-roots that the
   # index no longer resolves.
   # Unoptimised (opt-level 0, no debug info): it compiles in 117 CPU s
-  # instead of 378
-  # (2026-11-28) and writes the same files, byte for byte, as a release
-  # build of it, in 2 s instead of 0.6 s.
+  # instead of 378 (2026-11-28) and writes the same files, byte for byte,
+  # as a release build of it, in 2 s instead of 0.6 s.
   CARGO_PROFILE_RELEASE_OPT_LEVEL=0 CARGO_PROFILE_RELEASE_DEBUG=false \
     cargo install --quiet wasm-bindgen-cli --version "=$version" --root "$tools"
 fi
