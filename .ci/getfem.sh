@@ -8,10 +8,10 @@
 # python/examples/getfem_contact.py (~10 s of CPU) and checks its JSON and
 # PNG, then python/examples/getfem_nitsche.py (mu(p) inside the Nitsche
 # brick's Newton solve against the same brick's fixed point and the nodal
-# fixed point; ~XX s; it exits 1 when its own checks fail). The nodal example's checks: at gross sliding
-# the tangential reaction equals sum mu(p_i) p_i A_i within the stated
-# tolerance, >= 100 nodes in contact, mu not uniform and
-# higher where the pressure is lower.
+# fixed point; ~11 s of CPU; it exits 1 when its own checks fail). The
+# nodal example's checks: at gross sliding the tangential reaction equals
+# sum mu(p_i) p_i A_i within the stated tolerance, >= 100 nodes in
+# contact, mu not uniform and higher where the pressure is lower.
 # Runs from anywhere in a checkout; exits non-zero on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -98,3 +98,12 @@ print(f"getfem: Fx/Fy Nitsche-Newton {n['fx_over_fy']:.6f} ({len(n['newton_itera
       f"({d['solves']} solves, {d['seconds']:.1f} s); gaps {r['expression_gap']:+.1e} (fit {fit:.1e}), "
       f"{r['formulation_gap']:+.1e} (bound {r['formulation_gap_bound']:g})")
 EOF
+# Another law's nodal JSON is refused before any solve (exit 2, one line
+# naming the flag), not compared silently.
+set +e
+"$venv/bin/python" python/examples/getfem_nitsche.py --out "$out/refused" --psi 2 \
+  --nodal-json "$out/getfem_contact.json" > "$out/refused.out" 2> "$out/refused.err"
+status=$?
+set -e
+[ "$status" = 2 ] && [ "$(wc -l < "$out/refused.err")" = 1 ] && grep -q -- '--nodal-json: .*another law' "$out/refused.err" \
+  || { echo "getfem: another law's --nodal-json not refused (exit $status)"; cat "$out/refused.err"; exit 1; }
