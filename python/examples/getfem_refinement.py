@@ -55,9 +55,9 @@ def mesh_list(text):
         try:
             nx, ny = (int(v) for v in item.lower().split("x"))
         except ValueError:
-            raise argparse.ArgumentTypeError(f"--meshes: {item!r} is not NXxNY (e.g. 160x16)") from None
+            raise argparse.ArgumentTypeError(f"{item!r} is not NXxNY (e.g. 160x16)") from None
         if not (2 <= nx <= 2000 and 1 <= ny <= 200):
-            raise argparse.ArgumentTypeError(f"--meshes: {item!r} outside 2..2000 x 1..200 elements")
+            raise argparse.ArgumentTypeError(f"{item!r} outside 2..2000 x 1..200 elements")
         out.append((nx, ny))
     return out
 
@@ -66,7 +66,7 @@ def solver_list(text):
     names = text.split(",")
     for n in names:
         if n not in ("newton", "fixed", "nodal"):
-            raise argparse.ArgumentTypeError(f"--solvers: {n!r} is not one of newton, fixed, nodal")
+            raise argparse.ArgumentTypeError(f"{n!r} is not one of newton, fixed, nodal")
     return names
 
 
@@ -105,7 +105,10 @@ def main(argv):
     if not (0 < args.gamma0 <= 1e6):
         parser.error(f"--gamma0: {args.gamma0} outside (0, 1e6]")
     gf.util_trace_level(0)
-    law = nodal.make_law(args)
+    try:
+        law = nodal.make_law(args)
+    except ValueError as e:
+        parser.error(str(e))
     expression, degree, fit_error = nitsche.closed_form(law)
     if args.constant_mu is not None:
         law = ConstantLaw(args.constant_mu, law)
