@@ -66,13 +66,15 @@ MEAN_MU_TOLERANCE = 1e-9
 #: |(Fx/Fy of the Nitsche brick) / (Fx/Fy of the nodal brick) - 1| on the
 #: 160 x 16 mesh, for the default law: a discretisation gap that the
 #: refinement study (getfem_refinement.py --gamma0 10) measured falling
-#: from 6.1e-4, 1.05e-4 (40 x 4, 80 x 8) to 6.4e-5 here and 6e-6 at 320 x 32
-#: (with a constant mu, 1e-13 on 80 x 8 and 160 x 16).
+#: from 6.1e-4, 1.05e-4 (40 x 4, 80 x 8) to 6.4e-5 here and to 5.7e-6,
+#: 9.3e-6 at 320 x 32, 640 x 64 (with a constant mu, 1e-13 on 80 x 8 and
+#: 160 x 16).
 FORMULATION_GAP_BOUND = 1e-4
 #: The Nitsche parameter gamma0 (the penalty gamma0/h), in units of E: 10
 #: takes more Newton iterations than 1 (64 against 45 on the 160 x 16
-#: ramp), but its Fx/Fy converges under refinement steadily (like h^2)
-#: to the nodal brick's, where 1 E wanders by 2e-4 (docs/REFERENCE.md).
+#: ramp), but its Fx/Fy reaches the nodal brick's within 1e-5 from
+#: 320 x 32 on, where 1 E is still 1.2e-4 off at 640 x 64
+#: (docs/REFERENCE.md, "GetFEM").
 GAMMA0_OVER_E = 10.0
 #: The Nitsche fixed point stops when no integration point's mu changes
 #: by more (as the nodal brick's, getfem_contact.FIXED_POINT_TOL).
