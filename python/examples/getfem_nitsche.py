@@ -372,6 +372,7 @@ def plot(path, record):
     u = np.array([r["displacement"] for r in record["ramp"]])
     f = np.array([r["fx"] for r in record["ramp"]])
     a.plot(u * 1e6, f / 1e3, marker="o", ms=3, label="Nitsche, mu(p) in GWFL")
+    a.axhline(record["nitsche_fixed_point"]["fx"] / 1e3, color="C2", ls=":", label="Nitsche, fixed point of the law")
     a.axhline(record["nodal"]["fx"] / 1e3, color="C3", ls="--", label="nodal brick, fixed point")
     a.set_xlabel("top displacement (um)")
     a.set_ylabel("tangential reaction (kN per m)")
