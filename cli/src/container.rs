@@ -10,7 +10,8 @@ use crate::surface_args::request_failure;
 use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
     combined_psd, container_analysis, container_scan, measurement_psd, read_container, Band, ContainerOptions,
-    ContainerSurface, Measurement, MeasurementPsd, Resolved, COMBINED_POINTS_PER_DECADE,
+    ContainerRecord, ContainerSurface, Measurement, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord,
+    COMBINED_POINTS_PER_DECADE,
 };
 use ke_friction::topography::{evaluate_failure, Field, LambdaS, SurfaceModel};
 use ke_friction::{Load, Shortest, Warnings};
@@ -86,23 +87,9 @@ fn print_docs(mut docs: Vec<serde_json::Value>, path: &Path) -> Result<(), Failu
     Ok(())
 }
 
-/// A measurement's record: file, name, unit, grid, spacing, size, the
-/// reliability cut-off and the reliable range (q and wavelength).
+/// A measurement's record (the core's [`MeasurementRecord`]).
 fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value {
-    let (nx, ny) = m.grid();
-    let (sx, sy) = m.size();
-    let reliable = p.psd.as_ref().map(|p| {
-        let (q_min, q_max) = (p.q.get(1).copied(), p.q.last().copied());
-        serde_json::json!({
-            "q_min": q_min, "q_max": q_max,
-            "lambda_min": q_max.map(|q| 2.0 * std::f64::consts::PI / q),
-            "lambda_max": q_min.map(|q| 2.0 * std::f64::consts::PI / q),
-        })
-    });
-    serde_json::json!({
-        "file": m.data_file, "name": m.name, "unit": m.unit, "nx": nx, "ny": ny,
-        "dx": sx / nx as f64, "size": [sx, sy], "cutoff": p.cutoff, "reliable": reliable, "note": p.reason,
-    })
+    serde_json::to_value(MeasurementRecord::new(m, p)).expect("a record")
 }
 
 /// The container's surfaces, read with the instrument flags.
@@ -250,26 +237,8 @@ pub fn run(args: &Args, path: &Path) -> Result<(), Failure> {
         )
         .map_err(|e| analysis_failure(path, &asked, e))?;
         warnings.extend(a.warnings.iter().cloned());
-        let measurements: Vec<_> = s
-            .measurements
-            .iter()
-            .zip(&spectra)
-            .map(|(m, p)| measurement_record(m, p))
-            .collect();
         let names = |idx: &[usize]| -> Vec<String> { idx.iter().map(|&i| s.measurements[i].name.clone()).collect() };
-        let record = serde_json::to_value(&a).expect("a record");
-        docs.push(serde_json::json!({
-            "name": s.name,
-            "measurements": measurements,
-            "combined": {
-                "band": record["band"], "moments": record["moments"], "roughness": record["roughness"],
-                "heights_from": s.measurements[a.heights_from].name,
-                "rests_on": names(&a.measurements),
-            },
-            "model": record["model"],
-            "friction": record["frictions"],
-            "warnings": record["warnings"],
-        }));
+        docs.push(serde_json::to_value(ContainerRecord::new(s, &spectra, &a)).expect("a record"));
         text.push(format!("surface: {}", s.name.as_deref().unwrap_or("(unnamed)")));
         for (m, p) in s.measurements.iter().zip(&spectra) {
             let (nx, ny) = m.grid();
@@ -375,11 +344,7 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
         let names = |idx: &[usize]| -> Vec<String> { idx.iter().map(|&i| s.measurements[i].name.clone()).collect() };
         let mut records = Vec::with_capacity(rows.len());
         for row in &rows {
-            let mut record = serde_json::json!({
-                "lambda_s": row.band.lambda_s, "lambda_c": row.band.lambda_c,
-                "measurements": names(&row.measurements),
-                "spread": row.spread.as_ref().map(|v| v.iter().map(|(lo, hi)| serde_json::json!({"mu_min": lo, "mu_max": hi})).collect::<Vec<_>>()),
-            });
+            let record = serde_json::to_value(ScanRecord::new(s, row)).expect("a record");
             let mut cells = vec![
                 Shortest(row.band.lambda_s).to_string(),
                 Shortest(row.band.lambda_c).to_string(),
@@ -388,11 +353,6 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
             match &row.result {
                 Ok(a) => {
                     warnings.note(a.warnings.iter().cloned());
-                    let full = serde_json::to_value(a).expect("a record");
-                    for key in ["moments", "roughness", "model", "warnings"] {
-                        record[key] = full[key].clone();
-                    }
-                    record["friction"] = full["frictions"].get(0).cloned().unwrap_or_default();
                     let r = &a.roughness;
                     for v in [r.sigma, r.alpha, r.eta, r.radius, r.beta] {
                         cells.push(Shortest(v).to_string());
@@ -413,7 +373,6 @@ pub fn run_scan(args: &Args, path: &Path) -> Result<(), Failure> {
                     cells.push(String::new());
                 }
                 Err(e) => {
-                    record["error"] = e.to_string().into();
                     cells.extend(std::iter::repeat_n(String::new(), 9));
                     cells.push(format!("\"{}\"", e.to_string().replace('"', "'")));
                 }

@@ -25,11 +25,16 @@
 
 mod analysis;
 mod heights;
+mod record;
 mod spectrum;
 mod yaml;
 
 pub use analysis::{
     container_analysis, container_scan, measurement_spectra, AnalysisError, Band, ContainerAnalysis, Resolved, ScanRow,
+};
+
+pub use record::{
+    is_container_bytes, CombinedRecord, ContainerRecord, MeasurementRecord, Reliable, ScanRecord, SpreadRecord,
 };
 
 pub use spectrum::{
