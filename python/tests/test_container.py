@@ -121,11 +121,12 @@ def test_friction_equals_the_cli(path, container):
     kinds = {w.message.kind for w in caught if issubclass(w.category, kf.ModelWarning)}
     assert kinds == {w["kind"] for w in doc["warnings"]}, kinds
     # Two pressures at once, and a band of its own: the CLI's too.
-    (doc,) = kefric("surface", str(path), *flags(**MATERIALS, lambda_s=1e-8), "--pressure", "1e6", "--pressure",
-                    "3e6")
+    (doc,) = kefric("surface", str(path), *flags(**MATERIALS, lambda_s=1e-8), "--pressure", "1e6:3e6:2")
+    pressures = [f["pressure"] for f in doc["friction"]]
+    assert len(pressures) == 2
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        record = container.friction(pressure=[1e6, 3e6], lambda_s=1e-8, **MATERIALS)
+        record = container.friction(pressure=np.array(pressures), lambda_s=1e-8, **MATERIALS)
     doc.pop("files")
     close(record, doc, "record")
     assert record["combined"]["band"]["lambda_s"] == 1e-8
