@@ -317,11 +317,19 @@ def check_container(page, exe, path, shots):
     for i, (a, b) in enumerate(zip(shown, rows)):
         compare(float(a["lambda_s"]), b["lambda_s"], f"scan[{i}].lambda_s")
         assert a["measurements"].split(" ") == b["measurements"], (a["measurements"], b["measurements"])
-        if b.get("friction"):
-            compare(float(a["mu"]), b["friction"]["mu"], f"scan[{i}].mu")
-        if b.get("spread"):
-            compare(float(a["mu_min"]), b["spread"][0]["mu_min"], f"scan[{i}].mu_min")
-            compare(float(a["mu_max"]), b["spread"][0]["mu_max"], f"scan[{i}].mu_max")
+        # mu of a scan row, and of each measurement alone (a narrow band of
+        # one spectrum, far from its own): the x86-64 and wasm32 FFTs'
+        # last-bit differences, amplified by the contact (1.3e-12 measured
+        # on container-2.zip's row 1), within SENSITIVITY_RTOL.
+        for key, cli_value in (("mu", (b.get("friction") or {}).get("mu")),
+                               ("mu_min", (b.get("spread") or [{}])[0].get("mu_min")),
+                               ("mu_max", (b.get("spread") or [{}])[0].get("mu_max"))):
+            if cli_value is None:
+                assert a[key] == "", (i, key, a[key])
+                continue
+            page_value = float(a[key])
+            assert math.isclose(page_value, cli_value, rel_tol=SENSITIVITY_RTOL, abs_tol=0.0), \
+                f"scan[{i}].{key}: {page_value!r} != {cli_value!r} (rtol {SENSITIVITY_RTOL})"
     _, psd_out, _ = kefric(exe, path, {}, "--psd")
     combined = json.loads(psd_out)["combined"]
     got = [r for r in csv_rows(psd_text) if r["measurement"] == "combined"]

@@ -349,3 +349,97 @@ impl SurfaceRequest {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::Write;
+
+    fn zip_of(members: &[(&str, &[u8])]) -> Vec<u8> {
+        let mut w = zip::ZipWriter::new(Cursor::new(Vec::new()));
+        for (name, bytes) in members {
+            w.start_file(*name, zip::write::SimpleFileOptions::default()).unwrap();
+            w.write_all(bytes).unwrap();
+        }
+        w.finish().unwrap().into_inner()
+    }
+
+    #[test]
+    fn a_container_is_a_zip_with_its_metadata() {
+        assert!(is_container_bytes(&zip_of(&[("meta.yml", b"surfaces: []\n")])));
+        assert!(is_container_bytes(&zip_of(&[("index.json", b"{}")])));
+        // An X3P (a zip with main.xml), junk after a zip's signature, text.
+        assert!(!is_container_bytes(&zip_of(&[("main.xml", b"<x/>")])));
+        assert!(!is_container_bytes(b"PK\x03\x04 not really an archive"));
+        assert!(!is_container_bytes(b"surfaces: []\n"));
+    }
+
+    #[test]
+    fn the_inputs_a_container_gives_are_refused_naming_them() {
+        let e = SurfaceRequest {
+            dy: Some(1e-6),
+            ..SurfaceRequest::default()
+        }
+        .container_options()
+        .unwrap_err();
+        assert_eq!(e.field, Field::Dy);
+        assert_eq!(
+            e.to_string(),
+            "dy: not with a container (its meta.yml and data files give each measurement's)"
+        );
+        let e = SurfaceRequest {
+            tip_radius: Some(-1.0),
+            ..SurfaceRequest::default()
+        }
+        .container_options()
+        .unwrap_err();
+        assert_eq!(e.field, Field::TipRadius);
+        // The resolution before the tip radius, as for one file.
+        let o = SurfaceRequest {
+            tip_radius: Some(1e-8),
+            resolution: Some(2e-9),
+            max_points: 1000,
+            ..SurfaceRequest::default()
+        }
+        .container_options()
+        .unwrap();
+        assert_eq!((o.tip_radius, o.resolution, o.read.max_points), (None, Some(2e-9), 1000));
+    }
+
+    #[test]
+    fn the_band_takes_its_missing_end_from_the_default_and_refuses_bad_ends() {
+        let resolved = Resolved {
+            ranges: vec![Some((1e-9, 1e-6)), None, Some((1e-7, 1e-4))],
+        };
+        assert_eq!(SurfaceRequest::default().container_band(&resolved), Ok(None));
+        let auto = SurfaceRequest {
+            lambda_s: Some(LambdaS::Auto),
+            ..SurfaceRequest::default()
+        };
+        assert_eq!(auto.container_band(&resolved), Ok(None));
+        let r = SurfaceRequest {
+            lambda_s: Some(LambdaS::Metres(1e-8)),
+            ..SurfaceRequest::default()
+        };
+        assert_eq!(
+            r.container_band(&resolved),
+            Ok(Some(Band {
+                lambda_s: 1e-8,
+                lambda_c: 1e-4
+            }))
+        );
+        let bad = SurfaceRequest {
+            lambda_c: Some(f64::INFINITY),
+            ..SurfaceRequest::default()
+        };
+        let e = bad.container_band(&resolved).unwrap_err();
+        assert_eq!(e.field, Field::LambdaC);
+        assert_eq!(e.to_string(), "lambda_c: inf is out of range: must be > 0 and finite (metres)");
+        // A band the spectrum cannot fill blames the end given.
+        let e = r.container_failure(&AnalysisError::Band("too narrow".into()), "c.zip");
+        assert_eq!((e.field, e.to_string()), (Field::LambdaS, "lambda_s: band: too narrow".into()));
+        let e = SurfaceRequest::default().container_failure(&AnalysisError::NoSpectrum, "c.zip");
+        assert_eq!(e.to_string(), "file: c.zip: no measurement has a reliable spectrum");
+        assert_eq!(e.kind, ErrorKind::Domain);
+    }
+}
