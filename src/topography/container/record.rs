@@ -403,7 +403,10 @@ mod tests {
         }
         .container_options()
         .unwrap();
-        assert_eq!((o.tip_radius, o.resolution, o.read.max_points), (None, Some(2e-9), 1000));
+        assert_eq!(
+            (o.tip_radius, o.resolution, o.read.max_points),
+            (None, Some(2e-9), 1000)
+        );
     }
 
     #[test]
@@ -434,10 +437,16 @@ mod tests {
         };
         let e = bad.container_band(&resolved).unwrap_err();
         assert_eq!(e.field, Field::LambdaC);
-        assert_eq!(e.to_string(), "lambda_c: inf is out of range: must be > 0 and finite (metres)");
+        assert_eq!(
+            e.to_string(),
+            "lambda_c: inf is out of range: must be > 0 and finite (metres)"
+        );
         // A band the spectrum cannot fill blames the end given.
         let e = r.container_failure(&AnalysisError::Band("too narrow".into()), "c.zip");
-        assert_eq!((e.field, e.to_string()), (Field::LambdaS, "lambda_s: band: too narrow".into()));
+        assert_eq!(
+            (e.field, e.to_string()),
+            (Field::LambdaS, "lambda_s: band: too narrow".into())
+        );
         let e = SurfaceRequest::default().container_failure(&AnalysisError::NoSpectrum, "c.zip");
         assert_eq!(e.to_string(), "file: c.zip: no measurement has a reliable spectrum");
         assert_eq!(e.kind, ErrorKind::Domain);
