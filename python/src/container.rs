@@ -209,15 +209,11 @@ impl ContainerCore {
             lambda_s,
             lambda_c,
         )?;
-        let checked = request.check().map_err(request_error)?;
-        let materials = checked
-            .materials
-            .ok_or_else(|| value_error("the materials are needed"))?;
+        let (materials, loads) = request.container_model().map_err(request_error)?;
         let band = request
             .container_band(&Resolved::of(&self.spectra))
             .map_err(request_error)?;
         let how = request.model_of(materials);
-        let loads = checked.loads.unwrap_or_default();
         let a = py
             .detach(|| {
                 container_analysis(
@@ -276,16 +272,12 @@ impl ContainerCore {
             None,
             lambda_c,
         )?;
-        let checked = request.check().map_err(request_error)?;
-        let materials = checked
-            .materials
-            .ok_or_else(|| value_error("the materials are needed"))?;
+        let (materials, loads) = request.container_model().map_err(request_error)?;
         // The band's end checked as for `friction` (> 0, finite).
         request
             .container_band(&Resolved::of(&self.spectra))
             .map_err(request_error)?;
         let how = request.model_of(materials);
-        let loads = checked.loads.unwrap_or_default();
         let rows = py
             .detach(|| {
                 container_scan(

@@ -11,7 +11,7 @@ use ke_friction::topography::container::{
     ContainerRecord, ContainerSurface, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord,
     COMBINED_POINTS_PER_DECADE,
 };
-use ke_friction::topography::{Field, Message, SurfaceRequest};
+use ke_friction::topography::SurfaceRequest;
 use ke_friction::{Materials, Summary, Warnings};
 use serde_json::{json, Value};
 use wasm_bindgen::prelude::*;
@@ -50,7 +50,10 @@ impl ContainerAnalysis {
     pub fn analyse(bytes: &[u8], name: &str, options: Options) -> Result<ContainerAnalysis, String> {
         let request = options.request()?;
         let container_options = request.container_options().map_err(|e| page_error(&e))?;
-        let checked = request.check().map_err(|e| page_error(&e))?;
+        // μ needs the materials; without them the measurements and
+        // spectra are shown, and why there is no μ (kefric refuses).
+        request.check().map_err(|e| page_error(&e))?;
+        let model = request.container_model();
         let mut surfaces = read_container_bytes(bytes, name, &container_options).map_err(|e| e.to_string())?;
         if surfaces.is_empty() {
             return Err(format!("{name}: the container lists no surface"));
@@ -61,28 +64,23 @@ impl ContainerAnalysis {
         let mut warnings = Warnings::new();
         let files = vec![name.to_string()];
         let mut failure = None;
-        let record = match checked.materials {
-            None => {
-                failure = Some(
-                    Message::text("μ from a container needs the materials (")
-                        .field(Field::E1)
-                        .then(", …)")
-                        .render(&crate::spell),
-                );
+        let record = match &model {
+            Err(e) => {
+                failure = Some(page_error(e));
                 json!({
                     "files": files, "name": surface.name,
                     "measurements": MeasurementRecord::all(&surface, &spectra),
                 })
             }
-            Some(materials) => {
+            Ok((materials, loads)) => {
                 let outcome = request.container_band(&Resolved::of(&spectra)).and_then(|band| {
                     container_analysis(
                         &surface.measurements,
                         &spectra,
                         band,
                         COMBINED_POINTS_PER_DECADE,
-                        &request.model_of(materials),
-                        &checked.loads.clone().unwrap_or_default(),
+                        &request.model_of(*materials),
+                        loads,
                     )
                     .map_err(|e| request.container_failure(&e, name))
                 });
@@ -107,7 +105,7 @@ impl ContainerAnalysis {
         Ok(ContainerAnalysis {
             name: name.to_string(),
             options,
-            materials: checked.materials,
+            materials: model.ok().map(|m| m.0),
             request,
             surface,
             spectra,

@@ -348,6 +348,18 @@ def check_container(page, exe, path, shots):
     page.load(path)
     assert page.error() == page_words(page, err), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
     print(f"web: {path.name} with dx: the page says kefric's {err.strip()!r} in its own words")
+    # No materials: the measurements and spectra, and why there is no mu
+    # (the core's words; kefric refuses the command, adding its --psd hint).
+    page.open({})
+    page.load(path)
+    assert page.error().startswith("error: μ from a container needs the materials (“E₁”, “ν₁”,"), page.error()
+    names = [c.text for c in page.d.find_elements(By.CSS_SELECTOR, "#measurements tr td:first-child")]
+    assert names == [m["name"] for m in cli["measurements"]], names
+    assert page.d.find_element(By.CSS_SELECTOR, "#psd canvas")
+    assert json.loads(page.text("record"))["measurements"] == cli["measurements"]
+    errors = page.console_errors()
+    assert not errors, f"{path.name} without materials: console errors: {errors}"
+    print(f"web: {path.name} without materials: its measurements and spectra, and {page.error()[:60]!r}...")
 
 
 def check_edits(page, exe, example, shots):

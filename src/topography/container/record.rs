@@ -11,8 +11,9 @@ use std::io::Cursor;
 use super::analysis::warning_records;
 use super::{AnalysisError, Band, ContainerAnalysis, ContainerOptions, ContainerSurface, Measurement, MeasurementPsd};
 use super::{Heights, Moments, Resolved, Roughness, ScanRow};
+use crate::topography::request::materials_needed;
 use crate::topography::{evaluate_failure, Field, LambdaS, Message, ReadOptions, RequestError, SurfaceRequest};
-use crate::{Classify, ErrorKind, Friction, Params, Shortest, Warning};
+use crate::{Classify, ErrorKind, Friction, Load, Materials, Params, Shortest, Warning};
 
 /// Whether `bytes`, a whole file, are a container: a zip archive holding
 /// `meta.yml` or `index.json` ([`super::is_container_file`] for a file on
@@ -332,6 +333,20 @@ impl SurfaceRequest {
         }))
     }
 
+    /// The materials and the loads (none: the model's inputs alone),
+    /// checked: μ from a container needs the materials.
+    pub fn container_model(&self) -> Result<(Materials, Vec<Load>), RequestError> {
+        let checked = self.check()?;
+        let materials = checked.materials.ok_or_else(|| RequestError {
+            kind: ErrorKind::Domain,
+            ..refused(
+                Field::File,
+                Message::text("μ from a container ").then_message(materials_needed()),
+            )
+        })?;
+        Ok((materials, checked.loads.unwrap_or_default()))
+    }
+
     /// An analysis' failure on the container `name`, naming the input to
     /// blame: a step of the model's (as for one surface), the band's ends
     /// where given, else the container.
@@ -446,6 +461,14 @@ mod tests {
         assert_eq!(
             (e.field, e.to_string()),
             (Field::LambdaS, "lambda_s: band: too narrow".into())
+        );
+        let e = SurfaceRequest::default().container_model().unwrap_err();
+        assert_eq!(
+            (e.field, e.message.to_string()),
+            (
+                Field::File,
+                "μ from a container needs the materials (e1, nu1, e2, nu2, hardness, delta_gamma, epsilon)".into()
+            )
         );
         let e = SurfaceRequest::default().container_failure(&AnalysisError::NoSpectrum, "c.zip");
         assert_eq!(e.to_string(), "file: c.zip: no measurement has a reliable spectrum");
