@@ -6,14 +6,13 @@
 use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::Args;
-use crate::surface_args::request_failure;
+use crate::surface_args::{request_failure, spell};
 use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
-    combined_psd, container_analysis, container_scan, measurement_psd, read_container, Band, ContainerOptions,
-    ContainerRecord, ContainerSurface, Measurement, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord,
-    COMBINED_POINTS_PER_DECADE,
+    combined_psd, container_analysis, container_scan, measurement_psd, read_container, ContainerRecord,
+    ContainerSurface, Measurement, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord, COMBINED_POINTS_PER_DECADE,
 };
-use ke_friction::topography::{evaluate_failure, Field, LambdaS, SurfaceModel};
+use ke_friction::topography::{Field, LambdaS, SurfaceModel, SurfaceRequest};
 use ke_friction::{Load, Shortest, Warnings};
 use std::path::Path;
 
@@ -94,119 +93,53 @@ fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value 
 
 /// The container's surfaces, read with the instrument flags.
 fn read(args: &Args, path: &Path) -> Result<Vec<ContainerSurface>, Failure> {
-    // A container's meta.yml gives each measurement's spacing, unit and
-    // detrending: flags that would set them for a loose file are refused
-    // rather than ignored.
-    for (flag, given) in [
-        ("--dx", args.read.dx.is_some()),
-        ("--dy", args.read.dy.is_some()),
-        ("--channel", args.read.channel.is_some()),
-    ] {
-        if given {
-            return Err(Failure::input(format!(
-                "{flag}: not with a container (its meta.yml and data files give each measurement's)"
-            )));
-        }
-    }
-    for (name, v) in [
-        ("tip-radius", args.read.tip_radius),
-        ("resolution", args.read.resolution),
-    ] {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(Failure::input(format!(
-                "--{name}: {} is out of range: must be > 0 and finite (metres)",
-                Shortest(v)
-            )));
-        }
-    }
-    // For the measurements whose metadata gives no instrument parameters;
-    // --resolution takes precedence over --tip-radius, as for one file.
-    let options = ContainerOptions {
-        read: ke_friction::topography::ReadOptions {
-            max_points: args.read.max_points.unwrap_or(ke_friction::topography::MAX_POINTS),
-            ..Default::default()
-        },
-        tip_radius: args.read.tip_radius.filter(|_| args.read.resolution.is_none()),
-        resolution: args.read.resolution,
-    };
+    // The core's options of a container (the flags a container's meta.yml
+    // answers for, --dx, --dy, --channel, refused rather than ignored;
+    // --resolution before --tip-radius, as for one file).
+    let options = args
+        .read
+        .request()
+        .container_options()
+        .map_err(|e| request_failure("surface", e))?;
     read_container(path, &options).map_err(|e| Failure::of(format!("surface {}", path.display()), e))
 }
 
-/// The model set-up, the loads and the band asked for, checked.
+/// The request of the flags, its model set-up and its loads, checked
+/// (the core's `container_model`, `container_band`).
 struct Asked {
+    request: SurfaceRequest,
     how: SurfaceModel,
     loads: Vec<Load>,
-    band: Option<Band>,
-    load_field: Field,
-    family: Option<ke_friction::Family>,
 }
 
 fn asked(args: &Args) -> Result<Asked, Failure> {
     let request = args.request()?;
-    let checked = request.check().map_err(|e| request_failure("surface", e))?;
-    let Some(materials) = checked.materials else {
-        return Err(Failure::input(
-            "surface CONTAINER: μ from a container needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon); --psd or --scale-dependent need none",
-        ));
-    };
-    for (flag, v) in [("--lambda-c", args.read.lambda_c)] {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(Failure::input(format!(
-                "{flag}: {} is out of range: must be > 0 and finite (metres)",
-                Shortest(v)
-            )));
+    let (materials, loads) = request.container_model().map_err(|e| {
+        if e.field == Field::File {
+            // The materials are missing: the spectra need none.
+            let message = e.render(&spell("surface CONTAINER"));
+            Failure::classified(format!("{message}; --psd or --scale-dependent need none"), e.kind)
+        } else {
+            request_failure("surface", e)
         }
-    }
-    let lambda_s = match args.read.lambda_s {
-        Some(LambdaS::Metres(v)) if !(v.is_finite() && v > 0.0) => {
-            return Err(Failure::input(format!(
-                "--lambda-s: {} is out of range: must be > 0 and finite (metres), or auto",
-                Shortest(v)
-            )))
-        }
-        Some(LambdaS::Metres(v)) => Some(v),
-        // auto: the smallest reliable scale of any measurement, the default.
-        Some(LambdaS::Auto) | None => None,
-    };
-    let band = match (lambda_s, args.read.lambda_c) {
-        (None, None) => None,
-        (s, c) => Some((s, c)),
-    };
+    })?;
+    // The band's ends checked before the container is read.
+    request
+        .container_band(&Resolved { ranges: Vec::new() })
+        .map_err(|e| request_failure("surface", e))?;
     Ok(Asked {
-        how: SurfaceModel {
-            materials,
-            family: args.distribution,
-            fit: args.fit,
-            kind: args.model,
-        },
-        loads: checked.loads.unwrap_or_default(),
-        band: band.map(|(s, c)| Band {
-            lambda_s: s.unwrap_or(f64::NAN),
-            lambda_c: c.unwrap_or(f64::NAN),
-        }),
-        load_field: request.loads.field(),
-        family: args.distribution,
+        how: request.model_of(materials),
+        loads,
+        request,
     })
 }
 
 /// An analysis error, naming the flags to blame.
 fn analysis_failure(path: &Path, asked: &Asked, e: AnalysisError) -> Failure {
-    match e {
-        AnalysisError::Evaluate(e) => request_failure("surface", evaluate_failure(&e, asked.family, asked.load_field)),
-        AnalysisError::Band(_) if asked.band.is_some() => Failure::of("--lambda-s, --lambda-c", e),
-        e => Failure::of(format!("surface {}", path.display()), e),
-    }
-}
-
-/// The band asked for, its missing end from the default band.
-fn band_of(asked: &Asked, resolved: &Resolved) -> Option<Band> {
-    let given = asked.band?;
-    let default = resolved.default_band();
-    let pick = |v: f64, d: Option<f64>| if v.is_nan() { d.unwrap_or(f64::NAN) } else { v };
-    Some(Band {
-        lambda_s: pick(given.lambda_s, default.map(|b| b.lambda_s)),
-        lambda_c: pick(given.lambda_c, default.map(|b| b.lambda_c)),
-    })
+    request_failure(
+        "surface",
+        asked.request.container_failure(&e, &path.display().to_string()),
+    )
 }
 
 /// `surface CONTAINER` with the materials: μ from the whole band of the
@@ -226,7 +159,10 @@ pub fn run(args: &Args, path: &Path) -> Result<(), Failure> {
     for s in &surfaces {
         let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
         let resolved = Resolved::of(&spectra);
-        let band = band_of(&asked, &resolved);
+        let band = asked
+            .request
+            .container_band(&resolved)
+            .map_err(|e| request_failure("surface", e))?;
         let a = container_analysis(
             &s.measurements,
             &spectra,
