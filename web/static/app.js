@@ -142,7 +142,8 @@ function handle(m) {
       // The statistics are shown; why μ is not (kefric's message in the page's words).
       if (m.error) showError(m.error);
       requestAnimationFrame(() => {
-        $('timing').textContent = `(read, analysed and μ(F) drawn in ${Math.round(performance.now() - started)} ms)`;
+        const what = m.container ? 'read and analysed' : 'read, analysed and μ(F) drawn';
+        $('timing').textContent = `(${what} in ${Math.round(performance.now() - started)} ms)`;
         document.body.dataset.drawn = String(run);
       });
       status('spectra and histogram…', null);
