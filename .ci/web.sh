@@ -5,8 +5,11 @@
 # static server on 127.0.0.1: its #record equals `kefric surface --json`
 # on the synthetic X3P (three option sets) and on every file of
 # ../shared/topographies (or $KEF_TOPOGRAPHIES) that kefric reads, no
-# console errors, a bad file shows the CLI's message; a 1024 x 1024 X3P is
-# read, analysed and its mu(F) drawn within 1.5 s; the .wasm is <= 3 MiB.
+# console errors, a bad file shows the CLI's message; each
+# contact.engineering container of ../shared/containers (or
+# $KEF_CONTAINERS) gives kefric's record, scan and combined PSD; a 1024 x
+# 1024 X3P is read, analysed and its mu(F) drawn within 1.5 s; the .wasm is
+# <= 3 MiB.
 # Screenshots go to $CARGO_TARGET_DIR/ci-web/out.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -33,4 +36,6 @@ cargo build --release --quiet -p kefric
 topographies=${KEF_TOPOGRAPHIES:-$root/../shared/topographies}
 extra=()
 [ -d "$topographies" ] && extra+=(--topographies "$topographies")
+containers=${KEF_CONTAINERS:-$root/../shared/containers}
+[ -d "$containers" ] && extra+=(--containers "$containers")
 "$py" web/tests/browser.py "$out/site" "$target/release/kefric" "$out/out" --big "$out/big.x3p" "${extra[@]}"

@@ -6,13 +6,13 @@
 use crate::output::sig;
 use crate::output::Failure;
 use crate::surface::Args;
-use crate::surface_args::{request_failure, SurfaceArgs};
+use crate::surface_args::{request_failure, spell, SurfaceArgs};
 use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
-    combined_psd, container_analysis, container_scan, measurement_psd, read_container, Band, ContainerOptions,
-    ContainerSurface, Measurement, MeasurementPsd, Resolved, COMBINED_POINTS_PER_DECADE,
+    combined_psd, container_analysis, container_scan, measurement_psd, read_container, ContainerRecord,
+    ContainerSurface, Measurement, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord, COMBINED_POINTS_PER_DECADE,
 };
-use ke_friction::topography::{evaluate_failure, Field, LambdaS, SurfaceModel};
+use ke_friction::topography::{Field, LambdaS, SurfaceModel, SurfaceRequest};
 use ke_friction::{Load, Shortest, Warnings};
 use std::path::Path;
 
@@ -131,23 +131,9 @@ fn print_docs(mut docs: Vec<serde_json::Value>, path: &Input) -> Result<(), Fail
     Ok(())
 }
 
-/// A measurement's record: file, name, unit, grid, spacing, size, the
-/// reliability cut-off and the reliable range (q and wavelength).
+/// A measurement's record (the core's [`MeasurementRecord`]).
 fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value {
-    let (nx, ny) = m.grid();
-    let (sx, sy) = m.size();
-    let reliable = p.psd.as_ref().map(|p| {
-        let (q_min, q_max) = (p.q.get(1).copied(), p.q.last().copied());
-        serde_json::json!({
-            "q_min": q_min, "q_max": q_max,
-            "lambda_min": q_max.map(|q| 2.0 * std::f64::consts::PI / q),
-            "lambda_max": q_min.map(|q| 2.0 * std::f64::consts::PI / q),
-        })
-    });
-    serde_json::json!({
-        "file": m.data_file, "name": m.name, "unit": m.unit, "nx": nx, "ny": ny,
-        "dx": sx / nx as f64, "size": [sx, sy], "cutoff": p.cutoff, "reliable": reliable, "note": p.reason,
-    })
+    serde_json::to_value(MeasurementRecord::new(m, p)).expect("a record")
 }
 
 /// `surface --measurements ...`: the combined spectrum (`--psd`), the scan
@@ -175,124 +161,52 @@ pub fn run_measurements(args: &Args) -> Result<(), Failure> {
 
 /// The container's surfaces, read with the instrument flags.
 fn read(args: &SurfaceArgs, path: &Input) -> Result<Vec<ContainerSurface>, Failure> {
-    // A container's meta.yml gives each measurement's spacing, unit and
-    // detrending: flags that would set them for a loose file are refused
-    // rather than ignored.
-    for (flag, given) in [
-        ("--dx", args.dx.is_some()),
-        ("--dy", args.dy.is_some()),
-        ("--channel", args.channel.is_some()),
-    ] {
-        if given {
-            return Err(Failure::input(match path {
-                Input::Container(_) => format!(
-                    "{flag}: not with a container (its meta.yml and data files give each measurement's)"
-                ),
-                Input::Loose(_) => format!(
-                    "{flag}: not with --measurements (each file's own, or its size=, data_source= setting: FILE@KEY=VALUE)"
-                ),
-            }));
-        }
-    }
-    for (name, v) in [("tip-radius", args.tip_radius), ("resolution", args.resolution)] {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(Failure::input(format!(
-                "--{name}: {} is out of range: must be > 0 and finite (metres)",
-                Shortest(v)
-            )));
-        }
-    }
-    // For the measurements whose metadata gives no instrument parameters;
-    // --resolution takes precedence over --tip-radius, as for one file.
-    let options = ContainerOptions {
-        read: ke_friction::topography::ReadOptions {
-            max_points: args.max_points.unwrap_or(ke_friction::topography::MAX_POINTS),
-            ..Default::default()
-        },
-        tip_radius: args.tip_radius.filter(|_| args.resolution.is_none()),
-        resolution: args.resolution,
-    };
+    // The core's options of a container (the flags a container's meta.yml
+    // answers for, --dx, --dy, --channel, refused rather than ignored;
+    // --resolution before --tip-radius, as for one file).
+    let options = args
+        .request()
+        .container_options()
+        .map_err(|e| request_failure("surface", e))?;
     match path {
         Input::Container(p) => read_container(p, &options).map_err(|e| Failure::of(path.context(), e)),
         Input::Loose(files) => crate::measurements::read(args, files, options).map(|s| vec![s]),
     }
 }
 
-/// The model set-up, the loads and the band asked for, checked.
+/// The request of the flags, its model set-up and its loads, checked
+/// (the core's `container_model`, `container_band`).
 struct Asked {
+    request: SurfaceRequest,
     how: SurfaceModel,
     loads: Vec<Load>,
-    band: Option<Band>,
-    load_field: Field,
-    family: Option<ke_friction::Family>,
 }
 
 fn asked(args: &Args) -> Result<Asked, Failure> {
     let request = args.request()?;
-    let checked = request.check().map_err(|e| request_failure("surface", e))?;
-    let Some(materials) = checked.materials else {
-        return Err(Failure::input(
-            "surface CONTAINER: μ from a container needs the materials (--e1, --nu1, --e2, --nu2, --hardness, --delta-gamma, --epsilon); --psd or --scale-dependent need none",
-        ));
-    };
-    for (flag, v) in [("--lambda-c", args.read.lambda_c)] {
-        if let Some(v) = v.filter(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(Failure::input(format!(
-                "{flag}: {} is out of range: must be > 0 and finite (metres)",
-                Shortest(v)
-            )));
+    let (materials, loads) = request.container_model().map_err(|e| {
+        if e.field == Field::File {
+            // The materials are missing: the spectra need none.
+            let message = e.render(&spell("surface CONTAINER"));
+            Failure::classified(format!("{message}; --psd or --scale-dependent need none"), e.kind)
+        } else {
+            request_failure("surface", e)
         }
-    }
-    let lambda_s = match args.read.lambda_s {
-        Some(LambdaS::Metres(v)) if !(v.is_finite() && v > 0.0) => {
-            return Err(Failure::input(format!(
-                "--lambda-s: {} is out of range: must be > 0 and finite (metres), or auto",
-                Shortest(v)
-            )))
-        }
-        Some(LambdaS::Metres(v)) => Some(v),
-        // auto: the smallest reliable scale of any measurement, the default.
-        Some(LambdaS::Auto) | None => None,
-    };
-    let band = match (lambda_s, args.read.lambda_c) {
-        (None, None) => None,
-        (s, c) => Some((s, c)),
-    };
+    })?;
+    // The band's ends checked before the container is read.
+    request
+        .container_band(&Resolved { ranges: Vec::new() })
+        .map_err(|e| request_failure("surface", e))?;
     Ok(Asked {
-        how: SurfaceModel {
-            materials,
-            family: args.distribution,
-            fit: args.fit,
-            kind: args.model,
-        },
-        loads: checked.loads.unwrap_or_default(),
-        band: band.map(|(s, c)| Band {
-            lambda_s: s.unwrap_or(f64::NAN),
-            lambda_c: c.unwrap_or(f64::NAN),
-        }),
-        load_field: request.loads.field(),
-        family: args.distribution,
+        how: request.model_of(materials),
+        loads,
+        request,
     })
 }
 
 /// An analysis error, naming the flags to blame.
 fn analysis_failure(path: &Input, asked: &Asked, e: AnalysisError) -> Failure {
-    match e {
-        AnalysisError::Evaluate(e) => request_failure("surface", evaluate_failure(&e, asked.family, asked.load_field)),
-        AnalysisError::Band(_) if asked.band.is_some() => Failure::of("--lambda-s, --lambda-c", e),
-        e => Failure::of(path.context(), e),
-    }
-}
-
-/// The band asked for, its missing end from the default band.
-fn band_of(asked: &Asked, resolved: &Resolved) -> Option<Band> {
-    let given = asked.band?;
-    let default = resolved.default_band();
-    let pick = |v: f64, d: Option<f64>| if v.is_nan() { d.unwrap_or(f64::NAN) } else { v };
-    Some(Band {
-        lambda_s: pick(given.lambda_s, default.map(|b| b.lambda_s)),
-        lambda_c: pick(given.lambda_c, default.map(|b| b.lambda_c)),
-    })
+    request_failure("surface", asked.request.container_failure(&e, &path.to_string()))
 }
 
 /// `surface CONTAINER` with the materials: μ from the whole band of the
@@ -312,7 +226,10 @@ pub fn run(args: &Args, path: &Input) -> Result<(), Failure> {
     for s in &surfaces {
         let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
         let resolved = Resolved::of(&spectra);
-        let band = band_of(&asked, &resolved);
+        let band = asked
+            .request
+            .container_band(&resolved)
+            .map_err(|e| request_failure("surface", e))?;
         let a = container_analysis(
             &s.measurements,
             &spectra,
@@ -323,26 +240,8 @@ pub fn run(args: &Args, path: &Input) -> Result<(), Failure> {
         )
         .map_err(|e| analysis_failure(path, &asked, e))?;
         warnings.extend(a.warnings.iter().cloned());
-        let measurements: Vec<_> = s
-            .measurements
-            .iter()
-            .zip(&spectra)
-            .map(|(m, p)| measurement_record(m, p))
-            .collect();
         let names = |idx: &[usize]| -> Vec<String> { idx.iter().map(|&i| s.measurements[i].name.clone()).collect() };
-        let record = serde_json::to_value(&a).expect("a record");
-        docs.push(serde_json::json!({
-            "name": s.name,
-            "measurements": measurements,
-            "combined": {
-                "band": record["band"], "moments": record["moments"], "roughness": record["roughness"],
-                "heights_from": s.measurements[a.heights_from].name,
-                "rests_on": names(&a.measurements),
-            },
-            "model": record["model"],
-            "friction": record["frictions"],
-            "warnings": record["warnings"],
-        }));
+        docs.push(serde_json::to_value(ContainerRecord::new(s, &spectra, &a)).expect("a record"));
         text.push(format!("surface: {}", s.name.as_deref().unwrap_or("(unnamed)")));
         for (m, p) in s.measurements.iter().zip(&spectra) {
             let (nx, ny) = m.grid();
@@ -448,11 +347,7 @@ pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
         let names = |idx: &[usize]| -> Vec<String> { idx.iter().map(|&i| s.measurements[i].name.clone()).collect() };
         let mut records = Vec::with_capacity(rows.len());
         for row in &rows {
-            let mut record = serde_json::json!({
-                "lambda_s": row.band.lambda_s, "lambda_c": row.band.lambda_c,
-                "measurements": names(&row.measurements),
-                "spread": row.spread.as_ref().map(|v| v.iter().map(|(lo, hi)| serde_json::json!({"mu_min": lo, "mu_max": hi})).collect::<Vec<_>>()),
-            });
+            let record = serde_json::to_value(ScanRecord::new(s, row)).expect("a record");
             let mut cells = vec![
                 Shortest(row.band.lambda_s).to_string(),
                 Shortest(row.band.lambda_c).to_string(),
@@ -461,11 +356,6 @@ pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
             match &row.result {
                 Ok(a) => {
                     warnings.note(a.warnings.iter().cloned());
-                    let full = serde_json::to_value(a).expect("a record");
-                    for key in ["moments", "roughness", "model", "warnings"] {
-                        record[key] = full[key].clone();
-                    }
-                    record["friction"] = full["frictions"].get(0).cloned().unwrap_or_default();
                     let r = &a.roughness;
                     for v in [r.sigma, r.alpha, r.eta, r.radius, r.beta] {
                         cells.push(Shortest(v).to_string());
@@ -486,7 +376,6 @@ pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
                     cells.push(String::new());
                 }
                 Err(e) => {
-                    record["error"] = e.to_string().into();
                     cells.extend(std::iter::repeat_n(String::new(), 9));
                     cells.push(format!("\"{}\"", e.to_string().replace('"', "'")));
                 }

@@ -4,11 +4,12 @@
 //! argument checks and the documented Python API on top.
 //!
 //! One module per class (`table.rs`, `curve.rs`, `model.rs`,
-//! `distribution.rs`, `surface.rs`, `law.rs`); the core's
+//! `distribution.rs`, `surface.rs`, `container.rs`, `law.rs`); the core's
 //! errors become Python exceptions in `error.rs` alone; the batch and
 //! thread machinery is `parallel.rs`; `convert.rs` turns arguments and the
 //! core's records between the two languages.
 
+mod container;
 mod convert;
 mod curve;
 mod distribution;
@@ -30,6 +31,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<distribution::DistributionCore>()?;
     m.add_class::<surface::SurfaceCore>()?;
     m.add_class::<law::FrictionLawCore>()?;
+    m.add_class::<container::ContainerCore>()?;
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
     m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;
     m.add_function(wrap_pyfunction!(model::contact_warnings, m)?)?;

@@ -14,7 +14,8 @@ def test_everything_public_is_documented():
         obj = getattr(kf, name)
         if callable(obj):
             assert obj.__doc__ and len(obj.__doc__) > 40, name
-    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact, kf.HeightDistribution, kf.Surface, kf.FrictionLaw]:
+    for cls in [kf.Table, kf.Curve, kf.Model, kf.Contact, kf.HeightDistribution, kf.Surface, kf.Container,
+                kf.FrictionLaw]:
         for attr, value in vars(cls).items():
             if not attr.startswith("_"):
                 doc = getattr(value, "__doc__", None) or getattr(getattr(value, "__func__", None), "__doc__", None)
@@ -38,7 +39,7 @@ def test_stubs_and_py_typed_ship_with_the_package():
     assert (pkg / "py.typed").exists() and (pkg / "_core.pyi").exists()
     stub = (pkg / "_core.pyi").read_text()
     for name in ["class TableCore", "class CurveCore", "class ModelCore", "class DistributionCore",
-                 "class FrictionLawCore", "def params_from_physical"]:
+                 "class FrictionLawCore", "class ContainerCore", "def params_from_physical"]:
         assert name in stub, name
 
 

@@ -8,7 +8,8 @@
 //! as `kefric surface --json` gives them; errors name the page's fields,
 //! [`label`]), and keeps the core's record ([`SurfaceRecord`]). The curves (μ against load, μ, ψ and β against
 //! λs, the PSD, the height map and histogram) are further methods. Every
-//! result crosses to JavaScript as JSON text or a `Float64Array`.
+//! result crosses to JavaScript as JSON text or a `Float64Array`. A
+//! contact.engineering container is `container.rs`'s.
 
 use ke_friction::topography::{
     complete_part, psd_all, scan, Analysis as Answer, Channel, Checked, Cutoff, Derivative, Detrend, Evaluation, Field,
@@ -21,6 +22,8 @@ use ke_friction::{
 use serde_json::{json, Value};
 use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
+
+mod container;
 
 /// The options the page takes, as URL query keys, in the order the
 /// equivalent command line gives them: the core request's fields

@@ -138,16 +138,23 @@ function handle(m) {
       break;
     case 'result':
       result = m;
-      showResult(m);
+      if (m.container) showContainer(m); else showResult(m);
       // The statistics are shown; why μ is not (kefric's message in the page's words).
       if (m.error) showError(m.error);
       requestAnimationFrame(() => {
-        $('timing').textContent = `(read, analysed and μ(F) drawn in ${Math.round(performance.now() - started)} ms)`;
+        const what = m.container ? 'read and analysed' : 'read, analysed and μ(F) drawn';
+        $('timing').textContent = `(${what} in ${Math.round(performance.now() - started)} ms)`;
         document.body.dataset.drawn = String(run);
       });
       status('spectra and histogram…', null);
       break;
     case 'curves':
+      if (m.container) {
+        result.psd = m.psd;
+        drawContainerPsd(m.psd);
+        status('scan over λs…', null);
+        break;
+      }
       result.histogram = m.histogram;
       result.psd = m.psd;
       // μ(F) under the other height models, over the analysis' own curve.
@@ -165,7 +172,7 @@ function handle(m) {
     case 'scan':
       busy = false;
       result.scan = m.scan;
-      drawScan(m.scan);
+      if (m.container) drawContainerScan(m.scan); else drawScan(m.scan);
       status(`done: ${file.name}`);
       document.body.dataset.done = String(run);
       break;
@@ -184,14 +191,32 @@ function num(v, digits = 4) {
 }
 const fmt = (v) => (v === null || v === undefined ? '–' : typeof v === 'number' ? num(v) : String(v));
 
-function showResult(m) {
-  const r = JSON.parse(m.record);
+// The record, the command line and the warnings of a result shown; the
+// page laid out for one surface or a container.
+function showCommon(m, container) {
   $('results').hidden = false;
   $('results').classList.remove('stale');
+  $('results').classList.toggle('container', container);
   $('record').textContent = m.record;
   $('command').textContent = m.command;
   const w = $('warnings');
   w.replaceChildren(...m.warnings.map((t) => Object.assign(document.createElement('li'), { textContent: t })));
+}
+
+function showStats(rows) {
+  $('stats').replaceChildren(...rows.map(([k, v, u]) => {
+    const tr = document.createElement('tr');
+    tr.innerHTML = '<td></td><td class="v"></td><td></td>';
+    tr.children[0].textContent = k;
+    tr.children[1].textContent = fmt(v);
+    tr.children[2].textContent = u;
+    return tr;
+  }));
+}
+
+function showResult(m) {
+  const r = JSON.parse(m.record);
+  showCommon(m, false);
   const s = r.surface;
   const rows = [
     ['σ (Sq)', s.sigma, 'm'], ['Sk (Ssk)', s.skewness, ''], ['K (Sku)', s.kurtosis, ''],
@@ -211,20 +236,53 @@ function showResult(m) {
       f.friction_force !== undefined && f.friction_force !== null ? ['Q = μF', f.friction_force, 'N'] : ['μF/Aₙ', f.friction_stress, 'Pa'],
       ['h* (separation/σ)', f.h_star, '']);
   }
-  $('stats').replaceChildren(...rows.map(([k, v, u]) => {
-    const tr = document.createElement('tr');
-    tr.innerHTML = '<td></td><td class="v"></td><td></td>';
-    tr.children[0].textContent = k;
-    tr.children[1].textContent = fmt(v);
-    tr.children[2].textContent = u;
-    return tr;
-  }));
+  showStats(rows);
   drawMap(m.map, s);
   drawLoad(m.load, r.friction);
   link('download-json', `${file.name}.json`, m.record + '\n', 'application/json');
   link('download-load', `${file.name}.mu-load.csv`,
     csv([`load_${m.load.unit === 'Pa' ? 'pa' : 'n'}`, 'mu'], [m.load.load, m.load.mu]), 'text/csv');
   for (const id of ['download-scan', 'download-psd', 'download-histogram']) $(id).removeAttribute('href');
+}
+
+// A container (kefric surface CONTAINER --json's record): its
+// measurements, then the combined spectrum's band, moments and roughness,
+// the model's inputs and μ at each load.
+function showContainer(m) {
+  const r = JSON.parse(m.record);
+  showCommon(m, true);
+  const row = (tag, cells) => {
+    const tr = document.createElement('tr');
+    tr.append(...cells.map((c) => Object.assign(document.createElement(tag), { textContent: fmt(c) })));
+    return tr;
+  };
+  $('measurements').replaceChildren(
+    row('th', ['measurement', 'file', 'instrument', 'unit', 'nx', 'ny', 'Δx (m)', 'size x (m)', 'size y (m)',
+      'reliable from (m)', 'to (m)']),
+    ...r.measurements.map((x) => row('td', [x.name, x.file, x.instrument, x.unit, x.nx, x.ny, x.dx, x.size[0],
+      x.size[1], x.reliable?.lambda_min, x.reliable?.lambda_max])));
+  const rows = [];
+  if (r.combined) {
+    const c = r.combined, g = c.roughness;
+    rows.push(['λs (band)', c.band.lambda_s, 'm'], ['λc (band)', c.band.lambda_c, 'm'],
+      ['rests on', c.rests_on.join(', '), ''], ['heights from', c.heights_from, ''],
+      ['m0', c.moments.m0, 'm²'], ['m2', c.moments.m2, ''], ['m4', c.moments.m4, '1/m²'],
+      ['σ', g.sigma, 'm'], ['α (bandwidth)', g.alpha, ''], ['η (summit density)', g.eta, '1/m²'],
+      ['R (summit radius)', g.radius, 'm'], ['β = ηRσ', g.beta, '']);
+  }
+  if (r.model) {
+    const p = r.model;
+    rows.push(['ψ', p.psi, ''], ['θ', p.theta, ''], ['β (model)', p.beta, ''], ['ε*', p.eps_star, ''],
+      ['heights', `${p.distribution}`, '']);
+  }
+  for (const f of r.friction ?? []) {
+    rows.push(['F* = F/(Aₙ H)', f.f_star, ''], ['μ', f.mu, ''],
+      f.friction_force !== undefined && f.friction_force !== null ? ['Q = μF', f.friction_force, 'N'] : ['μF/Aₙ', f.friction_stress, 'Pa'],
+      ['h* (separation/σ)', f.h_star, '']);
+  }
+  showStats(rows);
+  link('download-json', `${file.name}.json`, m.record + '\n', 'application/json');
+  for (const id of ['download-load', 'download-scan', 'download-psd', 'download-histogram']) $(id).removeAttribute('href');
 }
 
 // CSV with a provenance header: the library's version, the file and every
@@ -391,7 +449,7 @@ function drawHistogram(h) {
     csv(['z_m', 'density_per_m', ...fits.map((n) => `${n}_per_m`)], [h.z, h.density, ...fits.map((n) => h[n])]), 'text/csv');
 }
 
-function drawPsd(psd) {
+function drawPsd(psd, column = 'direction') {
   if (psd.error) { message('psd', psd.error); $('download-psd').removeAttribute('href'); return; }
   const names = Object.keys(psd).filter((n) => n !== 'note');
   // uPlot's log axes span ±16 decades: C (~1e-30 m³) is drawn in a unit
@@ -404,15 +462,66 @@ function drawPsd(psd) {
     return [k.map((i) => psd[n].q[i]), k.map((i) => (psd[n].c[i] > 0 ? psd[n].c[i] / 10 ** e : null))];
   });
   const data = uPlot.join(tables);
-  const colours = ['#1565c0', '#2e7d32', '#c62828'];
+  const colours = ['#1565c0', '#2e7d32', '#c62828', '#6a1b9a', '#ef6c00', '#00838f'];
   plot('psd', {
     scales: { x: { time: false, distr: 3 }, y: { distr: 3 } },
     axes: [{ label: 'q (rad/m)' }, { label: `C (10^${e} m³; m⁴ for the area)`, size: 60 }],
-    series: [{ label: 'q' }, ...names.map((n, i) => ({ label: n, stroke: colours[i % 3], width: 2, spanGaps: true }))],
+    series: [{ label: 'q' }, ...names.map((n, i) => ({ label: n, stroke: n === 'combined' ? '#000' : colours[i % colours.length],
+      width: n === 'combined' ? 3 : 2, spanGaps: true }))],
   }, data);
   if (psd.note) $('psd').append(Object.assign(document.createElement('p'), { className: 'note', textContent: psd.note }));
   const rows = names.flatMap((n) => psd[n].q.map((q, i) => [n, q, psd[n].c[i]]));
-  link('download-psd', `${file.name}.psd.csv`, csv(['direction', 'q', 'c'], [0, 1, 2].map((k) => rows.map((r) => r[k]))), 'text/csv');
+  link('download-psd', `${file.name}.psd.csv`, csv([column, 'q', 'c'], [0, 1, 2].map((k) => rows.map((r) => r[k]))), 'text/csv');
+}
+
+// A container's spectra: each measurement's reliable one and the combined
+// one (black), as kefric surface CONTAINER --psd gives them.
+function drawContainerPsd(psd) {
+  const curves = {};
+  const notes = [];
+  for (const m of psd.measurements) {
+    if (m.q) curves[m.name] = m; else notes.push(`${m.name}: no reliable spectrum (${m.error})`);
+  }
+  if (psd.combined.q) curves.combined = psd.combined; else notes.push(`combined: ${psd.combined.error}`);
+  if (!Object.keys(curves).length) { message('psd', notes.join('; ')); $('download-psd').removeAttribute('href'); return; }
+  drawPsd(curves, 'measurement');
+  for (const text of notes) $('psd').append(Object.assign(document.createElement('p'), { className: 'note', textContent: text }));
+}
+
+// A container's scan over λs (kefric surface CONTAINER --scan --json's
+// rows): β and ψ of the combined spectrum over [λs, λc], μ, and its
+// spread across the measurements taken alone.
+function drawContainerScan(scan) {
+  if (scan.error) { message('scan', scan.error); $('download-scan').removeAttribute('href'); return; }
+  const rows = scan.rows;
+  const pick = (f) => rows.map((r) => { const v = f(r); return typeof v === 'number' ? v : null; });
+  const positive = (v) => v.map((x) => (x > 0 ? x : null));
+  const lambda = rows.map((r) => r.lambda_s);
+  const columns = {
+    beta: pick((r) => r.roughness?.beta), psi: pick((r) => r.model?.psi), mu: pick((r) => r.friction?.mu),
+    mu_min: pick((r) => r.spread?.[0]?.mu_min), mu_max: pick((r) => r.spread?.[0]?.mu_max),
+  };
+  const series = [{ label: 'λs (m)' }, { label: 'β', stroke: '#2e7d32', width: 2, scale: 'r' },
+    { label: 'ψ', stroke: '#6a1b9a', width: 2, scale: 'r' }];
+  const data = [lambda, columns.beta, columns.psi];
+  if (columns.mu.some((v) => v !== null)) {
+    series.push({ label: 'μ', stroke: '#1565c0', width: 2, scale: 'mu' },
+      { label: 'μ min', stroke: '#1565c0', width: 1, dash: [4, 4], scale: 'mu' },
+      { label: 'μ max', stroke: '#1565c0', width: 1, dash: [4, 4], scale: 'mu' });
+    data.push(positive(columns.mu), positive(columns.mu_min), positive(columns.mu_max));
+  }
+  plot('scan', {
+    scales: { x: { time: false, distr: 3 }, r: { distr: 3 }, mu: { distr: 3 } },
+    axes: [{ label: 'λs (m)' }, { scale: 'mu', label: 'μ' }, { scale: 'r', side: 1, label: '', size: 70, grid: { show: false } }],
+    series,
+    hooks: { draw: [rightLabel('β, ψ')] },
+  }, data);
+  if (scan.warnings?.length) $('scan').append(Object.assign(document.createElement('p'), { className: 'note', textContent: scan.warnings.map((w) => w.summary).join(' · ') }));
+  link('download-scan', `${file.name}.scan.csv`,
+    csv(['lambda_s', 'lambda_c', 'measurements', 'beta', 'psi', 'mu', 'mu_min', 'mu_max', 'warnings', 'error'],
+      [lambda, rows.map((r) => r.lambda_c), rows.map((r) => r.measurements.join(' ')),
+        ...['beta', 'psi', 'mu', 'mu_min', 'mu_max'].map((k) => columns[k]),
+        rows.map((r) => (r.warnings ?? []).map((w) => w.kind).join(';')), rows.map((r) => (r.error ? JSON.stringify(r.error) : ''))]), 'text/csv');
 }
 
 function drawScan(scan) {

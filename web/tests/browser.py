@@ -1,6 +1,6 @@
 """The web page in a real browser (headless Chromium through Selenium).
 
-    python web/tests/browser.py SITE KEFRIC OUT [--topographies DIR] [--big FILE]
+    python web/tests/browser.py SITE KEFRIC OUT [--topographies DIR] [--containers DIR] [--big FILE]
 
 SITE is `bash web/build.sh SITE`'s output, KEFRIC the CLI, OUT where the
 screenshots go. The page is served from 127.0.0.1 and driven through
@@ -12,7 +12,12 @@ Analyse and Enter pressed, give the new record within EDIT_SECONDS with one
 Web Worker running), a bad file must show the CLI's error text in the
 page's words (its fields by their labels) and leave the page usable. Every file of --topographies that kefric
 reads is compared too (the formats the reader registry gains come
-through). --big: a 1024 x 1024 X3P read, analysed and its mu(F) curve drawn
+through). --containers: each contact.engineering container there
+(container-2.zip) dropped on the page: its #record equals `kefric surface
+CONTAINER --json` with the same materials and load, its measurements table
+lists them, its scan and PSD downloads equal `--scan --json`'s rows and
+`--psd --json`'s combined spectrum; a flag kefric refuses with a container
+(--dx) gives kefric's message. --big: a 1024 x 1024 X3P read, analysed and its mu(F) curve drawn
 within BIG_SECONDS, best of BIG_RUNS (the figure is printed for docs/PERFORMANCE.md).
 """
 
@@ -264,6 +269,99 @@ def check_file(page, exe, path, options, shots, shot=None):
     print(f"web: {path.name} {json.dumps(options)}: #record = kefric surface --json (rtol {RTOL})")
 
 
+def downloads_of(page, ids):
+    """The texts of the download links `ids` (None where a link has no href)."""
+    return page.d.execute_async_script("""
+        const done = arguments[arguments.length - 1];
+        Promise.all(arguments[0].map((id) => {
+          const a = document.getElementById(id);
+          return a.href ? fetch(a.href).then((r) => r.text()) : null;
+        })).then(done);""", ids)
+
+
+def csv_rows(text):
+    """A download's CSV rows (its provenance header left out) as dicts."""
+    import csv as csvmod
+    lines = [line for line in text.splitlines() if not line.startswith("#")]
+    return list(csvmod.DictReader(lines))
+
+
+def check_container(page, exe, path, shots):
+    """A container dropped on the page: its record is `kefric surface
+    CONTAINER --json`'s (every field, numbers within RTOL), the
+    measurements table lists each measurement, the stats table shows mu,
+    the scan download's rows are `--scan --json`'s (mu and its spread) and
+    the PSD download's combined spectrum `--psd --json`'s."""
+    options = {**MATERIALS, "force": "10", "area": "1e-5"}
+    status, out, err = kefric(exe, path, options)
+    assert status == 0, f"{path.name}: kefric failed ({status}): {err}"
+    cli = json.loads(out)
+    page.open(options)
+    page.load(path)
+    assert page.error() is None, f"{path.name}: the page says {page.error()!r}"
+    record = json.loads(page.text("record"))
+    compare(record, cli)
+    names = [c.text for c in page.d.find_elements(By.CSS_SELECTOR, "#measurements tr td:first-child")]
+    assert names == [m["name"] for m in cli["measurements"]], names
+    stats = {r.find_elements(By.TAG_NAME, "td")[0].text: r.find_elements(By.TAG_NAME, "td")[1].text
+             for r in page.d.find_elements(By.CSS_SELECTOR, "#stats tr")}
+    mu = cli["friction"][0]["mu"]
+    assert math.isclose(float(stats["μ"]), mu, rel_tol=1e-3), (stats["μ"], mu)
+    assert page.d.find_element(By.CSS_SELECTOR, "#psd canvas") and page.d.find_element(By.CSS_SELECTOR, "#scan canvas")
+    assert not page.d.find_element(By.ID, "map").is_displayed(), "a container has no height map"
+    scan_text, psd_text = downloads_of(page, ["download-scan", "download-psd"])
+    _, scan_out, scan_err = kefric(exe, path, options, "--scan")
+    rows = json.loads(scan_out)["rows"]
+    shown = csv_rows(scan_text)
+    assert len(shown) == len(rows), (len(shown), len(rows))
+    for i, (a, b) in enumerate(zip(shown, rows)):
+        compare(float(a["lambda_s"]), b["lambda_s"], f"scan[{i}].lambda_s")
+        assert a["measurements"].split(" ") == b["measurements"], (a["measurements"], b["measurements"])
+        # mu of a scan row, and of each measurement alone (a narrow band of
+        # one spectrum, far from its own): the x86-64 and wasm32 FFTs'
+        # last-bit differences, amplified by the contact (1.3e-12 measured
+        # on container-2.zip's row 1), within SENSITIVITY_RTOL.
+        for key, cli_value in (("mu", (b.get("friction") or {}).get("mu")),
+                               ("mu_min", (b.get("spread") or [{}])[0].get("mu_min")),
+                               ("mu_max", (b.get("spread") or [{}])[0].get("mu_max"))):
+            if cli_value is None:
+                assert a[key] == "", (i, key, a[key])
+                continue
+            page_value = float(a[key])
+            assert math.isclose(page_value, cli_value, rel_tol=SENSITIVITY_RTOL, abs_tol=0.0), \
+                f"scan[{i}].{key}: {page_value!r} != {cli_value!r} (rtol {SENSITIVITY_RTOL})"
+    _, psd_out, _ = kefric(exe, path, {}, "--psd")
+    combined = json.loads(psd_out)["combined"]
+    got = [r for r in csv_rows(psd_text) if r["measurement"] == "combined"]
+    compare([float(r["q"]) for r in got], combined["q"], "psd.combined.q")
+    compare([float(r["c"]) for r in got], combined["c"], "psd.combined.c")
+    page.d.save_screenshot(str(shots / f"{path.stem}.png"))
+    errors = page.console_errors()
+    assert not errors, f"{path.name}: console errors: {errors}"
+    print(f"web: {path.name}: #record = kefric surface CONTAINER --json (rtol {RTOL}), mu = {mu:.6g}; "
+          f"{len(rows)} scan rows = --scan --json's, the combined PSD = --psd --json's")
+    # A flag the container's meta.yml answers for: kefric's message.
+    bad = {**options, "dx": "1e-6"}
+    status, _, err = kefric(exe, path, bad)
+    assert status == 2, (status, err)
+    page.open(bad)
+    page.load(path)
+    assert page.error() == page_words(page, err), f"page: {page.error()!r}\nkefric: {err.strip()!r}"
+    print(f"web: {path.name} with dx: the page says kefric's {err.strip()!r} in its own words")
+    # No materials: the measurements and spectra, and why there is no mu
+    # (the core's words; kefric refuses the command, adding its --psd hint).
+    page.open({})
+    page.load(path)
+    assert page.error().startswith("error: μ from a container needs the materials (“E₁”, “ν₁”,"), page.error()
+    names = [c.text for c in page.d.find_elements(By.CSS_SELECTOR, "#measurements tr td:first-child")]
+    assert names == [m["name"] for m in cli["measurements"]], names
+    assert page.d.find_element(By.CSS_SELECTOR, "#psd canvas")
+    assert json.loads(page.text("record"))["measurements"] == cli["measurements"]
+    errors = page.console_errors()
+    assert not errors, f"{path.name} without materials: console errors: {errors}"
+    print(f"web: {path.name} without materials: its measurements and spectra, and {page.error()[:60]!r}...")
+
+
 def check_edits(page, exe, example, shots):
     """Edits a field of an analysed page and presses Analyse, then edits
     another and presses Enter, the second time while the scan still runs:
@@ -315,6 +413,7 @@ def main():
     ap.add_argument("kefric")
     ap.add_argument("out", type=Path)
     ap.add_argument("--topographies", type=Path)
+    ap.add_argument("--containers", type=Path)
     ap.add_argument("--big", type=Path)
     args = ap.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
@@ -387,6 +486,16 @@ def main():
         page.load(example)
         shown = {w["kind"] for w in json.loads(page.text("record"))["warnings"]}
         assert not shown & VALIDITY_KINDS, f"the README's example warns {sorted(shown & VALIDITY_KINDS)}"
+
+        containers = sorted(args.containers.glob("*.zip")) if args.containers else []
+        for path in containers:
+            check_container(page, exe, path, args.out)
+        if args.containers:
+            assert containers, f"no container (*.zip) in {args.containers}"
+            # The page reads a single file after a container.
+            page.open(CASES[0])
+            page.load(example)
+            assert page.error() is None and "surface" in json.loads(page.text("record"))
 
         if args.big:
             options = {**MATERIALS, "force": "10", "area": "1e-5"}

@@ -18,6 +18,9 @@ theta = dgamma/(sigma H) and the roughness (beta, nu, eps_star):
   against the scale (:meth:`Surface.scan`), its power spectral density
   (:meth:`Surface.psd`), scale-dependent slope and curvature and a
   scanning probe's reliability cut-off;
+* :class:`Container` -- several measurements of one surface (a
+  contact.engineering container): their combined power spectrum and mu
+  from the whole band the instruments resolve together;
 * :class:`FrictionLaw` -- mu(p) and dmu/dp of the contact pressure p in
   pascals (F* = p/H), for a simulator's contact nodes, with a stated
   policy outside its pressure range, and solver-ready tables;
@@ -75,6 +78,7 @@ import numpy.typing as npt
 from . import _core
 from ._args import (_F64, _MODES, ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode,
                     _threads)
+from ._container import Container
 from ._curve import CURVE_ACCURACY, Curve, _curve_of
 from ._distribution import HeightDistribution, _distribution_of, _heights_array, _heights_of, _resolve
 from ._errors import WARNING_KINDS, ModelWarning, TableError, _located, _warn
@@ -84,7 +88,8 @@ from ._surface import (_DERIVATIVES, _DETRENDS, _FAMILIES, _LENGTH_UNITS, _MATER
                        _materials, _surface_of)
 from ._table import _TABLE_ARGS, Table, _table_of
 
-__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "FrictionLaw", "TableError",
+__all__ = ["Table", "Curve", "Model", "Contact", "HeightDistribution", "Surface", "Container", "FrictionLaw",
+           "TableError",
            "ModelWarning", "params_from_physical", "CURVE_ACCURACY", "DEFAULTS", "WARNING_KINDS", "LAW_F_STAR_RANGE"]
 
 #: The package's version: the library's (the Rust crate's).
@@ -116,5 +121,6 @@ def _rehome(*objects: Any) -> None:
                 value.__module__ = __name__
 
 
-_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, FrictionLaw, ModelWarning, params_from_physical,
+_rehome(Table, Curve, Model, Contact, HeightDistribution, Surface, Container, FrictionLaw, ModelWarning,
+        params_from_physical,
         _table_of, _curve_of, _distribution_of, _surface_of, _law_of)

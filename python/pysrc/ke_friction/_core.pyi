@@ -227,6 +227,29 @@ class SurfaceCore:
     def warnings(self) -> List[Dict[str, Any]]: ...
 
 # The warnings (one summary a kind) of contacts, 7 columns a row as ModelCore.contacts_into writes them.
+# One surface of a contact.engineering container
+# (topography::container): its measurements and their reliable spectra.
+class ContainerCore:
+    # The container at `path`, or of the bytes `data` called `name`.
+    @staticmethod
+    def read(path: Optional[str] = None, data: Optional[bytes] = None, name: Optional[str] = None,
+             surface: int = 0, tip_radius: Optional[float] = None, resolution: Optional[float] = None,
+             max_points: Optional[int] = None) -> "ContainerCore": ...
+    def name(self) -> str: ...
+    def surfaces(self) -> List[Optional[str]]: ...
+    # The core's MeasurementRecord of each measurement.
+    def measurements(self) -> List[Dict[str, Any]]: ...
+    # ((q, c, contributors) of the combined spectrum or None, [(q, c) or None]).
+    def psd(self, per_decade: int) -> Tuple[Any, List[Any]]: ...
+    # {"record": ContainerRecord, "warnings": summaries}.
+    def friction(self, materials: List[float], distribution: Optional[str], fit: str, model: str,
+                 force: Optional[List[float]], area: Optional[float], pressure: Optional[List[float]],
+                 lambda_s: Optional[float], lambda_c: Optional[float]) -> Dict[str, Any]: ...
+    # {"rows": [ScanRecord], "warnings": summaries}.
+    def scan(self, materials: List[float], distribution: Optional[str], fit: str, model: str,
+             force: Optional[List[float]], area: Optional[float], pressure: Optional[List[float]],
+             lambda_c: Optional[float], per_decade: int) -> Dict[str, Any]: ...
+
 def contact_warnings(rows: _F64) -> List[Dict[str, Any]]: ...
 
 # The names of the warnings' kinds.

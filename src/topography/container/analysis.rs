@@ -135,7 +135,7 @@ struct WarningRecord {
 }
 
 /// Serialises warnings as `{kind, message}` records.
-fn warning_records<S: serde::Serializer>(warnings: &[Warning], s: S) -> Result<S::Ok, S::Error> {
+pub(super) fn warning_records<S: serde::Serializer>(warnings: &[Warning], s: S) -> Result<S::Ok, S::Error> {
     use serde::ser::SerializeSeq;
     let mut seq = s.serialize_seq(Some(warnings.len()))?;
     for w in warnings {

@@ -26,6 +26,7 @@
 mod analysis;
 mod heights;
 mod loose;
+mod record;
 mod spectrum;
 mod yaml;
 
@@ -34,6 +35,10 @@ pub use analysis::{
 };
 
 pub use loose::{read_loose, LooseError, LooseMeasurement, LooseOptions, LOOSE_KEYS};
+pub use record::{
+    is_container_bytes, CombinedRecord, ContainerRecord, MeasurementRecord, Reliable, ScanRecord, SpreadRecord,
+};
+
 pub use spectrum::{
     combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,
     CombinedScale, MeasurementPsd, Moments, Roughness, COMBINED_POINTS_PER_DECADE,

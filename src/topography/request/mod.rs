@@ -516,7 +516,7 @@ impl SurfaceRequest {
 }
 
 /// A load or a height model given without the materials.
-fn materials_needed() -> Message {
+pub(crate) fn materials_needed() -> Message {
     let mut message = Message::text("needs the materials (");
     for (i, f) in Field::MATERIALS.iter().enumerate() {
         if i > 0 {
