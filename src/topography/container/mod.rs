@@ -25,6 +25,7 @@
 
 mod analysis;
 mod heights;
+mod scale_dependent;
 mod spectrum;
 mod yaml;
 
@@ -32,9 +33,12 @@ pub use analysis::{
     container_analysis, container_scan, measurement_spectra, AnalysisError, Band, ContainerAnalysis, Resolved, ScanRow,
 };
 
+pub use scale_dependent::{
+    combine_scale_dependent, combined_scale_dependent, measurement_scale_dependent, CombinedScale, MeasurementScale,
+};
 pub use spectrum::{
-    combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,
-    CombinedScale, MeasurementPsd, Moments, Roughness, COMBINED_POINTS_PER_DECADE,
+    combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd, Moments,
+    Roughness, COMBINED_POINTS_PER_DECADE,
 };
 
 use std::io::{Cursor, Read, Seek};
