@@ -10,8 +10,9 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use ke_friction::topography::container::{
-    combined_psd, combined_scale_dependent, measurement_psd, measurement_scale_dependent, read_container, read_container_bytes,
-    roughness_from_moments, spectral_moments, ContainerError, ContainerOptions, Heights, COMBINED_POINTS_PER_DECADE,
+    combined_psd, combined_scale_dependent, measurement_psd, measurement_scale_dependent, read_container,
+    read_container_bytes, roughness_from_moments, spectral_moments, ContainerError, ContainerOptions, Heights,
+    COMBINED_POINTS_PER_DECADE,
 };
 use ke_friction::topography::{Psd, ReadOptions};
 
@@ -118,7 +119,13 @@ fn check_scale_dependent(path: &std::path::Path, name: &str) -> f64 {
             } else {
                 let e = (got.mean_square[k] / v[k] - 1.0).abs();
                 worst = worst.max(e);
-                assert!(e <= 1e-9, "{kind} v[{k}] at {}: {} vs {}", d[k], got.mean_square[k], v[k]);
+                assert!(
+                    e <= 1e-9,
+                    "{kind} v[{k}] at {}: {} vs {}",
+                    d[k],
+                    got.mean_square[k],
+                    v[k]
+                );
             }
         }
     }

@@ -34,7 +34,8 @@ pub use analysis::{
 };
 
 pub use scale_dependent::{
-    combine_scale_dependent, combined_scale_dependent, measurement_scale_dependent, CombinedScale, MeasurementScale,
+    combine_scale_dependent, combined_scale_dependent, measurement_scale_dependent, measurement_scales, CombinedScale,
+    MeasurementScale,
 };
 pub use spectrum::{
     combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd, Moments,
@@ -316,6 +317,20 @@ pub fn read_container_bytes(
         out.push(ContainerSurface { name, measurements });
     }
     Ok(out)
+}
+
+/// `f` of each of `items`, in their order: in parallel (rayon) with the
+/// `parallel` feature, else in turn.
+pub(crate) fn each<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync + Send) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
 }
 
 /// The container being read, for the errors.

@@ -41,7 +41,11 @@ pub struct MeasurementScale {
 /// (order 2) of a container's measurements.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CombinedScale {
-    /// Stencil lengths (metres), increasing.
+    /// Each length's index on the grid aligned to whole decades (see
+    /// [`MeasurementScale::grid_index`]).
+    pub grid_index: Vec<i64>,
+    /// Stencil lengths (metres), increasing: the first contributing
+    /// measurement's (as SurfaceTopography reports them).
     pub distance: Vec<f64>,
     /// The mean square derivative along x at each (slope: 1; curvature:
     /// 1/m²): the mean over the measurements with a value there (NaN where
@@ -219,6 +223,7 @@ pub fn combine_scale_dependent(each: &[MeasurementScale]) -> Option<CombinedScal
         return None;
     }
     let mut out = CombinedScale {
+        grid_index: bins.keys().copied().collect(),
         distance: Vec::with_capacity(bins.len()),
         mean_square: Vec::with_capacity(bins.len()),
         contributors: Vec::with_capacity(bins.len()),
@@ -243,9 +248,18 @@ pub fn combine_scale_dependent(each: &[MeasurementScale]) -> Option<CombinedScal
 /// measurement's ([`measurement_scale_dependent`]), then their mean at each
 /// length ([`combine_scale_dependent`]). `None` if nothing contributes.
 pub fn combined_scale_dependent(measurements: &[Measurement], order: u32, per_decade: u32) -> Option<CombinedScale> {
-    let each: Vec<MeasurementScale> = measurements
-        .iter()
-        .map(|m| measurement_scale_dependent(m, order, per_decade))
-        .collect();
+    let each = super::each(measurements, |m| measurement_scale_dependent(m, order, per_decade));
     combine_scale_dependent(&each)
+}
+
+/// Each measurement's scale-dependent mean square slope and curvature
+/// ([`measurement_scale_dependent`], orders 1 and 2), in parallel with the
+/// `parallel` feature.
+pub fn measurement_scales(measurements: &[Measurement], per_decade: u32) -> Vec<[MeasurementScale; 2]> {
+    super::each(measurements, |m| {
+        [
+            measurement_scale_dependent(m, 1, per_decade),
+            measurement_scale_dependent(m, 2, per_decade),
+        ]
+    })
 }
