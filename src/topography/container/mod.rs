@@ -15,7 +15,11 @@
 //! (transposed here), and an `x z` text profile whose x are not evenly
 //! spaced (to 10⁻⁶ of the file's unit) is a *nonuniform* line scan
 //! ([`Heights::Nonuniform`]), interpolated onto a uniform grid for its
-//! spectrum. Lengths are metres throughout.
+//! spectrum. A measurement with only a `squeezed-netcdf` file (what
+//! SurfaceTopography's `write_containers` writes) is read from that
+//! NetCDF-3 file (`netcdf.rs`) with its own unit, sizes and instrument
+//! parameters, its height scale and detrending already applied. Lengths
+//! are metres throughout.
 //!
 //! Untrusted input: the archive is bounded like an X3P
 //! ([`ReadOptions::max_bytes`] for the archive and for each member once
