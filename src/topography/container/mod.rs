@@ -727,6 +727,12 @@ impl Spec {
         let (mut tip_radius, mut resolution) = (self.tip_radius, self.resolution);
         if !self.instrument_given {
             if let Some(json) = &nc.json {
+                if json.len() as u64 > META_MAX_BYTES {
+                    return Err(bad(format!(
+                        "its json attribute is {} bytes, over the limit of {META_MAX_BYTES} bytes",
+                        json.len()
+                    )));
+                }
                 let info = yaml::parse(json).map_err(|d| bad(format!("its json attribute: {d}")))?;
                 let parameters = info.get("instrument").and_then(|i| i.get("parameters"));
                 let field = "json.instrument.parameters";
