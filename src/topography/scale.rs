@@ -141,7 +141,7 @@ pub struct ScaleRow {
 /// }
 /// ```
 pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<ScaleRow>, ScaleError> {
-    scale_dependent(t, distances, Order::Slope)
+    scale_dependent(t, distances, Order::Slope, true)
 }
 
 /// The scale-dependent rms curvature (second derivative, 1/m) at each
@@ -167,7 +167,18 @@ pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<Sc
 /// }
 /// ```
 pub fn scale_dependent_curvature(t: &Topography, distances: &[f64]) -> Result<Vec<ScaleRow>, ScaleError> {
-    scale_dependent(t, distances, Order::Curvature)
+    scale_dependent(t, distances, Order::Curvature, true)
+}
+
+/// The rms slope (`curvature` false) or curvature along x only at each
+/// distance, as [`scale_dependent_slope`] and [`scale_dependent_curvature`]
+/// give it (a map's y left out: what a container's statistics use).
+pub(crate) fn scale_dependent_x(t: &Topography, distances: &[f64], curvature: bool) -> Result<Vec<f64>, ScaleError> {
+    let order = if curvature { Order::Curvature } else { Order::Slope };
+    Ok(scale_dependent(t, distances, order, false)?
+        .into_iter()
+        .map(|r| r.x)
+        .collect())
 }
 
 /// The safety factor of [`tip_reliability_cutoff`] in the paper (Sanner
@@ -315,7 +326,12 @@ enum Direction {
     Y,
 }
 
-fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Vec<ScaleRow>, ScaleError> {
+fn scale_dependent(
+    t: &Topography,
+    distances: &[f64],
+    order: Order,
+    along_y: bool,
+) -> Result<Vec<ScaleRow>, ScaleError> {
     complete(t)?;
     enough_points(t, order)?;
     if let Some(&value) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
@@ -344,7 +360,7 @@ fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Ve
             let sx = d / (n * t.dx);
             let sy = t.dy.map(|py| d / (n * py));
             let x = rms(Direction::X, sx, sy, &mut buf);
-            let y = sy.map(|_| rms(Direction::Y, sx, sy, &mut buf));
+            let y = sy.filter(|_| along_y).map(|_| rms(Direction::Y, sx, sy, &mut buf));
             ScaleRow { distance: d, x, y }
         })
         .collect())

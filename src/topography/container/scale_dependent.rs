@@ -11,8 +11,8 @@ use std::collections::BTreeMap;
 
 use super::spectrum::interp_grid;
 use super::{Heights, Measurement};
-use crate::topography::scale::probe_cutoff;
-use crate::topography::{scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, TIP_SAFETY_FACTOR};
+use crate::topography::scale::{probe_cutoff, scale_dependent_x};
+use crate::topography::{tip_reliability_cutoff, TIP_SAFETY_FACTOR};
 
 /// Fewest derivative values a statistic is taken over
 /// (SurfaceTopography's `threshold`); fewer give NaN.
@@ -177,20 +177,13 @@ pub fn measurement_scale_dependent(m: &Measurement, order: u32, per_decade: u32)
         }
     }
     match &m.heights {
-        Heights::Uniform(t) => {
-            let rows = if order == 1 {
-                scale_dependent_slope(t, &out.distance)
-            } else {
-                scale_dependent_curvature(t, &out.distance)
-            };
-            match rows {
-                Ok(rows) => out.mean_square = rows.iter().map(|r| r.x * r.x).collect(),
-                Err(_) => {
-                    out.grid_index.clear();
-                    out.distance.clear();
-                }
+        Heights::Uniform(t) => match scale_dependent_x(t, &out.distance, order == 2) {
+            Ok(rms) => out.mean_square = rms.iter().map(|r| r * r).collect(),
+            Err(_) => {
+                out.grid_index.clear();
+                out.distance.clear();
             }
-        }
+        },
         Heights::Nonuniform { x, z } => {
             out.mean_square = out
                 .distance
