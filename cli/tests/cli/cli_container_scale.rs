@@ -67,3 +67,32 @@ fn container_scale_dependent_refuses_a_band() {
     );
     assert!(why.is_none(), "{why:?}");
 }
+
+/// A container SurfaceTopography wrote (its measurements `squeezed-netcdf`
+/// NetCDF-3 files only): `--psd` and `--scale-dependent` as
+/// SurfaceTopography reads it back.
+#[test]
+fn squeezed_netcdf_container_reads_in_the_cli() {
+    let zip = format!("{DATA}/squeezed.zip");
+    let text = std::fs::read_to_string(format!("{DATA}/squeezed.json")).unwrap();
+    let r: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let o = kefric(&["surface", &zip, "--psd", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let ms = doc["measurements"].as_array().unwrap();
+    assert_eq!(ms.len(), 2);
+    assert!(ms.iter().all(|m| m["file"].as_str().unwrap().ends_with(".nc")));
+    let (c, rc) = (
+        doc["combined"]["c"].as_array().unwrap(),
+        r["combined"]["c"].as_array().unwrap(),
+    );
+    assert_eq!(c.len(), rc.len());
+    for (a, b) in c.iter().zip(rc) {
+        assert!((a.as_f64().unwrap() / b.as_f64().unwrap() - 1.0).abs() <= 1e-9);
+    }
+    let o = kefric(&["surface", &zip, "--scale-dependent", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let doc: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let d = doc["combined"]["slope"]["distance"].as_array().unwrap();
+    assert_eq!(d.len(), r["slope"]["d"].as_array().unwrap().len());
+}
