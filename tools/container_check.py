@@ -5,7 +5,9 @@ combined power spectrum against SurfaceTopography (issue 50).
 For each container (../shared/containers/container-2.zip and a synthetic
 one this tool builds: one self-affine surface "measured" at three
 resolutions, a map as .npy, a profile as x z text, a nonuniform x z text
-profile with a tip radius), compares
+profile with a tip radius; the same without the nonuniform profile; and the
+uniform one as SurfaceTopography writes a container, squeezed.zip: its
+measurements as `squeezed-netcdf` NetCDF-3 files only), compares
 
 * the measurements: count, grid points, physical sizes (metres);
 * the moments m0, m2, m4 of the whole combined spectrum (the container's
@@ -13,6 +15,10 @@ profile with a tip radius), compares
 * the combined 1-D PSD, SurfaceTopography's container
   `power_spectrum(unit='m', nb_points_per_decade=10)`: the same bins, q and
   C within 1e-9 relative at every bin;
+* the combined scale-dependent mean square slope and curvature, the
+  container's `scale_dependent_statistical_property(lambda x, y=None:
+  np.mean(x * x), n=1 or 2, unit='m', nb_points_per_decade=10)`, nonuniform
+  line scans included: the same distances, 1e-9 relative at each;
 
 against `cargo run --example container_dump` (or the binary given with
 --dump). With --write it stores the synthetic container and the reference
@@ -99,6 +105,19 @@ def synthetic_container(path, nonuniform=True):
             z.writestr('nonuniform.txt', nonuniform_txt)
 
 
+def squeezed_container(path, source, only=None):
+    """The container at `source` as SurfaceTopography writes one
+    (`write_containers`): each measurement a `squeezed-netcdf` file
+    (NetCDF-3 64-bit offset, its pipeline applied), index.json and meta.yml;
+    `only`: just that measurement (index)."""
+    from SurfaceTopography.Container.SurfaceContainer import InMemorySurfaceContainer
+    from SurfaceTopography.Container.IO.CE import write_containers
+    containers = read_container(source)
+    if only is not None:
+        containers = [InMemorySurfaceContainer([containers[0][only]])]
+    write_containers(containers, path)
+
+
 def reference(path):
     c = read_container(path)[0]
     measurements = []
@@ -113,7 +132,9 @@ def reference(path):
     for name, n in (('slope', 1), ('curvature', 2)):
         d, v = c.scale_dependent_statistical_property(lambda x, y=None: np.mean(x * x), n=n, unit='m',
                                                       nb_points_per_decade=10)
-        scale[name] = {'d': [float(x) for x in d], 'v': [float(x) for x in np.asarray(v, float)]}
+        # NaN (no measurement with 4 values there) is null in JSON.
+        scale[name] = {'d': [float(x) for x in d],
+                       'v': [float(x) if np.isfinite(x) else None for x in np.asarray(v, float)]}
     return {'measurements': measurements, 'moments': moments, **scale,
             'combined': {'q': [float(v) for v in np.asarray(q)[keep]],
                          'c': [float(v) for v in np.asarray(C)[keep]]}}
@@ -159,23 +180,21 @@ def compare(name, ref, got):
     print(f'{name}: {len(q)} bins, max relative difference q {eq:.2e}, C {ec:.2e}, '
           f'm0 m2 m4 (c1d_moment) {em:.2e}; read + PSD {got["seconds"]:.3f} s')
     ok = ok and eq <= TOL and ec <= TOL and em <= TOL
-    # Scale-dependent slope and curvature: nonuniform profiles are not
-    # implemented in kefric, so compared on containers without them.
-    if all(m['uniform'] for m in ms):
-        for kind in ('slope', 'curvature'):
-            d, v = s[kind]['d'], s[kind]['v']
-            rd, rv = ref[kind]['d'], ref[kind]['v']
-            if len(d) != len(rd):
-                print(f'{name}: {kind}: {len(d)} distances, SurfaceTopography {len(rd)}')
-                ok = False
-                continue
-            ed = rel(d, rd)
-            both = np.isfinite(rv)
-            ev = rel(np.asarray(v, float)[both], np.asarray(rv)[both]) if both.any() else 0.0
-            same_nan = bool(np.all(np.isnan(np.asarray(v, float)) == ~both))
-            print(f'{name}: scale-dependent {kind}: {len(d)} distances, max relative difference '
-                  f'distance {ed:.2e}, mean square {ev:.2e}')
-            ok = ok and ed <= TOL and ev <= TOL and same_nan
+    # Scale-dependent slope and curvature, nonuniform profiles included.
+    for kind in ('slope', 'curvature'):
+        d, v = s[kind]['d'], s[kind]['v']
+        rd, rv = ref[kind]['d'], np.asarray(ref[kind]['v'], float)
+        if len(d) != len(rd):
+            print(f'{name}: {kind}: {len(d)} distances, SurfaceTopography {len(rd)}')
+            ok = False
+            continue
+        ed = rel(d, rd)
+        both = np.isfinite(rv)
+        ev = rel(np.asarray(v, float)[both], np.asarray(rv)[both]) if both.any() else 0.0
+        same_nan = bool(np.all(np.isnan(np.asarray(v, float)) == ~both))
+        print(f'{name}: scale-dependent {kind}: {len(d)} distances, max relative difference '
+              f'distance {ed:.2e}, mean square {ev:.2e}')
+        ok = ok and ed <= TOL and ev <= TOL and same_nan
     return ok
 
 
@@ -192,8 +211,18 @@ def main():
         synthetic_container(synthetic)
     if args.write or not os.path.exists(uniform):
         synthetic_container(uniform, nonuniform=False)
+    # SurfaceTopography 1.27 cannot read back a container it wrote with a
+    # nonuniform line scan (its meta.yml gives the scan a size, which the
+    # NetCDF reader refuses): squeezed.zip is the uniform one, and the
+    # nonuniform scan alone (squeezed-nonuniform.zip) is checked by the Rust
+    # tests against the same scan of synthetic.zip.
+    squeezed = os.path.join(DATA, 'squeezed.zip')
+    if args.write or not os.path.exists(squeezed):
+        squeezed_container(squeezed, uniform)
+        squeezed_container(os.path.join(DATA, 'squeezed-nonuniform.zip'), synthetic, only=2)
     ok = True
-    for name, path in [('container-2', args.real), ('synthetic', synthetic), ('uniform', uniform)]:
+    for name, path in [('container-2', args.real), ('synthetic', synthetic), ('uniform', uniform),
+                       ('squeezed', squeezed)]:
         if not os.path.exists(path):
             print(f'{name}: {path} not found, skipped')
             continue

@@ -9,8 +9,9 @@ use crate::surface::Args;
 use crate::surface_args::{request_failure, spell, SurfaceArgs};
 use ke_friction::topography::container::AnalysisError;
 use ke_friction::topography::container::{
-    combined_psd, container_analysis, container_scan, measurement_psd, read_container, ContainerRecord,
-    ContainerSurface, Measurement, MeasurementPsd, MeasurementRecord, Resolved, ScanRecord, COMBINED_POINTS_PER_DECADE,
+    combine_scale_dependent, combined_psd, container_analysis, container_scan, measurement_psd, measurement_scales,
+    measurement_spectra, read_container, ContainerRecord, ContainerSurface, Measurement, MeasurementPsd,
+    MeasurementRecord, MeasurementScale, Resolved, ScanRecord, COMBINED_POINTS_PER_DECADE,
 };
 use ke_friction::topography::{Field, LambdaS, SurfaceModel, SurfaceRequest};
 use ke_friction::{Load, Shortest, Warnings};
@@ -77,7 +78,7 @@ pub fn run_psd(args: &Args, path: &Input) -> Result<(), Failure> {
     let mut docs = Vec::new();
     let mut rows = Vec::new();
     for s in &surfaces {
-        let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+        let spectra = measurement_spectra(&s.measurements);
         let combined = combined_psd(&spectra, COMBINED_POINTS_PER_DECADE);
         let mut measurements = Vec::new();
         for (m, p) in s.measurements.iter().zip(&spectra) {
@@ -119,6 +120,121 @@ pub fn run_psd(args: &Args, path: &Input) -> Result<(), Failure> {
     Ok(())
 }
 
+/// The CSV columns of `surface CONTAINER --scale-dependent`.
+const SCALE_HEADER: &str = "distance,rms_slope,rms_curvature,slope_from,curvature_from";
+
+/// `surface CONTAINER --scale-dependent`: the combined scale-dependent rms
+/// slope and rms curvature along x against the stencil length, as
+/// SurfaceTopography's container `scale_dependent_statistical_property`
+/// (the mean square over the measurements with a value at each length of
+/// a grid aligned to whole decades, 10 a decade; nonuniform profiles
+/// included), each row naming the measurements it rests on (CSV rows, or
+/// `--json`: `measurements` each with its own `slope` and `curvature`, and
+/// `combined: {"slope": ..., "curvature": ...}`).
+pub fn run_scale_dependent(args: &Args, path: &Input) -> Result<(), Failure> {
+    if args.read.lambda_c.is_some() || args.read.lambda_s.is_some() {
+        return Err(Failure::input(
+            "--lambda-s, --lambda-c: not with --scale-dependent of a container (its statistics are unfiltered)",
+        ));
+    }
+    let surfaces = read(&args.read, path)?;
+    let per = COMBINED_POINTS_PER_DECADE;
+    let mut docs = Vec::new();
+    let mut lines = vec![SCALE_HEADER.to_string()];
+    for s in &surfaces {
+        let scales = measurement_scales(&s.measurements, per);
+        let names = |idx: &[usize]| -> Vec<String> { idx.iter().map(|&i| s.measurements[i].name.clone()).collect() };
+        let nullable = |v: &[f64]| -> Vec<Option<f64>> { v.iter().map(|x| x.is_finite().then_some(*x)).collect() };
+        let rms = |v: &[f64]| -> Vec<Option<f64>> { v.iter().map(|x| x.is_finite().then(|| x.sqrt())).collect() };
+        let own = |m: &MeasurementScale| serde_json::json!({"distance": m.distance, "rms": rms(&m.mean_square)});
+        let spectra = measurement_spectra(&s.measurements);
+        let measurements: Vec<_> = s
+            .measurements
+            .iter()
+            .zip(&spectra)
+            .zip(&scales)
+            .map(|((m, p), [slope, curvature])| {
+                let mut record = measurement_record(m, p);
+                record["scale_cutoff"] = serde_json::json!(slope.cutoff);
+                record["slope"] = own(slope);
+                record["curvature"] = own(curvature);
+                record
+            })
+            .collect();
+        let slopes: Vec<MeasurementScale> = scales.iter().map(|[s, _]| s.clone()).collect();
+        let curvatures: Vec<MeasurementScale> = scales.iter().map(|[_, c]| c.clone()).collect();
+        let slope = combine_scale_dependent(&slopes);
+        let curvature = combine_scale_dependent(&curvatures);
+        if slope.is_none() && curvature.is_none() {
+            return Err(Failure::classified(
+                format!(
+                    "surface {}: --scale-dependent: no measurement has a stencil length in its reliable band",
+                    path
+                ),
+                ke_friction::ErrorKind::Domain,
+            ));
+        }
+        let combined = |c: &Option<ke_friction::topography::container::CombinedScale>| {
+            c.as_ref().map(|c| {
+                serde_json::json!({
+                    "distance": c.distance, "rms": rms(&c.mean_square), "mean_square": nullable(&c.mean_square),
+                    "rests_on": c.contributors.iter().map(|i| names(i)).collect::<Vec<_>>(),
+                })
+            })
+        };
+        docs.push(serde_json::json!({
+            "name": s.name,
+            "measurements": measurements,
+            "combined": {"slope": combined(&slope), "curvature": combined(&curvature)},
+        }));
+        // Rows on the union of the two grids (a curvature starts at twice
+        // the shortest length of a slope).
+        type Cell = Option<(f64, String)>;
+        let mut rows: std::collections::BTreeMap<i64, (f64, [Cell; 2])> = Default::default();
+        for (k, c) in [&slope, &curvature].into_iter().enumerate() {
+            let Some(c) = c else { continue };
+            for (((g, d), v), from) in c
+                .grid_index
+                .iter()
+                .zip(&c.distance)
+                .zip(&c.mean_square)
+                .zip(&c.contributors)
+            {
+                let cell = (v.sqrt(), names(from).join(" ").replace(',', " "));
+                rows.entry(*g).or_insert((*d, [None, None])).1[k] = Some(cell);
+            }
+        }
+        for (d, [sl, cu]) in rows.into_values() {
+            let value = |c: &Option<(f64, String)>| match c {
+                Some((v, _)) if v.is_finite() => Shortest(*v).to_string(),
+                _ => String::new(),
+            };
+            let from = |c: &Option<(f64, String)>| c.as_ref().map_or(String::new(), |c| c.1.clone());
+            lines.push(format!(
+                "{},{},{},{},{}",
+                Shortest(d),
+                value(&sl),
+                value(&cu),
+                from(&sl),
+                from(&cu)
+            ));
+        }
+    }
+    if args.json {
+        return print_docs(docs, path);
+    }
+    if !args.csv {
+        outln!(
+            "# {}: the measurements' combined scale-dependent rms slope (1) and rms curvature (1/m) along x, against the stencil length (m); each row's measurements",
+            path
+        )?;
+    }
+    for line in lines {
+        outln!("{line}")?;
+    }
+    Ok(())
+}
+
 /// One JSON document, or `{"surfaces": [...]}` for several, with `files`.
 fn print_docs(mut docs: Vec<serde_json::Value>, path: &Input) -> Result<(), Failure> {
     let mut doc = if docs.len() == 1 {
@@ -141,9 +257,7 @@ fn measurement_record(m: &Measurement, p: &MeasurementPsd) -> serde_json::Value 
 pub fn run_measurements(args: &Args) -> Result<(), Failure> {
     let input = Input::Loose(&args.measurements);
     if args.scale_dependent {
-        return Err(Failure::input(
-            "--scale-dependent: not with --measurements (each file alone, or --psd for the combined spectrum)",
-        ));
+        return run_scale_dependent(args, &input);
     }
     if args.psd {
         return run_psd(args, &input);
@@ -224,7 +338,7 @@ pub fn run(args: &Args, path: &Input) -> Result<(), Failure> {
     let mut warnings = Warnings::new();
     let mut text = Vec::new();
     for s in &surfaces {
-        let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+        let spectra = measurement_spectra(&s.measurements);
         let resolved = Resolved::of(&spectra);
         let band = asked
             .request
@@ -334,7 +448,7 @@ pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
     let mut lines = vec![SCAN_HEADER.to_string()];
     let mut warnings = Warnings::new();
     for s in &surfaces {
-        let spectra: Vec<_> = s.measurements.iter().map(measurement_psd).collect();
+        let spectra = measurement_spectra(&s.measurements);
         let rows = container_scan(
             &s.measurements,
             &spectra,

@@ -274,6 +274,9 @@ pub fn run_psd(args: &Args) -> Result<(), Failure> {
 /// 2·max(dx, dy), the shortest stencil both orders have: no empty cells).
 pub fn run_scale_dependent(args: &Args) -> Result<(), Failure> {
     let path = single_file(args, "--scale-dependent")?;
+    if crate::container::is_container(path) {
+        return crate::container::run_scale_dependent(args, &crate::container::Input::Container(path));
+    }
     let read = &args.read;
     let t = read.read("surface", path)?;
     let failed =

@@ -76,7 +76,7 @@ pub struct Args {
     /// A Hann window for --psd.
     #[arg(long, requires = "psd")]
     pub hann: bool,
-    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights detrended as the statistics are (--detrend; unfiltered) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header.
+    /// The scale-dependent rms slope and rms curvature (Sanner et al. 2022) of the heights detrended as the statistics are (--detrend; unfiltered) along x (and y), at stencil lengths log-spaced 5 a decade from 2·max(dx, dy) to half the scan size; with --tip-radius or --resolution, the reliability cut-off in the header. Of a container: the measurements' combined rms slope and curvature along x, 10 lengths a decade, as SurfaceTopography's container computes them, each row naming its measurements.
     #[arg(long, conflicts_with_all = ["psd", "scan"])]
     pub scale_dependent: bool,
 }

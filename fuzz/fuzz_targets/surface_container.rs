@@ -1,15 +1,19 @@
 //! contact.engineering containers: bytes that start like a zip are read
 //! as the container; otherwise they are split at the first NUL into a
 //! `meta.yml` and a data file `p.txt` (the name the seeds' metadata
-//! uses), zipped, and read. Bounds small (1 MiB a member, 2²⁰ points);
-//! nothing may panic, and a read container's measurements, spectra and
-//! combined spectrum are finite where they exist.
+//! uses; a NetCDF file when it starts with `CDF`), zipped, and read.
+//! Bounds small (1 MiB a member, 2²⁰ points); nothing may panic, and a
+//! read container's measurements, spectra, combined spectrum and combined
+//! scale-dependent statistics are finite where they exist. Seeds
+//! (tools/container_fuzz_seeds.py): a lying meta.yml, a missing member, a
+//! deep YAML, a zip bomb (honest and lying headers), a NetCDF-only
+//! measurement.
 #![no_main]
 
 use std::io::Write;
 
 use ke_friction::topography::container::{
-    combined_psd, measurement_psd, read_container_bytes, ContainerOptions, Heights,
+    combined_psd, combined_scale_dependent, measurement_psd, read_container_bytes, ContainerOptions, Heights,
 };
 use ke_friction::topography::ReadOptions;
 use libfuzzer_sys::fuzz_target;
@@ -48,6 +52,13 @@ fuzz_target!(|data: &[u8]| {
         if let Some(c) = combined_psd(&spectra, 10) {
             assert_eq!(c.psd.q.len(), c.psd.c.len());
             assert!(c.psd.q.iter().all(|q| q.is_finite() && *q > 0.0));
+        }
+        for order in [1, 2] {
+            if let Some(c) = combined_scale_dependent(&s.measurements, order, 10) {
+                assert_eq!(c.distance.len(), c.mean_square.len());
+                assert!(c.distance.iter().all(|d| d.is_finite() && *d > 0.0));
+                assert!(c.mean_square.iter().all(|v| v.is_nan() || *v >= 0.0));
+            }
         }
     }
 });

@@ -141,7 +141,7 @@ pub struct ScaleRow {
 /// }
 /// ```
 pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<ScaleRow>, ScaleError> {
-    scale_dependent(t, distances, Order::Slope)
+    scale_dependent(t, distances, Order::Slope, true)
 }
 
 /// The scale-dependent rms curvature (second derivative, 1/m) at each
@@ -167,7 +167,18 @@ pub fn scale_dependent_slope(t: &Topography, distances: &[f64]) -> Result<Vec<Sc
 /// }
 /// ```
 pub fn scale_dependent_curvature(t: &Topography, distances: &[f64]) -> Result<Vec<ScaleRow>, ScaleError> {
-    scale_dependent(t, distances, Order::Curvature)
+    scale_dependent(t, distances, Order::Curvature, true)
+}
+
+/// The rms slope (`curvature` false) or curvature along x only at each
+/// distance, as [`scale_dependent_slope`] and [`scale_dependent_curvature`]
+/// give it (a map's y left out: what a container's statistics use).
+pub(crate) fn scale_dependent_x(t: &Topography, distances: &[f64], curvature: bool) -> Result<Vec<f64>, ScaleError> {
+    let order = if curvature { Order::Curvature } else { Order::Slope };
+    Ok(scale_dependent(t, distances, order, false)?
+        .into_iter()
+        .map(|r| r.x)
+        .collect())
 }
 
 /// The safety factor of [`tip_reliability_cutoff`] in the paper (Sanner
@@ -245,35 +256,51 @@ pub fn tip_reliability_cutoff(t: &Topography, tip_radius: f64, safety_factor: f6
         return Err(ScaleError::SafetyFactor { value: safety_factor });
     }
     let (lower, upper) = bandwidth(t);
-    let fac = ((lower.ln() + upper.ln()) / 2.0).exp();
-    let target = fac * safety_factor / tip_radius;
     let mut buf = Vec::new();
-    let objective = |u: f64, buf: &mut Vec<f64>| -> f64 {
-        let d = fac * u;
+    probe_cutoff(lower, upper, tip_radius, safety_factor, |d| {
         let sx = d / (2.0 * t.dx);
         let sy = t.dy.map(|py| d / (2.0 * py));
         let mut min = f64::INFINITY;
-        let count = visit(t, Order::Curvature, Direction::X, sx, sy, buf, |row| {
+        let count = visit(t, Order::Curvature, Direction::X, sx, sy, &mut buf, |row| {
             for &v in row {
                 // NaN cannot occur (missing points are refused).
                 min = min.min(v);
             }
         });
-        if count == 0 {
-            return target;
-        }
         let step = sx * t.dx;
-        target + fac * (min / (step * step))
+        (count > 0).then(|| min / (step * step))
+    })
+}
+
+/// The bracket search of [`tip_reliability_cutoff`] over a bandwidth
+/// `(lower, upper)`, with `min_curvature(d)` the smallest second
+/// derivative along x at stencil length `d` (`None`: no point kept, which
+/// fulfils the criterion). Shared with the nonuniform profiles of
+/// containers, whose derivative interpolates differently.
+pub(crate) fn probe_cutoff(
+    lower: f64,
+    upper: f64,
+    tip_radius: f64,
+    safety_factor: f64,
+    mut min_curvature: impl FnMut(f64) -> Option<f64>,
+) -> Result<Option<f64>, ScaleError> {
+    let fac = ((lower.ln() + upper.ln()) / 2.0).exp();
+    let target = fac * safety_factor / tip_radius;
+    let mut objective = |u: f64| -> f64 {
+        match min_curvature(fac * u) {
+            None => target,
+            Some(min) => target + fac * min,
+        }
     };
     let a = 2.0 * lower / fac;
     let b = upper / (2.0 * fac);
-    if objective(a, &mut buf) > 0.0 {
+    if objective(a) > 0.0 {
         return Ok(None);
     }
-    if objective(b, &mut buf) < 0.0 {
+    if objective(b) < 0.0 {
         return Ok(Some(upper));
     }
-    let root = brentq(|u| objective(u, &mut buf), a, b, XTOL, RTOL, MAX_ITERATIONS)?;
+    let root = brentq(objective, a, b, XTOL, RTOL, MAX_ITERATIONS)?;
     Ok(Some(fac * root))
 }
 
@@ -299,7 +326,12 @@ enum Direction {
     Y,
 }
 
-fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Vec<ScaleRow>, ScaleError> {
+fn scale_dependent(
+    t: &Topography,
+    distances: &[f64],
+    order: Order,
+    along_y: bool,
+) -> Result<Vec<ScaleRow>, ScaleError> {
     complete(t)?;
     enough_points(t, order)?;
     if let Some(&value) = distances.iter().find(|d| !(d.is_finite() && **d > 0.0)) {
@@ -328,7 +360,7 @@ fn scale_dependent(t: &Topography, distances: &[f64], order: Order) -> Result<Ve
             let sx = d / (n * t.dx);
             let sy = t.dy.map(|py| d / (n * py));
             let x = rms(Direction::X, sx, sy, &mut buf);
-            let y = sy.map(|_| rms(Direction::Y, sx, sy, &mut buf));
+            let y = sy.filter(|_| along_y).map(|_| rms(Direction::Y, sx, sy, &mut buf));
             ScaleRow { distance: d, x, y }
         })
         .collect())

@@ -283,12 +283,8 @@ fn measurements_errors() {
         (vec!["--channel", "1"], "--channel"),
         (vec!["--detrend", "line"], "--detrend"),
         (vec!["--z-unit", "nm"], "--z-unit"),
-        (vec!["--scale-dependent"], "--scale-dependent"),
     ] {
         let mut args = vec!["surface", "--measurements", a.as_str(), "--psd"];
-        if flag == "--scale-dependent" {
-            args.pop();
-        }
         args.extend(flags);
         assert_bad_input(&kefric(&args), flag);
     }
@@ -299,6 +295,13 @@ fn measurements_errors() {
     let csv = ok(&["surface", "--measurements", &a, "--psd", "--csv"]);
     assert!(csv.lines().any(|l| l.starts_with("coarse.txt,")));
     assert!(csv.lines().any(|l| l.starts_with("combined,")));
+    // The combined scale-dependent statistics, as for a container.
+    let scales = ok(&["surface", "--measurements", &a, "--scale-dependent", "--csv"]);
+    assert!(
+        scales.lines().next().unwrap().starts_with("distance,rms_slope"),
+        "{scales}"
+    );
+    assert!(scales.lines().count() > 3, "{scales}");
 }
 
 /// Hostile containers through the CLI: a meta.yml that lies about a size,

@@ -13,6 +13,7 @@ mod forge;
 mod npy;
 
 mod cli_container;
+mod cli_container_scale;
 mod cli_eval;
 mod cli_export;
 mod cli_law;

@@ -447,7 +447,8 @@ fn spread(
     )
 }
 
-/// The reliable spectra of `measurements` ([`measurement_psd`]).
+/// The reliable spectra of `measurements` ([`measurement_psd`]), in
+/// parallel with the `parallel` feature.
 pub fn measurement_spectra(measurements: &[Measurement]) -> Vec<MeasurementPsd> {
-    measurements.iter().map(measurement_psd).collect()
+    super::each(measurements, measurement_psd)
 }

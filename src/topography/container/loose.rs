@@ -179,7 +179,7 @@ fn read_one(m: &LooseMeasurement, i: usize, options: &LooseOptions) -> Result<su
     let spec = Spec::parse(&entry, &options.container).map_err(&bad)?;
     let bytes = read_bounded(&m.path, options.container.read.max_bytes).map_err(LooseError::Read)?;
     let cx = Cx { name: &file };
-    spec.measurement(
+    spec.measurement_of_bytes(
         &bytes,
         &cx,
         &options.container,

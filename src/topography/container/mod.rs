@@ -15,7 +15,11 @@
 //! (transposed here), and an `x z` text profile whose x are not evenly
 //! spaced (to 10⁻⁶ of the file's unit) is a *nonuniform* line scan
 //! ([`Heights::Nonuniform`]), interpolated onto a uniform grid for its
-//! spectrum. Lengths are metres throughout.
+//! spectrum. A measurement with only a `squeezed-netcdf` file (what
+//! SurfaceTopography's `write_containers` writes) is read from that
+//! NetCDF-3 file (`netcdf.rs`) with its own unit, sizes and instrument
+//! parameters, its height scale and detrending already applied. Lengths
+//! are metres throughout.
 //!
 //! Untrusted input: the archive is bounded like an X3P
 //! ([`ReadOptions::max_bytes`] for the archive and for each member once
@@ -26,7 +30,9 @@
 mod analysis;
 mod heights;
 mod loose;
+mod netcdf;
 mod record;
+mod scale_dependent;
 mod spectrum;
 mod yaml;
 
@@ -38,10 +44,14 @@ pub use loose::{read_loose, LooseError, LooseMeasurement, LooseOptions, LOOSE_KE
 pub use record::{
     is_container_bytes, CombinedRecord, ContainerRecord, MeasurementRecord, Reliable, ScanRecord, SpreadRecord,
 };
+pub use scale_dependent::{
+    combine_scale_dependent, combined_scale_dependent, measurement_scale_dependent, measurement_scales, CombinedScale,
+    MeasurementScale,
+};
 
 pub use spectrum::{
-    combined_psd, combined_scale_dependent, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd,
-    CombinedScale, MeasurementPsd, Moments, Roughness, COMBINED_POINTS_PER_DECADE,
+    combined_psd, measurement_psd, roughness_from_moments, spectral_moments, CombinedPsd, MeasurementPsd, Moments,
+    Roughness, COMBINED_POINTS_PER_DECADE,
 };
 
 use std::io::{Cursor, Read, Seek};
@@ -306,11 +316,25 @@ pub fn read_container_bytes(
             .get("topographies")
             .and_then(|t| t.items())
             .ok_or_else(|| meta_err(format!("surfaces[{s}]: no `topographies` list")))?;
+        // The entries parsed in turn, their data files read (inflated,
+        // parsed, detrended) in parallel with the `parallel` feature, each
+        // worker on its own handle of the archive; the first failure in
+        // the metadata's order is the one reported.
+        let specs: Vec<(String, Result<Spec, String>)> = entries
+            .iter()
+            .enumerate()
+            .map(|(i, entry)| (format!("surfaces[{s}].topographies[{i}]"), Spec::parse(entry, options)))
+            .collect();
+        let read = each(&specs, |(at, spec)| {
+            let spec = spec.as_ref().ok()?;
+            Some(spec.read(&cx, &mut zip.clone(), options, at))
+        });
         let mut measurements = Vec::with_capacity(entries.len());
-        for (i, entry) in entries.iter().enumerate() {
-            let at = format!("surfaces[{s}].topographies[{i}]");
-            let spec = Spec::parse(entry, options).map_err(|d| meta_err(format!("{at}.{d}")))?;
-            measurements.push(spec.read(&cx, &mut zip, options, &at).map_err(|e| match e {
+        for ((at, spec), read) in specs.iter().zip(read) {
+            if let Err(d) = spec {
+                return Err(meta_err(format!("{at}.{d}")));
+            }
+            measurements.push(read.expect("read where parsed").map_err(|e| match e {
                 Failure::Meta(d) => meta_err(format!("{at}.{d}")),
                 Failure::Other(e) => e,
             })?);
@@ -321,7 +345,22 @@ pub fn read_container_bytes(
     Ok(out)
 }
 
+/// `f` of each of `items`, in their order: in parallel (rayon) with the
+/// `parallel` feature, else in turn.
+pub(crate) fn each<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync + Send) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
+}
+
 /// The container being read, for the errors.
+#[derive(Clone, Copy)]
 struct Cx<'a> {
     name: &'a str,
 }
@@ -378,6 +417,11 @@ struct Spec {
     tip_radius: Option<f64>,
     resolution: Option<f64>,
     data_source: usize,
+    /// The data file is a `squeezed-netcdf` (pipeline already applied).
+    squeezed: bool,
+    /// The metadata gives the instrument's parameters (else the options',
+    /// or a NetCDF file's own `info`).
+    instrument_given: bool,
 }
 
 /// A failure reading a measurement: of its metadata (the field's path
@@ -422,19 +466,17 @@ fn parameter(node: &yaml::Node, field: &str, unit: Option<f64>) -> Result<f64, S
 impl Spec {
     fn parse(entry: &yaml::Node, options: &ContainerOptions) -> Result<Spec, String> {
         let datafile = entry.get("datafile").ok_or("datafile: missing")?;
-        let data_file = match datafile {
+        let (data_file, squeezed) = match datafile {
             yaml::Node::Map(_) => match datafile.get("original").and_then(|n| n.text()) {
-                Some(f) => f.to_string(),
+                Some(f) => (f.to_string(), false),
                 None => match datafile.get("squeezed-netcdf").and_then(|n| n.text()) {
-                    Some(f) => {
-                        return Err(format!(
-                            "datafile: only a squeezed-netcdf file ({f}), which is not read here (NetCDF); the original data file is needed"
-                        ))
-                    }
+                    // Its heights as the pipeline left them: no height
+                    // scale and no detrending applied again.
+                    Some(f) => (f.to_string(), true),
                     None => return Err("datafile: neither `original` nor `squeezed-netcdf`".into()),
                 },
             },
-            _ => datafile.text().ok_or("datafile: not a file name")?.to_string(),
+            _ => (datafile.text().ok_or("datafile: not a file name")?.to_string(), false),
         };
         let unit = match entry.get("unit").and_then(|u| u.text()) {
             Some(u) => Some((u.to_string(), unit_metres("unit", u)?)),
@@ -511,7 +553,8 @@ impl Spec {
             Some(n) if tip_radius.is_none() => Some(parameter(n, "instrument.parameters.resolution", unit_m)?),
             _ => None,
         };
-        let (tip_radius, resolution) = if tip_radius.is_none() && resolution.is_none() {
+        let instrument_given = tip_radius.is_some() || resolution.is_some();
+        let (tip_radius, resolution) = if !instrument_given {
             (
                 options.tip_radius,
                 if options.tip_radius.is_none() {
@@ -535,11 +578,13 @@ impl Spec {
             tip_radius,
             resolution,
             data_source,
+            squeezed,
+            instrument_given,
         })
     }
 
     fn read<R: Read + Seek>(
-        self,
+        &self,
         cx: &Cx,
         zip: &mut zip::ZipArchive<R>,
         options: &ContainerOptions,
@@ -552,20 +597,23 @@ impl Spec {
             ))));
         }
         let bytes = member(cx, zip, &self.data_file, options.read.max_bytes)?;
-        self.measurement(&bytes, cx, options, at, true)
+        self.measurement_of_bytes(&bytes, cx, options, at, true)
     }
 
     /// The measurement from its data file's `bytes` (a container's member,
     /// or a loose file: `xy_npy` false, a `.npy` map then read as a loose
     /// file is, rows = y).
-    fn measurement(
-        self,
+    fn measurement_of_bytes(
+        &self,
         bytes: &[u8],
         cx: &Cx,
         options: &ContainerOptions,
         at: &str,
         xy_npy: bool,
     ) -> Result<Measurement, Failure> {
+        if self.squeezed || bytes.starts_with(b"CDF") {
+            return self.read_netcdf(bytes, cx, options, at);
+        }
         let member_err = |source| {
             Failure::Other(ContainerError::Member {
                 path: cx.name.to_string(),
@@ -611,20 +659,114 @@ impl Spec {
                 heights = Heights::Uniform(transpose(t));
             }
         }
-        scale_heights(&mut heights, self.height_scale);
-        detrend(&mut heights, self.detrend);
-        Ok(Measurement {
+        Ok(self.measurement(heights, self.is_periodic, self.tip_radius, self.resolution))
+    }
+
+    /// The measurement of `heights` as read: the height scale and the
+    /// detrending applied unless squeezed.
+    fn measurement(
+        &self,
+        mut heights: Heights,
+        is_periodic: bool,
+        tip_radius: Option<f64>,
+        resolution: Option<f64>,
+    ) -> Measurement {
+        let (height_scale, detrend_mode) = if self.squeezed {
+            (1.0, DetrendMode::None)
+        } else {
+            (self.height_scale, self.detrend)
+        };
+        scale_heights(&mut heights, height_scale);
+        detrend(&mut heights, detrend_mode);
+        Measurement {
             name: self.name.clone().unwrap_or_else(|| self.data_file.clone()),
-            data_file: self.data_file,
-            unit: self.unit.map(|u| u.0),
-            height_scale: self.height_scale,
-            detrend: self.detrend,
-            is_periodic: self.is_periodic,
-            measurement_date: self.measurement_date,
-            tip_radius: self.tip_radius,
-            resolution: self.resolution,
+            data_file: self.data_file.clone(),
+            unit: self.unit.as_ref().map(|u| u.0.clone()),
+            height_scale,
+            detrend: detrend_mode,
+            is_periodic,
+            measurement_date: self.measurement_date.clone(),
+            tip_radius,
+            resolution,
             heights,
-        })
+        }
+    }
+
+    /// A NetCDF data file (SurfaceTopography's `to_netcdf`, see
+    /// [`netcdf`]): its own unit and sizes win over the metadata's, as in
+    /// SurfaceTopography; its `info`'s instrument parameters are used where
+    /// the metadata gives none.
+    fn read_netcdf(&self, bytes: &[u8], cx: &Cx, options: &ContainerOptions, at: &str) -> Result<Measurement, Failure> {
+        let bad = |d: String| Failure::Other(cx.archive(format!("{at}: data file {}: {d}", self.data_file)));
+        let nc = netcdf::read(bytes, options.read.max_points).map_err(bad)?;
+        let unit = match &nc.unit {
+            Some(u) => unit_metres("unit", u).map_err(|d| bad(format!("its {d}")))?,
+            None => self
+                .unit
+                .as_ref()
+                .map(|u| u.1)
+                .ok_or_else(|| Failure::Meta("unit: missing (the data file gives none)".into()))?,
+        };
+        let sizes = match (&nc.lengths, &self.size) {
+            (Some(l), _) => Some(l.clone()),
+            (None, Some(s)) => Some(s.clone()),
+            (None, None) => None,
+        };
+        let need_size = || Failure::Meta("size: missing (the data file gives none)".into());
+        let topography = |r: Result<Topography, crate::topography::TopographyError>| r.map_err(|e| bad(e.to_string()));
+        let scale = |v: Vec<f64>| -> Vec<f64> { v.into_iter().map(|z| z * unit).collect() };
+        let heights = match nc.grid {
+            netcdf::Grid::Map { nx, ny, heights } => {
+                let s = sizes.filter(|s| s.len() == 2).ok_or_else(need_size)?;
+                Heights::Uniform(topography(Topography::map(
+                    scale(heights),
+                    nx,
+                    ny,
+                    s[0] * unit / nx as f64,
+                    s[1] * unit / ny as f64,
+                ))?)
+            }
+            netcdf::Grid::Profile(h) => {
+                let s = sizes.filter(|s| s.len() == 1).ok_or_else(need_size)?;
+                let n = h.len();
+                Heights::Uniform(topography(Topography::profile(scale(h), s[0] * unit / n as f64))?)
+            }
+            netcdf::Grid::Nonuniform { x, z } => {
+                if x.len() < 2 || x.iter().chain(&z).any(|v| !v.is_finite()) {
+                    return Err(bad("a nonuniform profile needs 2 or more points, all finite".into()));
+                }
+                if x.windows(2).any(|w| w[1] <= w[0]) {
+                    return Err(bad("the positions x of a nonuniform profile do not increase".into()));
+                }
+                let x0 = x[0];
+                Heights::Nonuniform {
+                    x: x.iter().map(|v| (v - x0) * unit).collect(),
+                    z: scale(z),
+                }
+            }
+        };
+        let (mut tip_radius, mut resolution) = (self.tip_radius, self.resolution);
+        if !self.instrument_given {
+            if let Some(json) = &nc.json {
+                if json.len() as u64 > META_MAX_BYTES {
+                    return Err(bad(format!(
+                        "its json attribute is {} bytes, over the limit of {META_MAX_BYTES} bytes",
+                        json.len()
+                    )));
+                }
+                let info = yaml::parse(json).map_err(|d| bad(format!("its json attribute: {d}")))?;
+                let parameters = info.get("instrument").and_then(|i| i.get("parameters"));
+                let field = "json.instrument.parameters";
+                if let Some(n) = parameters.and_then(|p| p.get("tip_radius")) {
+                    tip_radius = Some(parameter(n, &format!("{field}.tip_radius"), Some(unit)).map_err(bad)?);
+                    resolution = None;
+                } else if let Some(n) = parameters.and_then(|p| p.get("resolution")) {
+                    resolution = Some(parameter(n, &format!("{field}.resolution"), Some(unit)).map_err(bad)?);
+                    tip_radius = None;
+                }
+            }
+        }
+        Ok(self.measurement(heights, self.is_periodic || nc.periodic, tip_radius, resolution))
     }
 
     /// Reads a file through [`read_bytes`]: with its own intervals, else

@@ -118,10 +118,17 @@ fn interpolate(x: &[f64], z: &[f64]) -> Result<Topography, String> {
         return Err("a nonuniform profile of fewer than 2 grid points".into());
     }
     let pixel = length / (points - 1) as f64;
+    let heights = interp_grid(x, z, pixel, points);
+    Topography::profile(heights, pixel).map_err(|e| e.to_string())
+}
+
+/// The profile (x increasing) linearly interpolated at `x[0] + i·pixel`,
+/// i < `points`, as numpy's `interp` (clamped at the ends).
+pub(super) fn interp_grid(x: &[f64], z: &[f64], pixel: f64, points: usize) -> Vec<f64> {
+    let n = x.len();
     let mut heights = Vec::with_capacity(points);
     let mut s = 0;
     for i in 0..points {
-        // np.interp: clamped at the ends, linear between neighbours.
         let p = i as f64 * pixel + x[0];
         while s + 2 < n && x[s + 1] < p {
             s += 1;
@@ -137,7 +144,7 @@ fn interpolate(x: &[f64], z: &[f64]) -> Result<Topography, String> {
         };
         heights.push(h);
     }
-    Topography::profile(heights, pixel).map_err(|e| e.to_string())
+    heights
 }
 
 /// Bin-averages (x, y) onto SurfaceTopography's log grid from 10^lo to
@@ -336,101 +343,4 @@ pub fn roughness_from_moments(moments: &Moments) -> Option<Roughness> {
         radius: crate::gw::summit_radius(m4),
         beta: crate::gw::beta_of_alpha(alpha),
     })
-}
-
-/// The combined scale-dependent mean square slope (order 1) or curvature
-/// (order 2) of a container's measurements.
-#[derive(Debug, Clone, PartialEq)]
-pub struct CombinedScale {
-    /// Stencil lengths (metres), increasing.
-    pub distance: Vec<f64>,
-    /// The mean square derivative along x at each (slope: 1; curvature:
-    /// 1/m²): the mean over the measurements with a value there.
-    pub mean_square: Vec<f64>,
-    /// The measurements (indices) behind each value.
-    pub contributors: Vec<Vec<usize>>,
-}
-
-/// The combined scale-dependent mean square slope (`order` 1) or curvature
-/// (`order` 2) along x, as SurfaceTopography's container
-/// `scale_dependent_statistical_property(lambda x, y=None: np.mean(x*x),
-/// n=order, unit='m', nb_points_per_decade=per_decade)`: each
-/// measurement's statistic (see [`crate::topography::ScaleRow`]) at the
-/// stencil lengths 10^(k/per_decade) over its whole decades that lie
-/// strictly between `order`·λ_low and its size (λ_low: its mean pixel
-/// size, or its reliability cut-off if larger); at each length the mean
-/// over the measurements with a value. Nonuniform profiles are left out
-/// (their derivatives are not implemented here: SurfaceTopography does
-/// include them). `None` if nothing contributes.
-pub fn combined_scale_dependent(measurements: &[Measurement], order: u32, per_decade: u32) -> Option<CombinedScale> {
-    use crate::topography::{scale_dependent_curvature, scale_dependent_slope};
-    use std::collections::BTreeMap;
-    let per = per_decade.max(1);
-    let n = f64::from(order.clamp(1, 2));
-    let mut bins: BTreeMap<i64, Vec<(f64, f64, usize)>> = BTreeMap::new();
-    for (i, m) in measurements.iter().enumerate() {
-        let Heights::Uniform(t) = &m.heights else { continue };
-        let (pixel, size) = match t.dy() {
-            None => (t.dx(), t.nx() as f64 * t.dx()),
-            Some(dy) => ((t.dx() + dy) / 2.0, (t.nx() as f64 * t.dx() + t.ny() as f64 * dy) / 2.0),
-        };
-        let cutoff = match (m.tip_radius, m.resolution) {
-            (Some(r), _) => tip_reliability_cutoff(t, r, TIP_SAFETY_FACTOR).ok().flatten(),
-            (None, r) => r,
-        };
-        let lower = cutoff.map_or(pixel, |c| c.max(pixel));
-        if lower >= size {
-            continue;
-        }
-        let lo = lower.log10().floor() as i32;
-        let hi = size.log10().ceil() as i32;
-        let count = (hi - lo) as usize * per as usize + 1;
-        let step = f64::from(hi - lo) / (count - 1) as f64;
-        let mut keys = Vec::new();
-        let mut distances = Vec::new();
-        for k in 0..count {
-            let e = if k == count - 1 {
-                f64::from(hi)
-            } else {
-                k as f64 * step + f64::from(lo)
-            };
-            let d = 10f64.powf(e);
-            if d > n * lower && d < size {
-                keys.push(i64::from(lo) * i64::from(per) + k as i64);
-                distances.push(d);
-            }
-        }
-        if distances.is_empty() {
-            continue;
-        }
-        let rows = if order == 1 {
-            scale_dependent_slope(t, &distances)
-        } else {
-            scale_dependent_curvature(t, &distances)
-        };
-        let Ok(rows) = rows else { continue };
-        for ((key, d), row) in keys.into_iter().zip(distances).zip(rows) {
-            bins.entry(key).or_default().push((d, row.x * row.x, i));
-        }
-    }
-    if bins.is_empty() {
-        return None;
-    }
-    let mut out = CombinedScale {
-        distance: Vec::new(),
-        mean_square: Vec::new(),
-        contributors: Vec::new(),
-    };
-    for vals in bins.values() {
-        // np.nanmean: NaN (fewer than 4 stencils) left out.
-        let valid: Vec<&(f64, f64, usize)> = vals.iter().filter(|v| !v.1.is_nan()).collect();
-        out.distance.push(vals[0].0);
-        out.mean_square.push(if valid.is_empty() {
-            f64::NAN
-        } else {
-            valid.iter().map(|v| v.1).sum::<f64>() / valid.len() as f64
-        });
-        out.contributors.push(valid.iter().map(|v| v.2).collect());
-    }
-    Some(out)
 }
