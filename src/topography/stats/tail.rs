@@ -31,33 +31,32 @@ impl HeightTail {
     pub(super) fn of(t: &Topography, z0: f64, plane: &Plane, mean: f64, sigma: f64) -> HeightTail {
         let (u_of, v_of) = (centred(t.nx), centred(t.ny));
         let lin: Vec<f64> = (0..t.nx).map(|i| plane.b * u_of(i)).collect();
-        // The kept heights, unsorted, and the smallest of them once full
-        // (a new height enters only above it: one comparison a point).
-        let mut top: Vec<f64> = Vec::with_capacity(TAIL_SAMPLE);
+        // Candidates for the highest heights: each above `floor`, the
+        // TAIL_SAMPLE-th highest kept so far. When 2·TAIL_SAMPLE are held,
+        // a selection keeps the TAIL_SAMPLE highest (amortised O(1) a
+        // candidate: replacing the lowest and rescanning for the next one
+        // cost 26 instructions a point on a 256² map, this pass 4.6 % of
+        // a `kefric surface` run).
+        let mut top: Vec<f64> = Vec::with_capacity(2 * TAIL_SAMPLE);
         let mut floor = f64::NEG_INFINITY;
-        let mut beyond = 0;
+        let mut beyond = 0usize;
         let limit = SPIKE_SIGMA * sigma;
         for (j, row) in t.heights.chunks_exact(t.nx).enumerate() {
             let p = plane.a + plane.c * v_of(j) + mean;
             for (&z, &l) in row.iter().zip(&lin) {
                 let r = (z - z0) - (p + l);
                 // NaN (missing) compares false throughout.
-                if r.abs() > limit {
-                    beyond += 1;
-                }
+                beyond += usize::from(r.abs() > limit);
                 if r > floor {
-                    if top.len() < TAIL_SAMPLE {
-                        top.push(r);
-                        if top.len() == TAIL_SAMPLE {
-                            floor = top.iter().copied().fold(f64::INFINITY, f64::min);
-                        }
-                    } else {
-                        let k = top.iter().position(|&x| x == floor).unwrap_or(0);
-                        top[k] = r;
-                        floor = top.iter().copied().fold(f64::INFINITY, f64::min);
+                    top.push(r);
+                    if top.len() == 2 * TAIL_SAMPLE {
+                        floor = keep_highest(&mut top);
                     }
                 }
             }
+        }
+        if top.len() > TAIL_SAMPLE {
+            keep_highest(&mut top);
         }
         top.sort_by(|a, b| b.total_cmp(a));
         top.iter_mut().for_each(|x| *x /= sigma);
@@ -79,6 +78,14 @@ impl HeightTail {
     pub fn beyond(&self) -> usize {
         self.beyond
     }
+}
+
+/// Keeps the [`TAIL_SAMPLE`] highest of `top` (more than that many);
+/// returns the lowest kept.
+fn keep_highest(top: &mut Vec<f64>) -> f64 {
+    let (_, &mut lowest, _) = top.select_nth_unstable_by(TAIL_SAMPLE - 1, |a, b| b.total_cmp(a));
+    top.truncate(TAIL_SAMPLE);
+    lowest
 }
 
 #[cfg(test)]
@@ -113,5 +120,30 @@ mod tests {
         }
         assert_eq!(tail.beyond(), z.iter().filter(|x| x.abs() > 6.0).count());
         assert_eq!(tail.beyond(), 1);
+    }
+
+    /// All the kept heights are the highest, in order, when every point
+    /// is a new candidate (heights rising along the map after the plane:
+    /// the kept set turns over all the time).
+    #[test]
+    fn the_kept_heights_are_the_highest_when_they_keep_rising() {
+        let n = 64;
+        let heights: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (x, y) = ((k % n) as f64, (k / n) as f64);
+                1e-9 * ((x + n as f64 * y) / 64.0).powi(2) + 1e-10 * (x * 1.3).sin()
+            })
+            .collect();
+        let t = Topography::map(heights, n, n, 1e-6, 1e-6).unwrap();
+        let stats = t.stats(&StatsOptions::default()).unwrap();
+        let tail = stats.tail.as_ref().unwrap();
+        let d: Vec<f64> = t.detrended(Default::default()).unwrap();
+        let mean = d.iter().sum::<f64>() / d.len() as f64;
+        let mut z: Vec<f64> = d.iter().map(|v| (v - mean) / stats.sigma).collect();
+        z.sort_by(|a, b| b.total_cmp(a));
+        assert_eq!(tail.top.len(), super::TAIL_SAMPLE);
+        for (k, (got, want)) in tail.top.iter().zip(&z).enumerate() {
+            assert!((got - want).abs() < 1e-9 * want.abs(), "{k}: {got} vs {want}");
+        }
     }
 }
