@@ -432,7 +432,10 @@ mod tests {
     #[test]
     fn a_single_load_is_marked_on_each_curve() {
         let fits = [
-            ("gaussian".to_string(), Model::new(crate::Params::new(1.0, 0.001)).unwrap()),
+            (
+                "gaussian".to_string(),
+                Model::new(crate::Params::new(1.0, 0.001)).unwrap(),
+            ),
             ("psi 2".to_string(), Model::new(crate::Params::new(2.0, 0.001)).unwrap()),
         ];
         let axis = LoadAxis {
