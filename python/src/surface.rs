@@ -529,11 +529,16 @@ impl SurfaceCore {
             cutoff.value(),
             rows.into_iter()
                 .map(|row| match row.surface {
-                    Ok(surface) => (row.lambda_s, row.reliable, Some(SurfaceCore {
-                        surface,
-                        cutoff,
-                        tip_radius: tip_radius.or(self.tip_radius),
-                    }), None),
+                    Ok(surface) => (
+                        row.lambda_s,
+                        row.reliable,
+                        Some(SurfaceCore {
+                            surface,
+                            cutoff,
+                            tip_radius: tip_radius.or(self.tip_radius),
+                        }),
+                        None,
+                    ),
                     Err(e) => (row.lambda_s, row.reliable, None, Some(e.to_string())),
                 })
                 .collect(),
