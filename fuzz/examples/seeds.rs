@@ -68,9 +68,9 @@ impl Out {
         for &(at, len) in self.strings.iter().rev() {
             // What is left when this length is read.
             let left = self.front.len() - at + after;
-            let (w, tail) = if left + 1 <= 256 {
+            let (w, tail) = if left < 256 {
                 (1, length_bytes(len, left, 1))
-            } else if left + 2 <= 65537 {
+            } else if left < 65536 {
                 (2, length_bytes(len, left, 2))
             } else {
                 (4, length_bytes(len, left, 4))

@@ -382,8 +382,7 @@ mod singular_end {
     fn a_law_over_the_cusp_says_why_it_fails() {
         let c = Constants::default().distribution(HeightDistribution::pearson(5.0, 26.01).unwrap());
         let e = crate::FrictionLaw::new(c.at(1.0, 0.001).unwrap(), 1e9, Some((1e5, 1e7)), Default::default())
-            .err()
-            .expect("misses its accuracy")
+            .expect_err("misses its accuracy")
             .to_string();
         assert!(
             e.contains("misses its accuracy") && e.contains("infinite at an end of its support"),

@@ -128,7 +128,8 @@ fn scan(t: &Topography, z0: f64, plane: &Plane, mean: f64, limit: f64) -> (Vec<f
     };
     let mut top: Vec<f64> = Vec::with_capacity(2 * TAIL_SAMPLE);
     for (j, row) in rows() {
-        if !(highest[j] >= floor) {
+        // Neither is NaN (a row maximum starts at −∞).
+        if highest[j] < floor {
             continue;
         }
         let p = offset(j);
