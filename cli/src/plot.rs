@@ -438,8 +438,11 @@ fn load_axis(
         Some(area) if a.load.force.is_some() => ("F (N)", area * hardness),
         _ => ("p (Pa)", hardness),
     };
+    let mut mark = None;
     if loads.len() == 1 && lo > 0.0 && lo.is_finite() {
-        // One load: the default F* range in this unit, widened to hold it.
+        // One load: the default F* range in this unit, widened to hold it,
+        // the load marked on the curves.
+        mark = Some(lo);
         let (a, b) = figures::DISTRIBUTIONS_F_STAR;
         (lo, hi) = ((a * per_f_star).min(lo / 2.0), (b * per_f_star).max(hi * 2.0));
     }
@@ -452,6 +455,7 @@ fn load_axis(
         title: title.into(),
         per_f_star,
         range: (lo, hi),
+        mark,
     })
 }
 

@@ -182,6 +182,9 @@ fn stats_error(e: StatsError, options: &StatsOptions, what: Option<&str>) -> PyE
 pub struct SurfaceCore {
     surface: Surface,
     cutoff: Cutoff,
+    /// The tip radius the cut-off came from, if any (for `filtered`'s
+    /// `lambda_s="auto"` warning when it distorts no scale).
+    tip_radius: Option<f64>,
 }
 
 impl SurfaceCore {
@@ -216,7 +219,11 @@ impl SurfaceCore {
             }
         });
         match surface {
-            Ok(Ok(surface)) => Ok(SurfaceCore { surface, cutoff }),
+            Ok(Ok(surface)) => Ok(SurfaceCore {
+                surface,
+                cutoff,
+                tip_radius: None,
+            }),
             Ok(Err(e)) => Err(e),
             Err(e) => Err(stats_error(e, &options, what)),
         }
@@ -285,7 +292,9 @@ impl SurfaceCore {
             lambda_c,
             ..base
         };
-        SurfaceCore::build(py, topographies, options, None)
+        let mut core = SurfaceCore::build(py, topographies, options, None)?;
+        core.tip_radius = tip_radius;
+        Ok(core)
     }
 
     /// The surface in the file `path` (X3P, `.npy`, text or an instrument's
@@ -347,7 +356,9 @@ impl SurfaceCore {
             .map_err(request_error)?;
         warn_auto_without_cutoff(py, &name, auto, cutoff, tip_radius)?;
         let options = request.stats_options(cutoff, &name).map_err(request_error)?;
-        SurfaceCore::build(py, vec![(topography, cutoff)], options, Some(&name))
+        let mut core = SurfaceCore::build(py, vec![(topography, cutoff)], options, Some(&name))?;
+        core.tip_radius = tip_radius;
+        Ok(core)
     }
 
     /// Two surfaces pressed together: the equivalent surface of the
@@ -391,7 +402,11 @@ impl SurfaceCore {
             let surface = py
                 .detach(|| Surface::join(a.surface.clone(), b.surface.clone()))
                 .map_err(raise)?;
-            return Ok(SurfaceCore { surface, cutoff });
+            return Ok(SurfaceCore {
+                surface,
+                cutoff,
+                tip_radius: None,
+            });
         }
         SurfaceCore::build(py, vec![(ta, a.cutoff), (tb, b.cutoff)], options, None)
     }
@@ -407,6 +422,9 @@ impl SurfaceCore {
         lambda_c: Option<f64>,
         auto: bool,
     ) -> PyResult<SurfaceCore> {
+        // The warning `kefric surface --lambda-s auto` gives where the tip
+        // distorts no scale (the core's note).
+        warn_auto_without_cutoff(py, "the surface", auto, self.cutoff, self.tip_radius)?;
         let options = StatsOptions {
             lambda_s: lambda_s_of(lambda_s, auto, self.cutoff)?,
             lambda_c,
@@ -418,7 +436,9 @@ impl SurfaceCore {
             .iter()
             .map(|(t, _)| (t.clone(), self.cutoff))
             .collect();
-        SurfaceCore::build(py, parts, options, None)
+        let mut core = SurfaceCore::build(py, parts, options, None)?;
+        core.tip_radius = self.tip_radius;
+        Ok(core)
     }
 
     /// `(lambda_s, lambda_c)`: the filters' nesting indices (m), None
@@ -509,7 +529,16 @@ impl SurfaceCore {
             cutoff.value(),
             rows.into_iter()
                 .map(|row| match row.surface {
-                    Ok(surface) => (row.lambda_s, row.reliable, Some(SurfaceCore { surface, cutoff }), None),
+                    Ok(surface) => (
+                        row.lambda_s,
+                        row.reliable,
+                        Some(SurfaceCore {
+                            surface,
+                            cutoff,
+                            tip_radius: tip_radius.or(self.tip_radius),
+                        }),
+                        None,
+                    ),
                     Err(e) => (row.lambda_s, row.reliable, None, Some(e.to_string())),
                 })
                 .collect(),

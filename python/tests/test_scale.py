@@ -413,6 +413,27 @@ def test_auto_without_a_cutoff_warns(files):
     assert s.lambda_s is None
 
 
+def test_filtered_auto_without_a_cutoff_warns_as_the_cli(files):
+    # Surface.filtered(lambda_s="auto") of a surface whose tip distorts no
+    # scale warns the core's note, as the CLI and from_heights do (issue 49).
+    _, arrays = files
+    s = kf.Surface.from_heights(arrays["map"], DX, DY, tip_radius=1e-8)
+    with pytest.warns(UserWarning, match=r"the surface: lambda_s auto: tip_radius 1e-8 m distorts no scale "
+                                         r"of these data \(reliability cut-off: none\): no S-filter applied"):
+        f = s.filtered(lambda_s="auto")
+    assert f.lambda_s is None
+    # Its filtered surface keeps the tip: asked again, it warns again.
+    with pytest.warns(UserWarning, match="distorts no scale"):
+        f.filtered(lambda_s="auto")
+    # A length, or a surface made without a tip, warns nothing of it.
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        s.filtered(lambda_s=4 * DX)
+        with pytest.raises(ValueError):
+            kf.Surface.from_heights(arrays["map"], DX, DY).filtered(lambda_s="auto")
+
+
 @pytest.mark.parametrize("order", [1, 2])
 def test_scale_dependent_against_surfacetopography(files, order):
     st = pytest.importorskip("SurfaceTopography")

@@ -78,6 +78,17 @@ const MANTISSA: u64 = (1 << 52) - 1;
 /// The bits of 1.0.
 const ONE: u64 = 0x3ff0_0000_0000_0000;
 
+/// Why a curve misses its accuracy when the heights' density is infinite
+/// at an end of its support (a U- or J-shaped Pearson type I density): a
+/// finite share of the summits sits at that end, so where the contacts
+/// reach it exactly at a boundary of the contact law's regimes (x = 1, 6,
+/// 110, where the law steps by a few percent), P*, Fs* and μ(F*) have a
+/// cusp |F* − F₀|^α with α = 1 + the end's power < 1. The integrals there
+/// are right (to 1e-12 of a brute-force sum, tests); the cusp is the
+/// model's, not rounding.
+pub(crate) const SINGULAR_END: &str = "the height density is infinite at an end of its support, so mu(F*) has a cusp \
+                                where the contacts reach that end at a boundary of the contact law's regimes";
+
 /// Why a curve cannot be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[non_exhaustive]
@@ -127,7 +138,7 @@ pub enum CurveError {
         "the curve misses its accuracy: max relative error {max_error:e} > {accuracy:e} at F* = {f_star} \
          with {cells_per_octave} cells per octave and the cells that miss it bisected up to 40 times; \
          mu(F*) jumps or is not smooth enough there for cubic cells; build curves on ranges either side \
-         of it, or use direct integration"
+         of it, or use direct integration{}", .cause.map(|c| format!(" ({c})")).unwrap_or_default()
     )]
     Accuracy {
         /// The cells per octave of the last attempt (16 to 256).
@@ -138,6 +149,9 @@ pub enum CurveError {
         accuracy: f64,
         /// Where the error is largest.
         f_star: f64,
+        /// Why μ(F*) is not smooth, where the model knows (the heights'
+        /// density infinite at an end of its support).
+        cause: Option<&'static str>,
     },
 }
 
@@ -237,7 +251,30 @@ impl Curve {
             }
         };
         let node = |f: f64| model_node(model, f);
-        Curve::refined(f_star_min, f_star_max, &node, &exact, CURVE_ACCURACY)
+        Curve::refined(f_star_min, f_star_max, &node, &exact, CURVE_ACCURACY).map_err(|e| match e {
+            CurveError::Accuracy {
+                cells_per_octave,
+                max_error,
+                accuracy,
+                f_star,
+                cause: None,
+            } if model
+                .params()
+                .constants
+                .distribution
+                .density()
+                .is_ok_and(|d| d.has_infinite_end()) =>
+            {
+                CurveError::Accuracy {
+                    cells_per_octave,
+                    max_error,
+                    accuracy,
+                    f_star,
+                    cause: Some(SINGULAR_END),
+                }
+            }
+            e => e,
+        })
     }
 
     /// Builds at 16, 32, … cells per octave until `accuracy` is met, or
@@ -278,6 +315,7 @@ impl Curve {
                             max_error: missed_by.0,
                             accuracy,
                             f_star: missed_by.1,
+                            cause: None,
                         })
                     }
                     Err(missed_by) => worst = missed_by,
@@ -289,6 +327,7 @@ impl Curve {
             max_error: worst.0,
             accuracy,
             f_star: worst.1,
+            cause: None,
         })
     }
 

@@ -40,6 +40,12 @@ impl Density {
         )
     }
 
+    /// Whether g is infinite at a finite end of its support (a U- or
+    /// J-shaped Pearson type I density: the end's power below 0).
+    pub fn has_infinite_end(&self) -> bool {
+        [self.lo, self.hi].into_iter().flatten().any(|e| e.power < 0.0)
+    }
+
     /// Where g is largest (for a J-shaped density, the end where it is unbounded).
     pub fn mode(&self) -> f64 {
         self.mode

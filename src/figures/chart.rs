@@ -32,6 +32,10 @@ pub enum LineStyle {
     /// colour (a range marked on the chart; drawn under the lines that
     /// follow it). Its legend sample is a tinted box.
     Shade,
+    /// No line: a marker at each point (the series' markers' shape, a
+    /// circle without), e.g. a load marked on a curve. Its legend sample
+    /// is the marker alone.
+    Points,
 }
 
 /// The shape of the markers along a line (filled, in the line's colour).

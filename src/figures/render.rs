@@ -570,6 +570,14 @@ fn draw_chart<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, c: &Chart, y_ar
                 pts.clone(),
                 colour.mix(SHADE_ALPHA).filled(),
             ))),
+            LineStyle::Points => {
+                let area = chart.plotting_area().strip_coord_spec();
+                let shape = line.markers.map_or(Shape::Circle, |m| m.shape);
+                for &(u, v) in &pts {
+                    draw_marker(&area, pixel(&chart, u, v), shape, colour, s)?;
+                }
+                continue;
+            }
         }
         .map_err(err)?;
         if let Some(m) = line.markers {
@@ -647,10 +655,13 @@ fn legend<DB: DrawingBackend>(chart: &Plot<'_, DB>, c: &Chart, s: u32) -> Result
                 [(x0, cy - 8 * si), (x1, cy + 8 * si)],
                 colour.mix(SHADE_ALPHA).filled(),
             )),
+            LineStyle::Points => Ok(()),
         }
         .map_err(err)?;
         if let Some(m) = l.markers {
             draw_marker(&area, ((x0 + x1) / 2, cy), m.shape, colour, s)?;
+        } else if l.style == LineStyle::Points {
+            draw_marker(&area, ((x0 + x1) / 2, cy), Shape::Circle, colour, s)?;
         }
         let label = l.label.as_deref().unwrap_or_default();
         area.draw(&Text::new(label, (x1 + gap, cy), font.clone()))

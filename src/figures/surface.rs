@@ -18,6 +18,9 @@ pub struct LoadAxis {
     pub per_f_star: f64,
     /// The range drawn (LO < HI, both > 0), in the axis' unit.
     pub range: (f64, f64),
+    /// A load to mark on the μ curves (a single load asked for), in the
+    /// axis' unit: a point on each curve, labelled with it.
+    pub mark: Option<f64>,
 }
 
 impl LoadAxis {
@@ -27,6 +30,7 @@ impl LoadAxis {
             title: "F*".into(),
             per_f_star: 1.0,
             range,
+            mark: None,
         }
     }
 
@@ -129,6 +133,25 @@ pub fn surface_page(
             style: LineStyle::Dashed,
             ..Series::line(None, g, i)
         });
+    }
+    if let Some(v) = loads.mark {
+        // The load asked for: μ there on each curve, as points.
+        let points: Vec<(f64, f64)> = fits
+            .iter()
+            .filter_map(|(_, model)| model.at_f_star(v / loads.per_f_star).ok().and_then(|c| c.mu))
+            .filter(|mu| mu.is_finite() && *mu > 0.0)
+            .map(|mu| (v, mu))
+            .collect();
+        if !points.is_empty() {
+            mu_series.push(Series {
+                style: LineStyle::Points,
+                ..Series::line(
+                    Some(format!("the load: {} = {}", loads.title, num(v))),
+                    points,
+                    super::BLACK_INDEX,
+                )
+            });
+        }
     }
     if mu_series.iter().all(|s| s.points.is_empty()) {
         return Err(FigureError::Empty(format!(
@@ -390,6 +413,7 @@ mod tests {
             title: "F (N)".into(),
             per_f_star: 1e4,
             range: (0.2, 300.0),
+            mark: None,
         };
         let fits = [("gaussian".to_string(), model.clone())];
         let page = surface_page("t", "", None, &fits, Some(&axis)).unwrap();
@@ -401,5 +425,41 @@ mod tests {
         for &(f, mu) in points {
             assert_eq!(mu, model.at_f_star(f / 1e4).unwrap().mu.unwrap(), "F = {f} N");
         }
+    }
+
+    /// A single load is marked: a point on each curve at μ there, in the
+    /// axis' unit, labelled with the load; none without one.
+    #[test]
+    fn a_single_load_is_marked_on_each_curve() {
+        let fits = [
+            (
+                "gaussian".to_string(),
+                Model::new(crate::Params::new(1.0, 0.001)).unwrap(),
+            ),
+            ("psi 2".to_string(), Model::new(crate::Params::new(2.0, 0.001)).unwrap()),
+        ];
+        let axis = LoadAxis {
+            title: "F (N)".into(),
+            per_f_star: 1e4,
+            range: (0.1, 1000.0),
+            mark: Some(10.0),
+        };
+        let page = surface_page("t", "", None, &fits, Some(&axis)).unwrap();
+        let mark = page.top.series.last().unwrap();
+        assert_eq!(mark.style, LineStyle::Points);
+        assert_eq!(mark.label.as_deref(), Some("the load: F (N) = 10"));
+        assert_eq!(mark.points.len(), 2);
+        for (&(f, mu), (_, model)) in mark.points.iter().zip(&fits) {
+            assert_eq!((f, mu), (10.0, model.at_f_star(1e-3).unwrap().mu.unwrap()));
+        }
+        // Drawn: a marker's white rim and fill per point (SVG polygons).
+        let path = std::env::temp_dir().join(format!("kef-surface-mark-{}.svg", std::process::id()));
+        page.save(&path).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let _ = std::fs::remove_file(&path);
+        assert!(svg.contains("the load: F (N) = 10"), "no label");
+        let unmarked = LoadAxis { mark: None, ..axis };
+        let page = surface_page("t", "", None, &fits, Some(&unmarked)).unwrap();
+        assert!(page.top.series.iter().all(|s| s.style != LineStyle::Points));
     }
 }

@@ -306,3 +306,87 @@ mod tests {
         }
     }
 }
+
+/// A Pearson density infinite at both ends of its support (Sk = 5,
+/// K = 27: type I, powers −0.99 and −0.79) whose upper end crosses the
+/// law's first regime boundary x = 1 near F* = 7.8e-4 (issue 46: `kefric
+/// law` failed there). P*(d*) falls by 0.5 % within Δd* = 1e-4 there (the
+/// law's 3 % step at x = 1 times the summits piled at the end): a cusp of
+/// the model, which the integrals follow to a brute-force sum.
+#[cfg(test)]
+mod singular_end {
+    use super::*;
+    use crate::{Constants, HeightDistribution, Model};
+
+    /// P* across the crossing against a brute-force sum: x = b − (b − a)·u¹⁰
+    /// (the end's singularity at x_hi ≥ b tamed), 100,000 midpoints in u,
+    /// the density from its distance to the end.
+    #[test]
+    fn p_star_is_right_finite_and_falling_across_the_crossing() {
+        let p = Params::new(1.0, 0.001).distribution(HeightDistribution::pearson(5.0, 27.0).unwrap());
+        let it = Integrals::new(&p);
+        let g = p.constants.distribution.density().unwrap();
+        assert!(g.has_infinite_end());
+        let e = g.upper_end().unwrap();
+        let s = crate::gw::sigma_s_ratio(p.constants.beta);
+        let om = s; // ψ = 1
+        let mut last = f64::INFINITY;
+        for k in 0..=12 {
+            let d = 4.1750 + k as f64 * 0.0002;
+            let xh = (e.at * s - d) / om;
+            let brute = |a: f64, b: f64, f: &dyn Fn(f64) -> f64| -> f64 {
+                if b <= a {
+                    return 0.0;
+                }
+                let n = 100_000;
+                let mut sum = 0.0;
+                for i in 0..n {
+                    let u = (i as f64 + 0.5) / n as f64;
+                    let back = (b - a) * u.powi(10);
+                    let phi = g.ln_pdf_at_end(e, om * ((xh - b) + back) / s).exp() / s;
+                    sum += f(b - back) * phi * om * (b - a) * 10.0 * u.powi(9);
+                }
+                sum / n as f64
+            };
+            // Below x_hi ≈ 1: the Hertz load, and the 1st elastic-plastic one.
+            let want = it.load_pref
+                * (brute(0.0, xh.min(1.0), &|x| x.powf(1.5)) + brute(1.0, xh.min(6.0), &|x| 1.03 * x.powf(1.425)));
+            let got = it.evaluate(d, false).p;
+            assert!(got.is_finite() && got < last, "d* = {d}: P* = {got:e} after {last:e}");
+            assert!(
+                (got / want - 1.0).abs() < 1e-9,
+                "d* = {d} (x_hi = {xh}): {got:e} vs {want:e}"
+            );
+            last = got;
+        }
+    }
+
+    /// μ(F*) by direct integration is finite around the cusp for Sk = 5,
+    /// K = 27 and densities beside it (Sk 4 to 5, K from just above the
+    /// bound Sk² + 1 to 1.1·Sk² + 1): no NaN, no failed solve.
+    #[test]
+    fn mu_is_finite_around_the_cusp() {
+        for (sk, k) in [(5.0, 27.0), (5.0, 26.01), (4.5, 22.0), (4.0, 17.5), (4.0, 18.6)] {
+            let c = Constants::default().distribution(HeightDistribution::pearson(sk, k).unwrap());
+            let m = Model::new(c.at(1.0, 0.001).unwrap()).unwrap();
+            for f in [7.0e-4, 7.7e-4, 7.8e-4, 7.82e-4, 7.83e-4, 7.9e-4, 1.46e-3, 2e-3] {
+                let mu = m.at_f_star(f).unwrap().mu.unwrap();
+                assert!(mu.is_finite() && mu > 0.0, "Sk {sk}, K {k}, F* {f}: mu = {mu}");
+            }
+        }
+    }
+
+    /// A law over the cusp of Sk = 5, K = 26.01 (F* = 1.46e-3) fails
+    /// saying why: the density is infinite at an end of its support.
+    #[test]
+    fn a_law_over_the_cusp_says_why_it_fails() {
+        let c = Constants::default().distribution(HeightDistribution::pearson(5.0, 26.01).unwrap());
+        let e = crate::FrictionLaw::new(c.at(1.0, 0.001).unwrap(), 1e9, Some((1e5, 1e7)), Default::default())
+            .expect_err("misses its accuracy")
+            .to_string();
+        assert!(
+            e.contains("misses its accuracy") && e.contains("infinite at an end of its support"),
+            "{e}"
+        );
+    }
+}

@@ -257,12 +257,15 @@ fn force_and_pressure_ranges_give_one_row_a_load() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(std::fs::metadata(dir.join("n.png")).unwrap().len() > 1000);
     // One load: the default F* range in newtons, widened to hold it
-    // (issue 49: it was refused).
+    // (issue 49: it was refused), the load marked on the curves.
+    let svg = dir.arg("one.svg");
     let o = kefric(&args(
         &["plot", "surface", &file],
-        &["--force", "10", "--area", "1e-5", "--out", &out],
+        &["--force", "10", "--area", "1e-5", "--out", &svg],
     ));
     assert!(o.status.success(), "{}", stderr(&o));
+    let drawn = std::fs::read_to_string(dir.join("one.svg")).unwrap();
+    assert!(drawn.contains("the load: F (N) = 10"), "the load is not marked");
     let o = kefric(&args(
         &["plot", "surface", &file],
         &["--force", "10:1:3", "--area", "1e-5", "--out", &out],
