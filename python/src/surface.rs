@@ -12,7 +12,7 @@ use ke_friction::topography::{
     Rectangle, RequestError, ScanRange, Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window,
     MAX_POINTS,
 };
-use ke_friction::{Classify, Load, Materials, Named};
+use ke_friction::{Classify, Family, Load, Materials, Named};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -612,6 +612,7 @@ impl SurfaceCore {
     /// `Surface::distribution`.
     #[pyo3(signature = (family=None))]
     fn distribution(&self, py: Python<'_>, family: Option<&str>) -> PyResult<DistributionCore> {
+        let family = family.map(Family::parse).transpose().map_err(value_error)?;
         py.detach(|| self.surface.distribution(family))
             .map(DistributionCore::of)
             .map_err(raise)
@@ -620,7 +621,7 @@ impl SurfaceCore {
     /// The family the surface gets when none is named (the core's rule:
     /// Pearson where its upper tail is supported, else empirical).
     fn default_family(&self, py: Python<'_>) -> &'static str {
-        py.detach(|| self.surface.default_family())
+        py.detach(|| self.surface.default_family()).name()
     }
 
     /// What the empirical density of the surface is made from: each
@@ -715,7 +716,7 @@ impl SurfaceCore {
         area: Option<Vec<f64>>,
         pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        use ke_friction::{Family, Fit, ModelKind, Named};
+        use ke_friction::{Fit, ModelKind};
         let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
         let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
         let mut loads = Vec::with_capacity(n);

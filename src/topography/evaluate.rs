@@ -166,7 +166,7 @@ impl Surface {
     /// materials, the fit and the law.
     pub fn model_params(&self, how: &SurfaceModel) -> Result<Params, EvaluateError> {
         let distribution = self
-            .distribution(how.family.map(Family::name))
+            .distribution(how.family)
             .map_err(EvaluateError::Distribution)?;
         // Params::from_physical validated it; fit and law change no range.
         Ok(self

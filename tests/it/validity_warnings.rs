@@ -5,7 +5,7 @@
 //! beside the repository; each test passes when they are absent).
 
 use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface, SurfaceModel, Topography};
-use ke_friction::{Load, Materials, Named, WarningKind};
+use ke_friction::{Family, Load, Materials, Named, WarningKind};
 use std::f64::consts::PI;
 
 /// The README's synthetic map (`examples/rough_surface.rs`, 256², σ = 0.5 µm).
@@ -77,7 +77,7 @@ fn kinds(surface: &Surface, materials: Materials, family: Option<&str>, force: f
 #[test]
 fn the_readme_example_gives_no_validity_spike_or_tail_warning() {
     let s = Surface::new(readme_surface(), StatsOptions::default()).unwrap();
-    assert_eq!(s.default_family(), "pearson");
+    assert_eq!(s.default_family(), Family::Pearson);
     let k = kinds(&s, ALUMINIUM, None, 10.0);
     for kind in ["psi_domain", "theta_domain", "beta_domain", "spikes", "tail"] {
         assert!(!k.contains(&kind), "{kind} in {k:?}");
@@ -111,7 +111,7 @@ fn sur_2_has_spikes_and_falls_back_to_the_empirical_density() {
     assert!(spikes.to_string().contains("kurtosis 811"), "{spikes}");
     assert!(spikes.to_string().contains("clean the data"), "{spikes}");
     // Pearson refuses Sk = -15.6: the default is the empirical density.
-    assert_eq!(s.default_family(), "empirical");
+    assert_eq!(s.default_family(), Family::Empirical);
     assert!(kinds(&s, STEEL, None, 1.0).contains(&"spikes"));
 }
 
@@ -145,7 +145,7 @@ fn plu_1_pearson_at_a_light_load_is_on_an_extrapolated_tail() {
     assert!(text.contains("0 measured points above"), "{text}");
     // The default is the empirical density here (Pearson's tail is not
     // supported), and its contact has measured heights above it.
-    assert_eq!(s.default_family(), "empirical");
+    assert_eq!(s.default_family(), Family::Empirical);
     let excess = s.pearson_tail_excess().unwrap().unwrap();
     assert!(excess >= 1.0, "{excess}");
     assert!(!kinds(&s, STEEL, None, 0.01).contains(&"tail"));
@@ -178,7 +178,7 @@ fn the_default_family_of_each_file() {
             s.pearson_tail_excess(),
             s.default_family()
         );
-        assert_eq!(s.default_family(), family, "{name}");
+        assert_eq!(s.default_family().name(), family, "{name}");
     }
     let readme = Surface::new(readme_surface(), StatsOptions::default()).unwrap();
     println!(

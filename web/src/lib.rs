@@ -106,7 +106,7 @@ impl Options {
         let mut values = BTreeMap::new();
         for (key, value) in map {
             if !keys().contains(&key.as_str()) {
-                return Err(format!("{key}: unknown option: must be one of {}", keys().join(", ")));
+                return Err(ke_friction::NameError::new("option", &key, keys()).to_string());
             }
             let value = value.trim().to_string();
             if !value.is_empty() {
@@ -672,7 +672,7 @@ mod tests {
     #[test]
     fn an_unknown_option_is_refused_naming_the_valid_keys() {
         let e = Options::parse(r#"{"e3": "1"}"#).unwrap_err();
-        assert!(e.starts_with("e3: unknown option: must be one of dx, dy"), "{e}");
+        assert!(e.starts_with("option 'e3' is unknown: must be one of dx, dy"), "{e}");
     }
 
     #[test]

@@ -4,7 +4,7 @@
 use crate::common::TempDir;
 use crate::support::{assert_bad_input, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
-use ke_friction::{Load, Materials, Model};
+use ke_friction::{Load, Materials, Model, Named};
 use serde_json::Value;
 
 /// Aluminium (softer) on a nickel coating, with adhesion: the pair.
@@ -205,7 +205,7 @@ fn two_surfaces_are_their_equivalent_surface() {
         assert_eq!(v["surface"], serde_json::to_value(surface.stats()).unwrap());
         assert_eq!(v["parts"].as_array().map(Vec::len), Some(2));
         let params = surface
-            .params(&MATERIALS, surface.distribution(Some(family)).unwrap())
+            .params(&MATERIALS, surface.distribution(Some(ke_friction::Family::parse(family).unwrap())).unwrap())
             .unwrap();
         assert_eq!(v["model"], serde_json::to_value(&params).unwrap());
         let friction = Load::Force { force: 5.0, area: 1e-5 }

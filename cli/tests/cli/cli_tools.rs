@@ -127,7 +127,7 @@ fn every_subcommand_words_a_bad_number_alike() {
     ]);
     assert_bad_input(&o, "--fit");
     assert!(
-        stderr(&o).contains("'bogus' is not one of: consistent, as-printed"),
+        stderr(&o).contains("--fit: fit 'bogus' is unknown: must be one of consistent, as-printed"),
         "{}",
         stderr(&o)
     );

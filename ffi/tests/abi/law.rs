@@ -366,7 +366,7 @@ fn a_law_from_a_measured_surface_is_the_librarys() {
             )
         };
         let gaussian =
-            FrictionLaw::from_surface(&surface, &materials, Some("gaussian"), None, OutOfRange::Clamp).unwrap();
+            FrictionLaw::from_surface(&surface, &materials, Some(ke_friction::Family::Gaussian), None, OutOfRange::Clamp).unwrap();
         for (family, rust) in [
             (null(), &rust),
             (c"".as_ptr(), &rust),

@@ -8,7 +8,7 @@ from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
+from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _choice, _is_scalar, _mode, _threads
 from ._errors import _located
 from ._model import Model
 
@@ -84,10 +84,7 @@ class FrictionLaw:
                 raise TypeError("pressure_range must be a pair (p_min, p_max) of pressures in Pa, or None") from None
             _check_real(p_min=lo, p_max=hi)
             lo, hi = float(lo), float(hi)
-        if not isinstance(out_of_range, str):
-            raise TypeError(f"out_of_range must be a str, not {type(out_of_range).__name__}")
-        if out_of_range not in _POLICIES:
-            raise ValueError(f"out_of_range = {out_of_range!r}: must be " + " or ".join(map(repr, _POLICIES)))
+        _choice("out_of_range", out_of_range, _POLICIES)
         self._core = _core.FrictionLawCore(model._core, float(hardness), lo, hi, out_of_range)
         self._model = model
 

@@ -12,7 +12,7 @@ from typing import Any, Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, _arrays, _check_real, _is_scalar
+from ._args import ArrayLike, _arrays, _check_real, _choice, _is_scalar
 from ._curve import Curve
 from ._distribution import HeightDistribution, _heights_array, _heights_of
 from ._errors import ModelWarning, _warn
@@ -44,16 +44,6 @@ class _Record(dict):  # type: ignore[type-arg]
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
         # A plain dict in a pickle: no private class to import to load it.
         return dict, (dict(self),)
-
-
-def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
-    """``value`` if it is one of the strings ``allowed``; else TypeError
-    (not a str) or ValueError naming argument ``name``."""
-    if not isinstance(value, str):
-        raise TypeError(f"{name} must be a str, not {type(value).__name__}")
-    if value not in allowed:
-        raise ValueError(f"{name} = {value!r}: must be " + " or ".join(repr(a) for a in allowed))
-    return value
 
 
 def _unit(name: str, value: Any, number: bool = True) -> float:
