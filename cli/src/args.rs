@@ -343,18 +343,14 @@ impl DistributionArgs {
     /// ([`HeightDistribution::from_arguments`]), validated.
     pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
         let heights = self.heights.as_deref().map(crate::heights::read).transpose()?;
-        HeightDistribution::from_arguments(
-            self.distribution,
-            self.skewness,
-            self.kurtosis,
-            heights.as_deref(),
+        HeightDistribution::from_arguments(self.distribution, self.skewness, self.kurtosis, heights.as_deref()).map_err(
+            |e| match (&e, &self.heights) {
+                (ke_friction::DistributionError::Value(_), Some(path)) if e.name() == "heights" => {
+                    Failure::input(format!("--heights {}: {e}", path.display()))
+                }
+                _ => Failure::input(format!("{}: {e}", flag_of(e.name()))),
+            },
         )
-        .map_err(|e| match (&e, &self.heights) {
-            (ke_friction::DistributionError::Value(_), Some(path)) if e.name() == "heights" => {
-                Failure::input(format!("--heights {}: {e}", path.display()))
-            }
-            _ => Failure::input(format!("{}: {e}", flag_of(e.name()))),
-        })
     }
 
     /// Whether any of the flags is given.

@@ -29,6 +29,7 @@ mod topography_filter;
 mod topography_instruments_a;
 mod topography_instruments_b;
 mod topography_read;
+mod topography_read_x3p;
 mod topography_scale;
 mod topography_stats;
 mod validity_warnings;

@@ -96,7 +96,9 @@ fn a_synthetic_map_end_to_end_matches_the_reference() {
         // §1–2: the model's inputs, against mpmath.
         let pw = &case["params"];
         for distribution in ["gaussian", "pearson"] {
-            let p = s.params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap()).unwrap();
+            let p = s
+                .params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap())
+                .unwrap();
             for (key, got) in [
                 ("psi", p.psi),
                 ("theta", p.theta),
@@ -130,7 +132,9 @@ fn a_synthetic_map_end_to_end_matches_the_reference() {
             for distribution in ["gaussian", "pearson"] {
                 let want = &load[distribution];
                 let tag = format!("{name} {distribution} F = {force} N");
-                let params = s.params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap()).unwrap();
+                let params = s
+                    .params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap())
+                    .unwrap();
                 let model = Model::new(params).unwrap();
                 let fr = l.friction(&model, &physical).unwrap();
                 let c = fr.contact;

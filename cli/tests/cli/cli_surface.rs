@@ -205,7 +205,12 @@ fn two_surfaces_are_their_equivalent_surface() {
         assert_eq!(v["surface"], serde_json::to_value(surface.stats()).unwrap());
         assert_eq!(v["parts"].as_array().map(Vec::len), Some(2));
         let params = surface
-            .params(&MATERIALS, surface.distribution(Some(ke_friction::Family::parse(family).unwrap())).unwrap())
+            .params(
+                &MATERIALS,
+                surface
+                    .distribution(Some(ke_friction::Family::parse(family).unwrap()))
+                    .unwrap(),
+            )
             .unwrap();
         assert_eq!(v["model"], serde_json::to_value(&params).unwrap());
         let friction = Load::Force { force: 5.0, area: 1e-5 }

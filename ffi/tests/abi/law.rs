@@ -365,8 +365,14 @@ fn a_law_from_a_measured_surface_is_the_librarys() {
                 KEF_LAW_CLAMP,
             )
         };
-        let gaussian =
-            FrictionLaw::from_surface(&surface, &materials, Some(ke_friction::Family::Gaussian), None, OutOfRange::Clamp).unwrap();
+        let gaussian = FrictionLaw::from_surface(
+            &surface,
+            &materials,
+            Some(ke_friction::Family::Gaussian),
+            None,
+            OutOfRange::Clamp,
+        )
+        .unwrap();
         for (family, rust) in [
             (null(), &rust),
             (c"".as_ptr(), &rust),
