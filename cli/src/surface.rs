@@ -7,6 +7,9 @@ use crate::args::{named, parse_f64, MaterialsArgs};
 use crate::load_args::LoadArgs;
 use crate::output::{sig, Failure};
 use crate::surface_args::{intervals, request_failure, SurfaceArgs};
+use ke_friction::bound::help;
+use ke_friction::bounds;
+use ke_friction::topography::SCAN_ROWS_MAX;
 use ke_friction::topography::{
     Format, Sensitivity, Source, Surface, SurfaceRecord, SurfaceRequest, SurfaceStats, SENSITIVITY_FAMILIES,
 };
@@ -64,8 +67,8 @@ pub struct Args {
     /// The largest λs of --scan (m) [default: a tenth of the scan size].
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true, requires = "scan")]
     pub to: Option<f64>,
-    /// Values a decade of --scan (1 to 100; a scan has at most 1000 rows: --from to --to spans at most 999/N decades).
-    #[arg(long, value_name = "N", default_value_t = 5, requires = "scan")]
+    /// Values a decade of --scan ([`bounds::PER_DECADE`]; at most [`SCAN_ROWS_MAX`] rows).
+    #[arg(long, value_name = "N", default_value_t = 5, requires = "scan", help = help("Values a decade of --scan", &bounds::PER_DECADE, &format!("(a scan has at most {SCAN_ROWS_MAX} rows: --from to --to spans at most {}/N decades)", SCAN_ROWS_MAX - 1)))]
     pub per_decade: usize,
     /// The power spectral density of the detrended heights (unfiltered): 1-D along x (and y) averaged over lines, and the radially averaged 2-D PSD of a map, in SurfaceTopography's conventions (q in rad/m; C in m³, or m⁴ for 2-D).
     #[arg(long)]

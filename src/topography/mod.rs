@@ -35,7 +35,7 @@ pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
-pub use scan::{scan, ScanError, ScanRange, ScanRow, SCAN_ROWS_MAX};
+pub use scan::{scan, ScanError, ScanRange, ScanRow, PER_DECADE, SCAN_ROWS_MAX};
 pub use stats::{
     combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX,
     PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE,

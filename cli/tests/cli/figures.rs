@@ -207,7 +207,7 @@ fn table_error_help_states_the_default_and_the_tables_ranges() {
         "[default: 0.003]",
         "θ range (the embedded table's: 0 to 0.01)",
         "ψ 0.5 to 8, F* 1e-5 to 0.1",
-        "N is 1, 2 or 3 [default: 2]",
+        "N (a whole number from 1 to 3) [default: 2]",
     ] {
         assert!(help.contains(text), "{text:?} not in {help}");
     }

@@ -37,6 +37,12 @@ OUT_OF_RANGE: list[str]
 LAW_F_STAR_RANGE: Tuple[float, float]
 # The default tolerance of a law's solver-ready table.
 LAW_TABLE_TOLERANCE: float
+# The most rows a scan has (ke_friction::topography::SCAN_ROWS_MAX).
+SCAN_ROWS_MAX: int
+# Every checked range in words, by name (ke_friction::bounds::ALL).
+RANGES: Dict[str, str]
+# Whether value is in the core's range name (a key of RANGES).
+def in_range(name: str, value: float) -> bool: ...
 # The library's default model constants (Constants::default()): beta, nu,
 # eps_star, fit, model, distribution, skewness, kurtosis.
 DEFAULTS: Dict[str, Any]
