@@ -19,7 +19,7 @@ pub use crate::params::{
     BETA, BETA_ADMISSIBLE, DENSITY, ENERGY, EPS_STAR, METRES, NU, NU2, PASCALS, PSI, THETA_AT_MOST, THETA_NON_NEGATIVE,
 };
 #[cfg(feature = "topography")]
-pub use crate::topography::PER_DECADE;
+pub use crate::topography::{DIFFERENCES, PER_DECADE, POINTS_ALONG, PSD_POINTS, VALID_POINTS};
 
 /// Every bound, by its name in lower case (`beta` for [`BETA`]).
 pub static ALL: &[(&str, &Bound)] = &[
@@ -49,6 +49,14 @@ pub static ALL: &[(&str, &Bound)] = &[
     ("law_tolerance", &LAW_TOLERANCE),
     #[cfg(feature = "topography")]
     ("per_decade", &PER_DECADE),
+    #[cfg(feature = "topography")]
+    ("points_along", &POINTS_ALONG),
+    #[cfg(feature = "topography")]
+    ("valid_points", &VALID_POINTS),
+    #[cfg(feature = "topography")]
+    ("differences", &DIFFERENCES),
+    #[cfg(feature = "topography")]
+    ("psd_points", &PSD_POINTS),
     #[cfg(feature = "plot")]
     ("scale", &SCALE),
     #[cfg(feature = "builder")]
