@@ -1,7 +1,7 @@
 //! `kefric law`: solver-ready tables `pressure_Pa,mu,dmu_dp_per_Pa` whose rows
 //! interpolate within their stated error, checked against direct
 //! integration of the model (independent of the curve the law is built on).
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
 use ke_friction::{Model, Params, CURVE_ACCURACY};
 
 /// A table's header lines, its stated interpolation error and its rows.
@@ -143,11 +143,8 @@ fn law_takes_the_fewest_rows_that_meet_the_tolerance() {
     let less = parse(&o);
     assert_eq!(less.rows.len(), fine.rows.len() - 1);
     assert!(less.stated > 1e-4, "{}", less.stated);
-    assert!(
-        stderr(&o).contains("\nwarning: ") && stderr(&o).contains("more than 0.0001"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "\nwarning: ");
+    assert_stderr_has(&o, "more than 0.0001");
 }
 
 #[test]
@@ -172,31 +169,7 @@ fn law_count_in_the_pressure_range_gives_that_many_rows() {
 
 #[test]
 fn law_takes_the_si_inputs() {
-    let o = kefric(&[
-        "law",
-        "--e1",
-        "200e9",
-        "--nu1",
-        "0.3",
-        "--e2",
-        "200e9",
-        "--nu2",
-        "0.3",
-        "--hardness",
-        "2e9",
-        "--sigma",
-        "1e-7",
-        "--radius",
-        "1e-5",
-        "--density",
-        "4e10",
-        "--delta-gamma",
-        "0.5",
-        "--epsilon",
-        "4e-10",
-        "--pressure",
-        "1e5:1e7",
-    ]);
+    let o = kefric(&[&["law"][..], &crate::cli_tools::SI, &["--pressure", "1e5:1e7"]].concat());
     let csv = parse(&o);
     assert!(csv.header.join("\n").contains("hardness H = 2e9 Pa"));
     assert!(csv.stated <= 1e-3 && csv.rows.len() >= 2);

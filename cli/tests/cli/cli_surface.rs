@@ -2,7 +2,7 @@
 //! model's inputs and μ, against the library called directly, and bad
 //! input.
 use crate::common::TempDir;
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use ke_friction::{Load, Materials, Model, Named};
 use serde_json::Value;
@@ -404,17 +404,14 @@ fn bad_input_names_the_flag() {
     // skewness; MODEL.md, "The default height model") and warns the spikes.
     let o = kefric(&as_strs(&run(&["surface", &spiky, "--dx", "2e-6"], MATERIAL_FLAGS)));
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stderr(&o).contains("the heights have spikes"), "{}", stderr(&o));
+    assert_stderr_has(&o, "the heights have spikes");
     let o = kefric(&as_strs(&run(
         &["surface", &spiky, "--dx", "2e-6", "--distribution", "pearson"],
         MATERIAL_FLAGS,
     )));
     assert_bad_input(&o, "--distribution");
-    assert!(
-        stderr(&o).contains("skewness") && stderr(&o).contains("empirical"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "skewness");
+    assert_stderr_has(&o, "empirical");
 }
 
 #[test]

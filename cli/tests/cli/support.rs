@@ -66,3 +66,10 @@ pub fn assert_bad_input(o: &std::process::Output, needle: &str) {
         panic!("{why}");
     }
 }
+
+/// Asserts that the run's stderr contains `text` (and shows it if not).
+#[track_caller]
+pub fn assert_stderr_has(o: &std::process::Output, text: &str) {
+    let e = stderr(o);
+    assert!(e.contains(text), "{text:?} not in stderr: {e}");
+}

@@ -3,7 +3,7 @@
 
 use crate::common::TempDir;
 use crate::forge::{crafted, Spec};
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
 use std::io::Write;
 use std::process::{Command, Stdio};
 
@@ -93,7 +93,7 @@ fn text_from_a_table_is_printed_escaped() {
 fn special_files_are_refused_as_outputs_and_symlinks_followed() {
     let o = kefric(&["export", "--npz", "/dev/full", "--quiet"]);
     assert_bad_input(&o, "--npz");
-    assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
+    assert_stderr_has(&o, "not a regular file");
     let tmp = TempDir::new("links");
     std::fs::write(tmp.join("real.npz"), b"old").unwrap();
     std::os::unix::fs::symlink("real.npz", tmp.join("link.npz")).unwrap();
@@ -137,11 +137,7 @@ fn unbounded_inputs_end_with_an_error() {
     let o = child.wait_with_output().unwrap();
     writer.join().unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--csv: line 1: longer than 1048576 bytes"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "--csv: line 1: longer than 1048576 bytes");
 }
 
 #[test]
