@@ -5,7 +5,7 @@ use crate::convert::{record, same_len, slice, slice_mut};
 use crate::distribution::DistributionCore;
 use crate::error::{raise, value_error, Failure};
 use crate::parallel::{cut, MODEL_WORK};
-use ke_friction::{Classify, Constants, ErrorKind, Fit, Model, ModelKind, Named, Params, Physical};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, Materials, Model, ModelKind, Named, Params};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
@@ -115,34 +115,18 @@ impl ModelCore {
 }
 
 /// The model's parameters of SI inputs ([`Params::from_physical`]): the
-/// core's `Params` record, as `kefric params --json` prints it.
+/// materials (in `Materials::FIELDS`' order, `_core.MATERIALS`) on a
+/// surface of roughness `sigma`, `radius`, `density`; the core's `Params`
+/// record, as `kefric params --json` prints it.
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
 pub fn params_from_physical<'py>(
     py: Python<'py>,
-    e1: f64,
-    nu1: f64,
-    e2: f64,
-    nu2: f64,
-    hardness: f64,
+    materials: [f64; 7],
     sigma: f64,
     radius: f64,
     density: f64,
-    delta_gamma: f64,
-    epsilon: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let phys = Physical {
-        e1,
-        nu1,
-        e2,
-        nu2,
-        hardness,
-        sigma,
-        radius,
-        density,
-        delta_gamma,
-        epsilon,
-    };
+    let phys = Materials::from_array(materials).with_roughness(sigma, radius, density);
     let p = Params::from_physical(&phys).map_err(raise)?;
     record(py, serde_json::to_string(&p))
 }

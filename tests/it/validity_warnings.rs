@@ -49,14 +49,7 @@ const ALUMINIUM: Materials = Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9
 const STEEL: Materials = Materials::from_array([200e9, 0.3, 200e9, 0.3, 2e9, 0.3, 0.4e-9]);
 
 fn file(name: &str) -> Option<Surface> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/topographies"));
-    let path = dir.join(name);
-    if !path.exists() {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        return None;
-    }
+    let path = crate::common::instrument_file(name)?;
     let t = read_file(&path, &ReadOptions::default()).unwrap();
     Some(Surface::new(t, StatsOptions::default()).unwrap())
 }

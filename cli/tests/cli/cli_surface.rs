@@ -602,21 +602,6 @@ fn law_with_a_surface_is_the_model_of_eval_with_that_surface() {
     }
 }
 
-/// The instruments' example files (`$KEF_TOPOGRAPHIES`, else
-/// `../shared/topographies` beside the repository), if present.
-fn instrument_file(name: &str) -> Option<std::path::PathBuf> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
-    let path = dir.join(name);
-    if path.exists() {
-        Some(path)
-    } else {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        None
-    }
-}
-
 #[test]
 fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_lists_them() {
     for (name, format, nx) in [
@@ -625,7 +610,7 @@ fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_list
         ("opd-1.opd", "opd", 640),
         ("al3d-1.al3d", "al3d", 200),
     ] {
-        let Some(path) = instrument_file(name) else { continue };
+        let Some(path) = crate::common::instrument_file(name) else { continue };
         let path = path.to_str().unwrap();
         let o = kefric(&["surface", path, "--json"]);
         assert!(o.status.success(), "{name}: {}", stderr(&o));

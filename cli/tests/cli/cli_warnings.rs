@@ -306,21 +306,6 @@ fn text_has_six_significant_digits_and_json_every_digit() {
     assert_eq!(mu, exact);
 }
 
-/// The instruments' files (`$KEF_TOPOGRAPHIES`, else `../shared/topographies`
-/// beside the repository), if present.
-fn instrument(name: &str) -> Option<String> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
-    let path = dir.join(name);
-    if path.exists() {
-        Some(path.display().to_string())
-    } else {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        None
-    }
-}
-
 /// Steel on steel ([`crate::cli_tools::SI`] without the roughness, which
 /// the surface gives) and a contact area.
 fn steel() -> Vec<&'static str> {
@@ -340,6 +325,7 @@ fn steel() -> Vec<&'static str> {
 /// plu-1's Pearson density at 0.01 N; on stderr and in --json.
 #[test]
 fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
+    let instrument = |name| crate::common::instrument_file(name).map(|p| p.display().to_string());
     let run = |file: &str, extra: &[&str]| {
         let mut args = vec!["surface", file];
         args.extend(steel());

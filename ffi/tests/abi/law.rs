@@ -5,6 +5,7 @@
 use super::last_error;
 use ke_friction::{FrictionLaw, OnError, OutOfRange, Params};
 use kefriction::*;
+use std::ffi::c_char;
 use std::ptr::{null, null_mut};
 
 /// H of the tests, Pa.
@@ -124,6 +125,50 @@ fn clamp_counts_and_batches_follow_the_contract() {
     }
 }
 
+/// kef_law_from_physical of `p`, the law's default range, clamped.
+fn law_from_physical(p: &ke_friction::Physical) -> *mut kef_law {
+    kef_law_from_physical(
+        p.e1,
+        p.nu1,
+        p.e2,
+        p.nu2,
+        p.hardness,
+        p.sigma,
+        p.radius,
+        p.density,
+        p.delta_gamma,
+        p.epsilon,
+        0.0,
+        0.0,
+        KEF_LAW_CLAMP,
+    )
+}
+
+/// kef_law_from_surface of the file `path` with `family` (NULL: the
+/// default) and `m`, the law's default range, clamped.
+///
+/// # Safety
+/// `path` and `family` are NULL or NUL-terminated strings.
+unsafe fn law_from_surface(path: *const c_char, family: *const c_char, m: &ke_friction::Materials) -> *mut kef_law {
+    // SAFETY: by the caller's contract, and doubles.
+    unsafe {
+        kef_law_from_surface(
+            path,
+            family,
+            m.e1,
+            m.nu1,
+            m.e2,
+            m.nu2,
+            m.hardness,
+            m.delta_gamma,
+            m.epsilon,
+            0.0,
+            0.0,
+            KEF_LAW_CLAMP,
+        )
+    }
+}
+
 #[test]
 fn a_law_from_physical_inputs_is_the_librarys_default_range_included() {
     let physical = ke_friction::Physical {
@@ -138,35 +183,9 @@ fn a_law_from_physical_inputs_is_the_librarys_default_range_included() {
         delta_gamma: 0.3,
         epsilon: 0.4e-9,
     };
-    let ke_friction::Physical {
-        e1,
-        nu1,
-        e2,
-        nu2,
-        hardness,
-        sigma,
-        radius,
-        density,
-        delta_gamma,
-        epsilon,
-    } = physical;
     // SAFETY: a live law and local doubles.
     unsafe {
-        let c = kef_law_from_physical(
-            e1,
-            nu1,
-            e2,
-            nu2,
-            hardness,
-            sigma,
-            radius,
-            density,
-            delta_gamma,
-            epsilon,
-            0.0,
-            0.0,
-            KEF_LAW_CLAMP,
-        );
+        let c = law_from_physical(&physical);
         assert!(!c.is_null(), "{}", last_error());
         let rust = FrictionLaw::from_physical(&physical, None, OutOfRange::Clamp).unwrap();
         let (mut lo, mut hi, mut h) = (0.0, 0.0, 0.0);
@@ -176,21 +195,10 @@ fn a_law_from_physical_inputs_is_the_librarys_default_range_included() {
         assert_eq!(kef_law_mu(c, 3e6, &mut mu), KEF_OK);
         assert_eq!(mu, rust.mu(3e6).unwrap());
         kef_law_free(c);
-        assert!(kef_law_from_physical(
-            e1,
-            nu1,
-            e2,
-            nu2,
-            -1.0,
-            sigma,
-            radius,
-            density,
-            delta_gamma,
-            epsilon,
-            0.0,
-            0.0,
-            KEF_LAW_CLAMP
-        )
+        assert!(law_from_physical(&ke_friction::Physical {
+            hardness: -1.0,
+            ..physical
+        })
         .is_null());
         assert!(last_error().starts_with("hardness = -1"), "{}", last_error());
     }
@@ -322,49 +330,18 @@ fn a_law_from_a_measured_surface_is_the_librarys() {
     let dir = super::scratch("law-surface");
     let path = dir.join("rough.x3p");
     write_x3p(&Topography::map(heights, n, n, 1e-6, 1e-6).unwrap(), &path, 'D').unwrap();
-    let materials = ke_friction::Materials {
-        e1: 70e9,
-        nu1: 0.33,
-        e2: 200e9,
-        nu2: 0.31,
-        hardness: 1e9,
-        delta_gamma: 0.5,
-        epsilon: 0.4e-9,
-    };
+    // The README's aluminium pin on a nickel-coated disk.
+    let materials = ke_friction::Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9]);
     let surface = Surface::new(
         read_file(&path, &ReadOptions::default()).unwrap(),
         StatsOptions::default(),
     )
     .unwrap();
     let rust = FrictionLaw::from_surface(&surface, &materials, None, None, OutOfRange::Clamp).unwrap();
-    let ke_friction::Materials {
-        e1,
-        nu1,
-        e2,
-        nu2,
-        hardness,
-        delta_gamma,
-        epsilon,
-    } = materials;
     let c_path = super::c_path(&path);
     // SAFETY: NUL-terminated strings, a live law, local doubles.
     unsafe {
-        let from = |family: *const std::ffi::c_char| {
-            kef_law_from_surface(
-                c_path.as_ptr(),
-                family,
-                e1,
-                nu1,
-                e2,
-                nu2,
-                hardness,
-                delta_gamma,
-                epsilon,
-                0.0,
-                0.0,
-                KEF_LAW_CLAMP,
-            )
-        };
+        let from = |family: *const c_char| law_from_surface(c_path.as_ptr(), family, &materials);
         let gaussian = FrictionLaw::from_surface(
             &surface,
             &materials,
@@ -388,21 +365,7 @@ fn a_law_from_a_measured_surface_is_the_librarys() {
         assert!(from(c"lognormal".as_ptr()).is_null());
         assert!(last_error().contains("lognormal"), "{}", last_error());
         let missing = super::c_path(&dir.join("missing.x3p"));
-        assert!(kef_law_from_surface(
-            missing.as_ptr(),
-            null(),
-            e1,
-            nu1,
-            e2,
-            nu2,
-            hardness,
-            delta_gamma,
-            epsilon,
-            0.0,
-            0.0,
-            KEF_LAW_CLAMP
-        )
-        .is_null());
+        assert!(law_from_surface(missing.as_ptr(), null(), &materials).is_null());
         assert!(last_error().contains("missing.x3p"), "{}", last_error());
     }
 }

@@ -6,7 +6,7 @@
 # bad element's error, mapped from the library's error kind (ValueError,
 # OSError, TableError, RuntimeError for a bug), with the element's flat
 # index as the exception's attribute `index`.
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -238,6 +238,7 @@ def contact_warnings(rows: _F64) -> List[Dict[str, Any]]: ...
 # The names of the warnings' kinds.
 WARNING_KINDS: List[str]
 
-# The library's Params record of SI inputs (as `kefric params --json` prints it).
-def params_from_physical(e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,
-                         radius: float, density: float, delta_gamma: float, epsilon: float) -> Dict[str, Any]: ...
+# The library's Params record of SI inputs (as `kefric params --json` prints it):
+# the materials in MATERIALS' order on a surface of roughness sigma, radius, density.
+def params_from_physical(materials: Sequence[float], sigma: float, radius: float,
+                         density: float) -> Dict[str, Any]: ...
