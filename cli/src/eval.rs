@@ -5,7 +5,7 @@ use crate::load_args::{points, LoadArgs, Spacing};
 use crate::model_args::{ModelArgs, SurfaceSource};
 use crate::output::sig;
 use crate::output::{warn, Failure};
-use crate::surface::{sensitivity_line, OnOff};
+use crate::surface::{sensitivity_line, SensitivityArg};
 use ke_friction::topography::Sensitivity;
 use ke_friction::{Contact, Friction, Warnings};
 
@@ -28,9 +28,8 @@ pub struct Args {
     pub f_star: Option<String>,
     #[command(flatten)]
     pub load: LoadArgs,
-    /// With --surface and a load (or F*): μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too (`off`: the single number, faster).
-    #[arg(long, value_enum, default_value_t = OnOff::On)]
-    pub sensitivity: OnOff,
+    #[command(flatten)]
+    pub sensitivity: SensitivityArg,
     /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
@@ -41,7 +40,7 @@ impl Args {
     /// one gave the model and it is asked for.
     fn sensitivity(&self, source: Option<&SurfaceSource>, f_star: impl Iterator<Item = f64>) -> Vec<Sensitivity> {
         match source {
-            Some(source) if self.sensitivity == OnOff::On => source.sensitivity(f_star),
+            Some(source) if self.sensitivity.on() => source.sensitivity(f_star),
             _ => Vec::new(),
         }
     }

@@ -49,9 +49,8 @@ pub struct Args {
     pub model: ModelKind,
     #[command(flatten)]
     pub load: LoadArgs,
-    /// With a load: μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too, beside μ (`off`: the single number, faster).
-    #[arg(long, value_enum, default_value_t = OnOff::On)]
-    pub sensitivity: OnOff,
+    #[command(flatten)]
+    pub sensitivity: SensitivityArg,
     /// Print one JSON object (SI units; the library's record names).
     #[arg(long)]
     pub json: bool,
@@ -107,6 +106,31 @@ fn formats_help() -> String {
     help
 }
 
+/// `--sensitivity` (`kefric surface`, `kefric eval --surface`).
+#[derive(Debug, clap::Args)]
+pub struct SensitivityArg {
+    /// μ under each of the core's `SENSITIVITY_FAMILIES` and at the band's ends, or not.
+    #[arg(long = "sensitivity", value_enum, default_value_t = OnOff::On, help = sensitivity_help())]
+    pub value: OnOff,
+}
+
+impl SensitivityArg {
+    /// Whether the sensitivity is asked for.
+    pub fn on(&self) -> bool {
+        self.value == OnOff::On
+    }
+}
+
+/// `--sensitivity`'s help: the height models by the core's list.
+fn sensitivity_help() -> String {
+    let families: Vec<&str> = SENSITIVITY_FAMILIES.iter().map(|f| f.name()).collect();
+    format!(
+        "With a load (eval: with --surface, and a load or F*): μ under each height model ({}) and at the two ends of \
+         the reliable band too, beside μ (`off`: the single number, faster)",
+        families.join(", ")
+    )
+}
+
 /// `--sensitivity`: μ under the other height models and at the band's
 /// ends beside each μ, or not.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -126,7 +150,7 @@ impl Args {
             fit: self.fit,
             model: self.model,
             loads: self.load.inputs()?,
-            sensitivity: self.sensitivity == OnOff::On,
+            sensitivity: self.sensitivity.on(),
             ..self.read.request()
         })
     }

@@ -133,6 +133,21 @@ fn window_of(name: &str) -> PyResult<Window> {
     Window::parse(name).map_err(value_error)
 }
 
+/// The loads of `force` on `area`, or `pressure` (lists of one length,
+/// broadcast by the caller), each checked by the core
+/// (`Load::from_parts`); a row with neither is refused.
+fn loads_of(force: &Option<Vec<f64>>, area: &Option<Vec<f64>>, pressure: &Option<Vec<f64>>) -> PyResult<Vec<Load>> {
+    let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
+    let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
+    (0..n)
+        .map(|k| {
+            Load::from_parts(at(force, k), at(area, k), at(pressure, k))
+                .map_err(raise)?
+                .ok_or_else(|| value_error("give force with area, or pressure alone"))
+        })
+        .collect()
+}
+
 /// The topography of `heights` (row-major, `ny` rows of `nx`): a profile
 /// without `dy`, else a map.
 fn topography(heights: Vec<f64>, nx: usize, ny: usize, dx: f64, dy: Option<f64>) -> PyResult<Topography> {
@@ -669,15 +684,7 @@ impl SurfaceCore {
         area: Option<Vec<f64>>,
         pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
-        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
-        let mut loads = Vec::with_capacity(n);
-        for k in 0..n {
-            let load = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k))
-                .map_err(raise)?
-                .ok_or_else(|| value_error("give force with area, or pressure alone"))?;
-            loads.push(load);
-        }
+        let loads = loads_of(&force, &area, &pressure)?;
         if loads.is_empty() {
             return Err(value_error("give force with area, or pressure alone"));
         }
@@ -717,14 +724,7 @@ impl SurfaceCore {
         pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         use ke_friction::{Fit, ModelKind};
-        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
-        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
-        let mut loads = Vec::with_capacity(n);
-        for k in 0..n {
-            if let Some(load) = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k)).map_err(raise)? {
-                loads.push(load);
-            }
-        }
+        let loads = loads_of(&force, &area, &pressure)?;
         let options = self.surface.options();
         let request = SurfaceRequest {
             detrend: options.detrend,

@@ -2,10 +2,9 @@
 //! numbers, `info`, `params` and the SI flags, `lookup --csv`, and the
 //! hints of a failed build.
 use crate::common::TempDir;
-use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr, SMALL_BUILD};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, kefric_stdin, stderr, SMALL_BUILD};
 use ke_friction::{Params, Physical, Table};
-use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 fn kefric_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_kefric"))
@@ -13,24 +12,6 @@ fn kefric_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
         .current_dir(dir)
         .output()
         .unwrap()
-}
-
-fn kefric_stdin(args: &[&str], input: &[u8]) -> std::process::Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut stdin = child.stdin.take().unwrap();
-    let input = input.to_vec();
-    let writer = std::thread::spawn(move || {
-        let _ = stdin.write_all(&input);
-    });
-    let o = child.wait_with_output().unwrap();
-    writer.join().unwrap();
-    o
 }
 
 #[test]
