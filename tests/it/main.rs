@@ -23,6 +23,9 @@ mod paper_statements;
 mod properties;
 mod reference_points;
 mod reference_values;
+// The README's synthetic map, shared with `examples/rough_surface.rs`.
+#[path = "../../examples/rough/mod.rs"]
+mod rough;
 mod surface_friction;
 mod table_lookup;
 mod topography_filter;

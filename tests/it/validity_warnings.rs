@@ -6,41 +6,10 @@
 
 use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface, SurfaceModel, Topography};
 use ke_friction::{Family, Load, Materials, Named, WarningKind};
-use std::f64::consts::PI;
 
 /// The README's synthetic map (`examples/rough_surface.rs`, 256², σ = 0.5 µm).
 pub fn readme_surface() -> Topography {
-    let (n, dx, hurst) = (256usize, 1e-6, 0.8);
-    let uniform = |k: u64| {
-        let mut z = k
-            .wrapping_add(0x9E37_79B9_7F4A_7C15)
-            .wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 * 2f64.powi(-53)
-    };
-    let (k_lo, k_hi) = (2.0 * PI / (256.0 * dx), 2.0 * PI / (8.0 * dx));
-    let waves: Vec<(f64, f64, f64, f64)> = (0..600u64)
-        .map(|w| {
-            let k = k_lo * (k_hi / k_lo).powf(uniform(3 * w));
-            let angle = 2.0 * PI * uniform(3 * w + 1);
-            let phase = 2.0 * PI * uniform(3 * w + 2);
-            (k * angle.cos(), k * angle.sin(), phase, k.powf(-hurst))
-        })
-        .collect();
-    let mut z: Vec<f64> = (0..n * n)
-        .map(|p| {
-            let (x, y) = ((p % n) as f64 * dx, (p / n) as f64 * dx);
-            waves
-                .iter()
-                .map(|&(kx, ky, ph, a)| a * (kx * x + ky * y + ph).cos())
-                .sum()
-        })
-        .collect();
-    let mean = z.iter().sum::<f64>() / z.len() as f64;
-    let sd = (z.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / z.len() as f64).sqrt();
-    z.iter_mut().for_each(|v| *v = (*v - mean) / sd * 0.5e-6);
-    Topography::map(z, n, n, dx, dx).unwrap()
+    crate::rough::surface(crate::rough::N).unwrap()
 }
 
 /// The README's aluminium pin on a nickel-coated disk.
