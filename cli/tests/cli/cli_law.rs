@@ -37,6 +37,9 @@ fn parse(o: &std::process::Output) -> Csv {
     Csv { header, stated, rows }
 }
 
+/// `kefric law` of ψ = 1, θ = 0.001 on H = 1 GPa (the pressures to add).
+const LAW: &[&str] = &["law", "--psi", "1", "--theta", "0.001", "--hardness", "1e9"];
+
 /// μ of the model by direct integration at pressure `p` on hardness `h`.
 fn exact(model: &Model, p: f64, h: f64) -> f64 {
     model.at_f_star(p / h).unwrap().mu.unwrap()
@@ -45,17 +48,7 @@ fn exact(model: &Model, p: f64, h: f64) -> f64 {
 #[test]
 fn law_rows_interpolate_within_their_stated_error() {
     let h = 1e9;
-    let o = kefric(&[
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8",
-    ]);
+    let o = kefric(&[LAW, &["--pressure", "1e4:1e8"]].concat());
     let csv = parse(&o);
     let head = csv.header.join("\n");
     for needle in [
@@ -149,17 +142,7 @@ fn law_takes_the_fewest_rows_that_meet_the_tolerance() {
 
 #[test]
 fn law_count_in_the_pressure_range_gives_that_many_rows() {
-    let o = kefric(&[
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8:9",
-    ]);
+    let o = kefric(&[LAW, &["--pressure", "1e4:1e8:9"]].concat());
     let csv = parse(&o);
     assert_eq!(csv.rows.len(), 9);
     assert_eq!(csv.rows[4][0], 1e6);
@@ -218,17 +201,7 @@ fn law_refuses_bad_input_naming_the_flag() {
 
 #[test]
 fn law_writes_each_solvers_syntax_in_its_stress_unit() {
-    let base = [
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8:5",
-    ];
+    let base = [LAW, &["--pressure", "1e4:1e8:5"]].concat();
     let csv = parse(&kefric(&base));
     let run = |extra: &[&str]| {
         let o = kefric(&[&base[..], extra].concat());

@@ -69,6 +69,14 @@ fn run(args: &[&str], extra: &[&str]) -> Vec<String> {
     all
 }
 
+/// `kefric surface` of the map `file` written by [`write_npy`] (dx = 2 µm)
+/// with the flags `extra` and [`MATERIAL_FLAGS`].
+fn map_args(file: &str, extra: &[&str]) -> Vec<String> {
+    let mut args = run(&["surface", file, "--dx", "2", "--xy-unit", "um"], extra);
+    args.extend(MATERIAL_FLAGS.iter().map(|s| s.to_string()));
+    args
+}
+
 fn as_strs(v: &[String]) -> Vec<&str> {
     v.iter().map(String::as_str).collect()
 }
@@ -79,22 +87,7 @@ fn one_surface_force_and_area_give_the_librarys_mu_and_q() {
     let n = 96;
     let z = heights(n, 0.0);
     let file = write_npy(&dir, "map.npy", &z, n);
-    let args = run(
-        &[
-            "surface",
-            &file,
-            "--dx",
-            "2",
-            "--xy-unit",
-            "um",
-            "--json",
-            "--force",
-            "10",
-            "--area",
-            "1e-5",
-        ],
-        MATERIAL_FLAGS,
-    );
+    let args = map_args(&file, &["--json", "--force", "10", "--area", "1e-5"]);
     let mut v = json(&as_strs(&args));
     // The sensitivity beside μ (checked in `sensitivity_values_are_the_single_runs`).
     assert!(v["friction"]["sensitivity"].is_object(), "{v}");
@@ -633,21 +626,7 @@ fn sensitivity_values_are_the_single_runs() {
     let n = 96;
     let z = heights(n, 0.0);
     let file = write_npy(&dir, "map.npy", &z, n);
-    let base = run(
-        &[
-            "surface",
-            &file,
-            "--dx",
-            "2",
-            "--xy-unit",
-            "um",
-            "--force",
-            "10",
-            "--area",
-            "1e-5",
-        ],
-        MATERIAL_FLAGS,
-    );
+    let base = map_args(&file, &["--force", "10", "--area", "1e-5"]);
     let mut with_json = base.clone();
     with_json.push("--json".into());
     let v = json(&as_strs(&with_json));
