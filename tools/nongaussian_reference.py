@@ -89,7 +89,7 @@ from mpmath import mp, mpf
 # The single-asperity laws are the Gaussian reference's (tools/reference.py,
 # beside this file): only the height density and its integrals are new here.
 sys.path.insert(0, __import__("os").path.dirname(__file__))
-from reference import D, NoSolution, mu_ep, solve_decreasing, x0  # noqa: E402
+from reference import D, NoSolution, Params, mu_ep, solve_decreasing, x0  # noqa: E402
 # The densities and the quadrature, beside this file.
 from nongaussian_densities import Gaussian, Pearson, Weibull, make_density  # noqa: E402
 from nongaussian_quadrature import integrate  # noqa: E402
@@ -101,16 +101,10 @@ mp.dps = 30
 # ==========================================================================
 class Model:
     def __init__(self, psi, theta, dens, beta=0.04, nu=0.3, eps_star=0.004):
-        self.psi = mpf(psi)
-        self.theta = mpf(theta)
-        self.beta = mpf(beta)
-        self.nu = mpf(nu)
-        self.eps = mpf(eps_star)
-        self.K = D('0.454') + D('0.41') * self.nu
-        self.s = mp.sqrt(1 - D('3.717e-4') / self.beta ** 2)
-        self.ys = 1 / (4 * mp.sqrt(3) * mp.pi * self.beta)
-        self.wc = self.s / self.psi ** 2
-        self.r = self.eps / self.wc
+        # The inputs and the quantities derived from them (psi, theta, beta,
+        # nu, eps, K, s, ys, wc, r) are the Gaussian reference's (its
+        # Params, MODEL.md sections 1-2); only the density is new here.
+        vars(self).update(vars(Params(psi, theta, beta, nu, eps_star)))
         self.dens = dens
         self.logZs = dens.logZ + mp.log(self.s)    # phi = g(z/s)/s
 
