@@ -13,7 +13,6 @@ SurfaceTopography's heights to 1e-9. Skipped, with the reason, where
 SurfaceTopography, the files or the CLI are absent.
 """
 
-
 import numpy as np
 import pytest
 

@@ -10,7 +10,6 @@
 //! The files: `$KEF_TOPOGRAPHIES`, else `../shared/topographies` beside the
 //! repository; each test says so and passes when they are absent.
 
-
 use ke_friction::topography::{read_bytes, Channel, Format, ReadError, ReadOptions, Topography};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -73,7 +72,9 @@ const FILES: [Known; 4] = [
 
 /// The bytes of each file present.
 fn files() -> Vec<(&'static Known, Vec<u8>)> {
-    let Some(dir) = crate::common::topographies() else { return Vec::new() };
+    let Some(dir) = crate::common::topographies() else {
+        return Vec::new();
+    };
     FILES
         .iter()
         .filter_map(|k| match std::fs::read(dir.join(k.name)) {

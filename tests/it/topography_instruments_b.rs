@@ -9,7 +9,6 @@
 //! Files of other programs with the shared extensions (`.dat`, `.di`) fall
 //! through to the text reader.
 
-
 use ke_friction::topography::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, Topography};
 
 use crate::common::{instrument_file as file, TempDir};

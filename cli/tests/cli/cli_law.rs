@@ -1,7 +1,7 @@
 //! `kefric law`: solver-ready tables `pressure_Pa,mu,dmu_dp_per_Pa` whose rows
 //! interpolate within their stated error, checked against direct
 //! integration of the model (independent of the curve the law is built on).
-use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::{Model, Params, CURVE_ACCURACY};
 
 /// A table's header lines, its stated interpolation error and its rows.

@@ -3,7 +3,7 @@
 //! instrument's reliability cut-off; against the library called directly
 //! and against the single command.
 use crate::common::TempDir;
-use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use serde_json::Value;
 
@@ -198,9 +198,10 @@ fn the_reliability_cut_off_marks_rows_and_warns() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["surface"]["lambda_s"], Value::Null);
-    assert_stderr_has(&o, &format!(
-            "warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"
-        ));
+    assert_stderr_has(
+        &o,
+        &format!("warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"),
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! model's inputs and μ, against the library called directly, and bad
 //! input.
 use crate::common::TempDir;
-use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use ke_friction::{Load, Materials, Model, Named};
 use serde_json::Value;
@@ -284,31 +284,19 @@ fn bad_input_names_the_flag() {
     let n = 64;
     let file = write_npy(&dir, "map.npy", &heights(n, 0.0), n);
     let with = |extra: &[&str]| run(&["surface", &file, "--dx", "2e-6"], extra);
+    let with_materials = |extra: &[&str]| run(&as_strs(&with(extra)), MATERIAL_FLAGS);
+    // `kefric eval --surface` at an F* with `extra` and the materials.
+    let eval = |extra: &[&str]| {
+        let args = run(&["eval", "--surface", &file, "--dx", "2e-6"], extra);
+        run(&as_strs(&args), &[&["--f-star", "1e-3"][..], MATERIAL_FLAGS].concat())
+    };
     let cases: Vec<(Vec<String>, &str)> = vec![
         (run(&["surface", &file], &[]), "--dx"),
         (with(&["--dx", "-1"]), "--dx"),
         (with(&["--force", "10", "--area", "1e-5"]), "--force"),
         (with(&["--distribution", "gaussian"]), "--distribution"),
-        (
-            run(
-                &with(&["--force", "-1", "--area", "1e-5"])
-                    .iter()
-                    .map(String::as_str)
-                    .collect::<Vec<_>>(),
-                MATERIAL_FLAGS,
-            ),
-            "--force",
-        ),
-        (
-            run(
-                &with(&["--pressure", "0"])
-                    .iter()
-                    .map(String::as_str)
-                    .collect::<Vec<_>>(),
-                MATERIAL_FLAGS,
-            ),
-            "--pressure",
-        ),
+        (with_materials(&["--force", "-1", "--area", "1e-5"]), "--force"),
+        (with_materials(&["--pressure", "0"]), "--pressure"),
         (with(&["--e1", "70e9"]), "--nu1"),
         (
             run(
@@ -321,57 +309,9 @@ fn bad_input_names_the_flag() {
             "--hardness",
         ),
         (run(&["surface", &dir.arg("missing.x3p")], &[]), "missing.x3p"),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--psi",
-                    "1",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--psi",
-        ),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--sigma",
-                    "1e-7",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--sigma",
-        ),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--kurtosis",
-                    "4",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--kurtosis",
-        ),
+        (eval(&["--psi", "1"]), "--psi"),
+        (eval(&["--sigma", "1e-7"]), "--sigma"),
+        (eval(&["--kurtosis", "4"]), "--kurtosis"),
         (
             run(&["eval", "--surface", &file, "--dx", "2e-6", "--f-star", "1e-3"], &[]),
             "--e1",
@@ -603,7 +543,9 @@ fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_list
         ("opd-1.opd", "opd", 640),
         ("al3d-1.al3d", "al3d", 200),
     ] {
-        let Some(path) = crate::common::instrument_file(name) else { continue };
+        let Some(path) = crate::common::instrument_file(name) else {
+            continue;
+        };
         let path = path.to_str().unwrap();
         let o = kefric(&["surface", path, "--json"]);
         assert!(o.status.success(), "{name}: {}", stderr(&o));

@@ -99,7 +99,10 @@ fn every_subcommand_words_a_bad_number_alike() {
         "eval", "--fit", "bogus", "--psi", "1", "--theta", "0", "--f-star", "0.01",
     ]);
     assert_bad_input(&o, "--fit");
-    assert_stderr_has(&o, "--fit: fit 'bogus' is unknown: must be one of consistent, as-printed");
+    assert_stderr_has(
+        &o,
+        "--fit: fit 'bogus' is unknown: must be one of consistent, as-printed",
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! curve and error-map subcommands on the embedded table, SVG output, and
 //! bad input (exit 2, one line naming the flag).
 use crate::common::TempDir;
-use crate::support::{assert_stderr_has, assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use std::path::Path;
 
 /// Every image is 2000 × 1500 pixels by default (`ke_friction::figures::SIZE`:
