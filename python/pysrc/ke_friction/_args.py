@@ -42,6 +42,18 @@ def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
     return value
 
 
+def _scalar(call: Any, args: Tuple[float, ...], nan: bool, width: int = 1) -> Any:
+    """``call(*args)`` of scalars (the core's ``*_scalar``); where the core
+    refuses them (ValueError), NaN (``width`` of them) with ``nan``, else
+    the error."""
+    try:
+        return call(*args)
+    except ValueError:
+        if nan:
+            return float("nan") if width == 1 else (float("nan"),) * width
+        raise
+
+
 def _mode(out_of_domain: str) -> bool:
     if out_of_domain not in _MODES:
         _choice("out_of_domain", out_of_domain, _MODES)
