@@ -89,7 +89,7 @@ from mpmath import mp, mpf
 # The single-asperity laws are the Gaussian reference's (tools/reference.py,
 # beside this file): only the height density and its integrals are new here.
 sys.path.insert(0, __import__("os").path.dirname(__file__))
-from reference import D, NoSolution, Params, mu_ep, solve_decreasing, x0  # noqa: E402
+from reference import D, NoSolution, Params, dispatch, mu_ep, solve_decreasing, x0  # noqa: E402
 # The densities and the quadrature, beside this file.
 from nongaussian_densities import Gaussian, Pearson, Weibull, make_density  # noqa: E402
 from nongaussian_quadrature import integrate  # noqa: E402
@@ -527,29 +527,26 @@ def cmd_points():
     return 0
 
 
+def cmd_mu(args):
+    psi, theta, f, dist = float(args[0]), float(args[1]), float(args[2]), args[3]
+    sk = float(args[4]) if len(args) > 4 else None
+    K = float(args[5]) if len(args) > 5 else None
+    t0 = time.time()
+    h, r, dn = solve_mu(psi, theta, dist, sk, K, f=f)
+    print('type', dn.ptype, 'lo', mp.nstr(dn.lo, 10), 'hi', mp.nstr(dn.hi, 10))
+    print('h_star', h)
+    for k, v in r.items():
+        print(k, v)
+    print('%.1f s' % (time.time() - t0))
+    return 0
+
+
 def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
-        return 2
-    cmd = argv[1]
-    if cmd == 'check':
-        return cmd_check('-v' in argv[2:])
-    if cmd == 'points':
-        return cmd_points()
-    if cmd == 'mu':
-        psi, theta, f, dist = float(argv[2]), float(argv[3]), float(argv[4]), argv[5]
-        sk = float(argv[6]) if len(argv) > 6 else None
-        K = float(argv[7]) if len(argv) > 7 else None
-        t0 = time.time()
-        h, r, dn = solve_mu(psi, theta, dist, sk, K, f=f)
-        print('type', dn.ptype, 'lo', mp.nstr(dn.lo, 10), 'hi', mp.nstr(dn.hi, 10))
-        print('h_star', h)
-        for k, v in r.items():
-            print(k, v)
-        print('%.1f s' % (time.time() - t0))
-        return 0
-    print(__doc__)
-    return 2
+    return dispatch(argv, __doc__, {
+        'check': lambda args: cmd_check('-v' in args),
+        'points': lambda args: cmd_points(),
+        'mu': cmd_mu,
+    })
 
 
 if __name__ == '__main__':
