@@ -21,6 +21,14 @@ fn last_error() -> String {
         .to_string()
 }
 
+/// Asserts that a call answered `code` = KEF_ERR_ARGUMENT with the
+/// message `message` (kef_last_error).
+#[track_caller]
+fn refused(code: std::ffi::c_int, message: &str) {
+    assert_eq!(code, KEF_ERR_ARGUMENT);
+    assert_eq!(last_error(), message);
+}
+
 /// A scratch directory under the target directory.
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("ffi-{name}-{}", std::process::id()));
