@@ -14,6 +14,38 @@ fn queries(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     (psi, theta, f)
 }
 
+/// kef_table_mu_with_slope_batch_nan of the first `n` queries into `mu`
+/// and `slope`: its code and its count of NaN elements.
+///
+/// # Safety
+/// `t` is a live table.
+unsafe fn slope_batch_nan(
+    t: *const kef_table,
+    n: usize,
+    (psi, theta, f): (&[f64], &[f64], &[f64]),
+    mu: &mut [f64],
+    slope: &mut [f64],
+) -> (std::ffi::c_int, usize) {
+    assert!([psi.len(), theta.len(), f.len(), mu.len(), slope.len()]
+        .iter()
+        .all(|&len| len >= n));
+    let mut n_nan = usize::MAX;
+    // SAFETY: `t` by the contract; slices of `n` values at least.
+    let code = unsafe {
+        kef_table_mu_with_slope_batch_nan(
+            t,
+            n,
+            psi.as_ptr(),
+            theta.as_ptr(),
+            f.as_ptr(),
+            mu.as_mut_ptr(),
+            slope.as_mut_ptr(),
+            &mut n_nan,
+        )
+    };
+    (code, n_nan)
+}
+
 #[test]
 fn nan_mode_marks_bad_points_and_counts_them() {
     let t = kef_table_default();
@@ -39,18 +71,10 @@ fn nan_mode_marks_bad_points_and_counts_them() {
         for i in [0, 1, 3] {
             assert_eq!(mu[i], table.mu(psi[i], theta[i], f[i]).unwrap());
         }
-        n_nan = 99;
-        let code = kef_table_mu_with_slope_batch_nan(
-            t,
-            4,
-            psi.as_ptr(),
-            theta.as_ptr(),
-            f.as_ptr(),
-            mu.as_mut_ptr(),
-            slope.as_mut_ptr(),
-            &mut n_nan,
+        assert_eq!(
+            slope_batch_nan(t, 4, (&psi, &theta, &f), &mut mu, &mut slope),
+            (KEF_OK, 1)
         );
-        assert_eq!((code, n_nan), (KEF_OK, 1));
         assert!(mu[2].is_nan() && slope[2].is_nan());
         for i in [0, 1, 3] {
             assert_eq!((mu[i], slope[i]), table.mu_with_slope(psi[i], theta[i], f[i]).unwrap());
@@ -177,18 +201,10 @@ fn slope_batches_stop_at_the_first_bad_element_across_chunks() {
             slope.as_mut_ptr(),
         );
         assert_eq!(code, KEF_OK);
-        let mut n_nan = 0;
-        let code = kef_table_mu_with_slope_batch_nan(
-            t,
-            n,
-            psi.as_ptr(),
-            theta.as_ptr(),
-            f.as_ptr(),
-            mu.as_mut_ptr(),
-            slope.as_mut_ptr(),
-            &mut n_nan,
+        assert_eq!(
+            slope_batch_nan(t, n, (&psi, &theta, &f), &mut mu, &mut slope),
+            (KEF_OK, 2)
         );
-        assert_eq!((code, n_nan), (KEF_OK, 2));
         assert!(mu[300].is_nan() && mu[650].is_nan() && mu[699] > 0.0);
 
         let c = kef_curve_from_table(t, 2.0, 0.003);
