@@ -14,36 +14,42 @@ fn queries(n: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     (psi, theta, f)
 }
 
-/// kef_table_mu_with_slope_batch_nan of the first `n` queries into `mu`
-/// and `slope`: its code and its count of NaN elements.
+/// kef_table_mu_with_slope_batch (`nan`: its `_nan` form) of the first
+/// `n` queries into `mu` and `slope`: its code and, with `nan`, its count
+/// of NaN elements.
 ///
 /// # Safety
 /// `t` is a live table.
-unsafe fn slope_batch_nan(
+unsafe fn slope_batch(
     t: *const kef_table,
     n: usize,
     (psi, theta, f): (&[f64], &[f64], &[f64]),
     mu: &mut [f64],
     slope: &mut [f64],
-) -> (std::ffi::c_int, usize) {
+    nan: bool,
+) -> (std::ffi::c_int, Option<usize>) {
     assert!([psi.len(), theta.len(), f.len(), mu.len(), slope.len()]
         .iter()
         .all(|&len| len >= n));
+    let (p, th, fs, m, sl) = (
+        psi.as_ptr(),
+        theta.as_ptr(),
+        f.as_ptr(),
+        mu.as_mut_ptr(),
+        slope.as_mut_ptr(),
+    );
     let mut n_nan = usize::MAX;
     // SAFETY: `t` by the contract; slices of `n` values at least.
-    let code = unsafe {
-        kef_table_mu_with_slope_batch_nan(
-            t,
-            n,
-            psi.as_ptr(),
-            theta.as_ptr(),
-            f.as_ptr(),
-            mu.as_mut_ptr(),
-            slope.as_mut_ptr(),
-            &mut n_nan,
-        )
-    };
-    (code, n_nan)
+    unsafe {
+        if nan {
+            (
+                kef_table_mu_with_slope_batch_nan(t, n, p, th, fs, m, sl, &mut n_nan),
+                Some(n_nan),
+            )
+        } else {
+            (kef_table_mu_with_slope_batch(t, n, p, th, fs, m, sl), None)
+        }
+    }
 }
 
 #[test]
@@ -72,8 +78,8 @@ fn nan_mode_marks_bad_points_and_counts_them() {
             assert_eq!(mu[i], table.mu(psi[i], theta[i], f[i]).unwrap());
         }
         assert_eq!(
-            slope_batch_nan(t, 4, (&psi, &theta, &f), &mut mu, &mut slope),
-            (KEF_OK, 1)
+            slope_batch(t, 4, (&psi, &theta, &f), &mut mu, &mut slope, true),
+            (KEF_OK, Some(1))
         );
         assert!(mu[2].is_nan() && slope[2].is_nan());
         for i in [0, 1, 3] {
@@ -167,15 +173,7 @@ fn slope_batches_stop_at_the_first_bad_element_across_chunks() {
     let (mut mu, mut slope) = (vec![-1.0; n], vec![-1.0; n]);
     // SAFETY: vectors of length n.
     unsafe {
-        let code = kef_table_mu_with_slope_batch(
-            t,
-            n,
-            psi.as_ptr(),
-            theta.as_ptr(),
-            f.as_ptr(),
-            mu.as_mut_ptr(),
-            slope.as_mut_ptr(),
-        );
+        let (code, _) = slope_batch(t, n, (&psi, &theta, &f), &mut mu, &mut slope, false);
         assert_eq!(code, KEF_ERR_DOMAIN);
         assert!(
             last_error().starts_with("batch element 300: f_star = 0.5"),
@@ -191,19 +189,11 @@ fn slope_batches_stop_at_the_first_bad_element_across_chunks() {
         }
         assert!(mu[300..].iter().chain(&slope[300..]).all(|&v| v == -1.0));
         // The whole of a good batch, and the NaN count of the bad one.
-        let code = kef_table_mu_with_slope_batch(
-            t,
-            300,
-            psi.as_ptr(),
-            theta.as_ptr(),
-            f.as_ptr(),
-            mu.as_mut_ptr(),
-            slope.as_mut_ptr(),
-        );
+        let (code, _) = slope_batch(t, 300, (&psi, &theta, &f), &mut mu, &mut slope, false);
         assert_eq!(code, KEF_OK);
         assert_eq!(
-            slope_batch_nan(t, n, (&psi, &theta, &f), &mut mu, &mut slope),
-            (KEF_OK, 2)
+            slope_batch(t, n, (&psi, &theta, &f), &mut mu, &mut slope, true),
+            (KEF_OK, Some(2))
         );
         assert!(mu[300].is_nan() && mu[650].is_nan() && mu[699] > 0.0);
 
