@@ -1,7 +1,7 @@
 //! The batch forms: NaN mode, slopes into two arrays, the Stop contract
 //! across the chunks of the slope batches, and NULL pointers.
 
-use super::{last_error, refused};
+use super::{assert_failed, last_error, refused};
 use ke_friction::Table;
 use kefriction::*;
 use std::ptr::{null, null_mut};
@@ -174,12 +174,7 @@ fn slope_batches_stop_at_the_first_bad_element_across_chunks() {
     // SAFETY: vectors of length n.
     unsafe {
         let (code, _) = slope_batch(t, n, (&psi, &theta, &f), &mut mu, &mut slope, false);
-        assert_eq!(code, KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("batch element 300: f_star = 0.5"),
-            "{}",
-            last_error()
-        );
+        assert_failed(code, KEF_ERR_DOMAIN, "batch element 300: f_star = 0.5");
         for i in 0..300 {
             assert_eq!(
                 (mu[i], slope[i]),
@@ -201,24 +196,14 @@ fn slope_batches_stop_at_the_first_bad_element_across_chunks() {
         let curve = table.curve(2.0, 0.003).unwrap();
         let (mut mu, mut slope) = (vec![-1.0; n], vec![-1.0; n]);
         let code = kef_curve_mu_with_slope_batch(c, n, f.as_ptr(), mu.as_mut_ptr(), slope.as_mut_ptr());
-        assert_eq!(code, KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("batch element 300: f_star = 0.5"),
-            "{}",
-            last_error()
-        );
+        assert_failed(code, KEF_ERR_DOMAIN, "batch element 300: f_star = 0.5");
         for i in 0..300 {
             assert_eq!((mu[i], slope[i]), curve.mu_with_slope(f[i]).unwrap(), "{i}");
         }
         assert!(mu[300..].iter().chain(&slope[300..]).all(|&v| v == -1.0));
         // A NaN is KEF_ERR_ARGUMENT (the core's classification).
         let code = kef_curve_mu_with_slope_batch(c, 350, f[301..].as_ptr(), mu.as_mut_ptr(), slope.as_mut_ptr());
-        assert_eq!(code, KEF_ERR_ARGUMENT);
-        assert!(
-            last_error().starts_with("batch element 349: f_star = NaN"),
-            "{}",
-            last_error()
-        );
+        assert_failed(code, KEF_ERR_ARGUMENT, "batch element 349: f_star = NaN");
         assert_eq!(
             kef_curve_mu_with_slope_batch(c, 0, null(), null_mut(), null_mut()),
             KEF_OK
@@ -240,12 +225,7 @@ fn stop_mode_leaves_the_tail_untouched() {
     // SAFETY: arrays of length 10.
     unsafe {
         let code = kef_table_mu_batch(t, 10, psi.as_ptr(), theta.as_ptr(), f.as_ptr(), mu.as_mut_ptr());
-        assert_eq!(code, KEF_ERR_ARGUMENT);
-        assert!(
-            last_error().starts_with("batch element 6: f_star = NaN"),
-            "{}",
-            last_error()
-        );
+        assert_failed(code, KEF_ERR_ARGUMENT, "batch element 6: f_star = NaN");
         assert!(mu[..6].iter().all(|&m| m > 0.0));
         assert_eq!(&mu[6..], &[-1.0; 4]);
         let c = kef_curve_from_table(t, 1.0, 0.003);

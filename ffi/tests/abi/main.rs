@@ -29,6 +29,15 @@ fn refused(code: std::ffi::c_int, message: &str) {
     assert_eq!(last_error(), message);
 }
 
+/// Asserts that a call answered `code` = `want` with a message starting
+/// with `start` (kef_last_error).
+#[track_caller]
+fn assert_failed(code: std::ffi::c_int, want: std::ffi::c_int, start: &str) {
+    assert_eq!(code, want);
+    let message = last_error();
+    assert!(message.starts_with(start), "{message}");
+}
+
 /// A scratch directory under the target directory.
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("ffi-{name}-{}", std::process::id()));
