@@ -1,7 +1,7 @@
 //! The batch forms: NaN mode, slopes into two arrays, the Stop contract
 //! across the chunks of the slope batches, and NULL pointers.
 
-use super::{assert_failed, last_error, refused};
+use super::{assert_failed, assert_says, refused};
 use ke_friction::Table;
 use kefriction::*;
 use std::ptr::{null, null_mut};
@@ -231,7 +231,7 @@ fn stop_mode_leaves_the_tail_untouched() {
         let c = kef_curve_from_table(t, 1.0, 0.003);
         let mut mu = [-1.0; 10];
         assert_eq!(kef_curve_mu_batch(c, 10, f.as_ptr(), mu.as_mut_ptr()), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("batch element 6: "), "{}", last_error());
+        assert_says("batch element 6: ");
         assert!(mu[..6].iter().all(|&m| m > 0.0));
         assert_eq!(&mu[6..], &[-1.0; 4]);
         kef_curve_free(c);
@@ -265,10 +265,6 @@ fn the_last_error_pointer_stays_valid_and_shows_the_message_formatted_last() {
         assert_eq!(kef_last_error(), p);
         let cut = std::ffi::CStr::from_ptr(p).to_bytes().len();
         assert!((1020..=1023).contains(&cut), "{cut}");
-        assert!(
-            last_error().starts_with("cannot read table /nonexistent/éé"),
-            "{}",
-            last_error()
-        );
+        assert_says("cannot read table /nonexistent/éé");
     }
 }

@@ -1,7 +1,7 @@
 //! The model constants handle: defaults, setters checked at once, names,
 //! and the `_with` functions that take it.
 
-use super::{last_error, refused};
+use super::{assert_says, last_error, refused};
 use kefriction::*;
 use std::ffi::{CStr, CString};
 use std::ptr::{null, null_mut};
@@ -98,18 +98,14 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
     // SAFETY: a live handle or NULL, C strings.
     unsafe {
         assert_eq!(kef_constants_set_beta(c, 0.01), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("beta = 0.01 is out of range"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.01 is out of range");
         assert_eq!(kef_constants_beta(c), 0.04);
         assert_eq!(kef_constants_set_beta(c, f64::NAN), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("beta = NaN"), "{}", last_error());
+        assert_says("beta = NaN");
         assert_eq!(kef_constants_set_nu(c, 0.5), KEF_ERR_DOMAIN);
-        assert!(last_error().starts_with("nu = 0.5"), "{}", last_error());
+        assert_says("nu = 0.5");
         assert_eq!(kef_constants_set_eps_star(c, f64::INFINITY), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("eps_star = inf"), "{}", last_error());
+        assert_says("eps_star = inf");
         assert_eq!(kef_constants_eps_star(c), 0.004);
 
         assert_eq!(kef_constants_set_fit(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
@@ -131,7 +127,7 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
         // Parameter errors of the _with functions.
         let mut mu = 7.0;
         assert_eq!(kef_model_mu_with(c, -1.0, 0.001, 0.01, &mut mu), KEF_ERR_DOMAIN);
-        assert!(last_error().starts_with("psi = -1 is out of range"), "{}", last_error());
+        assert_says("psi = -1 is out of range");
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, null_mut()), KEF_ERR_ARGUMENT);
         assert_eq!(mu, 7.0);
         // No positive μ in the range (the printed fit at ψ = 4): NULL with
@@ -244,30 +240,18 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 1.2),
             KEF_ERR_DOMAIN
         );
-        assert!(
-            last_error().starts_with("kurtosis = 1.2 is out of range: must be > skewness² + 1"),
-            "{}",
-            last_error()
-        );
+        assert_says("kurtosis = 1.2 is out of range: must be > skewness² + 1");
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 6.0, 50.0),
             KEF_ERR_DOMAIN
         );
-        assert!(
-            last_error().starts_with("skewness = 6 is out of range: must be in [-5, 5]"),
-            "{}",
-            last_error()
-        );
+        assert_says("skewness = 6 is out of range: must be in [-5, 5]");
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 101.0),
             KEF_ERR_DOMAIN
         );
-        assert!(
-            last_error().starts_with("kurtosis = 101 is out of range: must be <= 100"),
-            "{}",
-            last_error()
-        );
+        assert_says("kurtosis = 101 is out of range: must be <= 100");
         // An unknown code, and the empirical family's, which its heights set.
         assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
         // The settable families of the core's registry, each once.
@@ -297,18 +281,14 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, f64::NAN, 3.0),
             KEF_ERR_ARGUMENT
         );
-        assert!(last_error().starts_with("skewness = NaN"), "{}", last_error());
+        assert_says("skewness = NaN");
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_WEIBULL, 2.5, 0.0),
             KEF_ERR_DOMAIN
         );
-        assert!(
-            last_error().starts_with("skewness = 2.5 is out of range: must be in (-1.1395, 2]"),
-            "{}",
-            last_error()
-        );
+        assert_says("skewness = 2.5 is out of range: must be in (-1.1395, 2]");
         assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("family 7 is unknown"), "{}", last_error());
+        assert_says("family 7 is unknown");
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
             KEF_ERR_ARGUMENT
@@ -323,11 +303,7 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
         // Heights: NULL with n > 0, too few, constant, infinite.
         refused(kef_constants_set_heights(c, null(), 200), "heights is NULL");
         assert_eq!(kef_constants_set_heights(c, null(), 0), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("heights = 0 is out of range"),
-            "{}",
-            last_error()
-        );
+        assert_says("heights = 0 is out of range");
         let few: Vec<f64> = (0..99).map(f64::from).collect();
         assert_eq!(kef_constants_set_heights(c, few.as_ptr(), few.len()), KEF_ERR_DOMAIN);
         assert!(last_error().contains("at least 100 finite values"), "{}", last_error());
@@ -337,7 +313,7 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
         let mut inf: Vec<f64> = (0..500).map(|i| f64::from(i).sin()).collect();
         inf[7] = f64::INFINITY;
         assert_eq!(kef_constants_set_heights(c, inf.as_ptr(), inf.len()), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("heights = inf"), "{}", last_error());
+        assert_says("heights = inf");
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
 
         // NULL outputs of the getter.
@@ -418,20 +394,10 @@ fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
         let mut out = 42.0;
         assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
         assert_eq!(out, 42.0);
-        assert!(
-            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.117, but the table holds beta = 0.04");
         assert_eq!(kef_constants_set_beta(c, 0.04), KEF_OK);
         assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with(
-                "distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian"
-            ),
-            "{}",
-            last_error()
-        );
+        assert_says("distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian");
         let (psi, theta, f) = ([1.0, 2.0], [0.001, 0.002], [1e-3, 1e-2]);
         let mut mu = [7.0; 2];
         assert_eq!(
@@ -522,11 +488,7 @@ fn a_curve_from_a_table_with_the_constants_refuses_other_constants() {
         }
         assert_eq!(kef_constants_set_beta(c, 0.117), KEF_OK);
         assert!(kef_curve_from_table_with(t, c, 1.0, 0.001).is_null());
-        assert!(
-            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.117, but the table holds beta = 0.04");
         kef_curve_free(plain);
         kef_constants_free(c);
     }

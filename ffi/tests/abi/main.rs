@@ -38,6 +38,13 @@ fn assert_failed(code: std::ffi::c_int, want: std::ffi::c_int, start: &str) {
     assert!(message.starts_with(start), "{message}");
 }
 
+/// Asserts that the last error's message starts with `start`.
+#[track_caller]
+fn assert_says(start: &str) {
+    let message = last_error();
+    assert!(message.starts_with(start), "{message}");
+}
+
 /// A scratch directory under the target directory.
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("ffi-{name}-{}", std::process::id()));
@@ -191,7 +198,7 @@ fn batches_name_the_first_bad_element_and_write_nothing_from_it() {
             kef_table_mu_batch(t, 6, psi.as_ptr(), theta.as_ptr(), f.as_ptr(), mu.as_mut_ptr()),
             KEF_ERR_DOMAIN
         );
-        assert!(last_error().starts_with("batch element 3: psi = 9"), "{}", last_error());
+        assert_says("batch element 3: psi = 9");
         let table = ke_friction::Table::embedded();
         for i in 0..3 {
             assert_eq!(mu[i], table.mu(psi[i], theta[i], f[i]).unwrap());
@@ -218,11 +225,7 @@ fn batches_name_the_first_bad_element_and_write_nothing_from_it() {
             kef_curve_mu_batch(c, 4, loads.as_ptr(), out.as_mut_ptr()),
             KEF_ERR_ARGUMENT
         );
-        assert!(
-            last_error().starts_with("batch element 2: f_star = NaN"),
-            "{}",
-            last_error()
-        );
+        assert_says("batch element 2: f_star = NaN");
         assert!(out[0] > 0.0 && out[1] > 0.0 && out[2] == -1.0 && out[3] == -1.0);
         assert_eq!(kef_curve_mu_batch(c, 2, loads.as_ptr(), out.as_mut_ptr()), KEF_OK);
         assert_eq!(kef_curve_mu_batch(c, 1, null(), out.as_mut_ptr()), KEF_ERR_ARGUMENT);
@@ -271,7 +274,7 @@ fn curves_from_tables_and_from_the_model() {
         assert!((mu / 0.52521087083 - 1.0).abs() < 1e-6, "{mu}");
         kef_curve_free(m);
         assert!(kef_curve_from_model(-1.0, 0.001, 0.04, 0.3, 0.004, 1e-4, 1e-2).is_null());
-        assert!(last_error().starts_with("psi = -1 is out of range"), "{}", last_error());
+        assert_says("psi = -1 is out of range");
         assert!(kef_curve_from_model(1.0, 0.001, 0.04, 0.3, 0.004, 1e-2, 1e-4).is_null());
         assert!(last_error().contains("f_star_min < f_star_max"), "{}", last_error());
         assert!(kef_curve_from_model(1.0, 0.001, 0.04, 0.3, 0.004, f64::NAN, 1e-2).is_null());
@@ -302,16 +305,12 @@ fn the_model_by_direct_integration() {
             kef_model_mu(1.0, 0.001, 0.01, 0.3, 0.004, 0.01, &mut out),
             KEF_ERR_DOMAIN
         );
-        assert!(
-            last_error().starts_with("beta = 0.01 is out of range"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.01 is out of range");
         assert_eq!(
             kef_model_mu(1.0, 0.001, f64::NAN, 0.3, 0.004, 0.01, &mut out),
             KEF_ERR_ARGUMENT
         );
-        assert!(last_error().starts_with("beta = NaN"), "{}", last_error());
+        assert_says("beta = NaN");
         assert_eq!(
             kef_model_mu(1.0, 0.001, 0.04, 0.3, 0.004, 0.01, null_mut()),
             KEF_ERR_ARGUMENT
