@@ -1,7 +1,7 @@
 //! The model constants handle: defaults, setters checked at once, names,
 //! and the `_with` functions that take it.
 
-use super::{assert_says, last_error, refused};
+use super::{assert_failed, assert_says, last_error, refused};
 use kefriction::*;
 use std::ffi::{CStr, CString};
 use std::ptr::{null, null_mut};
@@ -97,15 +97,19 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
     let bad = CString::new("AsPrinted").unwrap();
     // SAFETY: a live handle or NULL, C strings.
     unsafe {
-        assert_eq!(kef_constants_set_beta(c, 0.01), KEF_ERR_DOMAIN);
-        assert_says("beta = 0.01 is out of range");
+        assert_failed(
+            kef_constants_set_beta(c, 0.01),
+            KEF_ERR_DOMAIN,
+            "beta = 0.01 is out of range",
+        );
         assert_eq!(kef_constants_beta(c), 0.04);
-        assert_eq!(kef_constants_set_beta(c, f64::NAN), KEF_ERR_ARGUMENT);
-        assert_says("beta = NaN");
-        assert_eq!(kef_constants_set_nu(c, 0.5), KEF_ERR_DOMAIN);
-        assert_says("nu = 0.5");
-        assert_eq!(kef_constants_set_eps_star(c, f64::INFINITY), KEF_ERR_ARGUMENT);
-        assert_says("eps_star = inf");
+        assert_failed(kef_constants_set_beta(c, f64::NAN), KEF_ERR_ARGUMENT, "beta = NaN");
+        assert_failed(kef_constants_set_nu(c, 0.5), KEF_ERR_DOMAIN, "nu = 0.5");
+        assert_failed(
+            kef_constants_set_eps_star(c, f64::INFINITY),
+            KEF_ERR_ARGUMENT,
+            "eps_star = inf",
+        );
         assert_eq!(kef_constants_eps_star(c), 0.004);
 
         assert_eq!(kef_constants_set_fit(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
@@ -126,8 +130,11 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
 
         // Parameter errors of the _with functions.
         let mut mu = 7.0;
-        assert_eq!(kef_model_mu_with(c, -1.0, 0.001, 0.01, &mut mu), KEF_ERR_DOMAIN);
-        assert_says("psi = -1 is out of range");
+        assert_failed(
+            kef_model_mu_with(c, -1.0, 0.001, 0.01, &mut mu),
+            KEF_ERR_DOMAIN,
+            "psi = -1 is out of range",
+        );
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, null_mut()), KEF_ERR_ARGUMENT);
         assert_eq!(mu, 7.0);
         // No positive μ in the range (the printed fit at ψ = 4): NULL with
@@ -236,22 +243,22 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
     unsafe {
         assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 8.0), KEF_OK);
         // K <= Sk² + 1: the Pearson bound.
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 1.2),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "kurtosis = 1.2 is out of range: must be > skewness² + 1",
         );
-        assert_says("kurtosis = 1.2 is out of range: must be > skewness² + 1");
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 6.0, 50.0),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "skewness = 6 is out of range: must be in [-5, 5]",
         );
-        assert_says("skewness = 6 is out of range: must be in [-5, 5]");
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 101.0),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "kurtosis = 101 is out of range: must be <= 100",
         );
-        assert_says("kurtosis = 101 is out of range: must be <= 100");
         // An unknown code, and the empirical family's, which its heights set.
         assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
         // The settable families of the core's registry, each once.
@@ -277,18 +284,21 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
             "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights"
         );
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, f64::NAN, 3.0),
-            KEF_ERR_ARGUMENT
+            KEF_ERR_ARGUMENT,
+            "skewness = NaN",
         );
-        assert_says("skewness = NaN");
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_WEIBULL, 2.5, 0.0),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "skewness = 2.5 is out of range: must be in (-1.1395, 2]",
         );
-        assert_says("skewness = 2.5 is out of range: must be in (-1.1395, 2]");
-        assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
-        assert_says("family 7 is unknown");
+        assert_failed(
+            kef_constants_set_distribution(c, 7, 0.0, 3.0),
+            KEF_ERR_ARGUMENT,
+            "family 7 is unknown",
+        );
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
             KEF_ERR_ARGUMENT
@@ -302,8 +312,11 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
 
         // Heights: NULL with n > 0, too few, constant, infinite.
         refused(kef_constants_set_heights(c, null(), 200), "heights is NULL");
-        assert_eq!(kef_constants_set_heights(c, null(), 0), KEF_ERR_DOMAIN);
-        assert_says("heights = 0 is out of range");
+        assert_failed(
+            kef_constants_set_heights(c, null(), 0),
+            KEF_ERR_DOMAIN,
+            "heights = 0 is out of range",
+        );
         let few: Vec<f64> = (0..99).map(f64::from).collect();
         assert_eq!(kef_constants_set_heights(c, few.as_ptr(), few.len()), KEF_ERR_DOMAIN);
         assert!(last_error().contains("at least 100 finite values"), "{}", last_error());
@@ -312,8 +325,11 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
         assert!(last_error().contains("constant"), "{}", last_error());
         let mut inf: Vec<f64> = (0..500).map(|i| f64::from(i).sin()).collect();
         inf[7] = f64::INFINITY;
-        assert_eq!(kef_constants_set_heights(c, inf.as_ptr(), inf.len()), KEF_ERR_ARGUMENT);
-        assert_says("heights = inf");
+        assert_failed(
+            kef_constants_set_heights(c, inf.as_ptr(), inf.len()),
+            KEF_ERR_ARGUMENT,
+            "heights = inf",
+        );
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
 
         // NULL outputs of the getter.
@@ -380,10 +396,9 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
 /// and answers kef_table_mu's value for the table's own constants.
 #[test]
 fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
-    let t = kef_table_default();
+    let (t, c) = (kef_table_default(), kef_constants_new());
     // SAFETY: live handles, local doubles and arrays of the length given.
     unsafe {
-        let c = kef_constants_new();
         let (mut plain, mut checked) = (0.0, 0.0);
         assert_eq!(kef_table_mu(t, 1.0, 0.001, 2e-4, &mut plain), KEF_OK);
         assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut checked), KEF_OK);
@@ -396,8 +411,11 @@ fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
         assert_eq!(out, 42.0);
         assert_says("beta = 0.117, but the table holds beta = 0.04");
         assert_eq!(kef_constants_set_beta(c, 0.04), KEF_OK);
-        assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
-        assert_says("distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian");
+        assert_failed(
+            kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out),
+            KEF_ERR_DOMAIN,
+            "distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian",
+        );
         let (psi, theta, f) = ([1.0, 2.0], [0.001, 0.002], [1e-3, 1e-2]);
         let mut mu = [7.0; 2];
         assert_eq!(
@@ -470,10 +488,9 @@ fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
 /// message naming β and both values.
 #[test]
 fn a_curve_from_a_table_with_the_constants_refuses_other_constants() {
-    let t = kef_table_default();
+    let (t, c) = (kef_table_default(), kef_constants_new());
     // SAFETY: live handles and local doubles.
     unsafe {
-        let c = kef_constants_new();
         let plain = kef_curve_from_table(t, 1.0, 0.001);
         for constants in [c as *const kef_constants, null()] {
             let checked = kef_curve_from_table_with(t, constants, 1.0, 0.001);
