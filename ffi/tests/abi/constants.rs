@@ -8,6 +8,19 @@ use std::ptr::{null, null_mut};
 
 /// μ by the core itself at ψ = 1, θ = 0.001 with `constants`, for the C
 /// calls to match.
+/// kef_model_mu_with of `constants` (NULL: the defaults) at ψ = 1,
+/// θ = 0.001 and `f_star`, which must answer.
+///
+/// # Safety
+/// `constants` is a live handle or NULL.
+unsafe fn mu_at(constants: *const kef_constants, f_star: f64) -> f64 {
+    let mut mu = f64::NAN;
+    // SAFETY: by the contract, and a local double.
+    let code = unsafe { kef_model_mu_with(constants, 1.0, 0.001, f_star, &mut mu) };
+    assert_eq!(code, KEF_OK, "{}", last_error());
+    mu
+}
+
 fn core_mu(constants: ke_friction::Constants, f_star: f64) -> f64 {
     let params = constants.at(1.0, 0.001).unwrap();
     ke_friction::Model::new(params)
@@ -51,13 +64,11 @@ fn the_handle_round_trips_and_changes_the_model() {
 
         assert_eq!(kef_constants_set_fit(c, fit.as_ptr()), KEF_OK);
         assert_eq!(name(kef_constants_fit(c)), "as-printed");
-        let mut printed = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, &mut printed), KEF_OK);
+        let printed = mu_at(c, 0.01);
         assert_ne!(printed, base);
         assert_eq!(kef_constants_set_model(c, ceb.as_ptr()), KEF_OK);
         assert_eq!(name(kef_constants_model(c)), "ceb");
-        let mut ceb_mu = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, &mut ceb_mu), KEF_OK);
+        let ceb_mu = mu_at(c, 0.01);
         assert_ne!(ceb_mu, base);
         let expected = core_mu(
             ke_friction::Constants::default()
@@ -172,8 +183,7 @@ fn the_heights_distribution_reaches_the_model() {
     unsafe {
         assert_eq!(distribution_of(c), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
         assert_eq!(distribution_of(null()), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
-        let mut gauss = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut gauss), KEF_OK);
+        let gauss = mu_at(c, 1e-4);
         assert!((gauss - 0.7567111956).abs() < 1e-9, "{gauss}");
 
         // Pearson(0, 8) and Pearson(-0.5, 3.375): the reference values.
@@ -185,13 +195,7 @@ fn the_heights_distribution_reaches_the_model() {
                 last_error()
             );
             assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, sk, k));
-            let mut mu = 0.0;
-            assert_eq!(
-                kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
-                KEF_OK,
-                "{}",
-                last_error()
-            );
+            let mu = mu_at(c, 1e-4);
             assert!((mu - want).abs() < 1e-9, "Pearson({sk}, {k}): {mu}");
             // A curve of the same constants agrees.
             let curve = kef_curve_from_model_with(c, 1.0, 0.001, 1e-5, 1e-3);
@@ -203,8 +207,7 @@ fn the_heights_distribution_reaches_the_model() {
         }
         // Pearson(0, 3) is the Gaussian, to the bit.
         assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 3.0), KEF_OK);
-        let mut normal = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut normal), KEF_OK);
+        let normal = mu_at(c, 1e-4);
         assert_eq!(normal, gauss);
 
         // Weibull: the kurtosis argument is ignored; the getter gives the
@@ -222,8 +225,7 @@ fn the_heights_distribution_reaches_the_model() {
             ke_friction::Constants::default().distribution(ke_friction::HeightDistribution::weibull(0.0).unwrap()),
             1e-4,
         );
-        let mut weibull = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut weibull), KEF_OK);
+        let weibull = mu_at(c, 1e-4);
         assert_eq!(weibull, expected);
 
         // The Gaussian ignores both numbers.
@@ -371,18 +373,11 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
         let (family, sk, k) = distribution_of(c);
         assert_eq!((family, sk, k), (KEF_DIST_EMPIRICAL, want.skewness(), want.kurtosis()));
         assert!(sk > 1.0, "{sk}");
-        let mut mu = 0.0;
-        assert_eq!(
-            kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
-            KEF_OK,
-            "{}",
-            last_error()
-        );
+        let mu = mu_at(c, 1e-4);
         // Changing (and dropping) the caller's array changes nothing.
         heights.iter_mut().for_each(|h| *h = 0.0);
         drop(heights);
-        let mut again = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut again), KEF_OK);
+        let again = mu_at(c, 1e-4);
         assert_eq!(again, mu);
         let expected = core_mu(ke_friction::Constants::default().distribution(want), 1e-4);
         assert_eq!(mu, expected);
