@@ -125,8 +125,8 @@ impl SensitivityArg {
 fn sensitivity_help() -> String {
     let families: Vec<&str> = SENSITIVITY_FAMILIES.iter().map(|f| f.name()).collect();
     format!(
-        "With a load (eval: with --surface, and a load or F*): μ under each height model ({}) and at the two ends of \
-         the reliable band too, beside μ (`off`: the single number, faster)",
+        "With a load on a measured surface (for eval, or an F*): μ under each height model ({}) and at the two ends \
+         of the reliable band too, beside μ (`off`: the single number, faster)",
         families.join(", ")
     )
 }
