@@ -103,6 +103,10 @@ fn every_subcommand_words_a_bad_number_alike() {
         &o,
         "--fit: fit 'bogus' is unknown: must be one of consistent, as-printed",
     );
+    // A switch of the CLI's own: the same wording (the core's NameError).
+    let o = kefric(&["build", "--precision", "f16", "--out", "/nonexistent/t.kft"]);
+    assert_bad_input(&o, "--precision");
+    assert_stderr_has(&o, "--precision: value 'f16' is unknown: must be one of f32, f64");
 }
 
 #[test]
