@@ -10,6 +10,8 @@
 //! in m³ or m⁴; `y` and `area` null for a profile), with the window named
 //! (default none).
 
+#[path = "dump/mod.rs"]
+mod dump;
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -48,15 +50,5 @@ fn run(args: &[String]) -> Result<Value, Box<dyn std::error::Error>> {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
-        Ok(v) => {
-            println!("{v}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("psd_dump: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    dump::main("psd_dump", run)
 }

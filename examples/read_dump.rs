@@ -9,6 +9,8 @@
 //! Prints `{"nx", "ny", "dx", "dy", "metadata"}` (metres; `dy` null for a
 //! profile).
 
+#[path = "dump/mod.rs"]
+mod dump;
 #[path = "../tests/npy.rs"]
 mod npy;
 
@@ -33,15 +35,5 @@ fn run(args: &[String]) -> Result<Value, Box<dyn std::error::Error>> {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
-        Ok(v) => {
-            println!("{v}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("read_dump: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    dump::main("read_dump", run)
 }

@@ -14,6 +14,8 @@
 //! with `repeat=N` the best of N timings (seconds, one thread) of
 //! `scale_dependent_slope` at the distances given.
 
+#[path = "dump/mod.rs"]
+mod dump;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -74,15 +76,5 @@ fn run(args: &[String]) -> Result<Value, Box<dyn std::error::Error>> {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
-        Ok(v) => {
-            println!("{v}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("scale_dump: {e}");
-            ExitCode::FAILURE
-        }
-    }
+    dump::main("scale_dump", run)
 }

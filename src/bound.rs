@@ -1,5 +1,5 @@
 //! A range of accepted values that states itself: one constant gives both
-//! the check and the words of the message (`in (0.01928, 100]`, `> 0 Pa`),
+//! the check and the words of the message (`in [1e-3, 1e3]`, `> 0 Pa`),
 //! so the two cannot drift apart.
 //!
 //! A leaf module: it uses nothing else of the crate.
@@ -127,7 +127,7 @@ impl Bound {
     }
 
     /// The range in words, as messages state it after "must be ":
-    /// `in (0.01928, 100]`, `in [0, 0.5)`, `>= 0`, `<= 1e3`, `> 0 Pa`.
+    /// `in (0.8968, 100]`, `in [0, 0.5)`, `>= 0`, `<= 1e3`, `> 0 Pa`.
     pub fn range(&'static self) -> &'static str {
         self.text.get_or_init(|| self.describe())
     }
@@ -181,7 +181,7 @@ pub(crate) mod domain {
     /// and Williamson" and varies nothing else. The range is this
     /// project's choice (docs/MODEL.md, "Validity domain"): within a factor
     /// 4 of the paper's β (0.01–0.16), and above the model's own floor
-    /// β > 0.01928 (σ_s real, MODEL.md §2), so from 0.02.
+    /// β > β_min (`gw::BETA_MIN`: σ_s real, MODEL.md §2), so from 0.02.
     pub(crate) static BETA: Bound = Bound::new(End::Closed(0.02), End::Closed(0.16));
 }
 
@@ -193,7 +193,7 @@ fn end_value(end: End) -> f64 {
 }
 
 /// A help text or docstring: `what`, then the range in brackets and
-/// `tail` (`Roughness parameter β = ηRσ, in (0.01928, 100] [default: 0.04]`).
+/// `tail` (`Poisson's ratio ν, in [0, 0.5) [default: 0.3]`).
 pub fn help(what: &str, bound: &'static Bound, tail: &str) -> String {
     let range = bound.range();
     let mut text = if range.starts_with("in ") {
@@ -209,7 +209,7 @@ pub fn help(what: &str, bound: &'static Bound, tail: &str) -> String {
 
 /// `x` exactly if it has at most 6 significant digits (`-1.1395`), else
 /// rounded to 4, in the shorter of plain and exponent form, plain on a
-/// tie: `0.01928`, `0.5`, `100`, `1e-3`, `1e3`.
+/// tie: `0.8968`, `0.5`, `100`, `1e-3`, `1e3`.
 fn number(x: f64) -> String {
     let rounded = |digits: usize| format!("{x:.digits$e}").parse::<f64>().unwrap_or(x);
     let r = (0..6).map(rounded).find(|&r| r == x).unwrap_or_else(|| rounded(3));
@@ -227,7 +227,7 @@ mod tests {
 
     #[test]
     fn bounds_state_themselves() {
-        static BETA: Bound = Bound::new(End::Open(0.019_279_522_815_671_55), End::Closed(100.0));
+        static ROUNDED: Bound = Bound::new(End::Open(0.896_805_76), End::Closed(100.0));
         static NU: Bound = Bound::new(End::Closed(0.0), End::Open(0.5));
         static PSI: Bound = Bound::new(End::Closed(1e-3), End::Closed(1e3));
         static EPS: Bound = Bound::new(End::Closed(1e-9), End::Closed(100.0));
@@ -238,7 +238,7 @@ mod tests {
         static ALPHA: Bound = Bound::above(0.896_805_76);
         static WEIBULL: Bound = Bound::new(End::Open(-1.1395), End::Closed(2.0));
         for (bound, text) in [
-            (&BETA, "in (0.01928, 100]"),
+            (&ROUNDED, "in (0.8968, 100]"),
             (&NU, "in [0, 0.5)"),
             (&PSI, "in [1e-3, 1e3]"),
             (&EPS, "in [1e-9, 100]"),

@@ -10,11 +10,16 @@ pub use crate::build::{
     H_STAR, NODES, TOLERANCE,
 };
 pub use crate::distribution::{HEIGHTS, PEARSON_KURTOSIS, PEARSON_SKEWNESS, SD, WEIBULL_SKEWNESS};
+#[cfg(feature = "plot")]
+pub use crate::figures::SCALE;
 pub use crate::gw::ALPHA_ADMISSIBLE;
-pub use crate::load::{AREA, FORCE, F_STAR};
+pub use crate::law_table::{LAW_ROWS, LAW_TOLERANCE};
+pub use crate::load::{AREA, FORCE, F_STAR, LOAD_COUNT};
 pub use crate::params::{
     BETA, BETA_ADMISSIBLE, DENSITY, ENERGY, EPS_STAR, METRES, NU, NU2, PASCALS, PSI, THETA_AT_MOST, THETA_NON_NEGATIVE,
 };
+#[cfg(feature = "topography")]
+pub use crate::topography::{DIFFERENCES, PER_DECADE, POINTS_ALONG, PSD_POINTS, VALID_POINTS};
 
 /// Every bound, by its name in lower case (`beta` for [`BETA`]).
 pub static ALL: &[(&str, &Bound)] = &[
@@ -39,6 +44,21 @@ pub static ALL: &[(&str, &Bound)] = &[
     ("weibull_skewness", &WEIBULL_SKEWNESS),
     ("heights", &HEIGHTS),
     ("sd", &SD),
+    ("load_count", &LOAD_COUNT),
+    ("law_rows", &LAW_ROWS),
+    ("law_tolerance", &LAW_TOLERANCE),
+    #[cfg(feature = "topography")]
+    ("per_decade", &PER_DECADE),
+    #[cfg(feature = "topography")]
+    ("points_along", &POINTS_ALONG),
+    #[cfg(feature = "topography")]
+    ("valid_points", &VALID_POINTS),
+    #[cfg(feature = "topography")]
+    ("differences", &DIFFERENCES),
+    #[cfg(feature = "topography")]
+    ("psd_points", &PSD_POINTS),
+    #[cfg(feature = "plot")]
+    ("scale", &SCALE),
     #[cfg(feature = "builder")]
     ("f_star_end", &F_STAR_END),
     #[cfg(feature = "builder")]

@@ -328,7 +328,7 @@ impl FrictionLaw {
     pub fn from_surface(
         surface: &crate::topography::Surface,
         materials: &crate::Materials,
-        family: Option<&str>,
+        family: Option<crate::Family>,
         range: Option<(f64, f64)>,
         policy: OutOfRange,
     ) -> Result<FrictionLaw, FrictionLawError> {

@@ -20,6 +20,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use crate::bound::{Bound, End};
 use crate::{Classify, ErrorKind, FrictionLaw, PressureError, Shortest};
 
 /// The default tolerance of [`LawTable::for_tolerance`] (`kefric law`
@@ -33,6 +34,17 @@ pub const LAW_TABLE_TOLERANCE_RANGE: (f64, f64) = (1e-6, 0.5);
 /// The most rows a table has (the rows are its size in memory: 24 bytes
 /// each).
 pub const LAW_TABLE_MAX_ROWS: usize = 1_000_000;
+
+/// The rows a table may be asked for ([`LawTable::with_rows`]): from 2 to
+/// [`LAW_TABLE_MAX_ROWS`].
+pub static LAW_ROWS: Bound = Bound::whole(2, LAW_TABLE_MAX_ROWS);
+
+/// The tolerances a table may be asked for ([`LawTable::for_tolerance`]):
+/// [`LAW_TABLE_TOLERANCE_RANGE`].
+pub static LAW_TOLERANCE: Bound = Bound::new(
+    End::Closed(LAW_TABLE_TOLERANCE_RANGE.0),
+    End::Closed(LAW_TABLE_TOLERANCE_RANGE.1),
+);
 
 /// The points inside every interval where the interpolation error is
 /// measured: at `k/(INTERIOR_POINTS + 1)` of the interval, k = 1 …
@@ -82,13 +94,13 @@ pub enum LawTableError {
         law_hi: f64,
     },
     /// The number of rows is out of range.
-    #[error("rows = {rows} is out of range: must be from 2 to {LAW_TABLE_MAX_ROWS}")]
+    #[error("rows = {rows} is out of range: must be {}", LAW_ROWS.range())]
     Rows {
         /// The rows asked for.
         rows: usize,
     },
     /// The tolerance is out of range.
-    #[error("tolerance = {} is out of range: must be in [{}, {}]", Shortest(*.tolerance), Shortest(LAW_TABLE_TOLERANCE_RANGE.0), Shortest(LAW_TABLE_TOLERANCE_RANGE.1))]
+    #[error("tolerance = {} is out of range: must be {}", Shortest(*.tolerance), LAW_TOLERANCE.range())]
     Tolerance {
         /// The tolerance asked for.
         tolerance: f64,
@@ -167,7 +179,7 @@ impl LawTable {
     /// within the law's range), with their measured interpolation error.
     pub fn with_rows(law: &FrictionLaw, lo: f64, hi: f64, rows: usize) -> Result<LawTable, LawTableError> {
         check_range(law, lo, hi)?;
-        if !(2..=LAW_TABLE_MAX_ROWS).contains(&rows) {
+        if !LAW_ROWS.contains(rows as f64) {
             return Err(LawTableError::Rows { rows });
         }
         let rows = (0..rows)
@@ -194,8 +206,7 @@ impl LawTable {
     /// the error is met, then bisecting.
     pub fn for_tolerance(law: &FrictionLaw, lo: f64, hi: f64, tolerance: f64) -> Result<LawTable, LawTableError> {
         check_range(law, lo, hi)?;
-        let (t_lo, t_hi) = LAW_TABLE_TOLERANCE_RANGE;
-        if !(t_lo..=t_hi).contains(&tolerance) {
+        if !LAW_TOLERANCE.contains(tolerance) {
             return Err(LawTableError::Tolerance { tolerance });
         }
         let meets = |n: usize| interpolation_error(law, lo, hi, n).map(|e| (e <= tolerance, e));

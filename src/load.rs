@@ -12,6 +12,9 @@ pub static FORCE: Bound = Bound::above(0.0).unit("N");
 pub static AREA: Bound = Bound::above(0.0).unit("m²");
 /// F* = pressure/hardness: > 0.
 pub static F_STAR: Bound = Bound::above(0.0);
+/// The loads a front end's range of loads may list (the CLI's
+/// `START:STOP:COUNT`): each is a model evaluation, so the count is bounded.
+pub static LOAD_COUNT: Bound = Bound::whole(1, 1_000_000);
 use crate::{Contact, EvalError, Model, ParamError, Physical, Warning};
 
 /// A normal load on a rough contact, in SI units.

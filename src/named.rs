@@ -42,11 +42,7 @@ pub trait Named: Copy + PartialEq + 'static {
             .iter()
             .copied()
             .find(|v| v.name() == name)
-            .ok_or_else(|| NameError {
-                what: Self::WHAT,
-                given: name.chars().take(40).collect(),
-                names: Self::names(),
-            })
+            .ok_or_else(|| NameError::new(Self::WHAT, name, Self::names()))
     }
 }
 
@@ -58,7 +54,21 @@ pub struct NameError {
     /// The name given (at most 40 characters of it).
     pub given: String,
     /// The valid names.
-    pub names: Vec<&'static str>,
+    pub names: Vec<String>,
+}
+
+impl NameError {
+    /// `given` is not one of `names` (what a set not written by
+    /// [`named!`](crate::named) uses, to word it as every other: the web
+    /// page's option keys, the CLI's own switches); `given` is cut to 40
+    /// characters.
+    pub fn new<S: Into<String>>(what: &'static str, given: &str, names: impl IntoIterator<Item = S>) -> NameError {
+        NameError {
+            what,
+            given: given.chars().take(40).collect(),
+            names: names.into_iter().map(Into::into).collect(),
+        }
+    }
 }
 
 impl fmt::Display for NameError {

@@ -124,48 +124,32 @@ def listed(a):
     return [None if math.isnan(v) else float(v) for v in np.ravel(a)]
 
 
+def case(name, z, dx, dy, lambdas):
+    """A fixture's case: heights ``z`` (a row of a profile, ``dy`` None),
+    and their low-pass at each cut-off of ``lambdas``."""
+    ny, nx = (1, z.size) if dy is None else z.shape
+    return {
+        "name": name,
+        "nx": nx,
+        "ny": ny,
+        "dx": dx,
+        "dy": dy,
+        "heights": listed(z),
+        "lowpass": [{"lambda": lam, "heights": listed(lowpass(z, dx, dy, lam))} for lam in lambdas],
+    }
+
+
 def cases():
-    out = []
     z = surface(40, 30, 11, 0.08)
     z[10:13, 20:24] = np.nan
     z[0, 0] = np.nan
-    dx, dy = 1.0e-6, 1.5e-6
-    out.append(
-        {
-            "name": "map",
-            "nx": 40,
-            "ny": 30,
-            "dx": dx,
-            "dy": dy,
-            "heights": listed(z),
-            "lowpass": [{"lambda": lam, "heights": listed(lowpass(z, dx, dy, lam))} for lam in (5.3e-6, 24.7e-6)],
-        }
-    )
     p = surface(200, 1, 23, 0.05)[0]
-    dx = 0.5e-6
-    out.append(
-        {
-            "name": "profile",
-            "nx": 200,
-            "ny": 1,
-            "dx": dx,
-            "dy": None,
-            "heights": listed(p),
-            "lowpass": [{"lambda": lam, "heights": listed(lowpass(p, dx, None, lam))} for lam in (4.1e-6, 80.3e-6)],
-        }
-    )
     q = surface(200, 1, 23, 0.0)[0]
-    out.append(
-        {
-            "name": "profile_full",
-            "nx": 200,
-            "ny": 1,
-            "dx": dx,
-            "dy": None,
-            "heights": listed(q),
-            "lowpass": [{"lambda": 12.2e-6, "heights": listed(lowpass(q, dx, None, 12.2e-6))}],
-        }
-    )
+    out = [
+        case("map", z, 1.0e-6, 1.5e-6, (5.3e-6, 24.7e-6)),
+        case("profile", p, 0.5e-6, None, (4.1e-6, 80.3e-6)),
+        case("profile_full", q, 0.5e-6, None, (12.2e-6,)),
+    ]
     return {
         "about": "ISO 16610 Gaussian low-pass reference of tools/filter_reference.py (see its docstring); "
         "heights in metres, row-major (x fastest), null = missing",

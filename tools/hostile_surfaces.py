@@ -142,6 +142,16 @@ def make_files(d):
     return files
 
 
+def lines_to(limit, line):
+    """line(0), line(1), ... until their lengths add up to ``limit``."""
+    lines, size, i = [], 0, 0
+    while size < limit:
+        lines.append(line(i))
+        size += len(lines[-1])
+        i += 1
+    return lines
+
+
 def header_tables(d):
     """Instrument files whose header tables hold 2 million entries (issue
     46): an Alicona .al3d with 2,000,000 tags before a 200 x 296 map
@@ -193,11 +203,7 @@ def header_tables(d):
     # Nanoscope file (each "\\*S1", "\\K1: v").
     n = 32
     data = struct.pack(f"<{n * n}h", *[(i * 37 + i // n * 53) % 1001 - 500 for i in range(n * n)])
-    lines, size, i = [], 0, 0
-    while size < (4 << 20) - 4096:
-        lines.append(f"[S{i}]\r\nPoints={i}\r\nK{i}=v\r\n")
-        size += len(lines[-1])
-        i += 1
+    lines = lines_to((4 << 20) - 4096, lambda i: f"[S{i}]\r\nPoints={i}\r\nK{i}=v\r\n")
     head = (
         "[DataSet]\r\nGroupCount=1\r\nGr0-Count=1\r\nGr0-Ch0=DataSet-0:0\r\n" + "".join(lines)
         + f"[DataSet-0:0]\r\nFrame=Scan forward\r\nPoints={n}\r\nLines={n}\r\nSaveMode=Binary\r\nSaveBits=16\r\n"
@@ -208,11 +214,7 @@ def header_tables(d):
     with open(p, "wb") as f:
         f.write(head.encode() + data)
     files["sections_nid"] = (p, n * n)
-    lines, size, i = [], 0, 0
-    while size < (4 << 20) - 8192:
-        lines.append(f"\\*S{i}\r\n\\K{i}: v\r\n")
-        size += len(lines[-1])
-        i += 1
+    lines = lines_to((4 << 20) - 8192, lambda i: f"\\*S{i}\r\n\\K{i}: v\r\n")
     head = (
         "\\*File list\r\n\\Version: 0x05120000\r\n\\*Scanner list\r\n\\@Sens. Zsens: V 20 nm/V\r\n"
         "\\*Ciao scan list\r\n\\Scan Size: 1 1 ~m\r\n" + "".join(lines)

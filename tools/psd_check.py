@@ -42,21 +42,12 @@ import tempfile
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from synthetic import rough  # noqa: E402
+
 REL = 1e-10
 FLOOR = 1e-14
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def rough(shape, rng, hurst=0.8):
-    """A self-affine-looking random surface (or profile) in metres: white
-    noise filtered to a power-law spectrum, plus an offset."""
-    noise = rng.standard_normal(shape)
-    f = np.fft.fftn(noise)
-    q2 = sum(np.meshgrid(*[np.fft.fftfreq(n) ** 2 for n in shape], indexing="ij"))
-    q2.flat[0] = np.inf
-    f *= q2 ** (-(1 + hurst) / 2)
-    h = np.real(np.fft.ifftn(f))
-    return 1e-6 * h / h.std() + 3e-6
 
 
 def cases(rng):

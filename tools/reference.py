@@ -751,24 +751,31 @@ def cmd_generate(path='tests/data/reference_points.json'):
     return 0
 
 
-def main(argv):
-    if len(argv) < 2:
-        print(__doc__)
+def dispatch(argv, doc, commands):
+    """Runs the command argv[1], one of ``commands`` (its name: a function
+    of the arguments after it); for none or another, prints the usage
+    ``doc`` and returns 2.  (tools/nongaussian_reference.py's too.)"""
+    if len(argv) < 2 or argv[1] not in commands:
+        print(doc)
         return 2
-    cmd = argv[1]
-    if cmd == 'check':
-        return cmd_check()
-    if cmd == 'generate':
-        return cmd_generate(*argv[2:3])
-    if cmd == 'point':
-        model, fit, psi, theta, h = argv[2:7]
-        p = Params(mpf(psi), mpf(theta))
-        r = evaluate(model, None if fit == 'none' else fit, p, mpf(h))
-        for k, v in r.items():
-            print(k, v)
-        return 0
-    print(__doc__)
-    return 2
+    return commands[argv[1]](argv[2:])
+
+
+def cmd_point(args):
+    model, fit, psi, theta, h = args[:5]
+    p = Params(mpf(psi), mpf(theta))
+    r = evaluate(model, None if fit == 'none' else fit, p, mpf(h))
+    for k, v in r.items():
+        print(k, v)
+    return 0
+
+
+def main(argv):
+    return dispatch(argv, __doc__, {
+        'check': lambda args: cmd_check(),
+        'generate': lambda args: cmd_generate(*args[:1]),
+        'point': cmd_point,
+    })
 
 
 if __name__ == '__main__':

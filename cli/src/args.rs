@@ -2,7 +2,7 @@
 //! parsing, the model's and the materials' flags, progress bars, tables
 //! and output paths.
 use crate::output::{io_message, Failure};
-use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::builder::TypedValueParser;
 use ke_friction::bound::help;
 use ke_friction::bounds;
 use ke_friction::Shortest;
@@ -343,18 +343,14 @@ impl DistributionArgs {
     /// ([`HeightDistribution::from_arguments`]), validated.
     pub fn distribution(&self) -> Result<HeightDistribution, Failure> {
         let heights = self.heights.as_deref().map(crate::heights::read).transpose()?;
-        HeightDistribution::from_arguments(
-            self.distribution.map(Family::name),
-            self.skewness,
-            self.kurtosis,
-            heights.as_deref(),
+        HeightDistribution::from_arguments(self.distribution, self.skewness, self.kurtosis, heights.as_deref()).map_err(
+            |e| match (&e, &self.heights) {
+                (ke_friction::DistributionError::Value(_), Some(path)) if e.name() == "heights" => {
+                    Failure::input(format!("--heights {}: {e}", path.display()))
+                }
+                _ => Failure::input(format!("{}: {e}", flag_of(e.name()))),
+            },
         )
-        .map_err(|e| match (&e, &self.heights) {
-            (ke_friction::DistributionError::Value(_), Some(path)) if e.name() == "heights" => {
-                Failure::input(format!("--heights {}: {e}", path.display()))
-            }
-            _ => Failure::input(format!("{}: {e}", flag_of(e.name()))),
-        })
     }
 
     /// Whether any of the flags is given.
@@ -364,10 +360,37 @@ impl DistributionArgs {
 }
 
 /// The value parser of a flag taking one of a core set of names
-/// ([`Named`]): `--help` lists the names, and clap refuses any other with
-/// them (so the core's parse cannot fail; its error is passed on if it did).
+/// ([`Named`]): `--help` lists the names, and any other is refused with
+/// the core's message ([`ke_friction::NameError`]: one wording of an
+/// unknown name for every front end).
 pub fn named<T: Named + Send + Sync>() -> impl TypedValueParser<Value = T> {
-    PossibleValuesParser::new(T::names()).try_map(|s: String| T::parse(&s))
+    NamedParser(std::marker::PhantomData)
+}
+
+/// [`named`]'s parser: [`Named::parse`], with the names as clap's possible
+/// values (for `--help` and completion only).
+#[derive(Clone, Copy)]
+struct NamedParser<T>(std::marker::PhantomData<T>);
+
+impl<T: Named + Send + Sync> TypedValueParser for NamedParser<T> {
+    type Value = T;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<T, clap::Error> {
+        // clap's `try_map` keeps the core's error as the source, which
+        // `value_message` (cli/src/main.rs) prints after the flag.
+        clap::builder::StringValueParser::new()
+            .try_map(|s: String| T::parse(&s))
+            .parse_ref(cmd, arg, value)
+    }
+
+    fn possible_values(&self) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(T::names().into_iter().map(clap::builder::PossibleValue::new)))
+    }
 }
 
 /// The model's settings as text (6 significant digits; `--json` has

@@ -5,9 +5,9 @@ use crate::load_args::{points, LoadArgs, Spacing};
 use crate::model_args::{ModelArgs, SurfaceSource};
 use crate::output::sig;
 use crate::output::{warn, Failure};
-use crate::surface::{sensitivity_line, OnOff};
+use crate::surface::{sensitivity_line, SensitivityArg};
 use ke_friction::topography::Sensitivity;
-use ke_friction::{Contact, Friction, Warnings};
+use ke_friction::{bounds, Contact, Friction, Shortest, Warnings, H_LIMIT};
 
 /// Evaluate the model by direct integration at given h* or F*.
 ///
@@ -20,17 +20,16 @@ use ke_friction::{Contact, Friction, Warnings};
 pub struct Args {
     #[command(flatten)]
     pub model: ModelArgs,
-    /// Separation h* = h/σ, within ±1e6 (or START:STOP:COUNT, linear; COUNT up to 1000000).
-    #[arg(long, value_name = "H|START:STOP:COUNT", allow_hyphen_values = true)]
+    /// Separation h* = h/σ, within ±[`H_LIMIT`] (or START:STOP:COUNT, linear; COUNT [`bounds::LOAD_COUNT`]).
+    #[arg(long, value_name = "H|START:STOP:COUNT", allow_hyphen_values = true, help = format!("Separation h* = h/σ, within ±{} (or START:STOP:COUNT, linear; COUNT {}).", Shortest(H_LIMIT), bounds::LOAD_COUNT.range()))]
     pub h_star: Option<String>,
-    /// External force F* = F/(A_n·H) > 0 (or START:STOP:COUNT, logarithmic; COUNT up to 1000000).
-    #[arg(long, value_name = "F|START:STOP:COUNT", allow_hyphen_values = true)]
+    /// External force F* = F/(A_n·H) ([`bounds::F_STAR`]; or START:STOP:COUNT, logarithmic; COUNT [`bounds::LOAD_COUNT`]).
+    #[arg(long, value_name = "F|START:STOP:COUNT", allow_hyphen_values = true, help = format!("External force F* = F/(A_n·H) {} (or START:STOP:COUNT, logarithmic; COUNT {}).", bounds::F_STAR.range(), bounds::LOAD_COUNT.range()))]
     pub f_star: Option<String>,
     #[command(flatten)]
     pub load: LoadArgs,
-    /// With --surface and a load (or F*): μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too (`off`: the single number, faster).
-    #[arg(long, value_enum, default_value_t = OnOff::On)]
-    pub sensitivity: OnOff,
+    #[command(flatten)]
+    pub sensitivity: SensitivityArg,
     /// Print one JSON object per point, one per line (numbers in shortest round-trip form).
     #[arg(long)]
     pub json: bool,
@@ -41,7 +40,7 @@ impl Args {
     /// one gave the model and it is asked for.
     fn sensitivity(&self, source: Option<&SurfaceSource>, f_star: impl Iterator<Item = f64>) -> Vec<Sensitivity> {
         match source {
-            Some(source) if self.sensitivity == OnOff::On => source.sensitivity(f_star),
+            Some(source) if self.sensitivity.on() => source.sensitivity(f_star),
             _ => Vec::new(),
         }
     }

@@ -5,6 +5,8 @@
 use crate::args::{describe, fields, named, number, whole};
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
+use ke_friction::bound::help;
+use ke_friction::bounds;
 use ke_friction::{
     law_notes, FrictionLaw, FrictionLawError, LawFormat, LawTable, OutOfRange, Shortest, StressUnit,
     LAW_TABLE_TOLERANCE,
@@ -31,11 +33,11 @@ pub struct Args {
     /// The contact pressures, Pa: START:STOP (the rows chosen to meet --tolerance) or START:STOP:COUNT (COUNT rows, as --rows).
     #[arg(long, value_name = "START:STOP[:COUNT]")]
     pub pressure: String,
-    /// The number of rows (2 to 1000000) [default: the fewest that meet --tolerance].
-    #[arg(long, value_name = "N")]
+    /// The number of rows ([`bounds::LAW_ROWS`]) [default: the fewest that meet --tolerance].
+    #[arg(long, value_name = "N", help = help("The number of rows", &bounds::LAW_ROWS, "[default: the fewest that meet --tolerance]"))]
     pub rows: Option<String>,
-    /// The worst relative error of linear interpolation between rows, in [1e-6, 0.5] [default: 1e-3]: the rows are the fewest that meet it (with --rows or COUNT, a warning says when they do not).
-    #[arg(long, value_name = "T", value_parser = crate::args::parse_f64, allow_hyphen_values = true)]
+    /// The worst relative error of linear interpolation between rows ([`bounds::LAW_TOLERANCE`]).
+    #[arg(long, value_name = "T", help = help("The worst relative error of linear interpolation between rows", &bounds::LAW_TOLERANCE, "[default: 1e-3]: the rows are the fewest that meet it (with --rows or COUNT, a warning says when they do not)"), value_parser = crate::args::parse_f64, allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// The syntax: csv, abaqus (*FRICTION), ls-dyna (*DEFINE_TABLE for *CONTACT FS = -2), moose (PiecewiseLinear), comsol (interpolation-function file).
     #[arg(long, value_parser = named::<LawFormat>(), default_value_t = LawFormat::Csv)]

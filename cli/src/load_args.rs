@@ -41,10 +41,11 @@ pub fn points(flag: &str, text: &str, spacing: Spacing) -> Result<Vec<f64>, Fail
                 .trim()
                 .parse()
                 .ok()
-                .filter(|&n| (1..=1_000_000).contains(&n))
+                .filter(|&n: &usize| bounds::LOAD_COUNT.contains(n as f64))
                 .ok_or_else(|| {
                     bad(format!(
-                        "COUNT '{n}' is out of range: must be a whole number from 1 to 1000000"
+                        "COUNT '{n}' is out of range: must be {}",
+                        bounds::LOAD_COUNT.range()
                     ))
                 })?;
             Ok((0..n)

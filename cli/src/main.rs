@@ -186,11 +186,15 @@ fn value_message(err: &clap::Error) -> String {
     let flag = arg.split_whitespace().next().unwrap_or("input").to_string();
     let why = match std::error::Error::source(err) {
         Some(source) => source.to_string(),
-        None => format!(
-            "'{}' is not one of: {}",
-            context(ContextKind::InvalidValue),
-            context(ContextKind::ValidValue)
-        ),
+        // A CLI-only switch (`--precision`, `--sensitivity`): worded as the
+        // core's unknown name.
+        None => {
+            let valid = match err.get(ContextKind::ValidValue) {
+                Some(ContextValue::Strings(v)) => v.clone(),
+                _ => Vec::new(),
+            };
+            ke_friction::NameError::new("value", &context(ContextKind::InvalidValue), valid).to_string()
+        }
     };
     format!("{flag}: {why}")
 }

@@ -4,6 +4,8 @@
 use crate::args::{check_writable, fields, flag_of, load_table, number, output_dir, parse_f64, whole};
 use crate::model_args::ModelArgs;
 use crate::output::Failure;
+use ke_friction::bound::help;
+use ke_friction::bounds;
 use ke_friction::figures::{self, Figure, FigureError, Format};
 use ke_friction::topography::{complete_part, psd_all, scan, Psd, ScanRange, SurfaceModel, Window};
 use ke_friction::{Family, LookupError, Shortest};
@@ -53,13 +55,13 @@ struct Out {
 
 #[derive(Debug, clap::Args)]
 struct Scale {
-    /// Image size: 1000 × 750 pixels times N, with fonts, lines and markers scaled alike; N is 1, 2 or 3.
-    #[arg(long = "scale", value_name = "N", default_value = "2", allow_hyphen_values = true)]
+    /// Image size: [`figures::BASE_SIZE`] times N ([`bounds::SCALE`]).
+    #[arg(long = "scale", value_name = "N", default_value = "2", allow_hyphen_values = true, help = help(&format!("Image size: {} × {} pixels times N, with fonts, lines and markers scaled alike; N", figures::BASE_SIZE.0, figures::BASE_SIZE.1), &bounds::SCALE, ""))]
     text: String,
 }
 
 impl Scale {
-    /// The scale, checked: 1 … MAX_SCALE.
+    /// The scale, checked ([`bounds::SCALE`]).
     fn get(&self) -> Result<u32, Failure> {
         let n = whole("--scale", &self.text)?;
         let n = u32::try_from(n).unwrap_or(u32::MAX);

@@ -246,7 +246,7 @@ pub fn run_psd(args: &Args) -> Result<(), Failure> {
     if args.json {
         let mut doc = serde_json::Map::new();
         doc.insert("files".into(), serde_json::json!([path.display().to_string()]));
-        doc.insert("window".into(), (if args.hann { "hann" } else { "none" }).into());
+        doc.insert("window".into(), window.name().into());
         for (name, p) in &spectra {
             doc.insert(name.to_string(), serde_json::json!({ "q": p.q, "c": p.c }));
         }

@@ -7,6 +7,9 @@ use crate::args::{named, parse_f64, MaterialsArgs};
 use crate::load_args::LoadArgs;
 use crate::output::{sig, Failure};
 use crate::surface_args::{intervals, request_failure, SurfaceArgs};
+use ke_friction::bound::help;
+use ke_friction::bounds;
+use ke_friction::topography::SCAN_ROWS_MAX;
 use ke_friction::topography::{
     Format, Sensitivity, Source, Surface, SurfaceRecord, SurfaceRequest, SurfaceStats, SENSITIVITY_FAMILIES,
 };
@@ -49,9 +52,8 @@ pub struct Args {
     pub model: ModelKind,
     #[command(flatten)]
     pub load: LoadArgs,
-    /// With a load: μ under each height model (gaussian, pearson, empirical) and at the two ends of the reliable band too, beside μ (`off`: the single number, faster).
-    #[arg(long, value_enum, default_value_t = OnOff::On)]
-    pub sensitivity: OnOff,
+    #[command(flatten)]
+    pub sensitivity: SensitivityArg,
     /// Print one JSON object (SI units; the library's record names).
     #[arg(long)]
     pub json: bool,
@@ -67,8 +69,8 @@ pub struct Args {
     /// The largest λs of --scan (m) [default: a tenth of the scan size].
     #[arg(long, value_name = "M", value_parser = parse_f64, allow_hyphen_values = true, requires = "scan")]
     pub to: Option<f64>,
-    /// Values a decade of --scan (1 to 100; a scan has at most 1000 rows: --from to --to spans at most 999/N decades).
-    #[arg(long, value_name = "N", default_value_t = 5, requires = "scan")]
+    /// Values a decade of --scan ([`bounds::PER_DECADE`]; at most [`SCAN_ROWS_MAX`] rows).
+    #[arg(long, value_name = "N", default_value_t = 5, requires = "scan", help = help("Values a decade of --scan", &bounds::PER_DECADE, &format!("(a scan has at most {SCAN_ROWS_MAX} rows: --from to --to spans at most {}/N decades)", SCAN_ROWS_MAX - 1)))]
     pub per_decade: usize,
     /// The power spectral density of the detrended heights (unfiltered): 1-D along x (and y) averaged over lines, and the radially averaged 2-D PSD of a map, in SurfaceTopography's conventions (q in rad/m; C in m³, or m⁴ for 2-D).
     #[arg(long)]
@@ -107,6 +109,31 @@ fn formats_help() -> String {
     help
 }
 
+/// `--sensitivity` (`kefric surface`, `kefric eval --surface`).
+#[derive(Debug, clap::Args)]
+pub struct SensitivityArg {
+    /// μ under each of the core's `SENSITIVITY_FAMILIES` and at the band's ends, or not.
+    #[arg(long = "sensitivity", value_enum, default_value_t = OnOff::On, help = sensitivity_help())]
+    pub value: OnOff,
+}
+
+impl SensitivityArg {
+    /// Whether the sensitivity is asked for.
+    pub fn on(&self) -> bool {
+        self.value == OnOff::On
+    }
+}
+
+/// `--sensitivity`'s help: the height models by the core's list.
+fn sensitivity_help() -> String {
+    let families: Vec<&str> = SENSITIVITY_FAMILIES.iter().map(|f| f.name()).collect();
+    format!(
+        "With a load on a measured surface (for eval, or an F*): μ under each height model ({}) and at the two ends \
+         of the reliable band too, beside μ (`off`: the single number, faster)",
+        families.join(", ")
+    )
+}
+
 /// `--sensitivity`: μ under the other height models and at the band's
 /// ends beside each μ, or not.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -126,7 +153,7 @@ impl Args {
             fit: self.fit,
             model: self.model,
             loads: self.load.inputs()?,
-            sensitivity: self.sensitivity == OnOff::On,
+            sensitivity: self.sensitivity.on(),
             ..self.read.request()
         })
     }

@@ -2,6 +2,8 @@
 
 use crate::args::{load_table, print_worst, Bar};
 use crate::output::Failure;
+use ke_friction::bound::help;
+use ke_friction::bounds;
 use ke_friction::build::verify::{check_samples, verify};
 use ke_friction::Shortest;
 use std::path::PathBuf;
@@ -13,8 +15,8 @@ pub struct Args {
     /// Table file [default: the embedded default table].
     #[arg(long)]
     pub table: Option<PathBuf>,
-    /// Points to check (half random, half cell centres), 2 to 10000000.
-    #[arg(long, default_value_t = 4000, allow_hyphen_values = true)]
+    /// Points to check (half random, half cell centres), [`bounds::SAMPLES`].
+    #[arg(long, default_value_t = 4000, allow_hyphen_values = true, help = help("Points to check (half random, half cell centres)", &bounds::SAMPLES, ""))]
     pub samples: usize,
     /// Seed of the points (the default differs from the build's 2004, so new points are checked).
     #[arg(long, default_value_t = 1, allow_hyphen_values = true)]

@@ -6,8 +6,8 @@ use crate::error::Failure;
 use crate::macros::Answer;
 use crate::macros::{free, set, set2};
 use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface};
-use ke_friction::Materials;
 use ke_friction::{Constants, FrictionLaw, OnError, OutOfRange, Physical, PressureError};
+use ke_friction::{Family, Materials, Named};
 use std::ffi::{c_char, c_int, CStr};
 use std::sync::atomic::{AtomicPtr, Ordering};
 use std::sync::{Mutex, PoisonError};
@@ -147,7 +147,10 @@ pub unsafe extern "C" fn kef_law_from_surface(
         let family = family
             .map(|f| f.to_str().map_err(|_| Failure::argument("family is not UTF-8".into())))
             .transpose()?
-            .filter(|f| !f.is_empty());
+            .filter(|f| !f.is_empty())
+            .map(Family::parse)
+            .transpose()
+            .map_err(|e| Failure::argument(e.to_string()))?;
         let materials = Materials { e1, nu1, e2, nu2, hardness, delta_gamma, epsilon };
         let topography = read_file(path, &ReadOptions::default())?;
         let surface = Surface::new(topography, StatsOptions::default())?;

@@ -85,6 +85,7 @@ impl DistributionCore {
         kurtosis: Option<f64>,
         heights: Option<PyReadonlyArray1<'_, f64>>,
     ) -> PyResult<DistributionCore> {
+        let family = family.map(Family::parse).transpose().map_err(value_error)?;
         let heights = heights.map(|h| slice("heights", &h).map(|v| v.to_vec())).transpose()?;
         py.detach(|| {
             HeightDistribution::from_arguments(family, skewness, kurtosis, heights.as_deref()).map(DistributionCore::of)

@@ -4,9 +4,7 @@ use crate::convert::{on_error, same_len, slice, slice_mut};
 use crate::error::{raise, value_error, Failure};
 use crate::model::ModelCore;
 use crate::parallel::{curve_batch, cut_pairs, CURVE_WORK};
-use ke_friction::{
-    law_notes, FrictionLaw, LawFormat, LawTable, Named, OutOfRange, PressureError, StressUnit, LAW_TABLE_MAX_ROWS,
-};
+use ke_friction::{law_notes, FrictionLaw, LawFormat, LawTable, Named, OutOfRange, PressureError, StressUnit};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
@@ -176,7 +174,8 @@ impl FrictionLawCore {
             .map(|n| {
                 usize::try_from(n).map_err(|_| {
                     value_error(format!(
-                        "rows = {n} is out of range: must be from 2 to {LAW_TABLE_MAX_ROWS}"
+                        "rows = {n} is out of range: must be {}",
+                        ke_friction::bounds::LAW_ROWS.range()
                     ))
                 })
             })

@@ -23,6 +23,18 @@ mod table;
 use ke_friction::Named;
 use pyo3::prelude::*;
 
+/// Whether `value` is in the core's range `name` (a key of `RANGES`,
+/// `ke_friction::bounds::ALL`): the Python side checks an argument it
+/// handles itself against the core's bound, never a range of its own.
+#[pyfunction]
+fn in_range(name: &str, value: f64) -> PyResult<bool> {
+    ke_friction::bounds::ALL
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, bound)| bound.contains(value))
+        .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(name.to_string()))
+}
+
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<table::TableCore>()?;
@@ -35,6 +47,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(model::params_from_physical, m)?)?;
     m.add_function(wrap_pyfunction!(surface::length_unit, m)?)?;
     m.add_function(wrap_pyfunction!(model::contact_warnings, m)?)?;
+    m.add_function(wrap_pyfunction!(in_range, m)?)?;
     m.add("WARNING_KINDS", <ke_friction::WarningKind as Named>::names())?;
     // The crate's version: the workspace's, which the wheel's is too.
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
@@ -58,6 +71,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("OUT_OF_RANGE", <ke_friction::OutOfRange as Named>::names())?;
     m.add("LAW_F_STAR_RANGE", ke_friction::LAW_F_STAR_RANGE)?;
     m.add("LAW_TABLE_TOLERANCE", ke_friction::LAW_TABLE_TOLERANCE)?;
+    m.add("SCAN_ROWS_MAX", ke_friction::topography::SCAN_ROWS_MAX)?;
     m.add("DEFAULTS", model::defaults(m.py())?)?;
     // Every checked range in words, by name (`ke_friction::bounds::ALL`),
     // for the docstrings.

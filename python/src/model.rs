@@ -5,22 +5,13 @@ use crate::convert::{record, same_len, slice, slice_mut};
 use crate::distribution::DistributionCore;
 use crate::error::{raise, value_error, Failure};
 use crate::parallel::{cut, MODEL_WORK};
-use ke_friction::{Classify, Constants, ErrorKind, Fit, Model, ModelKind, Params, Physical};
+use ke_friction::{Classify, Constants, ErrorKind, Fit, Materials, Model, ModelKind, Named, Params};
 use numpy::{PyReadonlyArray1, PyReadwriteArray1};
 use pyo3::prelude::*;
 
 /// The model by direct integration.
 #[pyclass(frozen, module = "ke_friction._core")]
 pub struct ModelCore(pub Model);
-
-/// The one of `all` called `value` (as `name_of` spells it), for argument
-/// `arg`; a `ValueError` listing the names if none is.
-fn by_name<T: Copy>(arg: &str, value: &str, all: &[T], name_of: fn(T) -> &'static str) -> PyResult<T> {
-    all.iter().copied().find(|&x| name_of(x) == value).ok_or_else(|| {
-        let names: Vec<_> = all.iter().map(|&x| format!("{:?}", name_of(x))).collect();
-        value_error(format!("{arg} = {value:?}: must be {}", names.join(" or ")))
-    })
-}
 
 #[pymethods]
 impl ModelCore {
@@ -42,10 +33,10 @@ impl ModelCore {
     ) -> PyResult<ModelCore> {
         let mut c = Constants::default();
         if let Some(fit) = fit {
-            c.fit = by_name("fit", fit, &Fit::ALL, Fit::name)?;
+            c.fit = Fit::parse(fit).map_err(value_error)?;
         }
         if let Some(model) = model {
-            c.kind = by_name("model", model, &ModelKind::ALL, ModelKind::name)?;
+            c.kind = ModelKind::parse(model).map_err(value_error)?;
         }
         c.beta = beta.unwrap_or(c.beta);
         c.nu = nu.unwrap_or(c.nu);
@@ -124,34 +115,18 @@ impl ModelCore {
 }
 
 /// The model's parameters of SI inputs ([`Params::from_physical`]): the
-/// core's `Params` record, as `kefric params --json` prints it.
+/// materials (in `Materials::FIELDS`' order, `_core.MATERIALS`) on a
+/// surface of roughness `sigma`, `radius`, `density`; the core's `Params`
+/// record, as `kefric params --json` prints it.
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
 pub fn params_from_physical<'py>(
     py: Python<'py>,
-    e1: f64,
-    nu1: f64,
-    e2: f64,
-    nu2: f64,
-    hardness: f64,
+    materials: [f64; 7],
     sigma: f64,
     radius: f64,
     density: f64,
-    delta_gamma: f64,
-    epsilon: f64,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let phys = Physical {
-        e1,
-        nu1,
-        e2,
-        nu2,
-        hardness,
-        sigma,
-        radius,
-        density,
-        delta_gamma,
-        epsilon,
-    };
+    let phys = Materials::from_array(materials).with_roughness(sigma, radius, density);
     let p = Params::from_physical(&phys).map_err(raise)?;
     record(py, serde_json::to_string(&p))
 }

@@ -12,7 +12,7 @@ use ke_friction::topography::{
     Rectangle, RequestError, ScanRange, Source, StatsError, StatsOptions, Surface, SurfaceRequest, Topography, Window,
     MAX_POINTS,
 };
-use ke_friction::{Classify, Load, Materials, Named};
+use ke_friction::{Classify, Family, Load, Materials, Named};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::prelude::*;
 use std::path::PathBuf;
@@ -131,6 +131,21 @@ fn psd_arrays<'py>(py: Python<'py>, p: Psd) -> (Bound<'py, PyArray1<f64>>, Bound
 /// The window of the Python keyword (the core's names).
 fn window_of(name: &str) -> PyResult<Window> {
     Window::parse(name).map_err(value_error)
+}
+
+/// The loads of `force` on `area`, or `pressure` (lists of one length,
+/// broadcast by the caller), each checked by the core
+/// (`Load::from_parts`); a row with neither is refused.
+fn loads_of(force: &Option<Vec<f64>>, area: &Option<Vec<f64>>, pressure: &Option<Vec<f64>>) -> PyResult<Vec<Load>> {
+    let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
+    let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
+    (0..n)
+        .map(|k| {
+            Load::from_parts(at(force, k), at(area, k), at(pressure, k))
+                .map_err(raise)?
+                .ok_or_else(|| value_error("give force with area, or pressure alone"))
+        })
+        .collect()
 }
 
 /// The topography of `heights` (row-major, `ny` rows of `nx`): a profile
@@ -641,6 +656,7 @@ impl SurfaceCore {
     /// `Surface::distribution`.
     #[pyo3(signature = (family=None))]
     fn distribution(&self, py: Python<'_>, family: Option<&str>) -> PyResult<DistributionCore> {
+        let family = family.map(Family::parse).transpose().map_err(value_error)?;
         py.detach(|| self.surface.distribution(family))
             .map(DistributionCore::of)
             .map_err(raise)
@@ -649,7 +665,7 @@ impl SurfaceCore {
     /// The family the surface gets when none is named (the core's rule:
     /// Pearson where its upper tail is supported, else empirical).
     fn default_family(&self, py: Python<'_>) -> &'static str {
-        py.detach(|| self.surface.default_family())
+        py.detach(|| self.surface.default_family()).name()
     }
 
     /// What the empirical density of the surface is made from: each
@@ -697,15 +713,7 @@ impl SurfaceCore {
         area: Option<Vec<f64>>,
         pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
-        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
-        let mut loads = Vec::with_capacity(n);
-        for k in 0..n {
-            let load = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k))
-                .map_err(raise)?
-                .ok_or_else(|| value_error("give force with area, or pressure alone"))?;
-            loads.push(load);
-        }
+        let loads = loads_of(&force, &area, &pressure)?;
         if loads.is_empty() {
             return Err(value_error("give force with area, or pressure alone"));
         }
@@ -744,15 +752,8 @@ impl SurfaceCore {
         area: Option<Vec<f64>>,
         pressure: Option<Vec<f64>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        use ke_friction::{Family, Fit, ModelKind, Named};
-        let n = force.as_ref().or(pressure.as_ref()).map_or(0, Vec::len);
-        let at = |v: &Option<Vec<f64>>, k: usize| v.as_ref().and_then(|v| v.get(k).copied());
-        let mut loads = Vec::with_capacity(n);
-        for k in 0..n {
-            if let Some(load) = Load::from_parts(at(&force, k), at(&area, k), at(&pressure, k)).map_err(raise)? {
-                loads.push(load);
-            }
-        }
+        use ke_friction::{Fit, ModelKind};
+        let loads = loads_of(&force, &area, &pressure)?;
         let options = self.surface.options();
         let request = SurfaceRequest {
             detrend: options.detrend,

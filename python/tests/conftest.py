@@ -36,6 +36,30 @@ MODEL_REL = 1e-9
 SAME_REL = 1e-12
 
 
+#: The instruments' example files: $KEF_TOPOGRAPHIES, else
+#: ``shared/topographies`` beside the repository.
+TOPOGRAPHIES = pathlib.Path(os.environ.get("KEF_TOPOGRAPHIES", str(ROOT.parent / "shared" / "topographies")))
+
+
+def instrument_file(name):
+    """The instruments' example file ``name`` (:data:`TOPOGRAPHIES`); the
+    test is skipped where it is absent."""
+    path = TOPOGRAPHIES / name
+    if not path.is_file():
+        pytest.skip(f"{path} is absent (set KEF_TOPOGRAPHIES to the folder of the instruments' example files)")
+    return path
+
+
+def surface_reference():
+    """tools/surface_reference.py (NumPy statistics), imported by its path
+    (tools/ is not a package)."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("surface_reference", ROOT / "tools" / "surface_reference.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
 def kefric(*args):
     """The objects `kefric ARGS --json` prints (one per point), parsed as JSON:
     a JSON array, one object, or one object per line."""

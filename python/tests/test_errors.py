@@ -87,9 +87,9 @@ def test_bad_parameters_name_themselves():
         kf.Model(-1.0, 0.001)
     with pytest.raises(ValueError, match=r"beta = 0.01 is out of range"):
         kf.Model(1.0, 0.001, beta=0.01)
-    with pytest.raises(ValueError, match=r'fit = "printed": must be "consistent" or "as-printed"'):
+    with pytest.raises(ValueError, match=r"^fit 'printed' is unknown: must be one of consistent, as-printed$"):
         kf.Model(1.0, 0.001, fit="printed")
-    with pytest.raises(ValueError, match=r'model = "CEB": must be "ke" or "ceb"'):
+    with pytest.raises(ValueError, match=r"^model 'CEB' is unknown: must be one of ke, ceb"):
         kf.Model(1.0, 0.001, model="CEB")
     with pytest.raises(ValueError, match="f_star_min < f_star_max"):
         kf.Curve.from_model(kf.Model(1.0, 0.001), 1e-2, 1e-4)

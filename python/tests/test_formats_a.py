@@ -13,7 +13,6 @@ SurfaceTopography's heights. Each test skips, saying why, when
 SurfaceTopography, the files or the programs are absent.
 """
 
-import importlib.util
 import json
 import os
 import pathlib
@@ -25,7 +24,7 @@ import pytest
 
 import ke_friction as kf
 
-from conftest import KEFRIC, ROOT
+from conftest import KEFRIC, instrument_file, surface_reference
 
 #: Heights and intervals against SurfaceTopography's reading: the same
 #: numbers from the same bytes, up to the order of the unit conversions.
@@ -34,8 +33,6 @@ READ_REL = 1e-12
 #: The plane-detrended statistics against the NumPy reference on
 #: SurfaceTopography's heights (sums in another order over ~3e5 points).
 STATS_REL = 1e-9
-
-TOPOGRAPHIES = pathlib.Path(os.environ.get("KEF_TOPOGRAPHIES", str(ROOT.parent / "shared" / "topographies")))
 
 READ_DUMP = os.environ.get("KEF_READ_DUMP", str(pathlib.Path(KEFRIC).parent / "examples" / "read_dump"))
 
@@ -48,21 +45,6 @@ FILES = [
 ]
 
 STATS = ["sigma", "skewness", "kurtosis", "m2", "m4", "beta"]
-
-
-def _reference():
-    """tools/surface_reference.py, imported by path (not a package)."""
-    spec = importlib.util.spec_from_file_location("surface_reference", ROOT / "tools" / "surface_reference.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def _file(name):
-    path = TOPOGRAPHIES / name
-    if not path.exists():
-        pytest.skip(f"{path} is absent (set KEF_TOPOGRAPHIES to the folder of the instruments' example files)")
-    return path
 
 
 def _oracle(path):
@@ -92,7 +74,7 @@ def _close(a, b, rel):
 
 @pytest.mark.parametrize("name, fmt, grid, missing", FILES)
 def test_the_reader_agrees_with_surface_topography(name, fmt, grid, missing, tmp_path):
-    path = _file(name)
+    path = instrument_file(name)
     (nx, ny), sizes, h = _oracle(path)
     record, ours = _dump(path, tmp_path)
     assert (record["nx"], record["ny"]) == (nx, ny) == grid
@@ -114,10 +96,10 @@ def test_the_reader_agrees_with_surface_topography(name, fmt, grid, missing, tmp
 
 @pytest.mark.parametrize("name, fmt, grid, missing", FILES)
 def test_statistics_agree_with_numpy_on_surface_topography_heights(name, fmt, grid, missing):
-    path = _file(name)
+    path = instrument_file(name)
     (nx, ny), sizes, h = _oracle(path)
     z = np.ma.filled(h.T.astype(float), np.nan)
-    expected = _reference().stats(z, sizes[0] / nx, sizes[1] / ny, detrend="plane")
+    expected = surface_reference().stats(z, sizes[0] / nx, sizes[1] / ny, detrend="plane")
     from_python = kf.Surface.read(path).stats
     if not os.path.exists(KEFRIC):
         pytest.skip(f"{KEFRIC} is not built (cargo build --release -p kefric, or set KEFRIC)")
@@ -131,25 +113,25 @@ def test_statistics_agree_with_numpy_on_surface_topography_heights(name, fmt, gr
 
 @pytest.mark.parametrize("name, fmt, grid, missing", FILES)
 def test_metadata_says_the_format_and_unit(name, fmt, grid, missing):
-    (metadata,) = kf.Surface.read(_file(name)).metadata
+    (metadata,) = kf.Surface.read(instrument_file(name)).metadata
     assert metadata["format"] == fmt
     assert metadata["height_unit"]
 
 
 def test_a_channel_is_chosen_by_name_or_index_and_a_wrong_one_lists_them():
-    path = _file("opd-1.opd")
+    path = instrument_file("opd-1.opd")
     by_name = kf.Surface.read(path, channel="raw").stats
     by_index = kf.Surface.read(path, channel=0).stats
     assert by_name["sigma"] == by_index["sigma"] == kf.Surface.read(path).stats["sigma"]
     with pytest.raises(ValueError, match="0 Raw"):
         kf.Surface.read(path, channel="Intensity")
     with pytest.raises(ValueError, match="only one"):
-        kf.Surface.read(_file("al3d-1.al3d"), channel=0)
+        kf.Surface.read(instrument_file("al3d-1.al3d"), channel=0)
 
 
 def test_a_truncated_file_is_a_value_error_naming_it(tmp_path):
     for name, *_ in FILES:
-        data = _file(name).read_bytes()
+        data = instrument_file(name).read_bytes()
         cut = tmp_path / name
         cut.write_bytes(data[: len(data) // 2])
         with pytest.raises(ValueError, match=name):

@@ -13,19 +13,11 @@ SurfaceTopography's heights to 1e-9. Skipped, with the reason, where
 SurfaceTopography, the files or the CLI are absent.
 """
 
-import importlib.util
-import os
-import pathlib
-
 import numpy as np
 import pytest
 
 import ke_friction as kf
-from conftest import ROOT, kefric
-
-#: The real files: $KEF_TOPOGRAPHIES, else ../shared/topographies from the
-#: repository's root (where CI has them).
-FOLDER = pathlib.Path(os.environ.get("KEF_TOPOGRAPHIES", ROOT.parent / "shared" / "topographies"))
+from conftest import instrument_file, kefric, surface_reference
 
 #: The files of this part, and the channel each reads by default.
 FILES = {
@@ -41,21 +33,6 @@ READ_REL = 1e-12
 STATS_REL = 1e-9
 
 
-def _reference():
-    """tools/surface_reference.py, imported by its path."""
-    spec = importlib.util.spec_from_file_location("surface_reference", ROOT / "tools" / "surface_reference.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def _path(name):
-    path = FOLDER / name
-    if not path.is_file():
-        pytest.skip(f"no {path} (set KEF_TOPOGRAPHIES to the folder of the instrument files)")
-    return path
-
-
 def _surface_topography(path):
     """SurfaceTopography's reading in metres: heights as a (ny, nx) array
     (rows = y, NaN = masked) and the intervals."""
@@ -69,7 +46,7 @@ def _surface_topography(path):
 
 @pytest.mark.parametrize("name", sorted(FILES))
 def test_heights_match_surface_topography(name):
-    path = _path(name)
+    path = instrument_file(name)
     z, (nx, ny), (sx, sy) = _surface_topography(path)
     s = kf.Surface.read(path)
     [(h, gx, gy, dx, dy)] = s._core.topographies()
@@ -87,9 +64,9 @@ def test_heights_match_surface_topography(name):
 
 @pytest.mark.parametrize("name", sorted(FILES))
 def test_statistics_match_numpy_on_surface_topography_heights(name):
-    path = _path(name)
+    path = instrument_file(name)
     z, (nx, ny), (sx, sy) = _surface_topography(path)
-    want = _reference().stats(z, sx / nx, sy / ny, detrend="plane", derivative="fd")
+    want = surface_reference().stats(z, sx / nx, sy / ny, detrend="plane", derivative="fd")
     [record] = kefric("surface", str(path))
     got = record["surface"]
     assert (got["nx"], got["ny"], got["missing"]) == (want["nx"], want["ny"], want["missing"])

@@ -3,13 +3,12 @@
 CLI prints; F* > 1 refused; Surface.friction broadcasting loads."""
 
 import os
-import pathlib
 import subprocess
 import warnings
 
 import numpy as np
 import pytest
-from conftest import KEFRIC, kefric
+from conftest import KEFRIC, instrument_file, kefric
 
 import ke_friction as kf
 
@@ -120,7 +119,6 @@ def test_spectral_derivatives_of_a_non_periodic_map_warn():
 # Issue 48: the validity domain, spikes and tail warnings, and the default
 # height model, on the README's synthetic map and the instruments' files.
 
-TOPOGRAPHIES = os.environ.get("KEF_TOPOGRAPHIES", str(pathlib.Path(__file__).resolve().parents[3] / "shared" / "topographies"))
 STEEL = dict(e1=200e9, nu1=0.3, e2=200e9, nu2=0.3, hardness=2e9, delta_gamma=0.3, epsilon=0.4e-9)
 
 
@@ -147,10 +145,7 @@ def readme_map():
 
 
 def instrument(name):
-    path = pathlib.Path(TOPOGRAPHIES) / name
-    if not path.exists():
-        pytest.skip(f"{path} is absent (set KEF_TOPOGRAPHIES)")
-    return kf.Surface.read(path)
+    return kf.Surface.read(instrument_file(name))
 
 
 def kinds(caught):

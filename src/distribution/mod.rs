@@ -250,7 +250,7 @@ impl HeightDistribution {
 
     /// The distribution a front end's arguments ask for, by one set of
     /// rules for every front end (CLI flags, Python keywords): `family` if
-    /// given (one of [`FAMILIES`](Self::FAMILIES)), else empirical with
+    /// given (a front end parses its name with [`Named::parse`](crate::Named::parse)), else empirical with
     /// `heights`, else Pearson with `skewness` or `kurtosis` (left out: 0
     /// and 3), else the Gaussian. Weibull takes `skewness` alone (a
     /// `kurtosis` only if it is the one the skewness implies); the
@@ -261,29 +261,18 @@ impl HeightDistribution {
     /// ```
     /// use ke_friction::HeightDistribution as D;
     /// assert_eq!(D::from_arguments(None, None, Some(8.0), None)?, D::pearson(0.0, 8.0)?);
-    /// assert_eq!(D::from_arguments(Some("gaussian"), None, Some(8.0), None).unwrap_err().name(), "kurtosis");
+    /// assert_eq!(D::from_arguments(Some(ke_friction::Family::Gaussian), None, Some(8.0), None).unwrap_err().name(), "kurtosis");
     /// # Ok::<(), ke_friction::DistributionError>(())
     /// ```
     pub fn from_arguments(
-        family: Option<&str>,
+        family: Option<Family>,
         skewness: Option<f64>,
         kurtosis: Option<f64>,
         heights: Option<&[f64]>,
     ) -> Result<HeightDistribution, DistributionError> {
         let conflict = |name: &'static str, reason: String| Err(DistributionError::Conflict { name, reason });
         let family = match (family, heights) {
-            (Some(f), _) => match Family::from_name(f) {
-                Some(family) => family,
-                None => {
-                    return conflict(
-                        "distribution",
-                        format!(
-                            "must be one of {} (not {f:?})",
-                            <Family as crate::Named>::names().join(", ")
-                        ),
-                    )
-                }
-            },
+            (Some(family), _) => family,
             (None, Some(_)) => Family::Empirical,
             (None, None) if skewness.is_some() || kurtosis.is_some() => Family::Pearson,
             (None, None) => Family::Gaussian,

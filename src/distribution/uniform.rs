@@ -98,7 +98,7 @@ mod tests {
         assert!(sk.abs() < 1e-13 && (k - 1.8).abs() < 1e-12, "{sk} {k}");
         assert_eq!(Family::parse("uniform"), Ok(Family::Uniform));
         assert_eq!(Family::from_code(4), Some(Family::Uniform));
-        assert_eq!(HeightDistribution::from_arguments(Some("uniform"), None, None, None), Ok(d.clone()));
+        assert_eq!(HeightDistribution::from_arguments(Some(Family::Uniform), None, None, None), Ok(d.clone()));
         assert_eq!(HeightDistribution::of_moments(Family::Uniform, 0.3, 5.0), Some(Ok(d.clone())));
         let spec = DistributionSpec::of(&d).unwrap();
         assert_eq!(spec.distribution(), Ok(d.clone()));

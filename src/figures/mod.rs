@@ -53,6 +53,9 @@ pub const BASE_SIZE: (u32, u32) = (1000, 750);
 pub const DEFAULT_SCALE: u32 = 2;
 /// The largest scale: 3000 × 2250 pixels.
 pub const MAX_SCALE: u32 = 3;
+/// The scales an image may be drawn at: 1 to [`MAX_SCALE`] (its size
+/// [`BASE_SIZE`] times the scale).
+pub static SCALE: crate::bound::Bound = crate::bound::Bound::whole(1, MAX_SCALE as usize);
 /// Width and height of an image at the default scale, in pixels:
 /// [`BASE_SIZE`] × [`DEFAULT_SCALE`], 2000 × 1500.
 pub const SIZE: (u32, u32) = (BASE_SIZE.0 * DEFAULT_SCALE, BASE_SIZE.1 * DEFAULT_SCALE);
@@ -61,7 +64,7 @@ pub const SIZE: (u32, u32) = (BASE_SIZE.0 * DEFAULT_SCALE, BASE_SIZE.1 * DEFAULT
 /// length of [`BASE_SIZE`]'s design times `scale`, so fonts, lines and
 /// markers grow with the canvas.
 pub fn size_at(scale: u32) -> Result<(u32, u32), FigureError> {
-    if (1..=MAX_SCALE).contains(&scale) {
+    if SCALE.contains(f64::from(scale)) {
         Ok((BASE_SIZE.0 * scale, BASE_SIZE.1 * scale))
     } else {
         Err(FigureError::Scale { scale })
@@ -107,8 +110,8 @@ pub enum FigureError {
     /// Direct integration at a point of the table failed.
     #[error(transparent)]
     Direct(#[from] BuildError),
-    /// The scale is not one of 1 … [`MAX_SCALE`].
-    #[error("scale = {scale} is out of range: must be 1, 2 or 3 (1000 × 750 pixels times the scale)")]
+    /// The scale is not one of [`SCALE`].
+    #[error("scale = {scale} is out of range: must be {} ({} × {} pixels times the scale)", SCALE.range(), BASE_SIZE.0, BASE_SIZE.1)]
     Scale {
         /// The scale asked for.
         scale: u32,

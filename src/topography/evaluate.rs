@@ -165,9 +165,7 @@ impl Surface {
     /// distribution of its heights, then [`Params::from_physical`] with the
     /// materials, the fit and the law.
     pub fn model_params(&self, how: &SurfaceModel) -> Result<Params, EvaluateError> {
-        let distribution = self
-            .distribution(how.family.map(Family::name))
-            .map_err(EvaluateError::Distribution)?;
+        let distribution = self.distribution(how.family).map_err(EvaluateError::Distribution)?;
         // Params::from_physical validated it; fit and law change no range.
         Ok(self
             .params(&how.materials, distribution)

@@ -24,7 +24,9 @@ mod write;
 pub use evaluate::{EvaluateError, Evaluation, SurfaceModel};
 pub use filter::{gaussian_lowpass, gaussian_lowpass_using, l_filter, s_filter, Convolution, FilterError};
 pub use metadata::Metadata;
-pub use psd::{complete_part, psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Rectangle, Window};
+pub use psd::{
+    complete_part, psd_all, psd_area, psd_profile_x, psd_profile_y, Psd, PsdError, Rectangle, Window, PSD_POINTS,
+};
 pub use read::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, MAX_BYTES, MAX_POINTS};
 pub use record::{FrictionRecord, Frictions, SurfaceRecord};
 pub use request::{
@@ -35,10 +37,10 @@ pub use scale::{
     default_distances, scale_dependent_curvature, scale_dependent_slope, tip_reliability_cutoff, ScaleError, ScaleRow,
     DISTANCES_PER_DECADE, TIP_SAFETY_FACTOR,
 };
-pub use scan::{scan, ScanError, ScanRange, ScanRow, SCAN_ROWS_MAX};
+pub use scan::{scan, ScanError, ScanRange, ScanRow, PER_DECADE, SCAN_ROWS_MAX};
 pub use stats::{
-    combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, HEIGHT_MAX,
-    PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE,
+    combine, Derivative, Detrend, HeightTail, StatsError, StatsOptions, SurfaceStats, Warning, DIFFERENCES, HEIGHT_MAX,
+    POINTS_ALONG, PRECISION_MIN, SIGMA_MIN, TAIL_SAMPLE, VALID_POINTS,
 };
 pub use surface::Surface;
 pub use write::write_x3p;

@@ -29,6 +29,9 @@ use std::f64::consts::PI;
 
 /// Fewest points along a direction the spectrum is taken along.
 const MIN_POINTS: usize = 4;
+/// The points along a direction a spectrum is taken along: at least
+/// [`MIN_POINTS`].
+pub static PSD_POINTS: crate::bound::Bound = crate::bound::Bound::whole(MIN_POINTS, usize::MAX);
 /// Radial bins per decade of q ([`psd_area`]), SurfaceTopography's
 /// `nb_points_per_decade` default.
 const BINS_PER_DECADE: f64 = 10.0;
@@ -81,8 +84,8 @@ pub enum PsdError {
         /// `"PSD along y"` or `"radially averaged 2-D PSD"`.
         what: &'static str,
     },
-    /// Fewer than 4 points along a direction the spectrum is taken along.
-    #[error("{name} = {count} is out of range: at least 4 points are needed")]
+    /// Fewer than [`PSD_POINTS`] along a direction the spectrum is taken along.
+    #[error("{name} = {count} is out of range: must be {} points", PSD_POINTS.range())]
     TooFewPoints {
         /// `"nx"` or `"ny"`.
         name: &'static str,
@@ -307,9 +310,9 @@ fn complete(t: &Topography) -> Result<(), PsdError> {
     }
 }
 
-/// At least [`MIN_POINTS`] along a direction.
+/// At least [`MIN_POINTS`] along a direction ([`PSD_POINTS`]).
 fn along(name: &'static str, count: usize) -> Result<(), PsdError> {
-    if count < MIN_POINTS {
+    if !PSD_POINTS.contains(count as f64) {
         return Err(PsdError::TooFewPoints { name, count });
     }
     Ok(())

@@ -5,10 +5,15 @@
 //! but λs.
 
 use super::{StatsError, StatsOptions, Surface, Topography};
+use crate::bound::Bound;
 
 /// The most rows a scan may have: 1,000 (10 decades at 100 a decade, 200
 /// at 5). Each row filters the whole surface, so the count is bounded.
 pub const SCAN_ROWS_MAX: usize = 1000;
+
+/// The values a decade a scan may take (a scan's rows are bounded by
+/// [`SCAN_ROWS_MAX`] too).
+pub static PER_DECADE: Bound = Bound::whole(1, 100);
 
 /// The λs of a scan: from `from` to `to` (metres), `per_decade` a decade.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -34,7 +39,7 @@ pub enum ScanError {
         to: f64,
     },
     /// No value a decade, or so many that the scan would be unbounded.
-    #[error("{per_decade} values a decade is out of range: must be 1 to 100")]
+    #[error("{per_decade} values a decade is out of range: must be {}", PER_DECADE.range())]
     PerDecade {
         /// The values a decade asked for.
         per_decade: usize,
@@ -93,7 +98,7 @@ impl ScanRange {
         if !(from.is_finite() && to.is_finite() && from > 0.0 && from <= to) {
             return Err(ScanError::Range { from, to });
         }
-        if !(1..=100).contains(&per_decade) {
+        if !PER_DECADE.contains(per_decade as f64) {
             return Err(ScanError::PerDecade { per_decade });
         }
         // to/from may overflow to ∞ (from 4.9e-324): log10 of the two

@@ -23,7 +23,7 @@ use crate::{DistributionError, Empirical, Family, HeightDistribution, Materials,
 /// let materials = Materials {
 ///     e1: 70e9, nu1: 0.33, e2: 200e9, nu2: 0.31, hardness: 1e9, delta_gamma: 0.5, epsilon: 0.4e-9,
 /// };
-/// let distribution = surface.distribution(Some("gaussian"))?;
+/// let distribution = surface.distribution(Some(ke_friction::Family::Gaussian))?;
 /// let params = surface.params(&materials, distribution)?;
 /// let friction = Load::Force { force: 10.0, area: 1e-5 }
 ///     .friction(&Model::new(params)?, &surface.physical(&materials))?;
@@ -42,12 +42,12 @@ impl Surface {
     /// its upper tail is supported by the measured heights
     /// ([`Surface::default_family`]): the Pearson density of the measured
     /// skewness and kurtosis.
-    pub const DEFAULT_FAMILY: &'static str = "pearson";
+    pub const DEFAULT_FAMILY: Family = Family::Pearson;
 
     /// The family of [`Surface::distribution`] when none is named and the
     /// Pearson density is refused or its upper tail is not supported by
     /// the measured heights ([`Surface::default_family`]).
-    pub const FALLBACK_FAMILY: &'static str = "empirical";
+    pub const FALLBACK_FAMILY: Family = Family::Empirical;
 
     /// How far above the highest measured height (in σ) the Pearson
     /// density may still expect one of the N measured heights for it to be
@@ -121,29 +121,21 @@ impl Surface {
         self.options
     }
 
-    /// The height distribution of the surface for a family of
-    /// [`HeightDistribution::FAMILIES`] (`None`:
+    /// The height distribution of the surface for a [`Family`] (`None`:
     /// [`Surface::default_family`]):
     ///
-    /// - `"gaussian"`: the paper's;
-    /// - `"pearson"`: the Pearson density of the measured skewness and
+    /// - [`Family::Gaussian`]: the paper's;
+    /// - [`Family::Pearson`]: the Pearson density of the measured skewness and
     ///   kurtosis (a pair's from the added cumulants);
-    /// - `"weibull"`: the Weibull density of the measured skewness;
-    /// - `"empirical"`: the kernel density of the detrended heights (a
+    /// - [`Family::Weibull`]: the Weibull density of the measured skewness;
+    /// - [`Family::Empirical`]: the kernel density of the detrended heights (a
     ///   pair's: the convolution of the two, [`crate::Empirical::sum`]);
     /// - any other family: its [`HeightDistribution::of_moments`].
     ///
     /// A measured skewness or kurtosis outside the family's range is an
     /// error naming it (`skewness` or `kurtosis`).
-    pub fn distribution(&self, family: Option<&str>) -> Result<HeightDistribution, DistributionError> {
-        let name = match family {
-            Some(name) => name,
-            None => self.default_family(),
-        };
-        let Some(family) = Family::from_name(name) else {
-            // The unknown name's error, as every front end words it.
-            return HeightDistribution::from_arguments(Some(name), None, None, None);
-        };
+    pub fn distribution(&self, family: Option<Family>) -> Result<HeightDistribution, DistributionError> {
+        let family = family.unwrap_or_else(|| self.default_family());
         if let Some(d) = HeightDistribution::of_moments(family, self.stats.skewness, self.stats.kurtosis) {
             return Ok(d?);
         }
@@ -174,7 +166,7 @@ impl Surface {
     /// else [`FALLBACK_FAMILY`](Self::FALLBACK_FAMILY) (the measured
     /// heights' own density). A pair (no kept tail) is judged by its
     /// kurtosis alone.
-    pub fn default_family(&self) -> &'static str {
+    pub fn default_family(&self) -> Family {
         if self.stats.kurtosis > Self::PEARSON_KURTOSIS_MAX {
             return Self::FALLBACK_FAMILY;
         }

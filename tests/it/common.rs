@@ -66,3 +66,38 @@ impl Drop for TempDir {
         let _ = std::fs::remove_dir_all(&self.0);
     }
 }
+
+/// The folder of the instruments' example files: `$KEF_TOPOGRAPHIES`, else
+/// `shared/topographies` beside the repository; `None` (with a message)
+/// where it is absent.
+pub fn topographies() -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| {
+            // The workspace's root, from whichever crate includes this file.
+            let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+            let root = manifest
+                .ancestors()
+                .find(|d| d.join("Cargo.lock").is_file())
+                .unwrap_or(manifest);
+            root.join("../shared/topographies")
+        });
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", dir.display());
+        None
+    }
+}
+
+/// The instruments' example file `name` ([`topographies`]), or `None`
+/// (with a message) where it is absent.
+pub fn instrument_file(name: &str) -> Option<std::path::PathBuf> {
+    let path = topographies()?.join(name);
+    if path.is_file() {
+        Some(path)
+    } else {
+        println!("skipped: {} is absent", path.display());
+        None
+    }
+}

@@ -6,6 +6,10 @@ use ke_friction::{Contact, EvalError, Fit, Model, ModelKind, Params};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+/// The lowest β taken here: 0.1 % above the model's floor β_min (σ_s
+/// real, [`ke_friction::BETA_MIN`]), where σ_s/σ is smallest.
+const BETA_LOW: f64 = ke_friction::BETA_MIN * 1.001;
+
 /// Log-uniform in [lo, hi].
 fn log_uniform(rng: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
     (rng.gen_range(lo.ln()..=hi.ln())).exp().clamp(lo, hi)
@@ -13,7 +17,8 @@ fn log_uniform(rng: &mut ChaCha8Rng, lo: f64, hi: f64) -> f64 {
 
 /// Random parameters over the ranges: ψ 0.05–50 (log), θ 0–1 (a
 /// tenth exactly 0, the rest half uniform, half log-uniform down to 1e-6),
-/// ε* 1e-6–1 (log), β 0.0193–1 (log), ν in [0, 0.5), both fits, both models.
+/// ε* 1e-6–1 (log), β `BETA_LOW`–1 (log), ν in [0, 0.5), both fits,
+/// both models.
 fn random_params(rng: &mut ChaCha8Rng) -> Params {
     let theta = match rng.gen_range(0..10) {
         0 => 0.0,
@@ -26,7 +31,7 @@ fn random_params(rng: &mut ChaCha8Rng) -> Params {
         rng.gen_range(0.0..0.5)
     };
     Params::new(log_uniform(rng, 0.05, 50.0), theta)
-        .beta(log_uniform(rng, 0.0193, 1.0))
+        .beta(log_uniform(rng, BETA_LOW, 1.0))
         .nu(nu)
         .eps_star(log_uniform(rng, 1e-6, 1.0))
         .fit(if rng.gen_bool(0.5) {
@@ -46,7 +51,7 @@ fn corner_params() -> Vec<Params> {
     let mut v = vec![];
     for psi in [0.05, 50.0] {
         for theta in [0.0, 1e-6, 1.0] {
-            for beta in [0.0193, 1.0] {
+            for beta in [BETA_LOW, 1.0] {
                 for nu in [0.0, 0.4999] {
                     for eps in [1e-6, 1.0] {
                         for fit in [Fit::Consistent, Fit::AsPrinted] {
@@ -209,7 +214,7 @@ fn far_separations_are_fast_and_match_the_asymptote() {
         let mut problems = vec![];
         for p in [
             Params::new(1.0, 0.001),
-            Params::new(0.05, 1.0).beta(0.0193).eps_star(1e-6),
+            Params::new(0.05, 1.0).beta(BETA_LOW).eps_star(1e-6),
             Params::new(50.0, 1e-6).beta(1.0).eps_star(1.0).kind(ModelKind::CebType),
         ] {
             let model = Model::new(p.clone()).unwrap();
@@ -253,7 +258,7 @@ fn far_separations_are_fast_and_match_the_asymptote() {
 #[test]
 fn strong_adhesion_roots_lie_deep_and_are_found() {
     let p = Params::new(0.05, 1.0)
-        .beta(0.0193)
+        .beta(BETA_LOW)
         .nu(0.49)
         .eps_star(1e-6)
         .kind(ModelKind::CebType);
@@ -292,7 +297,7 @@ fn the_limits_of_the_accepted_parameters_stay_finite() {
 fn the_limits() {
     for psi in [1e-3, 1e3] {
         for theta in [0.0, 1e3] {
-            for beta in [0.0193, 100.0] {
+            for beta in [BETA_LOW, 100.0] {
                 for eps in [1e-9, 100.0] {
                     for kind in [ModelKind::KogutEtsion, ModelKind::CebType] {
                         let p = Params::new(psi, theta).beta(beta).nu(0.3).eps_star(eps).kind(kind);

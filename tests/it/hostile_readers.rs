@@ -89,33 +89,25 @@ fn a_nid_whose_earlier_channel_declares_2_to_the_64_bytes_is_refused() {
     // Channel 0 (a signal in V, not read) declares 64 x (2^58 - 1) =
     // 2^64 - 64 bytes: channel 1's data would start at data_start +
     // 2^64 - 64, which wraps to 64 bytes before the data (the header).
-    let signal = NidChannel {
-        section: "DataSet-0:0",
-        frame: "Scan forward",
-        unit: "V",
-        size: (64, (1 << 58) - 1),
-        bits: 8,
+    // A file whose channel 0 (a signal) has `size` points before channel 1.
+    let with_signal = |size: (u64, u64)| {
+        let signal = NidChannel {
+            section: "DataSet-0:0",
+            frame: "Scan forward",
+            unit: "V",
+            size,
+            bits: 8,
+        };
+        nid(
+            &["DataSet-0:0", "DataSet-0:1"],
+            &[signal, NidChannel::height("DataSet-0:1")],
+            &data16(),
+        )
     };
-    let bytes = nid(
-        &["DataSet-0:0", "DataSet-0:1"],
-        &[signal, NidChannel::height("DataSet-0:1")],
-        &data16(),
-    );
-    let m = refused(&bytes, "wrap.nid", &opts());
+    let m = refused(&with_signal((64, (1 << 58) - 1)), "wrap.nid", &opts());
     assert!(m.contains("beyond any file"), "{m}");
     // 2^64 bytes and more before channel 1: said so.
-    let signal = NidChannel {
-        section: "DataSet-0:0",
-        frame: "Scan forward",
-        unit: "V",
-        size: (4_294_967_295, 4_294_967_297),
-        bits: 8,
-    };
-    let bytes = nid(
-        &["DataSet-0:0", "DataSet-0:1"],
-        &[signal, NidChannel::height("DataSet-0:1")],
-        &data16(),
-    );
+    let bytes = with_signal((4_294_967_295, 4_294_967_297));
     let m = refused(&bytes, "wrap.nid", &opts());
     assert!(m.contains("more than 2^64 bytes"), "{m}");
     // Asked for by index, channel 0 is refused the same way (the sizes

@@ -9,7 +9,7 @@ use ke_friction::topography::{read_bytes, read_file, Format, ReadError, ReadOpti
 
 use crate::common::TempDir;
 use crate::npy::npy;
-use crate::topography_read::{stored_zip, X3p};
+use crate::topography_read_x3p::{stored_zip, X3p};
 
 fn opts() -> ReadOptions {
     ReadOptions {

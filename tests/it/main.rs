@@ -24,12 +24,16 @@ mod paper_statements;
 mod properties;
 mod reference_points;
 mod reference_values;
+// The README's synthetic map, shared with `examples/rough_surface.rs`.
+#[path = "../../examples/rough/mod.rs"]
+mod rough;
 mod surface_friction;
 mod table_lookup;
 mod topography_filter;
 mod topography_instruments_a;
 mod topography_instruments_b;
 mod topography_read;
+mod topography_read_x3p;
 mod topography_scale;
 mod topography_stats;
 mod validity_warnings;

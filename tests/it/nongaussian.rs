@@ -4,7 +4,7 @@
 //! bad input.
 use crate::common::rel;
 use ke_friction::build::{build, BuildOptions, Precision};
-use ke_friction::{Constants, Curve, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
+use ke_friction::{Constants, Curve, Family, HeightDistribution, Model, Params, Table, CURVE_ACCURACY};
 use serde_json::Value;
 
 fn model(psi: f64, theta: f64, d: HeightDistribution) -> Model {
@@ -344,15 +344,14 @@ fn the_arguments_of_a_distribution_follow_one_set_of_rules() {
     let weibull = D::weibull(0.3).unwrap();
     let implied = weibull.kurtosis();
     assert_eq!(
-        D::from_arguments(Some("weibull"), Some(0.3), Some(implied), None).unwrap(),
+        D::from_arguments(Some(Family::Weibull), Some(0.3), Some(implied), None).unwrap(),
         weibull
     );
     for (family, sk, k, h, name) in [
-        (Some("lognormal"), None, None, None, "distribution"),
-        (Some("gaussian"), Some(0.3), None, None, "skewness"),
-        (Some("weibull"), None, Some(3.0), None, "kurtosis"),
-        (Some("pearson"), None, None, Some(&heights[..]), "heights"),
-        (Some("empirical"), None, None, None, "heights"),
+        (Some(Family::Gaussian), Some(0.3), None, None, "skewness"),
+        (Some(Family::Weibull), None, Some(3.0), None, "kurtosis"),
+        (Some(Family::Pearson), None, None, Some(&heights[..]), "heights"),
+        (Some(Family::Empirical), None, None, None, "heights"),
         (None, Some(0.1), None, Some(&heights[..]), "skewness"),
         (None, Some(0.5), Some(1.2), None, "kurtosis"),
         (None, None, None, Some(&heights[..50]), "heights"),

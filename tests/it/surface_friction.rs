@@ -9,7 +9,7 @@
 use crate::common::{assert_rel, REFERENCE_REL};
 use crate::topography_stats::synthetic;
 use ke_friction::topography::{Derivative, Detrend, StatsOptions, Surface, Topography};
-use ke_friction::{Load, Materials, Model};
+use ke_friction::{Family, Load, Materials, Model, Named};
 use serde_json::Value;
 
 /// Statistics against NumPy, and ψ, θ, β, ε* against mpmath from them.
@@ -96,7 +96,9 @@ fn a_synthetic_map_end_to_end_matches_the_reference() {
         // §1–2: the model's inputs, against mpmath.
         let pw = &case["params"];
         for distribution in ["gaussian", "pearson"] {
-            let p = s.params(&m, s.distribution(Some(distribution)).unwrap()).unwrap();
+            let p = s
+                .params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap())
+                .unwrap();
             for (key, got) in [
                 ("psi", p.psi),
                 ("theta", p.theta),
@@ -130,7 +132,9 @@ fn a_synthetic_map_end_to_end_matches_the_reference() {
             for distribution in ["gaussian", "pearson"] {
                 let want = &load[distribution];
                 let tag = format!("{name} {distribution} F = {force} N");
-                let params = s.params(&m, s.distribution(Some(distribution)).unwrap()).unwrap();
+                let params = s
+                    .params(&m, s.distribution(Some(Family::parse(distribution).unwrap())).unwrap())
+                    .unwrap();
                 let model = Model::new(params).unwrap();
                 let fr = l.friction(&model, &physical).unwrap();
                 let c = fr.contact;

@@ -10,8 +10,6 @@
 //! The files: `$KEF_TOPOGRAPHIES`, else `../shared/topographies` beside the
 //! repository; each test says so and passes when they are absent.
 
-use std::path::PathBuf;
-
 use ke_friction::topography::{read_bytes, Channel, Format, ReadError, ReadOptions, Topography};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -72,22 +70,11 @@ const FILES: [Known; 4] = [
     },
 ];
 
-/// The folder of the instruments' files, if it is there.
-fn folder() -> Option<PathBuf> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/topographies"));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", dir.display());
-        None
-    }
-}
-
 /// The bytes of each file present.
 fn files() -> Vec<(&'static Known, Vec<u8>)> {
-    let Some(dir) = folder() else { return Vec::new() };
+    let Some(dir) = crate::common::topographies() else {
+        return Vec::new();
+    };
     FILES
         .iter()
         .filter_map(|k| match std::fs::read(dir.join(k.name)) {

@@ -9,38 +9,9 @@
 //! Files of other programs with the shared extensions (`.dat`, `.di`) fall
 //! through to the text reader.
 
-use std::path::PathBuf;
-
 use ke_friction::topography::{read_bytes, read_file, Channel, Format, ReadError, ReadOptions, Topography};
 
-use crate::common::TempDir;
-
-/// The folder of the real files, if it is there.
-fn folder() -> Option<PathBuf> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/topographies"));
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        println!(
-            "skipped: no folder of instrument files at {} (set KEF_TOPOGRAPHIES)",
-            dir.display()
-        );
-        None
-    }
-}
-
-/// A file of the folder, or `None` (with a message) where it is absent.
-fn file(name: &str) -> Option<PathBuf> {
-    let path = folder()?.join(name);
-    if path.is_file() {
-        Some(path)
-    } else {
-        println!("skipped: no {}", path.display());
-        None
-    }
-}
+use crate::common::{instrument_file as file, TempDir};
 
 /// A file as SurfaceTopography 1.27.1 reads it (`to_unit('m')`): its
 /// format, points, physical sizes (m) and four heights (m) at [x, y] =

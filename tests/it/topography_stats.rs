@@ -14,6 +14,16 @@ use std::f64::consts::PI;
 /// Agreement with the float64 NumPy reference and with exact values.
 const REL: f64 = 1e-12;
 
+/// Asserts that `got`'s statistics `names` (their record names) are
+/// `want`'s to `tol` relative; `what` names the case.
+fn assert_stats(what: &str, got: &SurfaceStats, want: &SurfaceStats, names: &[&str], tol: f64) {
+    let (got, want) = (serde_json::to_value(got).unwrap(), serde_json::to_value(want).unwrap());
+    for name in names {
+        let value = |v: &serde_json::Value| v[*name].as_f64().unwrap_or_else(|| panic!("{what}: no {name}"));
+        assert_rel(&format!("{what} {name}"), value(&got), value(&want), tol);
+    }
+}
+
 // ---------------------------------------------------------------------------
 // The synthetic surfaces of tools/surface_reference.py (see its docstring).
 
@@ -423,16 +433,8 @@ fn missing_points_at_the_ends_of_a_profile_are_left_out() {
         };
         let (a, b) = (full.stats(&o).unwrap(), masked.stats(&o).unwrap());
         assert_eq!((b.points, b.missing, b.nx), (600 - 48, 48, 600));
-        for (name, x, y) in [
-            ("sigma", a.sigma, b.sigma),
-            ("skewness", a.skewness, b.skewness),
-            ("kurtosis", a.kurtosis, b.kurtosis),
-            ("m2", a.m2, b.m2),
-            ("m4", a.m4, b.m4),
-            ("beta", a.beta, b.beta),
-        ] {
-            assert_rel(&format!("{detrend:?} {name}"), y, x, 1e-12);
-        }
+        let names = ["sigma", "skewness", "kurtosis", "m2", "m4", "beta"];
+        assert_stats(&format!("{detrend:?}"), &b, &a, &names, 1e-12);
     }
 }
 
@@ -498,23 +500,10 @@ fn the_sum_of_two_surfaces() {
     };
     let (a, b, both) = (stats(first), stats(second), stats(&WAVES));
     let sum = combine(&a, &b).unwrap();
-    for (name, got, want) in [
-        ("sigma", sum.sigma, both.sigma),
-        ("m20", sum.m20, both.m20),
-        ("m02", sum.m02.unwrap(), both.m02.unwrap()),
-        ("m40", sum.m40, both.m40),
-        ("m04", sum.m04.unwrap(), both.m04.unwrap()),
-        ("m2", sum.m2, both.m2),
-        ("m4", sum.m4, both.m4),
-        ("alpha", sum.alpha, both.alpha),
-        ("eta", sum.eta, both.eta),
-        ("radius", sum.radius, both.radius),
-        ("beta", sum.beta, both.beta),
-        ("sigma_s", sum.sigma_s, both.sigma_s),
-        ("y_s", sum.y_s, both.y_s),
-    ] {
-        assert_rel(name, got, want, REL);
-    }
+    let names = [
+        "sigma", "m20", "m02", "m40", "m04", "m2", "m4", "alpha", "eta", "radius", "beta", "sigma_s", "y_s",
+    ];
+    assert_stats("pair", &sum, &both, &names, REL);
     // Cumulants add.
     let (va, vb) = (a.sigma.powi(2), b.sigma.powi(2));
     let v = va + vb;
@@ -560,43 +549,20 @@ fn the_sum_of_two_surfaces() {
 #[test]
 fn refusals_name_the_value() {
     let o = StatsOptions::default();
+    let refused = |t: Result<Topography, _>| t.unwrap().stats(&o).unwrap_err();
+    // The direction's name and count of a TooFewPoints refusal.
+    let too_few = |e: &StatsError| match e {
+        StatsError::TooFewPoints { name, count, .. } => Some((*name, *count)),
+        _ => None,
+    };
     // Fewer than 16 points along a direction.
-    let e = Topography::profile(synthetic(15, 1, 1, 0.0), 1e-6)
-        .unwrap()
-        .stats(&o)
-        .unwrap_err();
-    assert!(
-        matches!(
-            e,
-            StatsError::TooFewPoints {
-                name: "nx",
-                count: 15,
-                ..
-            }
-        ),
-        "{e}"
-    );
+    let e = refused(Topography::profile(synthetic(15, 1, 1, 0.0), 1e-6));
+    assert_eq!(too_few(&e), Some(("nx", 15)), "{e}");
     assert!(e.to_string().contains("nx = 15"), "{e}");
-    let e = Topography::map(synthetic(100, 15, 1, 0.0), 100, 15, 1e-6, 1e-6)
-        .unwrap()
-        .stats(&o)
-        .unwrap_err();
-    assert!(
-        matches!(
-            e,
-            StatsError::TooFewPoints {
-                name: "ny",
-                count: 15,
-                ..
-            }
-        ),
-        "{e}"
-    );
+    let e = refused(Topography::map(synthetic(100, 15, 1, 0.0), 100, 15, 1e-6, 1e-6));
+    assert_eq!(too_few(&e), Some(("ny", 15)), "{e}");
     // Fewer than 100 valid points.
-    let e = Topography::profile(synthetic(99, 1, 1, 0.0), 1e-6)
-        .unwrap()
-        .stats(&o)
-        .unwrap_err();
+    let e = refused(Topography::profile(synthetic(99, 1, 1, 0.0), 1e-6));
     assert!(matches!(e, StatsError::TooFewValid { valid: 99, .. }), "{e}");
     let e = Topography::map(vec![f64::NAN; 400], 20, 20, 1e-6, 1e-6)
         .unwrap()
@@ -609,7 +575,7 @@ fn refusals_name_the_value() {
         .enumerate()
         .map(|(i, &h)| if i % 2 == 0 { h } else { f64::NAN })
         .collect();
-    let e = Topography::profile(z, 1e-6).unwrap().stats(&o).unwrap_err();
+    let e = refused(Topography::profile(z, 1e-6));
     assert!(
         matches!(e, StatsError::TooFewDifferences { name: "m20", count: 0 }),
         "{e}"
@@ -623,10 +589,7 @@ fn refusals_name_the_value() {
     let plane: Vec<f64> = (0..40 * 30)
         .map(|k| 1e-3 + 3e-7 * (k % 40) as f64 - 2e-7 * (k / 40) as f64)
         .collect();
-    let e = Topography::map(plane, 40, 30, 1e-6, 1e-6)
-        .unwrap()
-        .stats(&o)
-        .unwrap_err();
+    let e = refused(Topography::map(plane, 40, 30, 1e-6, 1e-6));
     assert!(matches!(e, StatsError::Constant { .. }), "{e}");
     // α ≤ 0.8968: a ramp with a little noise, only its mean removed.
     let ramp: Vec<f64> = (0..200)
@@ -696,6 +659,14 @@ fn heights_at_the_limits_of_f64_name_the_cause() {
         Topography::map(z, 64, 64, 1e-6, 1e-6).unwrap().stats(&o)
     };
     let max_abs = base.iter().map(|h| (h - 1e-3).abs()).fold(0.0, f64::max);
+    // The error's message, which must hold each of `words`.
+    let says = |e: &StatsError, words: &[&str]| {
+        let text = e.to_string();
+        for w in words {
+            assert!(text.contains(w), "{w:?} not in {text}");
+        }
+        text
+    };
 
     // Overflow: scaled to 1e150 (the fourth powers overflow, the skewness
     // was NaN) and to 1e200 (the squares overflow, it was "constant").
@@ -708,11 +679,7 @@ fn heights_at_the_limits_of_f64_name_the_cause() {
             }
             other => panic!("top {top}: {other}"),
         }
-        let text = e.to_string();
-        assert!(
-            text.contains("must be below 1e75 m") && text.contains("overflow"),
-            "{text}"
-        );
+        let text = says(&e, &["must be below 1e75 m", "overflow"]);
         assert!(!text.contains("constant") && !text.contains("NaN"), "{text}");
     }
     // ±1e150 exactly, alternating (a checkerboard).
@@ -738,11 +705,7 @@ fn heights_at_the_limits_of_f64_name_the_cause() {
             }
             other => panic!("scale {scale}: {other}"),
         }
-        let text = e.to_string();
-        assert!(
-            text.contains("must be >= 1e-75 m") && text.contains("underflow"),
-            "{text}"
-        );
+        says(&e, &["must be >= 1e-75 m", "underflow"]);
     }
 
     // Rounding against the offset: 1e300 + heights of 1e-7 m are all

@@ -5,42 +5,11 @@
 //! beside the repository; each test passes when they are absent).
 
 use ke_friction::topography::{read_file, ReadOptions, StatsOptions, Surface, SurfaceModel, Topography};
-use ke_friction::{Load, Materials, Named, WarningKind};
-use std::f64::consts::PI;
+use ke_friction::{Family, Load, Materials, Named, WarningKind};
 
 /// The README's synthetic map (`examples/rough_surface.rs`, 256², σ = 0.5 µm).
 pub fn readme_surface() -> Topography {
-    let (n, dx, hurst) = (256usize, 1e-6, 0.8);
-    let uniform = |k: u64| {
-        let mut z = k
-            .wrapping_add(0x9E37_79B9_7F4A_7C15)
-            .wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 * 2f64.powi(-53)
-    };
-    let (k_lo, k_hi) = (2.0 * PI / (256.0 * dx), 2.0 * PI / (8.0 * dx));
-    let waves: Vec<(f64, f64, f64, f64)> = (0..600u64)
-        .map(|w| {
-            let k = k_lo * (k_hi / k_lo).powf(uniform(3 * w));
-            let angle = 2.0 * PI * uniform(3 * w + 1);
-            let phase = 2.0 * PI * uniform(3 * w + 2);
-            (k * angle.cos(), k * angle.sin(), phase, k.powf(-hurst))
-        })
-        .collect();
-    let mut z: Vec<f64> = (0..n * n)
-        .map(|p| {
-            let (x, y) = ((p % n) as f64 * dx, (p / n) as f64 * dx);
-            waves
-                .iter()
-                .map(|&(kx, ky, ph, a)| a * (kx * x + ky * y + ph).cos())
-                .sum()
-        })
-        .collect();
-    let mean = z.iter().sum::<f64>() / z.len() as f64;
-    let sd = (z.iter().map(|v| (v - mean) * (v - mean)).sum::<f64>() / z.len() as f64).sqrt();
-    z.iter_mut().for_each(|v| *v = (*v - mean) / sd * 0.5e-6);
-    Topography::map(z, n, n, dx, dx).unwrap()
+    crate::rough::surface(crate::rough::N).unwrap()
 }
 
 /// The README's aluminium pin on a nickel-coated disk.
@@ -49,14 +18,7 @@ const ALUMINIUM: Materials = Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9
 const STEEL: Materials = Materials::from_array([200e9, 0.3, 200e9, 0.3, 2e9, 0.3, 0.4e-9]);
 
 fn file(name: &str) -> Option<Surface> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/topographies"));
-    let path = dir.join(name);
-    if !path.exists() {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        return None;
-    }
+    let path = crate::common::instrument_file(name)?;
     let t = read_file(&path, &ReadOptions::default()).unwrap();
     Some(Surface::new(t, StatsOptions::default()).unwrap())
 }
@@ -77,7 +39,7 @@ fn kinds(surface: &Surface, materials: Materials, family: Option<&str>, force: f
 #[test]
 fn the_readme_example_gives_no_validity_spike_or_tail_warning() {
     let s = Surface::new(readme_surface(), StatsOptions::default()).unwrap();
-    assert_eq!(s.default_family(), "pearson");
+    assert_eq!(s.default_family(), Family::Pearson);
     let k = kinds(&s, ALUMINIUM, None, 10.0);
     for kind in ["psi_domain", "theta_domain", "beta_domain", "spikes", "tail"] {
         assert!(!k.contains(&kind), "{kind} in {k:?}");
@@ -111,7 +73,7 @@ fn sur_2_has_spikes_and_falls_back_to_the_empirical_density() {
     assert!(spikes.to_string().contains("kurtosis 811"), "{spikes}");
     assert!(spikes.to_string().contains("clean the data"), "{spikes}");
     // Pearson refuses Sk = -15.6: the default is the empirical density.
-    assert_eq!(s.default_family(), "empirical");
+    assert_eq!(s.default_family(), Family::Empirical);
     assert!(kinds(&s, STEEL, None, 1.0).contains(&"spikes"));
 }
 
@@ -145,7 +107,7 @@ fn plu_1_pearson_at_a_light_load_is_on_an_extrapolated_tail() {
     assert!(text.contains("0 measured points above"), "{text}");
     // The default is the empirical density here (Pearson's tail is not
     // supported), and its contact has measured heights above it.
-    assert_eq!(s.default_family(), "empirical");
+    assert_eq!(s.default_family(), Family::Empirical);
     let excess = s.pearson_tail_excess().unwrap().unwrap();
     assert!(excess >= 1.0, "{excess}");
     assert!(!kinds(&s, STEEL, None, 0.01).contains(&"tail"));
@@ -178,7 +140,7 @@ fn the_default_family_of_each_file() {
             s.pearson_tail_excess(),
             s.default_family()
         );
-        assert_eq!(s.default_family(), family, "{name}");
+        assert_eq!(s.default_family().name(), family, "{name}");
     }
     let readme = Surface::new(readme_surface(), StatsOptions::default()).unwrap();
     println!(

@@ -109,7 +109,7 @@ impl Options {
         let mut values = BTreeMap::new();
         for (key, value) in map {
             if !keys().contains(&key.as_str()) {
-                return Err(format!("{key}: unknown option: must be one of {}", keys().join(", ")));
+                return Err(ke_friction::NameError::new("option", &key, keys()).to_string());
             }
             let value = value.trim().to_string();
             if !value.is_empty() {
@@ -675,7 +675,7 @@ mod tests {
     #[test]
     fn an_unknown_option_is_refused_naming_the_valid_keys() {
         let e = Options::parse(r#"{"e3": "1"}"#).unwrap_err();
-        assert!(e.starts_with("e3: unknown option: must be one of dx, dy"), "{e}");
+        assert!(e.starts_with("option 'e3' is unknown: must be one of dx, dy"), "{e}");
     }
 
     #[test]
@@ -687,22 +687,31 @@ mod tests {
         );
     }
 
-    /// A 40 × 30 text map (heights in µm, a few incommensurate waves).
+    /// The analysis of [`text_map`] (Δx = 0.5 µm) with the README's
+    /// aluminium on nickel and the options `extra` (replacing any of those).
+    fn aluminium_on_the_map(extra: &[(&str, &str)]) -> Analysis {
+        let mut options: BTreeMap<&str, &str> = [
+            ("dx", "0.5"),
+            ("xy_unit", "um"),
+            ("z_unit", "um"),
+            ("e1", "70e9"),
+            ("nu1", "0.33"),
+            ("e2", "200e9"),
+            ("nu2", "0.31"),
+            ("hardness", "1e9"),
+            ("delta_gamma", "0.5"),
+            ("epsilon", "0.4e-9"),
+        ]
+        .into();
+        options.extend(extra.iter().copied());
+        let json = serde_json::to_string(&options).unwrap();
+        Analysis::analyse(&text_map(), "h.txt", Options::parse(&json).unwrap()).unwrap()
+    }
+
+    /// A 40 × 30 text map (heights in µm, a few incommensurate waves),
+    /// shared with the core's request tests: `tests/data/text_map.txt`.
     fn text_map() -> Vec<u8> {
-        let mut text = String::new();
-        for j in 0..30 {
-            let row: Vec<String> = (0..40)
-                .map(|i| {
-                    format!(
-                        "{:.6}",
-                        (0.37 * i as f64).sin() + (0.23 * j as f64 + 0.11 * i as f64).cos()
-                    )
-                })
-                .collect();
-            text.push_str(&row.join(" "));
-            text.push('\n');
-        }
-        text.into_bytes()
+        include_bytes!("../../tests/data/text_map.txt").to_vec()
     }
 
     #[test]
@@ -726,12 +735,7 @@ mod tests {
     #[test]
     fn the_loads_warnings_are_shown_and_recorded_as_the_cli_gives_them() {
         // 1 Pa on a hardness of 1 GPa: F* = 1e-9, below the paper's range.
-        let options = Options::parse(
-            r#"{"dx": "0.5", "xy_unit": "um", "z_unit": "um", "e1": "70e9", "nu1": "0.33", "e2": "200e9",
-                "nu2": "0.31", "hardness": "1e9", "delta_gamma": "0.5", "epsilon": "0.4e-9", "pressure": "1"}"#,
-        )
-        .unwrap();
-        let a = Analysis::analyse(&text_map(), "h.txt", options).unwrap();
+        let a = aluminium_on_the_map(&[("pressure", "1")]);
         let shown: Vec<String> = serde_json::from_str(&a.warnings()).unwrap();
         assert!(
             shown.iter().any(|w| w.contains("is below the range the paper covers")),
@@ -763,12 +767,7 @@ mod tests {
     /// shown, the error beside them names the page's field.
     #[test]
     fn a_failed_evaluation_keeps_the_statistics() {
-        let options = Options::parse(
-            r#"{"dx": "0.5", "xy_unit": "um", "z_unit": "um", "e1": "70e9", "nu1": "0.33", "e2": "200e9",
-                "nu2": "0.31", "hardness": "-1", "delta_gamma": "0.5", "epsilon": "0.4e-9", "pressure": "1e6"}"#,
-        )
-        .unwrap();
-        let a = Analysis::analyse(&text_map(), "h.txt", options).unwrap();
+        let a = aluminium_on_the_map(&[("hardness", "-1"), ("pressure", "1e6")]);
         let e = a.error().unwrap();
         assert!(e.starts_with("“hardness H”: "), "{e}");
         let record: Value = serde_json::from_str(&a.record).unwrap();

@@ -105,8 +105,8 @@ BAD_OPTIONS = [
     {"lambda_s": "1e-9"},
 ]
 # Not compared: a name out of a list (a URL edited by hand; the page's
-# selects offer the core's names only). kefric's clap parser words it
-# "'cubic' is not one of: …", the page the core's Named::parse message.
+# selects offer the core's names only). Both word it by the core's
+# NameError ("detrend 'cubic' is unknown: must be one of …").
 
 
 def serve(site):

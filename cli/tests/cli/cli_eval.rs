@@ -1,5 +1,5 @@
 //! `kefric eval`: output formats, ranges and bad input.
-use crate::support::{kefric, stderr};
+use crate::support::{assert_stderr_has, kefric, stderr};
 
 #[test]
 fn eval_json_at_f_star_matches_model_md() {
@@ -60,11 +60,7 @@ fn text_output_uses_the_flags_spellings_and_warns_outside_the_papers_range() {
     // F* = 5, a pressure five times the hardness: refused (exit 2).
     let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "5"]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("f_star = 5 is out of range: must be <= 1"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "f_star = 5 is out of range: must be <= 1");
     // F* = 0.5 (h* < 0): an answer, exit 0, one warning line a kind.
     let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--f-star", "0.5"]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -212,11 +208,7 @@ fn plot_curve_takes_an_f_star_range() {
     let svg = std::fs::read_to_string(&out).unwrap();
     assert!(svg.contains("<svg"));
     // The range reaches beyond the paper's: warned, as eval warns.
-    assert!(
-        stderr(&o).contains("the worst: F* = 0.5 is above the range the paper covers"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "the worst: F* = 0.5 is above the range the paper covers");
     let o = kefric(&[
         "plot", "curve", "--psi", "1", "--theta", "0.003", "--f-star", "1e-4:2", "--out", &out,
     ]);

@@ -1,7 +1,7 @@
 //! `kefric law`: solver-ready tables `pressure_Pa,mu,dmu_dp_per_Pa` whose rows
 //! interpolate within their stated error, checked against direct
 //! integration of the model (independent of the curve the law is built on).
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::{Model, Params, CURVE_ACCURACY};
 
 /// A table's header lines, its stated interpolation error and its rows.
@@ -37,6 +37,9 @@ fn parse(o: &std::process::Output) -> Csv {
     Csv { header, stated, rows }
 }
 
+/// `kefric law` of ψ = 1, θ = 0.001 on H = 1 GPa (the pressures to add).
+const LAW: &[&str] = &["law", "--psi", "1", "--theta", "0.001", "--hardness", "1e9"];
+
 /// μ of the model by direct integration at pressure `p` on hardness `h`.
 fn exact(model: &Model, p: f64, h: f64) -> f64 {
     model.at_f_star(p / h).unwrap().mu.unwrap()
@@ -45,17 +48,7 @@ fn exact(model: &Model, p: f64, h: f64) -> f64 {
 #[test]
 fn law_rows_interpolate_within_their_stated_error() {
     let h = 1e9;
-    let o = kefric(&[
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8",
-    ]);
+    let o = kefric(&[LAW, &["--pressure", "1e4:1e8"]].concat());
     let csv = parse(&o);
     let head = csv.header.join("\n");
     for needle in [
@@ -143,26 +136,13 @@ fn law_takes_the_fewest_rows_that_meet_the_tolerance() {
     let less = parse(&o);
     assert_eq!(less.rows.len(), fine.rows.len() - 1);
     assert!(less.stated > 1e-4, "{}", less.stated);
-    assert!(
-        stderr(&o).contains("\nwarning: ") && stderr(&o).contains("more than 0.0001"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "\nwarning: ");
+    assert_stderr_has(&o, "more than 0.0001");
 }
 
 #[test]
 fn law_count_in_the_pressure_range_gives_that_many_rows() {
-    let o = kefric(&[
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8:9",
-    ]);
+    let o = kefric(&[LAW, &["--pressure", "1e4:1e8:9"]].concat());
     let csv = parse(&o);
     assert_eq!(csv.rows.len(), 9);
     assert_eq!(csv.rows[4][0], 1e6);
@@ -172,31 +152,7 @@ fn law_count_in_the_pressure_range_gives_that_many_rows() {
 
 #[test]
 fn law_takes_the_si_inputs() {
-    let o = kefric(&[
-        "law",
-        "--e1",
-        "200e9",
-        "--nu1",
-        "0.3",
-        "--e2",
-        "200e9",
-        "--nu2",
-        "0.3",
-        "--hardness",
-        "2e9",
-        "--sigma",
-        "1e-7",
-        "--radius",
-        "1e-5",
-        "--density",
-        "4e10",
-        "--delta-gamma",
-        "0.5",
-        "--epsilon",
-        "4e-10",
-        "--pressure",
-        "1e5:1e7",
-    ]);
+    let o = kefric(&[&["law"][..], &crate::cli_tools::SI, &["--pressure", "1e5:1e7"]].concat());
     let csv = parse(&o);
     assert!(csv.header.join("\n").contains("hardness H = 2e9 Pa"));
     assert!(csv.stated <= 1e-3 && csv.rows.len() >= 2);
@@ -245,17 +201,7 @@ fn law_refuses_bad_input_naming_the_flag() {
 
 #[test]
 fn law_writes_each_solvers_syntax_in_its_stress_unit() {
-    let base = [
-        "law",
-        "--psi",
-        "1",
-        "--theta",
-        "0.001",
-        "--hardness",
-        "1e9",
-        "--pressure",
-        "1e4:1e8:5",
-    ];
+    let base = [LAW, &["--pressure", "1e4:1e8:5"]].concat();
     let csv = parse(&kefric(&base));
     let run = |extra: &[&str]| {
         let o = kefric(&[&base[..], extra].concat());

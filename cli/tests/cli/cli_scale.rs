@@ -3,7 +3,7 @@
 //! instrument's reliability cut-off; against the library called directly
 //! and against the single command.
 use crate::common::TempDir;
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use serde_json::Value;
 
@@ -198,12 +198,9 @@ fn the_reliability_cut_off_marks_rows_and_warns() {
     assert!(o.status.success(), "{}", stderr(&o));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["surface"]["lambda_s"], Value::Null);
-    assert!(
-        stderr(&o).contains(&format!(
-            "warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"
-        )),
-        "{}",
-        stderr(&o)
+    assert_stderr_has(
+        &o,
+        &format!("warning: {file}: --lambda-s auto: --tip-radius 1e-8 m distorts no scale of these data"),
     );
 }
 
@@ -441,13 +438,9 @@ fn the_psd_of_a_map_with_missing_points_is_of_its_largest_complete_rectangle() {
     let file = dir.arg("holes.x3p");
     let o = kefric(&["surface", &file, "--psd", "--json"]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains(&format!(
+    assert_stderr_has(&o, &format!(
             "warning: --psd: {file}: 800 missing points: the power spectral density of the largest complete rectangle, 160 × 115 points from column 0, row 5 of 160 × 120"
-        )),
-        "{}",
-        stderr(&o)
-    );
+        ));
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     let (part, _) = complete_part(&holes).unwrap();
     let want = psd_all(&part.detrended_topography(Detrend::Plane).unwrap(), Window::None).unwrap();

@@ -2,9 +2,9 @@
 //! model's inputs and μ, against the library called directly, and bad
 //! input.
 use crate::common::TempDir;
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
-use ke_friction::{Load, Materials, Model};
+use ke_friction::{Load, Materials, Model, Named};
 use serde_json::Value;
 
 /// Aluminium (softer) on a nickel coating, with adhesion: the pair.
@@ -69,6 +69,14 @@ fn run(args: &[&str], extra: &[&str]) -> Vec<String> {
     all
 }
 
+/// `kefric surface` of the map `file` written by [`write_npy`] (dx = 2 µm)
+/// with the flags `extra` and [`MATERIAL_FLAGS`].
+fn map_args(file: &str, extra: &[&str]) -> Vec<String> {
+    let mut args = run(&["surface", file, "--dx", "2", "--xy-unit", "um"], extra);
+    args.extend(MATERIAL_FLAGS.iter().map(|s| s.to_string()));
+    args
+}
+
 fn as_strs(v: &[String]) -> Vec<&str> {
     v.iter().map(String::as_str).collect()
 }
@@ -79,22 +87,7 @@ fn one_surface_force_and_area_give_the_librarys_mu_and_q() {
     let n = 96;
     let z = heights(n, 0.0);
     let file = write_npy(&dir, "map.npy", &z, n);
-    let args = run(
-        &[
-            "surface",
-            &file,
-            "--dx",
-            "2",
-            "--xy-unit",
-            "um",
-            "--json",
-            "--force",
-            "10",
-            "--area",
-            "1e-5",
-        ],
-        MATERIAL_FLAGS,
-    );
+    let args = map_args(&file, &["--json", "--force", "10", "--area", "1e-5"]);
     let mut v = json(&as_strs(&args));
     // The sensitivity beside μ (checked in `sensitivity_values_are_the_single_runs`).
     assert!(v["friction"]["sensitivity"].is_object(), "{v}");
@@ -205,7 +198,12 @@ fn two_surfaces_are_their_equivalent_surface() {
         assert_eq!(v["surface"], serde_json::to_value(surface.stats()).unwrap());
         assert_eq!(v["parts"].as_array().map(Vec::len), Some(2));
         let params = surface
-            .params(&MATERIALS, surface.distribution(Some(family)).unwrap())
+            .params(
+                &MATERIALS,
+                surface
+                    .distribution(Some(ke_friction::Family::parse(family).unwrap()))
+                    .unwrap(),
+            )
             .unwrap();
         assert_eq!(v["model"], serde_json::to_value(&params).unwrap());
         let friction = Load::Force { force: 5.0, area: 1e-5 }
@@ -286,31 +284,19 @@ fn bad_input_names_the_flag() {
     let n = 64;
     let file = write_npy(&dir, "map.npy", &heights(n, 0.0), n);
     let with = |extra: &[&str]| run(&["surface", &file, "--dx", "2e-6"], extra);
+    let with_materials = |extra: &[&str]| run(&as_strs(&with(extra)), MATERIAL_FLAGS);
+    // `kefric eval --surface` at an F* with `extra` and the materials.
+    let eval = |extra: &[&str]| {
+        let args = run(&["eval", "--surface", &file, "--dx", "2e-6"], extra);
+        run(&as_strs(&args), &[&["--f-star", "1e-3"][..], MATERIAL_FLAGS].concat())
+    };
     let cases: Vec<(Vec<String>, &str)> = vec![
         (run(&["surface", &file], &[]), "--dx"),
         (with(&["--dx", "-1"]), "--dx"),
         (with(&["--force", "10", "--area", "1e-5"]), "--force"),
         (with(&["--distribution", "gaussian"]), "--distribution"),
-        (
-            run(
-                &with(&["--force", "-1", "--area", "1e-5"])
-                    .iter()
-                    .map(String::as_str)
-                    .collect::<Vec<_>>(),
-                MATERIAL_FLAGS,
-            ),
-            "--force",
-        ),
-        (
-            run(
-                &with(&["--pressure", "0"])
-                    .iter()
-                    .map(String::as_str)
-                    .collect::<Vec<_>>(),
-                MATERIAL_FLAGS,
-            ),
-            "--pressure",
-        ),
+        (with_materials(&["--force", "-1", "--area", "1e-5"]), "--force"),
+        (with_materials(&["--pressure", "0"]), "--pressure"),
         (with(&["--e1", "70e9"]), "--nu1"),
         (
             run(
@@ -323,57 +309,9 @@ fn bad_input_names_the_flag() {
             "--hardness",
         ),
         (run(&["surface", &dir.arg("missing.x3p")], &[]), "missing.x3p"),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--psi",
-                    "1",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--psi",
-        ),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--sigma",
-                    "1e-7",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--sigma",
-        ),
-        (
-            run(
-                &[
-                    "eval",
-                    "--surface",
-                    &file,
-                    "--dx",
-                    "2e-6",
-                    "--kurtosis",
-                    "4",
-                    "--f-star",
-                    "1e-3",
-                ],
-                MATERIAL_FLAGS,
-            ),
-            "--kurtosis",
-        ),
+        (eval(&["--psi", "1"]), "--psi"),
+        (eval(&["--sigma", "1e-7"]), "--sigma"),
+        (eval(&["--kurtosis", "4"]), "--kurtosis"),
         (
             run(&["eval", "--surface", &file, "--dx", "2e-6", "--f-star", "1e-3"], &[]),
             "--e1",
@@ -399,17 +337,14 @@ fn bad_input_names_the_flag() {
     // skewness; MODEL.md, "The default height model") and warns the spikes.
     let o = kefric(&as_strs(&run(&["surface", &spiky, "--dx", "2e-6"], MATERIAL_FLAGS)));
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stderr(&o).contains("the heights have spikes"), "{}", stderr(&o));
+    assert_stderr_has(&o, "the heights have spikes");
     let o = kefric(&as_strs(&run(
         &["surface", &spiky, "--dx", "2e-6", "--distribution", "pearson"],
         MATERIAL_FLAGS,
     )));
     assert_bad_input(&o, "--distribution");
-    assert!(
-        stderr(&o).contains("skewness") && stderr(&o).contains("empirical"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "skewness");
+    assert_stderr_has(&o, "empirical");
 }
 
 #[test]
@@ -600,21 +535,6 @@ fn law_with_a_surface_is_the_model_of_eval_with_that_surface() {
     }
 }
 
-/// The instruments' example files (`$KEF_TOPOGRAPHIES`, else
-/// `../shared/topographies` beside the repository), if present.
-fn instrument_file(name: &str) -> Option<std::path::PathBuf> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
-    let path = dir.join(name);
-    if path.exists() {
-        Some(path)
-    } else {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        None
-    }
-}
-
 #[test]
 fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_lists_them() {
     for (name, format, nx) in [
@@ -623,7 +543,9 @@ fn instruments_files_give_their_statistics_and_metadata_and_a_wrong_channel_list
         ("opd-1.opd", "opd", 640),
         ("al3d-1.al3d", "al3d", 200),
     ] {
-        let Some(path) = instrument_file(name) else { continue };
+        let Some(path) = crate::common::instrument_file(name) else {
+            continue;
+        };
         let path = path.to_str().unwrap();
         let o = kefric(&["surface", path, "--json"]);
         assert!(o.status.success(), "{name}: {}", stderr(&o));
@@ -646,21 +568,7 @@ fn sensitivity_values_are_the_single_runs() {
     let n = 96;
     let z = heights(n, 0.0);
     let file = write_npy(&dir, "map.npy", &z, n);
-    let base = run(
-        &[
-            "surface",
-            &file,
-            "--dx",
-            "2",
-            "--xy-unit",
-            "um",
-            "--force",
-            "10",
-            "--area",
-            "1e-5",
-        ],
-        MATERIAL_FLAGS,
-    );
+    let base = map_args(&file, &["--force", "10", "--area", "1e-5"]);
     let mut with_json = base.clone();
     with_json.push("--json".into());
     let v = json(&as_strs(&with_json));

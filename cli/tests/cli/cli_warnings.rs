@@ -2,7 +2,7 @@
 //! cases 1–4), loads in newtons and pascals, and the one number format.
 use crate::cli_surface::{MATERIALS, MATERIAL_FLAGS};
 use crate::common::TempDir;
-use crate::support::{kefric, stderr};
+use crate::support::{assert_stderr_has, kefric, stderr};
 use ke_friction::topography::{write_x3p, StatsOptions, Surface, Topography};
 use ke_friction::{Load, Model};
 use serde_json::Value;
@@ -92,11 +92,7 @@ fn absurd_loads_warn_or_are_refused() {
     ] {
         let o = kefric(&cmd);
         assert_eq!(o.status.code(), Some(2), "{cmd:?}: {}", stderr(&o));
-        assert!(
-            stderr(&o).contains("f_star = 10 is out of range: must be <= 1"),
-            "{}",
-            stderr(&o)
-        );
+        assert_stderr_has(&o, "f_star = 10 is out of range: must be <= 1");
         assert!(
             o.stdout.is_empty() || !String::from_utf8_lossy(&o.stdout).contains("mu "),
             "no answer"
@@ -104,19 +100,11 @@ fn absurd_loads_warn_or_are_refused() {
     }
     let o = kefric(&["eval", "--psi", "0.85", "--theta", "0.0013", "--f-star", "1e4"]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
-    assert!(
-        stderr(&o).contains("f_star = 10000 is out of range: must be <= 1"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "f_star = 10000 is out of range: must be <= 1");
     // μ > 1 at a light load: adhesion-dominated, said so.
     let o = kefric(&["eval", "--psi", "0.85", "--theta", "0.0013", "--f-star", "1e-7"]);
     assert!(o.status.success());
-    assert!(
-        stderr(&o).contains("> 1 at F* = 1e-7: adhesion dominates"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "> 1 at F* = 1e-7: adhesion dominates");
 }
 
 /// Case 2: `plot surface` gives the warnings `surface` gives for the same
@@ -177,11 +165,7 @@ fn spectral_derivatives_warn_on_a_non_periodic_map() {
     let (k, _) = kinds(&periodic, "spectral");
     assert!(!k.contains(&"non_periodic".to_string()), "{k:?}");
     let o = kefric(&["surface", &rough, "--derivative", "spectral"]);
-    assert!(
-        stderr(&o).contains("warning: derivative = spectral on a surface that is not periodic"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "warning: derivative = spectral on a surface that is not periodic");
 }
 
 /// Case 4: loads in newtons and pascals: `surface --force START:STOP:COUNT`
@@ -244,11 +228,7 @@ fn force_and_pressure_ranges_give_one_row_a_load() {
     // Dimensionless inputs have no hardness: a load in newtons is refused.
     let o = kefric(&["eval", "--psi", "1", "--theta", "0.001", "--force", "1", "--area", "1"]);
     assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--force: a load in SI units needs the hardness"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "--force: a load in SI units needs the hardness");
     let out = dir.arg("n.png");
     let o = kefric(&args(
         &["plot", "surface", &file],
@@ -271,7 +251,7 @@ fn force_and_pressure_ranges_give_one_row_a_load() {
         &["--force", "10:1:3", "--area", "1e-5", "--out", &out],
     ));
     assert_eq!(o.status.code(), Some(2));
-    assert!(stderr(&o).contains("--force: the plot needs a range"), "{}", stderr(&o));
+    assert_stderr_has(&o, "--force: the plot needs a range");
     // 10 N on 1e-5 m² is 1e6 Pa in the record, as --pressure 1e6 (not
     // 999999.9999999999), and gives the same μ.
     let o = kefric(&args(
@@ -329,48 +309,29 @@ fn text_has_six_significant_digits_and_json_every_digit() {
     assert_eq!(mu, exact);
 }
 
-/// The instruments' files (`$KEF_TOPOGRAPHIES`, else `../shared/topographies`
-/// beside the repository), if present.
-fn instrument(name: &str) -> Option<String> {
-    let dir = std::env::var_os("KEF_TOPOGRAPHIES")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/topographies"));
-    let path = dir.join(name);
-    if path.exists() {
-        Some(path.display().to_string())
-    } else {
-        println!("skipped: {} is absent (set KEF_TOPOGRAPHIES)", path.display());
-        None
-    }
+/// Steel on steel ([`crate::cli_tools::SI`] without the roughness, which
+/// the surface gives) and a contact area.
+fn steel() -> Vec<&'static str> {
+    let roughness = ["--sigma", "--radius", "--density"];
+    let mut args: Vec<&str> = crate::cli_tools::SI
+        .chunks(2)
+        .filter(|pair| !roughness.contains(&pair[0]))
+        .flatten()
+        .copied()
+        .collect();
+    args.extend(["--area", "1e-5"]);
+    args
 }
-
-const STEEL: &[&str] = &[
-    "--e1",
-    "200e9",
-    "--nu1",
-    "0.3",
-    "--e2",
-    "200e9",
-    "--nu2",
-    "0.3",
-    "--hardness",
-    "2e9",
-    "--delta-gamma",
-    "0.3",
-    "--epsilon",
-    "0.4e-9",
-    "--area",
-    "1e-5",
-];
 
 /// Issue 48: the validity domain on di-1, spikes on sur-2 (whose default
 /// is the empirical density: Pearson refuses its skewness), the tail of
 /// plu-1's Pearson density at 0.01 N; on stderr and in --json.
 #[test]
 fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
+    let instrument = |name| crate::common::instrument_file(name).map(|p| p.display().to_string());
     let run = |file: &str, extra: &[&str]| {
         let mut args = vec!["surface", file];
-        args.extend(STEEL);
+        args.extend(steel());
         args.extend(extra);
         let o = crate::support::kefric(&args);
         assert!(o.status.success(), "{args:?}: {}", crate::support::stderr(&o));
@@ -401,7 +362,7 @@ fn validity_spikes_and_tail_warnings_on_the_instruments_files() {
             "--distribution",
             "pearson",
         ];
-        args.extend(STEEL);
+        args.extend(steel());
         let o = crate::support::kefric(&args);
         let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
         let tail = v["warnings"]

@@ -2,7 +2,7 @@
 //! curve and error-map subcommands on the embedded table, SVG output, and
 //! bad input (exit 2, one line naming the flag).
 use crate::common::TempDir;
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, stderr};
 use std::path::Path;
 
 /// Every image is 2000 × 1500 pixels by default (`ke_friction::figures::SIZE`:
@@ -162,16 +162,16 @@ fn bad_input_exits_2_with_one_line_naming_the_flag() {
     let dir = TempDir::new("bad");
     let o = kefric(&["plot", "fig3", "--out", &dir.arg("fig3.jpg")]);
     assert_bad_input(&o, "--out");
-    assert!(stderr(&o).contains(".png or .svg"), "{}", stderr(&o));
+    assert_stderr_has(&o, ".png or .svg");
     assert!(!dir.join("fig3.jpg").exists());
     let o = kefric(&["plot", "fig3", "--out", &dir.arg("missing/fig3.png")]);
     assert_bad_input(&o, "--out");
-    assert!(stderr(&o).contains("does not exist"), "{}", stderr(&o));
+    assert_stderr_has(&o, "does not exist");
     let elsewhere = TempDir::new("bad-out-dir");
     std::fs::write(elsewhere.join("a_file"), b"x").unwrap();
     let o = kefric(&["plot", "all", "--out-dir", &elsewhere.arg("a_file")]);
     assert_bad_input(&o, "--out-dir");
-    assert!(stderr(&o).contains("is not a directory"), "{}", stderr(&o));
+    assert_stderr_has(&o, "is not a directory");
     let (c_png, e_png, none) = (dir.arg("c.png"), dir.arg("e.png"), dir.arg("none.kft"));
     let cases: [(&[&str], &str); 5] = [
         (
@@ -207,7 +207,7 @@ fn table_error_help_states_the_default_and_the_tables_ranges() {
         "[default: 0.003]",
         "θ range (the embedded table's: 0 to 0.01)",
         "ψ 0.5 to 8, F* 1e-5 to 0.1",
-        "N is 1, 2 or 3 [default: 2]",
+        "N (a whole number from 1 to 3) [default: 2]",
     ] {
         assert!(help.contains(text), "{text:?} not in {help}");
     }

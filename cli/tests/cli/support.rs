@@ -66,3 +66,37 @@ pub fn assert_bad_input(o: &std::process::Output, needle: &str) {
         panic!("{why}");
     }
 }
+
+/// Asserts that the run's stderr contains `text` (and shows it if not).
+#[track_caller]
+pub fn assert_stderr_has(o: &std::process::Output, text: &str) {
+    let e = stderr(o);
+    assert!(e.contains(text), "{text:?} not in stderr: {e}");
+}
+
+/// Runs `kefric` with `feed` writing its stdin (on a thread of its own,
+/// so that a program that stops reading cannot block the test).
+pub fn kefric_fed(args: &[&str], feed: impl FnOnce(std::process::ChildStdin) + Send + 'static) -> std::process::Output {
+    use std::process::Stdio;
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kefric"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("kefric runs");
+    let stdin = child.stdin.take().expect("a piped stdin");
+    let writer = std::thread::spawn(move || feed(stdin));
+    let o = child.wait_with_output().expect("kefric ends");
+    writer.join().expect("the writer ends");
+    o
+}
+
+/// Runs `kefric` with `input` on its stdin.
+pub fn kefric_stdin(args: &[&str], input: &[u8]) -> std::process::Output {
+    use std::io::Write;
+    let input = input.to_vec();
+    kefric_fed(args, move |mut stdin| {
+        let _ = stdin.write_all(&input);
+    })
+}

@@ -3,9 +3,9 @@
 
 use crate::common::TempDir;
 use crate::forge::{crafted, Spec};
-use crate::support::{assert_bad_input, kefric, stderr};
+use crate::support::{assert_bad_input, assert_stderr_has, kefric, kefric_fed, stderr};
 use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
 /// Runs kefric with stdout sent to /dev/full.
 fn to_full(args: &[&str]) -> std::process::Output {
@@ -93,7 +93,7 @@ fn text_from_a_table_is_printed_escaped() {
 fn special_files_are_refused_as_outputs_and_symlinks_followed() {
     let o = kefric(&["export", "--npz", "/dev/full", "--quiet"]);
     assert_bad_input(&o, "--npz");
-    assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
+    assert_stderr_has(&o, "not a regular file");
     let tmp = TempDir::new("links");
     std::fs::write(tmp.join("real.npz"), b"old").unwrap();
     std::os::unix::fs::symlink("real.npz", tmp.join("link.npz")).unwrap();
@@ -117,16 +117,8 @@ fn special_files_are_refused_as_outputs_and_symlinks_followed() {
 fn unbounded_inputs_end_with_an_error() {
     let o = kefric(&["info", "--table", "/dev/urandom"]);
     assert_bad_input(&o, "--table");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_kefric"))
-        .args(["lookup", "--csv"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut stdin = child.stdin.take().unwrap();
     // A 3 MiB line; the program stops reading after 1 MiB.
-    let writer = std::thread::spawn(move || {
+    let o = kefric_fed(&["lookup", "--csv"], |mut stdin| {
         let chunk = vec![b'1'; 1 << 16];
         for _ in 0..48 {
             if stdin.write_all(&chunk).is_err() {
@@ -134,14 +126,8 @@ fn unbounded_inputs_end_with_an_error() {
             }
         }
     });
-    let o = child.wait_with_output().unwrap();
-    writer.join().unwrap();
     assert_eq!(o.status.code(), Some(2));
-    assert!(
-        stderr(&o).contains("--csv: line 1: longer than 1048576 bytes"),
-        "{}",
-        stderr(&o)
-    );
+    assert_stderr_has(&o, "--csv: line 1: longer than 1048576 bytes");
 }
 
 #[test]

@@ -1,13 +1,26 @@
 //! The model constants handle: defaults, setters checked at once, names,
 //! and the `_with` functions that take it.
 
-use super::last_error;
+use super::{assert_failed, assert_says, last_error, refused};
 use kefriction::*;
 use std::ffi::{CStr, CString};
 use std::ptr::{null, null_mut};
 
 /// μ by the core itself at ψ = 1, θ = 0.001 with `constants`, for the C
 /// calls to match.
+/// kef_model_mu_with of `constants` (NULL: the defaults) at ψ = 1,
+/// θ = 0.001 and `f_star`, which must answer.
+///
+/// # Safety
+/// `constants` is a live handle or NULL.
+unsafe fn mu_at(constants: *const kef_constants, f_star: f64) -> f64 {
+    let mut mu = f64::NAN;
+    // SAFETY: by the contract, and a local double.
+    let code = unsafe { kef_model_mu_with(constants, 1.0, 0.001, f_star, &mut mu) };
+    assert_eq!(code, KEF_OK, "{}", last_error());
+    mu
+}
+
 fn core_mu(constants: ke_friction::Constants, f_star: f64) -> f64 {
     let params = constants.at(1.0, 0.001).unwrap();
     ke_friction::Model::new(params)
@@ -51,13 +64,11 @@ fn the_handle_round_trips_and_changes_the_model() {
 
         assert_eq!(kef_constants_set_fit(c, fit.as_ptr()), KEF_OK);
         assert_eq!(name(kef_constants_fit(c)), "as-printed");
-        let mut printed = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, &mut printed), KEF_OK);
+        let printed = mu_at(c, 0.01);
         assert_ne!(printed, base);
         assert_eq!(kef_constants_set_model(c, ceb.as_ptr()), KEF_OK);
         assert_eq!(name(kef_constants_model(c)), "ceb");
-        let mut ceb_mu = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, &mut ceb_mu), KEF_OK);
+        let ceb_mu = mu_at(c, 0.01);
         assert_ne!(ceb_mu, base);
         let expected = core_mu(
             ke_friction::Constants::default()
@@ -97,19 +108,19 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
     let bad = CString::new("AsPrinted").unwrap();
     // SAFETY: a live handle or NULL, C strings.
     unsafe {
-        assert_eq!(kef_constants_set_beta(c, 0.01), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("beta = 0.01 is out of range"),
-            "{}",
-            last_error()
+        assert_failed(
+            kef_constants_set_beta(c, 0.01),
+            KEF_ERR_DOMAIN,
+            "beta = 0.01 is out of range",
         );
         assert_eq!(kef_constants_beta(c), 0.04);
-        assert_eq!(kef_constants_set_beta(c, f64::NAN), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("beta = NaN"), "{}", last_error());
-        assert_eq!(kef_constants_set_nu(c, 0.5), KEF_ERR_DOMAIN);
-        assert!(last_error().starts_with("nu = 0.5"), "{}", last_error());
-        assert_eq!(kef_constants_set_eps_star(c, f64::INFINITY), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("eps_star = inf"), "{}", last_error());
+        assert_failed(kef_constants_set_beta(c, f64::NAN), KEF_ERR_ARGUMENT, "beta = NaN");
+        assert_failed(kef_constants_set_nu(c, 0.5), KEF_ERR_DOMAIN, "nu = 0.5");
+        assert_failed(
+            kef_constants_set_eps_star(c, f64::INFINITY),
+            KEF_ERR_ARGUMENT,
+            "eps_star = inf",
+        );
         assert_eq!(kef_constants_eps_star(c), 0.004);
 
         assert_eq!(kef_constants_set_fit(c, bad.as_ptr()), KEF_ERR_ARGUMENT);
@@ -125,15 +136,16 @@ fn setters_check_at_once_and_keep_the_handle_on_failure() {
             last_error(),
             format!("model 'AsPrinted' is unknown: must be one of {laws}")
         );
-        assert_eq!(kef_constants_set_model(c, null()), KEF_ERR_ARGUMENT);
-        assert_eq!(last_error(), "name is NULL");
-        assert_eq!(kef_constants_set_beta(null_mut(), 0.05), KEF_ERR_ARGUMENT);
-        assert_eq!(last_error(), "constants is NULL");
+        refused(kef_constants_set_model(c, null()), "name is NULL");
+        refused(kef_constants_set_beta(null_mut(), 0.05), "constants is NULL");
 
         // Parameter errors of the _with functions.
         let mut mu = 7.0;
-        assert_eq!(kef_model_mu_with(c, -1.0, 0.001, 0.01, &mut mu), KEF_ERR_DOMAIN);
-        assert!(last_error().starts_with("psi = -1 is out of range"), "{}", last_error());
+        assert_failed(
+            kef_model_mu_with(c, -1.0, 0.001, 0.01, &mut mu),
+            KEF_ERR_DOMAIN,
+            "psi = -1 is out of range",
+        );
         assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 0.01, null_mut()), KEF_ERR_ARGUMENT);
         assert_eq!(mu, 7.0);
         // No positive μ in the range (the printed fit at ψ = 4): NULL with
@@ -171,8 +183,7 @@ fn the_heights_distribution_reaches_the_model() {
     unsafe {
         assert_eq!(distribution_of(c), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
         assert_eq!(distribution_of(null()), (KEF_DIST_GAUSSIAN, 0.0, 3.0));
-        let mut gauss = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut gauss), KEF_OK);
+        let gauss = mu_at(c, 1e-4);
         assert!((gauss - 0.7567111956).abs() < 1e-9, "{gauss}");
 
         // Pearson(0, 8) and Pearson(-0.5, 3.375): the reference values.
@@ -184,13 +195,7 @@ fn the_heights_distribution_reaches_the_model() {
                 last_error()
             );
             assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, sk, k));
-            let mut mu = 0.0;
-            assert_eq!(
-                kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
-                KEF_OK,
-                "{}",
-                last_error()
-            );
+            let mu = mu_at(c, 1e-4);
             assert!((mu - want).abs() < 1e-9, "Pearson({sk}, {k}): {mu}");
             // A curve of the same constants agrees.
             let curve = kef_curve_from_model_with(c, 1.0, 0.001, 1e-5, 1e-3);
@@ -202,8 +207,7 @@ fn the_heights_distribution_reaches_the_model() {
         }
         // Pearson(0, 3) is the Gaussian, to the bit.
         assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 3.0), KEF_OK);
-        let mut normal = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut normal), KEF_OK);
+        let normal = mu_at(c, 1e-4);
         assert_eq!(normal, gauss);
 
         // Weibull: the kurtosis argument is ignored; the getter gives the
@@ -221,8 +225,7 @@ fn the_heights_distribution_reaches_the_model() {
             ke_friction::Constants::default().distribution(ke_friction::HeightDistribution::weibull(0.0).unwrap()),
             1e-4,
         );
-        let mut weibull = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut weibull), KEF_OK);
+        let weibull = mu_at(c, 1e-4);
         assert_eq!(weibull, expected);
 
         // The Gaussian ignores both numbers.
@@ -242,33 +245,21 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
     unsafe {
         assert_eq!(kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 8.0), KEF_OK);
         // K <= Sk² + 1: the Pearson bound.
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.5, 1.2),
-            KEF_ERR_DOMAIN
-        );
-        assert!(
-            last_error().starts_with("kurtosis = 1.2 is out of range: must be > skewness² + 1"),
-            "{}",
-            last_error()
+            KEF_ERR_DOMAIN,
+            "kurtosis = 1.2 is out of range: must be > skewness² + 1",
         );
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 6.0, 50.0),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "skewness = 6 is out of range: must be in [-5, 5]",
         );
-        assert!(
-            last_error().starts_with("skewness = 6 is out of range: must be in [-5, 5]"),
-            "{}",
-            last_error()
-        );
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, 0.0, 101.0),
-            KEF_ERR_DOMAIN
-        );
-        assert!(
-            last_error().starts_with("kurtosis = 101 is out of range: must be <= 100"),
-            "{}",
-            last_error()
+            KEF_ERR_DOMAIN,
+            "kurtosis = 101 is out of range: must be <= 100",
         );
         // An unknown code, and the empirical family's, which its heights set.
         assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
@@ -295,42 +286,38 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
             "family 3 (KEF_DIST_EMPIRICAL) is set by kef_constants_set_heights"
         );
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_PEARSON, f64::NAN, 3.0),
-            KEF_ERR_ARGUMENT
+            KEF_ERR_ARGUMENT,
+            "skewness = NaN",
         );
-        assert!(last_error().starts_with("skewness = NaN"), "{}", last_error());
-        assert_eq!(
+        assert_failed(
             kef_constants_set_distribution(c, KEF_DIST_WEIBULL, 2.5, 0.0),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "skewness = 2.5 is out of range: must be in (-1.1395, 2]",
         );
-        assert!(
-            last_error().starts_with("skewness = 2.5 is out of range: must be in (-1.1395, 2]"),
-            "{}",
-            last_error()
+        assert_failed(
+            kef_constants_set_distribution(c, 7, 0.0, 3.0),
+            KEF_ERR_ARGUMENT,
+            "family 7 is unknown",
         );
-        assert_eq!(kef_constants_set_distribution(c, 7, 0.0, 3.0), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("family 7 is unknown"), "{}", last_error());
         assert_eq!(
             kef_constants_set_distribution(c, KEF_DIST_EMPIRICAL, 0.0, 3.0),
             KEF_ERR_ARGUMENT
         );
         assert!(last_error().contains("kef_constants_set_heights"), "{}", last_error());
-        assert_eq!(
+        refused(
             kef_constants_set_distribution(null_mut(), KEF_DIST_PEARSON, 0.0, 8.0),
-            KEF_ERR_ARGUMENT
+            "constants is NULL",
         );
-        assert_eq!(last_error(), "constants is NULL");
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
 
         // Heights: NULL with n > 0, too few, constant, infinite.
-        assert_eq!(kef_constants_set_heights(c, null(), 200), KEF_ERR_ARGUMENT);
-        assert_eq!(last_error(), "heights is NULL");
-        assert_eq!(kef_constants_set_heights(c, null(), 0), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with("heights = 0 is out of range"),
-            "{}",
-            last_error()
+        refused(kef_constants_set_heights(c, null(), 200), "heights is NULL");
+        assert_failed(
+            kef_constants_set_heights(c, null(), 0),
+            KEF_ERR_DOMAIN,
+            "heights = 0 is out of range",
         );
         let few: Vec<f64> = (0..99).map(f64::from).collect();
         assert_eq!(kef_constants_set_heights(c, few.as_ptr(), few.len()), KEF_ERR_DOMAIN);
@@ -340,17 +327,19 @@ fn a_bad_distribution_is_refused_with_its_bound_and_the_handle_kept() {
         assert!(last_error().contains("constant"), "{}", last_error());
         let mut inf: Vec<f64> = (0..500).map(|i| f64::from(i).sin()).collect();
         inf[7] = f64::INFINITY;
-        assert_eq!(kef_constants_set_heights(c, inf.as_ptr(), inf.len()), KEF_ERR_ARGUMENT);
-        assert!(last_error().starts_with("heights = inf"), "{}", last_error());
+        assert_failed(
+            kef_constants_set_heights(c, inf.as_ptr(), inf.len()),
+            KEF_ERR_ARGUMENT,
+            "heights = inf",
+        );
         assert_eq!(distribution_of(c), (KEF_DIST_PEARSON, 0.5, 8.0));
 
         // NULL outputs of the getter.
         let (mut family, mut sk) = (-9, 0.0);
-        assert_eq!(
+        refused(
             kef_constants_distribution(c, &mut family, &mut sk, null_mut()),
-            KEF_ERR_ARGUMENT
+            "kurtosis is NULL",
         );
-        assert_eq!(last_error(), "kurtosis is NULL");
         assert_eq!(family, -9);
         kef_constants_free(c);
     }
@@ -384,18 +373,11 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
         let (family, sk, k) = distribution_of(c);
         assert_eq!((family, sk, k), (KEF_DIST_EMPIRICAL, want.skewness(), want.kurtosis()));
         assert!(sk > 1.0, "{sk}");
-        let mut mu = 0.0;
-        assert_eq!(
-            kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut mu),
-            KEF_OK,
-            "{}",
-            last_error()
-        );
+        let mu = mu_at(c, 1e-4);
         // Changing (and dropping) the caller's array changes nothing.
         heights.iter_mut().for_each(|h| *h = 0.0);
         drop(heights);
-        let mut again = 0.0;
-        assert_eq!(kef_model_mu_with(c, 1.0, 0.001, 1e-4, &mut again), KEF_OK);
+        let again = mu_at(c, 1e-4);
         assert_eq!(again, mu);
         let expected = core_mu(ke_friction::Constants::default().distribution(want), 1e-4);
         assert_eq!(mu, expected);
@@ -409,10 +391,9 @@ fn measured_heights_give_an_empirical_density_and_are_copied() {
 /// and answers kef_table_mu's value for the table's own constants.
 #[test]
 fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
-    let t = kef_table_default();
+    let (t, c) = (kef_table_default(), kef_constants_new());
     // SAFETY: live handles, local doubles and arrays of the length given.
     unsafe {
-        let c = kef_constants_new();
         let (mut plain, mut checked) = (0.0, 0.0);
         assert_eq!(kef_table_mu(t, 1.0, 0.001, 2e-4, &mut plain), KEF_OK);
         assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut checked), KEF_OK);
@@ -423,19 +404,12 @@ fn a_lookup_with_the_constants_refuses_a_table_built_for_others() {
         let mut out = 42.0;
         assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
         assert_eq!(out, 42.0);
-        assert!(
-            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.117, but the table holds beta = 0.04");
         assert_eq!(kef_constants_set_beta(c, 0.04), KEF_OK);
-        assert_eq!(kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out), KEF_ERR_DOMAIN);
-        assert!(
-            last_error().starts_with(
-                "distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian"
-            ),
-            "{}",
-            last_error()
+        assert_failed(
+            kef_table_mu_with(t, c, 1.0, 0.001, 2e-4, &mut out),
+            KEF_ERR_DOMAIN,
+            "distribution = pearson (skewness 0.3, kurtosis 3.5), but the table holds distribution = gaussian",
         );
         let (psi, theta, f) = ([1.0, 2.0], [0.001, 0.002], [1e-3, 1e-2]);
         let mut mu = [7.0; 2];
@@ -509,10 +483,9 @@ fn a_distribution_is_chosen_by_its_record_name_as_by_its_code() {
 /// message naming β and both values.
 #[test]
 fn a_curve_from_a_table_with_the_constants_refuses_other_constants() {
-    let t = kef_table_default();
+    let (t, c) = (kef_table_default(), kef_constants_new());
     // SAFETY: live handles and local doubles.
     unsafe {
-        let c = kef_constants_new();
         let plain = kef_curve_from_table(t, 1.0, 0.001);
         for constants in [c as *const kef_constants, null()] {
             let checked = kef_curve_from_table_with(t, constants, 1.0, 0.001);
@@ -527,11 +500,7 @@ fn a_curve_from_a_table_with_the_constants_refuses_other_constants() {
         }
         assert_eq!(kef_constants_set_beta(c, 0.117), KEF_OK);
         assert!(kef_curve_from_table_with(t, c, 1.0, 0.001).is_null());
-        assert!(
-            last_error().starts_with("beta = 0.117, but the table holds beta = 0.04"),
-            "{}",
-            last_error()
-        );
+        assert_says("beta = 0.117, but the table holds beta = 0.04");
         kef_curve_free(plain);
         kef_constants_free(c);
     }

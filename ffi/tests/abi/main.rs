@@ -21,6 +21,30 @@ fn last_error() -> String {
         .to_string()
 }
 
+/// Asserts that a call answered `code` = KEF_ERR_ARGUMENT with the
+/// message `message` (kef_last_error).
+#[track_caller]
+fn refused(code: std::ffi::c_int, message: &str) {
+    assert_eq!(code, KEF_ERR_ARGUMENT);
+    assert_eq!(last_error(), message);
+}
+
+/// Asserts that a call answered `code` = `want` with a message starting
+/// with `start` (kef_last_error).
+#[track_caller]
+fn assert_failed(code: std::ffi::c_int, want: std::ffi::c_int, start: &str) {
+    assert_eq!(code, want);
+    let message = last_error();
+    assert!(message.starts_with(start), "{message}");
+}
+
+/// Asserts that the last error's message starts with `start`.
+#[track_caller]
+fn assert_says(start: &str) {
+    let message = last_error();
+    assert!(message.starts_with(start), "{message}");
+}
+
 /// A scratch directory under the target directory.
 fn scratch(name: &str) -> std::path::PathBuf {
     let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("ffi-{name}-{}", std::process::id()));
@@ -170,11 +194,11 @@ fn batches_name_the_first_bad_element_and_write_nothing_from_it() {
     let mut mu = [-1.0; 6];
     // SAFETY: slices of length 6 (or fewer, as n says); NULL only for n = 0.
     unsafe {
-        assert_eq!(
+        assert_failed(
             kef_table_mu_batch(t, 6, psi.as_ptr(), theta.as_ptr(), f.as_ptr(), mu.as_mut_ptr()),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "batch element 3: psi = 9",
         );
-        assert!(last_error().starts_with("batch element 3: psi = 9"), "{}", last_error());
         let table = ke_friction::Table::embedded();
         for i in 0..3 {
             assert_eq!(mu[i], table.mu(psi[i], theta[i], f[i]).unwrap());
@@ -197,14 +221,10 @@ fn batches_name_the_first_bad_element_and_write_nothing_from_it() {
         assert!(!c.is_null());
         let loads = [1e-4, 1e-3, f64::NAN, 1e-2];
         let mut out = [-1.0; 4];
-        assert_eq!(
+        assert_failed(
             kef_curve_mu_batch(c, 4, loads.as_ptr(), out.as_mut_ptr()),
-            KEF_ERR_ARGUMENT
-        );
-        assert!(
-            last_error().starts_with("batch element 2: f_star = NaN"),
-            "{}",
-            last_error()
+            KEF_ERR_ARGUMENT,
+            "batch element 2: f_star = NaN",
         );
         assert!(out[0] > 0.0 && out[1] > 0.0 && out[2] == -1.0 && out[3] == -1.0);
         assert_eq!(kef_curve_mu_batch(c, 2, loads.as_ptr(), out.as_mut_ptr()), KEF_OK);
@@ -254,7 +274,7 @@ fn curves_from_tables_and_from_the_model() {
         assert!((mu / 0.52521087083 - 1.0).abs() < 1e-6, "{mu}");
         kef_curve_free(m);
         assert!(kef_curve_from_model(-1.0, 0.001, 0.04, 0.3, 0.004, 1e-4, 1e-2).is_null());
-        assert!(last_error().starts_with("psi = -1 is out of range"), "{}", last_error());
+        assert_says("psi = -1 is out of range");
         assert!(kef_curve_from_model(1.0, 0.001, 0.04, 0.3, 0.004, 1e-2, 1e-4).is_null());
         assert!(last_error().contains("f_star_min < f_star_max"), "{}", last_error());
         assert!(kef_curve_from_model(1.0, 0.001, 0.04, 0.3, 0.004, f64::NAN, 1e-2).is_null());
@@ -281,20 +301,16 @@ fn the_model_by_direct_integration() {
             assert_eq!(out, 3.0);
             assert!(last_error().contains("f_star"), "{}", last_error());
         }
-        assert_eq!(
+        assert_failed(
             kef_model_mu(1.0, 0.001, 0.01, 0.3, 0.004, 0.01, &mut out),
-            KEF_ERR_DOMAIN
+            KEF_ERR_DOMAIN,
+            "beta = 0.01 is out of range",
         );
-        assert!(
-            last_error().starts_with("beta = 0.01 is out of range"),
-            "{}",
-            last_error()
-        );
-        assert_eq!(
+        assert_failed(
             kef_model_mu(1.0, 0.001, f64::NAN, 0.3, 0.004, 0.01, &mut out),
-            KEF_ERR_ARGUMENT
+            KEF_ERR_ARGUMENT,
+            "beta = NaN",
         );
-        assert!(last_error().starts_with("beta = NaN"), "{}", last_error());
         assert_eq!(
             kef_model_mu(1.0, 0.001, 0.04, 0.3, 0.004, 0.01, null_mut()),
             KEF_ERR_ARGUMENT

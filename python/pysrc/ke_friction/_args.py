@@ -31,9 +31,32 @@ def _is_scalar(x: Any) -> bool:
     return isinstance(x, numbers.Real) and not isinstance(x, (bool, np.bool_))
 
 
+def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
+    """``value`` if it is one of the strings ``allowed``; else TypeError
+    (not a str) or ValueError naming argument ``name``, worded as the
+    core's unknown name (``ke_friction::NameError``)."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a str, not {type(value).__name__}")
+    if value not in allowed:
+        raise ValueError(f"{name} '{value[:40]}' is unknown: must be one of " + ", ".join(allowed))
+    return value
+
+
+def _scalar(call: Any, args: Tuple[float, ...], nan: bool, width: int = 1) -> Any:
+    """``call(*args)`` of scalars (the core's ``*_scalar``); where the core
+    refuses them (ValueError), NaN (``width`` of them) with ``nan``, else
+    the error."""
+    try:
+        return call(*args)
+    except ValueError:
+        if nan:
+            return float("nan") if width == 1 else (float("nan"),) * width
+        raise
+
+
 def _mode(out_of_domain: str) -> bool:
     if out_of_domain not in _MODES:
-        raise ValueError(f'out_of_domain = {out_of_domain!r}: must be "raise" or "nan"')
+        _choice("out_of_domain", out_of_domain, _MODES)
     return out_of_domain == "nan"
 
 

@@ -6,7 +6,7 @@
 # bad element's error, mapped from the library's error kind (ValueError,
 # OSError, TableError, RuntimeError for a bug), with the element's flat
 # index as the exception's attribute `index`.
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 import numpy.typing as npt
@@ -37,6 +37,12 @@ OUT_OF_RANGE: list[str]
 LAW_F_STAR_RANGE: Tuple[float, float]
 # The default tolerance of a law's solver-ready table.
 LAW_TABLE_TOLERANCE: float
+# The most rows a scan has (ke_friction::topography::SCAN_ROWS_MAX).
+SCAN_ROWS_MAX: int
+# Every checked range in words, by name (ke_friction::bounds::ALL).
+RANGES: Dict[str, str]
+# Whether value is in the core's range name (a key of RANGES).
+def in_range(name: str, value: float) -> bool: ...
 # The library's default model constants (Constants::default()): beta, nu,
 # eps_star, fit, model, distribution, skewness, kurtosis.
 DEFAULTS: Dict[str, Any]
@@ -255,6 +261,7 @@ def contact_warnings(rows: _F64) -> List[Dict[str, Any]]: ...
 # The names of the warnings' kinds.
 WARNING_KINDS: List[str]
 
-# The library's Params record of SI inputs (as `kefric params --json` prints it).
-def params_from_physical(e1: float, nu1: float, e2: float, nu2: float, hardness: float, sigma: float,
-                         radius: float, density: float, delta_gamma: float, epsilon: float) -> Dict[str, Any]: ...
+# The library's Params record of SI inputs (as `kefric params --json` prints it):
+# the materials in MATERIALS' order on a surface of roughness sigma, radius, density.
+def params_from_physical(materials: Sequence[float], sigma: float, radius: float,
+                         density: float) -> Dict[str, Any]: ...

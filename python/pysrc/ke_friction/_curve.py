@@ -7,7 +7,7 @@ from typing import Any, Optional, Tuple, overload
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
+from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _scalar, _threads
 from ._errors import _located
 from ._model import Model
 
@@ -89,12 +89,7 @@ class Curve:
             return self._core.mu_scalar(f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(f_star):
-            try:
-                return self._core.mu_scalar(float(f_star))
-            except ValueError:
-                if nan:
-                    return float("nan")
-                raise
+            return _scalar(self._core.mu_scalar, (float(f_star),), nan)
         workers = _threads(threads)
         shape, (f,) = _arrays(("f_star",), (f_star,))
         out = np.empty(f.size)
@@ -118,12 +113,7 @@ class Curve:
             return self._core.mu_with_slope_scalar(f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(f_star):
-            try:
-                return self._core.mu_with_slope_scalar(float(f_star))
-            except ValueError:
-                if nan:
-                    return (float("nan"), float("nan"))
-                raise
+            return _scalar(self._core.mu_with_slope_scalar, (float(f_star),), nan, 2)
         workers = _threads(threads)
         shape, (f,) = _arrays(("f_star",), (f_star,))
         mu, slope = np.empty(f.size), np.empty(f.size)

@@ -8,7 +8,8 @@ from typing import Any, Dict, Literal, Optional, Tuple, Union, overload
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
+from ._args import (ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _choice, _is_scalar, _mode, _scalar,
+                    _threads)
 from ._errors import _located
 from ._model import Model
 
@@ -84,10 +85,7 @@ class FrictionLaw:
                 raise TypeError("pressure_range must be a pair (p_min, p_max) of pressures in Pa, or None") from None
             _check_real(p_min=lo, p_max=hi)
             lo, hi = float(lo), float(hi)
-        if not isinstance(out_of_range, str):
-            raise TypeError(f"out_of_range must be a str, not {type(out_of_range).__name__}")
-        if out_of_range not in _POLICIES:
-            raise ValueError(f"out_of_range = {out_of_range!r}: must be " + " or ".join(map(repr, _POLICIES)))
+        _choice("out_of_range", out_of_range, _POLICIES)
         self._core = _core.FrictionLawCore(model._core, float(hardness), lo, hi, out_of_range)
         self._model = model
 
@@ -193,12 +191,7 @@ class FrictionLaw:
             return np.ma.masked_array(self.mu(data, out_of_domain=out_of_domain, threads=threads), mask=mask)
         nan = _mode(out_of_domain)
         if _is_scalar(pressure):
-            try:
-                return self._core.mu_scalar(float(pressure))
-            except ValueError:
-                if nan:
-                    return float("nan")
-                raise
+            return _scalar(self._core.mu_scalar, (float(pressure),), nan)
         workers = _threads(threads)
         shape, (p,) = _arrays(("pressure",), (pressure,))
         out = np.empty(p.size)
@@ -229,12 +222,7 @@ class FrictionLaw:
             return np.ma.masked_array(mu, mask=mask), np.ma.masked_array(dmu, mask=mask.copy())
         nan = _mode(out_of_domain)
         if _is_scalar(pressure):
-            try:
-                return self._core.mu_and_derivative_scalar(float(pressure))
-            except ValueError:
-                if nan:
-                    return (float("nan"), float("nan"))
-                raise
+            return _scalar(self._core.mu_and_derivative_scalar, (float(pressure),), nan, 2)
         workers = _threads(threads)
         shape, (p,) = _arrays(("pressure",), (pressure,))
         mu, dmu = np.empty(p.size), np.empty(p.size)

@@ -211,4 +211,5 @@ def params_from_physical(*, e1: float, nu1: float, e2: float, nu2: float, hardne
     values = dict(e1=e1, nu1=nu1, e2=e2, nu2=nu2, hardness=hardness, sigma=sigma, radius=radius,
                   density=density, delta_gamma=delta_gamma, epsilon=epsilon)
     _check_real(**values)
-    return _core.params_from_physical(**{k: float(v) for k, v in values.items()})
+    return _core.params_from_physical([float(values[k]) for k in _core.MATERIALS], float(sigma), float(radius),
+                                      float(density))

@@ -12,7 +12,7 @@ from typing import Any, Dict, List, Optional, Tuple, Union
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, _arrays, _check_real, _is_scalar
+from ._args import ArrayLike, _arrays, _check_real, _choice, _is_scalar
 from ._curve import Curve
 from ._distribution import HeightDistribution, _heights_array, _heights_of
 from ._errors import ModelWarning, _warn
@@ -44,16 +44,6 @@ class _Record(dict):  # type: ignore[type-arg]
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]:
         # A plain dict in a pickle: no private class to import to load it.
         return dict, (dict(self),)
-
-
-def _choice(name: str, value: Any, allowed: Tuple[str, ...]) -> str:
-    """``value`` if it is one of the strings ``allowed``; else TypeError
-    (not a str) or ValueError naming argument ``name``."""
-    if not isinstance(value, str):
-        raise TypeError(f"{name} must be a str, not {type(value).__name__}")
-    if value not in allowed:
-        raise ValueError(f"{name} = {value!r}: must be " + " or ".join(repr(a) for a in allowed))
-    return value
 
 
 def _unit(name: str, value: Any, number: bool = True) -> float:
@@ -702,9 +692,9 @@ class Surface:
         """The surface against the scale it is looked at (``kefric surface
         --scan``): the statistics at S-filter nesting indices lambda_s
         log-spaced from ``from_`` (default 2 max(dx, dy)) to ``to`` (default
-        a tenth of the scan size), ``per_decade`` a decade (1 to 100; at
-        most 1000 rows, ValueError beyond: 999/per_decade decades), the
-        other options (detrending, derivative, lambda_c) this surface's.
+        a tenth of the scan size), ``per_decade`` a decade
+        ({ranges[per_decade]}; at most {scan_rows_max} rows, ValueError
+        beyond: {scan_decades}/per_decade decades), the other options (detrending, derivative, lambda_c) this surface's.
         Each row equals ``filtered(lambda_s=...)`` at its lambda_s. With the
         seven materials keywords (all or none) also psi and theta of
         :meth:`model`, and with a load (as :meth:`friction`) mu. The
@@ -743,8 +733,8 @@ class Surface:
                 _choice("distribution", distribution, _FAMILIES)
         if isinstance(per_decade, bool) or not isinstance(per_decade, numbers.Integral):
             raise TypeError(f"per_decade must be an int, not {type(per_decade).__name__}")
-        if not 1 <= per_decade <= 100:
-            raise ValueError(f"per_decade = {per_decade}: must be 1 to 100 (values a decade)")
+        if not _core.in_range("per_decade", per_decade):
+            raise ValueError(f"per_decade = {per_decade} is out of range: must be {_core.RANGES['per_decade']}")
         f = _filters(None, None, tip_radius, resolution)
         cutoff, rows = self._core.scan(_length("from_", from_), _length("to", to), int(per_decade),
                                        f["tip_radius"], f["resolution"])
@@ -788,3 +778,9 @@ class Surface:
         band = "".join(f", {k}={s[k]!r}" for k in ("lambda_s", "lambda_c") if s[k] is not None)
         return f"Surface({pair}{shape}, sigma={s['sigma']!r}, detrend={self.detrend!r}, " \
             f"derivative={self.derivative!r}{band})"
+
+
+# The ranges in the docstring are the core's (`ke_friction::bounds`).
+if Surface.scan.__doc__:  # (None under python -OO)
+    Surface.scan.__doc__ = Surface.scan.__doc__.format(ranges=_core.RANGES, scan_rows_max=_core.SCAN_ROWS_MAX,
+                                                       scan_decades=_core.SCAN_ROWS_MAX - 1)

@@ -9,7 +9,7 @@ from typing import Any, Dict, Optional, Tuple, Union, overload
 import numpy as np
 
 from . import _core
-from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _threads
+from ._args import ArrayLike, FloatArray, OutOfDomain, _arrays, _check_real, _is_scalar, _mode, _scalar, _threads
 from ._curve import Curve
 from ._errors import _located
 from ._model import Model
@@ -157,12 +157,7 @@ class Table:
             return self._core.mu_scalar(psi, theta, f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
-            try:
-                return self._core.mu_scalar(float(psi), float(theta), float(f_star))
-            except ValueError:
-                if nan:
-                    return float("nan")
-                raise
+            return _scalar(self._core.mu_scalar, (float(psi), float(theta), float(f_star)), nan)
         workers = _threads(threads)
         shape, (p, t, f) = _arrays(_TABLE_ARGS, (psi, theta, f_star), scalars=True)
         out = np.empty(math.prod(shape))
@@ -218,12 +213,7 @@ class Table:
             return self._core.mu_with_slope_scalar(psi, theta, f_star)  # the fast path of a call in a loop
         nan = _mode(out_of_domain)
         if _is_scalar(psi) and _is_scalar(theta) and _is_scalar(f_star):
-            try:
-                return self._core.mu_with_slope_scalar(float(psi), float(theta), float(f_star))
-            except ValueError:
-                if nan:
-                    return (float("nan"), float("nan"))
-                raise
+            return _scalar(self._core.mu_with_slope_scalar, (float(psi), float(theta), float(f_star)), nan, 2)
         workers = _threads(threads)
         shape, (p, t, f) = _arrays(_TABLE_ARGS, (psi, theta, f_star), scalars=True)
         size = math.prod(shape)

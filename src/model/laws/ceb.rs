@@ -120,33 +120,9 @@ const VOLUME: LoadLaw = LoadLaw::Affine(1.5, 2.0, -1.0);
 /// The regimes above x = 1: one load law, the adhesion rows of the
 /// Kogut–Etsion regimes, no friction.
 const REGIMES: [Regime; 3] = [
-    Regime {
-        xa: X_ELASTIC,
-        xc: X_EP1,
-        coef: 1.0,
-        load: VOLUME,
-        adhesion: Some(1),
-        friction: None,
-        split: None,
-    },
-    Regime {
-        xa: X_EP1,
-        xc: X_PLASTIC,
-        coef: 1.0,
-        load: VOLUME,
-        adhesion: Some(2),
-        friction: None,
-        split: None,
-    },
-    Regime {
-        xa: X_PLASTIC,
-        xc: f64::INFINITY,
-        coef: 1.0,
-        load: VOLUME,
-        adhesion: None,
-        friction: None,
-        split: None,
-    },
+    Regime::plain(X_ELASTIC, X_EP1, 1.0, VOLUME, Some(1)),
+    Regime::plain(X_EP1, X_PLASTIC, 1.0, VOLUME, Some(2)),
+    Regime::plain(X_PLASTIC, f64::INFINITY, 1.0, VOLUME, None),
 ];
 
 /// The CEB-type law, planned for one Poisson's ratio.

@@ -69,24 +69,8 @@ impl KogutEtsion {
                 friction: Some(FrictionRow { coef: q_ep, to }),
                 split: Some(X0),
             },
-            Regime {
-                xa: X_EP1,
-                xc: X_PLASTIC,
-                coef: load::EP2.0,
-                load: LoadLaw::Power(load::EP2.1),
-                adhesion: Some(2),
-                friction: None,
-                split: None,
-            },
-            Regime {
-                xa: X_PLASTIC,
-                xc: f64::INFINITY,
-                coef: 3.0 / k,
-                load: LoadLaw::Linear,
-                adhesion: None,
-                friction: None,
-                split: None,
-            },
+            Regime::plain(X_EP1, X_PLASTIC, load::EP2.0, LoadLaw::Power(load::EP2.1), Some(2)),
+            Regime::plain(X_PLASTIC, f64::INFINITY, 3.0 / k, LoadLaw::Linear, None),
         ];
         KogutEtsion {
             regimes,

@@ -75,6 +75,22 @@ pub struct Regime {
     pub split: Option<f64>,
 }
 
+impl Regime {
+    /// A regime `[xa, xc]` of load `coef·load(x)` and contact adhesion row
+    /// `adhesion`, without a friction row (so with nothing to split at).
+    pub const fn plain(xa: f64, xc: f64, coef: f64, load: LoadLaw, adhesion: Option<usize>) -> Regime {
+        Regime {
+            xa,
+            xc,
+            coef,
+            load,
+            adhesion,
+            friction: None,
+            split: None,
+        }
+    }
+}
+
 /// A regime boundary `x` where the laws jump: the load below and above,
 /// and the contact adhesion row and its `x^b` below and above (row 0 with
 /// 0 for none). Planned once per law ([`jumps_of`]): general densities add
@@ -213,15 +229,7 @@ pub(crate) mod hertz {
         }
     }
 
-    const REGIMES: [Regime; 1] = [Regime {
-        xa: 1.0,
-        xc: f64::INFINITY,
-        coef: 1.0,
-        load: LoadLaw::Power(1.5),
-        adhesion: Some(0),
-        friction: None,
-        split: None,
-    }];
+    const REGIMES: [Regime; 1] = [Regime::plain(1.0, f64::INFINITY, 1.0, LoadLaw::Power(1.5), Some(0))];
 
     impl ContactLaw for Hertz {
         fn regimes(&self) -> &[Regime] {

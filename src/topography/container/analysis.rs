@@ -219,7 +219,7 @@ fn mu_of_moments(
         lambda_c: band.lambda_c,
     })?;
     let distribution = heights
-        .distribution(how.family.map(crate::Family::name))
+        .distribution(how.family)
         .map_err(|e| AnalysisError::Evaluate(EvaluateError::Distribution(e)))?;
     let physical = how
         .materials

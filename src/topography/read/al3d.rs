@@ -46,12 +46,7 @@ const INVALID_RELTOL: f64 = 1.5e-7;
 
 /// Reads an `.al3d` file of `len` bytes.
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
-    let mut bin = Binary {
-        cx,
-        source,
-        len,
-        format: FORMAT,
-    };
+    let mut bin = Binary::new(cx, source, len, FORMAT);
     let head = bin.block("the signature and first tags", 0, MAGIC.len() + 2 * TAG)?;
     if !head.starts_with(MAGIC) {
         return Err(bin.err("no AliconaImaging signature at the start"));
@@ -159,15 +154,8 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         height_unit: Some("m".to_string()),
         ..Metadata::default()
     };
-    Ok(cx
-        .make(
-            heights,
-            (nx as usize, ny as usize),
-            (Some(dx), Some(dy)),
-            options,
-            false,
-        )?
-        .with_metadata(metadata))
+    let shape = (nx as usize, ny as usize);
+    Ok(cx.make(heights, shape, (Some(dx), Some(dy)), options, false)?.with_metadata(metadata))
 }
 
 /// The key and value of the tag `raw` (the `i`-th), checked to end in CR LF.

@@ -21,6 +21,19 @@ pub(super) struct Binary<'c, 'p, 's> {
     pub format: &'static str,
 }
 
+impl<'c, 'p, 's> Binary<'c, 'p, 's> {
+    /// The file `source` of `len` bytes, of the format `format` (its
+    /// description, in errors).
+    pub fn new(cx: &'c Ctx<'p>, source: &'s mut dyn Source, len: u64, format: &'static str) -> Self {
+        Binary {
+            cx,
+            source,
+            len,
+            format,
+        }
+    }
+}
+
 impl Binary<'_, '_, '_> {
     /// A malformed file.
     pub fn err(&self, detail: impl Into<String>) -> ReadError {

@@ -5,7 +5,9 @@
 
 use std::io::{Read, SeekFrom};
 
-use super::{Ctx, ReadError, ReadOptions, Source, CHUNK};
+use super::binary::Binary;
+use super::{clip, Ctx, ReadError, ReadOptions, Source, CHUNK};
+use crate::topography::Topography;
 use crate::LengthUnit;
 
 /// The file's text header: its bytes from the start up to and including
@@ -78,6 +80,38 @@ impl Int {
             u64::from_le_bytes(b) as f64
         }
     }
+}
+
+/// The map of a scanning probe file's channel `index` (called `name`):
+/// its `nx` × `ny` integers at `offset` ([`grid`], the rows flipped), each
+/// `height(v)` metres, over the scan's `size` (m, x and y).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn channel_map(
+    bin: &mut Binary,
+    (index, name): (usize, &str),
+    offset: u64,
+    (nx, ny): (usize, usize),
+    int: Int,
+    size: (f64, f64),
+    options: &ReadOptions,
+    height: &dyn Fn(f64) -> f64,
+) -> Result<Topography, ReadError> {
+    let what = format!("channel {index} ({})", clip(name, 40));
+    let heights = grid(
+        bin.cx,
+        bin.source,
+        bin.len,
+        bin.format,
+        &what,
+        offset,
+        (nx, ny),
+        int,
+        true,
+        options,
+        height,
+    )?;
+    let (dx, dy) = (size.0 / nx as f64, size.1 / ny as f64);
+    bin.cx.make(heights, (nx, ny), (Some(dx), Some(dy)), options, false)
 }
 
 /// A grid of `nx × ny` integers stored row after row at `offset`: read

@@ -27,6 +27,7 @@
 
 use std::collections::HashMap;
 
+use super::binary::Binary;
 use super::instrument::{self, Int};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
@@ -326,21 +327,16 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         signed: true,
         big: false,
     };
-    let heights = instrument::grid(
-        cx,
-        source,
-        len,
-        DESCRIPTION,
-        &format!("channel {index} ({})", clip(&c.name, 40)),
+    let topography = instrument::channel_map(
+        &mut Binary::new(cx, source, len, DESCRIPTION),
+        (index, &c.name),
         c.offset,
         (c.nx, c.ny),
         int,
-        true,
+        (sx, sy),
         options,
         &|v| v * per_lsb * to_m,
     )?;
-    let (dx, dy) = (sx / c.nx as f64, sy / c.ny as f64);
-    let topography = cx.make(heights, (c.nx, c.ny), (Some(dx), Some(dy)), options, false)?;
     let name = equipment.get("microscope").or_else(|| equipment.get("description"));
     let instrument = match (name, version_text) {
         (Some(n), Some(v)) => format!("Bruker {n} (Nanoscope {v})"),

@@ -19,6 +19,7 @@
 
 use std::collections::{HashMap, HashSet};
 
+use super::binary::Binary;
 use super::instrument::{self, Int};
 use super::{clip, Ctx, Entry, ReadError, ReadOptions, Source};
 use crate::topography::{Metadata, Topography};
@@ -299,21 +300,16 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
             c.offset
         ))
     })?;
-    let heights = instrument::grid(
-        cx,
-        source,
-        len,
-        DESCRIPTION,
-        &format!("channel {index} ({})", clip(&c.name, 40)),
+    let topography = instrument::channel_map(
+        &mut Binary::new(cx, source, len, DESCRIPTION),
+        (index, &c.name),
         offset,
         (c.nx, c.ny),
         c.int,
-        true,
+        (sx, sy),
         options,
         &|v| (v + shift) * scale * to_m,
     )?;
-    let (dx, dy) = (sx / c.nx as f64, sy / c.ny as f64);
-    let topography = cx.make(heights, (c.nx, c.ny), (Some(dx), Some(dy)), options, false)?;
 
     let info = section("DataSet-Info");
     let mut instrument = "Nanosurf".to_string();

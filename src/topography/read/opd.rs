@@ -62,12 +62,7 @@ enum Value {
 
 /// Reads an `.opd` file of `len` bytes.
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
-    let mut bin = Binary {
-        cx,
-        source,
-        len,
-        format: FORMAT,
-    };
+    let mut bin = Binary::new(cx, source, len, FORMAT);
     let head = bin.block("the directory's entry", PRELUDE, ENTRY_SIZE as usize)?;
     let (name, _, length) = entry(&head);
     if name != "Directory" {

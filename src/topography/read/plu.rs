@@ -52,12 +52,7 @@ const HARDWARE: [&str; 12] = [
 
 /// Reads a `.plu` file of `len` bytes.
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
-    let mut bin = Binary {
-        cx,
-        source,
-        len,
-        format: FORMAT,
-    };
+    let mut bin = Binary::new(cx, source, len, FORMAT);
     let header = bin.block("the header", 0, HEADER)?;
     let mut f = Fields::new(&header);
     let date = f.text(128);
@@ -158,13 +153,6 @@ fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> R
         height_unit: Some("µm".to_string()),
         ..Metadata::default()
     };
-    Ok(cx
-        .make(
-            heights,
-            (nx as usize, ny as usize),
-            (Some(dx), Some(dy)),
-            options,
-            false,
-        )?
-        .with_metadata(metadata))
+    let shape = (nx as usize, ny as usize);
+    Ok(cx.make(heights, shape, (Some(dx), Some(dy)), options, false)?.with_metadata(metadata))
 }

@@ -31,12 +31,7 @@ const NON_MEASURED: i64 = -2;
 
 /// Reads a `.sur` file of `len` bytes.
 fn read(cx: &Ctx, source: &mut dyn Source, len: u64, options: &ReadOptions) -> Result<Topography, ReadError> {
-    let mut bin = Binary {
-        cx,
-        source,
-        len,
-        format: FORMAT,
-    };
+    let mut bin = Binary::new(cx, source, len, FORMAT);
     let header = bin.block("the header", 0, HEADER)?;
     if !header.starts_with(MAGIC) {
         return Err(bin.err("no DIGITAL SURF signature at the start"));

@@ -2,21 +2,10 @@
 
 use super::*;
 
+/// A 40 × 30 text map (a few incommensurate waves), shared with the web
+/// page's tests: `tests/data/text_map.txt`.
 fn map_text() -> Vec<u8> {
-    let mut text = String::new();
-    for j in 0..30 {
-        let row: Vec<String> = (0..40)
-            .map(|i| {
-                format!(
-                    "{:.6}",
-                    (0.37 * i as f64).sin() + (0.23 * j as f64 + 0.11 * i as f64).cos()
-                )
-            })
-            .collect();
-        text.push_str(&row.join(" "));
-        text.push('\n');
-    }
-    text.into_bytes()
+    include_bytes!("../../../tests/data/text_map.txt").to_vec()
 }
 
 fn cli(f: Field) -> String {

@@ -26,8 +26,8 @@ pub enum StatsError {
         /// The L-filter's nesting index (m).
         lambda_c: f64,
     },
-    /// Fewer than 16 points along a direction.
-    #[error("{name} = {count} is out of range: at least 16 points are needed along {direction}")]
+    /// Fewer points along a direction than [`POINTS_ALONG`](super::POINTS_ALONG).
+    #[error("{name} = {count} is out of range: must be {} points along {direction}", super::POINTS_ALONG.range())]
     TooFewPoints {
         /// `"nx"` or `"ny"`.
         name: &'static str,
@@ -36,17 +36,18 @@ pub enum StatsError {
         /// Points along that direction.
         count: usize,
     },
-    /// Fewer than 100 valid (non-missing) points.
-    #[error("{valid} valid points is out of range: at least 100 are needed ({missing} missing)")]
+    /// Fewer valid (non-missing) points than [`VALID_POINTS`](super::VALID_POINTS).
+    #[error("{valid} valid points is out of range: must be {} ({missing} missing)", super::VALID_POINTS.range())]
     TooFewValid {
         /// Valid points.
         valid: usize,
         /// Missing points.
         missing: usize,
     },
-    /// Fewer than 16 valid first or second differences along a direction
-    /// (too many missing points in between).
-    #[error("{count} valid differences for {name} is out of range: at least 16 are needed (too many missing points)")]
+    /// Fewer valid first or second differences along a direction than
+    /// [`DIFFERENCES`](super::DIFFERENCES) (too many missing points in
+    /// between).
+    #[error("{count} valid differences for {name} is out of range: must be {} (too many missing points)", super::DIFFERENCES.range())]
     TooFewDifferences {
         /// `"m20"`, `"m40"`, `"m02"` or `"m04"`.
         name: &'static str,

@@ -36,15 +36,23 @@ pub use error::StatsError;
 pub use tail::{HeightTail, TAIL_SAMPLE};
 
 use super::Topography;
+use crate::bound::Bound;
 use derived::Derived;
 use sums::dispatch;
 
 /// Fewest points along a direction (x, and y for a map).
 const MIN_ALONG: usize = 16;
+/// The points along a direction the statistics take: at least [`MIN_ALONG`].
+pub static POINTS_ALONG: Bound = Bound::whole(MIN_ALONG, usize::MAX);
 /// Fewest valid (non-missing) points.
 const MIN_VALID: usize = 100;
+/// The valid (non-missing) points the statistics take: at least [`MIN_VALID`].
+pub static VALID_POINTS: Bound = Bound::whole(MIN_VALID, usize::MAX);
 /// Fewest valid first or second differences along a direction.
 const MIN_DIFFERENCES: usize = 16;
+/// The valid first or second differences along a direction the
+/// statistics take: at least [`MIN_DIFFERENCES`].
+pub static DIFFERENCES: Bound = Bound::whole(MIN_DIFFERENCES, usize::MAX);
 /// Below this bandwidth α the surface is not an isotropic Gaussian one.
 const ALPHA_GAUSSIAN: f64 = 1.5;
 /// The isotropy band of m20/m02 and m40/m04.
@@ -274,14 +282,14 @@ impl Topography {
     /// [`Topography::stats`], its failures not yet diagnosed.
     fn stats_of(&self, options: &StatsOptions) -> Result<SurfaceStats, StatsError> {
         let (nx, ny) = (self.nx, self.ny);
-        if nx < MIN_ALONG {
+        if !POINTS_ALONG.contains(nx as f64) {
             return Err(StatsError::TooFewPoints {
                 name: "nx",
                 direction: "x",
                 count: nx,
             });
         }
-        if !self.is_profile() && ny < MIN_ALONG {
+        if !self.is_profile() && !POINTS_ALONG.contains(ny as f64) {
             return Err(StatsError::TooFewPoints {
                 name: "ny",
                 direction: "y",
@@ -297,7 +305,7 @@ impl Topography {
         let fit = dispatch::fit_sums(self, z0);
         let points = fit.n.value() as usize;
         let missing = self.heights.len() - points;
-        if points < MIN_VALID {
+        if !VALID_POINTS.contains(points as f64) {
             return Err(StatsError::TooFewValid { valid: points, missing });
         }
         let detrend = match options.detrend {

@@ -2,7 +2,7 @@
 //! fit and the detrending (pass 1), the sweep of the moments and the
 //! differences (pass 2), and their dispatch to AVX2 or portable code.
 
-use super::{finite, positive, Detrend, StatsError, MIN_DIFFERENCES};
+use super::{finite, positive, Detrend, StatsError, DIFFERENCES};
 use crate::topography::filter::Trend;
 use crate::topography::Topography;
 
@@ -289,7 +289,7 @@ impl Sweep {
 fn moments_of(sums: &[Sum; 4], h: f64, m2: &'static str, m4: &'static str) -> Result<(f64, f64), StatsError> {
     let [d2, e2, nd, ne] = sums.map(|s| s.value());
     for (name, count) in [(m2, nd), (m4, ne)] {
-        if count < MIN_DIFFERENCES as f64 {
+        if !DIFFERENCES.contains(count) {
             return Err(StatsError::TooFewDifferences {
                 name,
                 count: count as usize,
