@@ -575,3 +575,18 @@ fn power_tails_in_one_panel_match_the_reference() {
     }
     eprintln!("worst {worst:e}");
 }
+
+/// A law over the cusp of Sk = 5, K = 26.01 (F* = 1.46e-3) fails
+/// saying why: the density is infinite at an end of its support.
+#[test]
+fn a_law_over_the_cusp_says_why_it_fails() {
+    let c =
+        ke_friction::Constants::default().distribution(ke_friction::HeightDistribution::pearson(5.0, 26.01).unwrap());
+    let e = ke_friction::FrictionLaw::new(c.at(1.0, 0.001).unwrap(), 1e9, Some((1e5, 1e7)), Default::default())
+        .expect_err("misses its accuracy")
+        .to_string();
+    assert!(
+        e.contains("misses its accuracy") && e.contains("infinite at an end of its support"),
+        "{e}"
+    );
+}
