@@ -38,24 +38,14 @@ def lie_about_size(data, name, size):
     """Sets the inflated size of `name` in its local and central headers."""
     b = bytearray(data)
     n = name.encode()
-    at = 0
-    while True:
-        at = b.find(b'PK\x03\x04', at)
-        if at < 0:
-            break
-        ln = struct.unpack_from('<H', b, at + 26)[0]
-        if bytes(b[at + 30:at + 30 + ln]) == n:
-            struct.pack_into('<I', b, at + 22, size)
-        at += 4
-    at = 0
-    while True:
-        at = b.find(b'PK\x01\x02', at)
-        if at < 0:
-            break
-        ln = struct.unpack_from('<H', b, at + 28)[0]
-        if bytes(b[at + 46:at + 46 + ln]) == n:
-            struct.pack_into('<I', b, at + 24, size)
-        at += 4
+    # (signature, offset of the name's length, of the name, of the size)
+    for sig, name_len, name_at, size_at in ((b'PK\x03\x04', 26, 30, 22), (b'PK\x01\x02', 28, 46, 24)):
+        at = b.find(sig)
+        while at >= 0:
+            ln = struct.unpack_from('<H', b, at + name_len)[0]
+            if bytes(b[at + name_at:at + name_at + ln]) == n:
+                struct.pack_into('<I', b, at + size_at, size)
+            at = b.find(sig, at + 4)
     return bytes(b)
 
 

@@ -192,37 +192,31 @@ macro_rules! fields {
     };
 }
 
-impl Enc for Interval {
-    fn enc(&self, o: &mut Out) {
-        match self {
-            Interval::None => o.variant(0, 3),
-            Interval::Exp(e) => {
-                o.variant(1, 3);
-                e.enc(o)
-            }
-            Interval::Raw(v) => {
-                o.variant(2, 3);
-                v.enc(o)
+/// An enum: its variant's index among all, then the variant's one field
+/// (if any).
+macro_rules! variants {
+    ($t:ident { $($v:ident $(($f:ident))?),+ }) => {
+        impl Enc for $t {
+            #[allow(unused_assignments)]
+            fn enc(&self, o: &mut Out) {
+                let n = [$(stringify!($v)),+].len() as u64;
+                let mut i = 0;
+                $(
+                    if let $t::$v $(($f))? = self {
+                        o.variant(i, n);
+                        $($f.enc(o);)?
+                        return;
+                    }
+                    i += 1;
+                )+
             }
         }
-    }
+    };
 }
 
-impl Enc for Unit {
-    fn enc(&self, o: &mut Out) {
-        match self {
-            Unit::One => o.variant(0, 3),
-            Unit::Exp(e) => {
-                o.variant(1, 3);
-                e.enc(o)
-            }
-            Unit::Raw(v) => {
-                o.variant(2, 3);
-                v.enc(o)
-            }
-        }
-    }
-}
+variants!(Interval { None, Exp(e), Raw(v) });
+
+variants!(Unit { One, Exp(e), Raw(v) });
 
 impl Enc for OptionsSpec {
     fn enc(&self, o: &mut Out) {
@@ -252,70 +246,13 @@ mod enc_a {
     use super::a::*;
     use super::{Enc, Out};
 
-    impl Enc for Dim {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Dim::Small(k) => {
-                    o.variant(0, 2);
-                    k.enc(o)
-                }
-                Dim::Edge(k) => {
-                    o.variant(1, 2);
-                    k.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Dim { Small(k), Edge(k) });
 
-    impl Enc for Declared {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Declared::Right => o.variant(0, 3),
-                Declared::Delta(d) => {
-                    o.variant(1, 3);
-                    d.enc(o)
-                }
-                Declared::Raw(v) => {
-                    o.variant(2, 3);
-                    v.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Declared { Right, Delta(d), Raw(v) });
 
-    impl Enc for Value {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Value::Small(k) => {
-                    o.variant(0, 3);
-                    k.enc(o)
-                }
-                Value::Special(k) => {
-                    o.variant(1, 3);
-                    k.enc(o)
-                }
-                Value::Raw(v) => {
-                    o.variant(2, 3);
-                    v.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Value { Small(k), Special(k), Raw(v) });
 
-    impl Enc for Text {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Text::Known(k) => {
-                    o.variant(0, 2);
-                    k.enc(o)
-                }
-                Text::Other(s) => {
-                    o.variant(1, 2);
-                    s.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Text { Known(k), Other(s) });
 
     fields!(Sur {
         nx,
@@ -385,44 +322,9 @@ mod enc_a {
         len
     });
 
-    impl Enc for File {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                File::Sur(f) => {
-                    o.variant(0, 4);
-                    f.enc(o)
-                }
-                File::Plu(f) => {
-                    o.variant(1, 4);
-                    f.enc(o)
-                }
-                File::Opd(f) => {
-                    o.variant(2, 4);
-                    f.enc(o)
-                }
-                File::Al3d(f) => {
-                    o.variant(3, 4);
-                    f.enc(o)
-                }
-            }
-        }
-    }
+    variants!(File { Sur(f), Plu(f), Opd(f), Al3d(f) });
 
-    impl Enc for ChannelSpec {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                ChannelSpec::None => o.variant(0, 3),
-                ChannelSpec::Index(i) => {
-                    o.variant(1, 3);
-                    i.enc(o)
-                }
-                ChannelSpec::Name(t) => {
-                    o.variant(2, 3);
-                    t.enc(o)
-                }
-            }
-        }
-    }
+    variants!(ChannelSpec { None, Index(i), Name(t) });
 
     fields!(Input {
         options,
@@ -437,52 +339,11 @@ mod enc_b {
     use super::b::*;
     use super::{Enc, Out};
 
-    impl Enc for Dim {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Dim::Small(k) => {
-                    o.variant(0, 2);
-                    k.enc(o)
-                }
-                Dim::Edge(k) => {
-                    o.variant(1, 2);
-                    k.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Dim { Small(k), Edge(k) });
 
-    impl Enc for Num {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Num::Exp(e) => {
-                    o.variant(0, 3);
-                    e.enc(o)
-                }
-                Num::Special(k) => {
-                    o.variant(1, 3);
-                    k.enc(o)
-                }
-                Num::Raw(v) => {
-                    o.variant(2, 3);
-                    v.enc(o)
-                }
-            }
-        }
-    }
+    variants!(Num { Exp(e), Special(k), Raw(v) });
 
-    impl Enc for Len {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                Len::Exact => o.variant(0, 3),
-                Len::Delta(d) => {
-                    o.variant(1, 3);
-                    d.enc(o)
-                }
-                Len::Nothing => o.variant(2, 3),
-            }
-        }
-    }
+    variants!(Len { Exact, Delta(d), Nothing });
 
     fields!(MetroPro {
         version,
@@ -540,24 +401,7 @@ mod enc_b {
         junk_line
     });
 
-    impl Enc for File {
-        fn enc(&self, o: &mut Out) {
-            match self {
-                File::MetroPro(f) => {
-                    o.variant(0, 3);
-                    f.enc(o)
-                }
-                File::Nanoscope(f) => {
-                    o.variant(1, 3);
-                    f.enc(o)
-                }
-                File::Nid(f) => {
-                    o.variant(2, 3);
-                    f.enc(o)
-                }
-            }
-        }
-    }
+    variants!(File { MetroPro(f), Nanoscope(f), Nid(f) });
 
     fields!(Input {
         options,

@@ -90,6 +90,22 @@ pub fn topographies() -> Option<std::path::PathBuf> {
     }
 }
 
+/// The contact.engineering container container-2.zip: in
+/// `$KEF_CONTAINERS`, else `shared/containers` beside the repository;
+/// `None` (with a message) where it is absent.
+pub fn container_2() -> Option<std::path::PathBuf> {
+    let dir = std::env::var_os("KEF_CONTAINERS")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
+    let path = dir.join("container-2.zip");
+    if path.is_file() {
+        Some(path)
+    } else {
+        println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
+        None
+    }
+}
+
 /// The instruments' example file `name` ([`topographies`]), or `None`
 /// (with a message) where it is absent.
 pub fn instrument_file(name: &str) -> Option<std::path::PathBuf> {

@@ -159,14 +159,9 @@ fn synthetic_container_scale_dependent_matches_surface_topography() {
 
 #[test]
 fn container_2_matches_surface_topography() {
-    let dir = std::env::var_os("KEF_CONTAINERS")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
-    let path = dir.join("container-2.zip");
-    if !path.is_file() {
-        println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
+    let Some(path) = crate::common::container_2() else {
         return;
-    }
+    };
     check_against_reference(&path, "container-2");
     let s = read_container(&path, &ContainerOptions::default()).unwrap();
     let ms = &s[0].measurements;
@@ -402,19 +397,6 @@ mod analysis {
 
     const MATERIALS: Materials = Materials::from_array([70e9, 0.33, 200e9, 0.31, 1e9, 0.5, 0.4e-9]);
 
-    fn container_2() -> Option<PathBuf> {
-        let dir = std::env::var_os("KEF_CONTAINERS")
-            .map(PathBuf::from)
-            .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
-        let path = dir.join("container-2.zip");
-        if path.is_file() {
-            Some(path)
-        } else {
-            println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
-            None
-        }
-    }
-
     /// μ of the whole band equals μ computed by hand from the same
     /// moments (σ = √m0, η, R from m2, m4: Params::from_physical), with the
     /// heights of the measurement resolving λc; the band is the union of
@@ -526,7 +508,7 @@ mod analysis {
 
     #[test]
     fn container_2_mu_from_the_whole_band() {
-        if let Some(path) = container_2() {
+        if let Some(path) = crate::common::container_2() {
             check_whole_band(&path);
             check_scan(&path);
         }

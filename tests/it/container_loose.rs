@@ -8,7 +8,7 @@
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-use crate::common::TempDir;
+use crate::common::{container_2, TempDir};
 use ke_friction::topography::container::{
     combined_psd, measurement_spectra, read_container, read_loose, ContainerOptions, ContainerSurface, DetrendMode,
     Heights, LooseError, LooseMeasurement, LooseOptions, COMBINED_POINTS_PER_DECADE,
@@ -16,19 +16,6 @@ use ke_friction::topography::container::{
 use ke_friction::{Classify, ErrorKind};
 
 const DATA: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/container");
-
-fn container_2() -> Option<PathBuf> {
-    let dir = std::env::var_os("KEF_CONTAINERS")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared/containers"));
-    let path = dir.join("container-2.zip");
-    if path.is_file() {
-        Some(path)
-    } else {
-        println!("skipped: {} is absent (set KEF_CONTAINERS)", path.display());
-        None
-    }
-}
 
 /// Every member of the zip at `zip` written into `dir`.
 fn unzip(zip: &Path, dir: &TempDir) {
