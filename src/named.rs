@@ -59,7 +59,7 @@ pub struct NameError {
 
 impl NameError {
     /// `given` is not one of `names` (what a set not written by
-    /// [`named!`](crate::named) uses, to word it as every other: the web
+    /// `named!` uses, to word it as every other: the web
     /// page's option keys, the CLI's own switches); `given` is cut to 40
     /// characters.
     pub fn new<S: Into<String>>(what: &'static str, given: &str, names: impl IntoIterator<Item = S>) -> NameError {

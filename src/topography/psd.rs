@@ -30,7 +30,7 @@ use std::f64::consts::PI;
 /// Fewest points along a direction the spectrum is taken along.
 const MIN_POINTS: usize = 4;
 /// The points along a direction a spectrum is taken along: at least
-/// [`MIN_POINTS`].
+/// 4 (`MIN_POINTS`).
 pub static PSD_POINTS: crate::bound::Bound = crate::bound::Bound::whole(MIN_POINTS, usize::MAX);
 /// Radial bins per decade of q ([`psd_area`]), SurfaceTopography's
 /// `nb_points_per_decade` default.

@@ -42,16 +42,16 @@ use sums::dispatch;
 
 /// Fewest points along a direction (x, and y for a map).
 const MIN_ALONG: usize = 16;
-/// The points along a direction the statistics take: at least [`MIN_ALONG`].
+/// The points along a direction the statistics take: at least 16 (`MIN_ALONG`).
 pub static POINTS_ALONG: Bound = Bound::whole(MIN_ALONG, usize::MAX);
 /// Fewest valid (non-missing) points.
 const MIN_VALID: usize = 100;
-/// The valid (non-missing) points the statistics take: at least [`MIN_VALID`].
+/// The valid (non-missing) points the statistics take: at least 100 (`MIN_VALID`).
 pub static VALID_POINTS: Bound = Bound::whole(MIN_VALID, usize::MAX);
 /// Fewest valid first or second differences along a direction.
 const MIN_DIFFERENCES: usize = 16;
 /// The valid first or second differences along a direction the
-/// statistics take: at least [`MIN_DIFFERENCES`].
+/// statistics take: at least 16 (`MIN_DIFFERENCES`).
 pub static DIFFERENCES: Bound = Bound::whole(MIN_DIFFERENCES, usize::MAX);
 /// Below this bandwidth α the surface is not an isotropic Gaussian one.
 const ALPHA_GAUSSIAN: f64 = 1.5;
