@@ -161,6 +161,24 @@ impl Density {
         }
         sum
     }
+
+    /// `∫ f(x)·g(x) dx` over x > `t`: [`integrate`](Self::integrate)'s
+    /// panels walked up from `t` (the whole integral where `t` is at or
+    /// below the support's lower end; 0 at or above its upper end).
+    pub(crate) fn integrate_above(&self, t: f64, f: impl Fn(f64) -> f64) -> f64 {
+        let (lo, hi) = self.support();
+        if t <= lo {
+            return self.integrate(f);
+        }
+        if t >= hi {
+            return 0.0;
+        }
+        let mut sum = 0.0;
+        march(self, t, 1.0, self.hi, &mut |x0, x1, rule| {
+            sum += panel_sum(self, x0, x1, rule, self.hi, &f)
+        });
+        sum
+    }
 }
 
 /// How one panel is integrated.

@@ -197,25 +197,11 @@ impl General {
         }
     }
 
-    /// The fraction of the summits above `z` (in z*): ∫ φ* over z* > z.
-    /// The midpoint rule on 20,000 steps over at most 60 standard
-    /// deviations (the density's own panels would put a step inside one
-    /// panel; midpoints never touch a singular end): ~1e-4 relative, for a
-    /// count of contacts, not a result.
+    /// The fraction of the summits above `z` (in z*): ∫ φ* over z* > z,
+    /// the density's own quadrature walked up from `z` (Gauss panels,
+    /// Gauss–Jacobi at a singular end).
     pub(super) fn fraction_above(&self, z: f64) -> f64 {
-        const STEPS: usize = 20_000;
-        let (lo, hi) = self.g.support();
-        let t = z * self.inv_s;
-        if t <= lo {
-            return 1.0;
-        }
-        let end = hi.min(t + 60.0);
-        if t >= end {
-            return 0.0;
-        }
-        let h = (end - t) / STEPS as f64;
-        let sum: f64 = (0..STEPS).map(|k| self.g.pdf(t + (k as f64 + 0.5) * h)).sum();
-        (sum * h).min(1.0)
+        self.g.integrate_above(z * self.inv_s, |_| 1.0).min(1.0)
     }
 
     /// `f` called with these heights as a [`Phi`] whose density's form is
