@@ -430,10 +430,11 @@ pub fn run_scan(args: &Args, path: &Input) -> Result<(), Failure> {
             "--from, --to: not with a container (its scan runs over λs from the smallest reliable scale to λc)",
         ));
     }
-    if !(1..=1000).contains(&args.per_decade) {
+    if !ke_friction::topography::PER_DECADE.contains(args.per_decade as f64) {
         return Err(Failure::input(format!(
-            "--per-decade: {} is out of range: 1 to 1000",
-            args.per_decade
+            "--per-decade: {} is out of range: must be {}",
+            args.per_decade,
+            ke_friction::topography::PER_DECADE.range()
         )));
     }
     let asked = asked(args)?;

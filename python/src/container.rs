@@ -256,9 +256,10 @@ impl ContainerCore {
         lambda_c: Option<f64>,
         per_decade: u32,
     ) -> PyResult<Bound<'py, PyAny>> {
-        if !(1..=1000).contains(&per_decade) {
+        if !ke_friction::topography::PER_DECADE.contains(f64::from(per_decade)) {
             return Err(value_error(format!(
-                "per_decade = {per_decade} is out of range: 1 to 1000"
+                "per_decade = {per_decade} is out of range: must be {}",
+                ke_friction::topography::PER_DECADE.range()
             )));
         }
         let request = request(

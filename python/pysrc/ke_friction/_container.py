@@ -261,8 +261,8 @@ class Container:
         mats = _model_keywords(materials, distribution, fit, model)
         if isinstance(per_decade, bool) or not isinstance(per_decade, numbers.Integral):
             raise TypeError(f"per_decade must be an int, not {type(per_decade).__name__}")
-        if not 1 <= per_decade <= 1000:
-            raise ValueError(f"per_decade = {per_decade}: must be 1 to 1000 (values a decade)")
+        if not _core.in_range("per_decade", per_decade):
+            raise ValueError(f"per_decade = {per_decade} is out of range: must be {_core.RANGES['per_decade']}")
         for k, v in (("force", force), ("pressure", pressure)):
             if v is not None and not _is_scalar(v):
                 raise ValueError(f"{k}: one load for a scan (a number), not {type(v).__name__}")
